@@ -1,0 +1,55 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @brief Console helpers shared by every board: strings and numbers without
+ *        printf, so bare-metal images need no C library.
+ */
+#include "console.h"
+
+#include "bsp.h"
+
+void bsp_puts(const char *s)
+{
+  while (*s != '\0') {
+    bsp_putc(*s);
+    s++;
+  }
+}
+
+void console_put_u64(uint64_t value)
+{
+  char digits[20];
+  unsigned n = 0;
+
+  do {
+    digits[n] = (char)('0' + (int)(value % 10u));
+    value /= 10u;
+    n++;
+  } while (value != 0u);
+  while (n > 0u) {
+    n--;
+    bsp_putc(digits[n]);
+  }
+}
+
+void console_put_i64(int64_t value)
+{
+  if (value < 0) {
+    bsp_putc('-');
+    /* Negate in unsigned arithmetic: INT64_MIN has no positive twin. */
+    console_put_u64(0u - (uint64_t)value);
+  } else {
+    console_put_u64((uint64_t)value);
+  }
+}
+
+void console_put_hex32(uint32_t value)
+{
+  static const char hex[] = "0123456789abcdef";
+  int shift;
+
+  bsp_puts("0x");
+  for (shift = 28; shift >= 0; shift -= 4) {
+    bsp_putc(hex[(value >> shift) & 0xFu]);
+  }
+}

@@ -1,0 +1,18 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @brief Number output on the board console, for images without printf.
+ */
+#ifndef DRDC_CONSOLE_H
+#define DRDC_CONSOLE_H
+
+#include <stdint.h>
+
+/** Write `value` in decimal. */
+void console_put_u64(uint64_t value);
+/** Write `value` in decimal with a leading '-' when negative. */
+void console_put_i64(int64_t value);
+/** Write `value` as 0x followed by 8 lower-case hex digits. */
+void console_put_hex32(uint32_t value);
+
+#endif /* DRDC_CONSOLE_H */

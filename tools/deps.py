@@ -1,0 +1,211 @@
+# SPDX-License-Identifier: BSD-2-Clause
+"""Set-up of everything the build needs, pinned by version and checksum.
+
+Debian packages are pinned by exact version (apt verifies their checksums
+through the signed archive index); source tarballs and Python wheels are
+pinned by SHA-256 here. Sources are unpacked into .deps/ (ignored by git).
+Every step first checks whether its result is already present, so a second
+run costs a few dpkg queries and file tests.
+
+Run by `./waf configure` (and so by the first `./waf check` or `./waf demo`);
+`python3 tools/deps.py` runs it alone.
+"""
+import hashlib
+import glob
+import os
+import shutil
+import subprocess
+import sys
+import tarfile
+
+TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+DEPS = os.path.join(TOP, ".deps")
+
+# Debian 12 binary packages: cross compilers, newlib for Cortex-M, QEMU.
+APT_PACKAGES = {
+    "gcc-powerpc-linux-gnu": "4:12.2.0-5",
+    "gcc-arm-none-eabi": "15:12.2.rel1-1",
+    "libnewlib-arm-none-eabi": "3.3.0-1.3+deb12u1",
+    "qemu-system-ppc": "1:7.2+dfsg-7+deb12u18+b3",
+    "qemu-system-arm": "1:7.2+dfsg-7+deb12u18+b3",
+}
+
+# Debian source packages whose upstream tarball we unpack. The checksum is
+# the one in the package's .dsc (Checksums-Sha256 of the .orig.tar.xz).
+SOURCES = {
+    "unity": {
+        "package": "ntpsec", "version": "1.2.2+dfsg1-1+deb12u1",
+        "tarball": "ntpsec_1.2.2+dfsg1.orig.tar.xz",
+        "sha256": "53e527e3d04d551d41af2d359c2715c2de5f5bfa2a695d4ec1a811b3e9137f63",
+        # Unity 2.5.1 ships inside ntpsec's tree
+        "member": "ntpsec-1.2.2+dfsg1/tests/unity/",
+    },
+    "libfixmath": {
+        "package": "libfixmath", "version": "0~20220222-3",
+        "tarball": "libfixmath_0~20220222.orig.tar.xz",
+        "sha256": "38a93f38bcf2b6fbc00bfc4e10905f8f012cc72943ec5eed69a459c3bc0349e0",
+        "member": "./libfixmath/",
+    },
+}
+
+# Python packages of the host reference-vector generator (tests/ref/).
+PYTHON_PACKAGES = {
+    "mpmath==1.3.0":
+        "a0b2b9fe80bbcd81a6647ff13108738cfb482d481d826cc0e02f5b35e5c88d2c",
+}
+
+DEB_SRC_LIST = "/etc/apt/sources.list.d/drdc-deb-src.sources"
+DEB_SRC_ENTRY = """Types: deb-src
+URIs: http://deb.debian.org/debian
+Suites: bookworm bookworm-updates
+Components: main
+Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
+"""
+
+
+class SetupError(Exception):
+    """A dependency is missing and cannot be installed by this process."""
+
+
+def _is_root():
+    return os.geteuid() == 0
+
+
+def _run(cmd, **kw):
+    print("deps: " + " ".join(cmd), flush=True)
+    subprocess.check_call(cmd, **kw)
+
+
+def _apt_env():
+    env = dict(os.environ)
+    env["DEBIAN_FRONTEND"] = "noninteractive"
+    return env
+
+
+def _installed_version(pkg):
+    r = subprocess.run(["dpkg-query", "-W", "-f", "${Status}|${Version}", pkg],
+                       capture_output=True, text=True)
+    if r.returncode != 0 or not r.stdout.startswith("install ok installed"):
+        return None
+    return r.stdout.split("|", 1)[1]
+
+
+def ensure_apt():
+    missing = ["%s=%s" % (p, v) for p, v in sorted(APT_PACKAGES.items())
+               if _installed_version(p) != v]
+    if not missing:
+        return
+    cmd = ["apt-get", "install", "-y", "--no-install-recommends"] + missing
+    if not _is_root():
+        raise SetupError("missing Debian packages; run as root:\n"
+                         "  apt-get update && " + " ".join(cmd))
+    _run(["apt-get", "update", "-q"], env=_apt_env())
+    _run(cmd, env=_apt_env())
+
+
+def _sha256(path):
+    h = hashlib.sha256()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            h.update(block)
+    return h.hexdigest()
+
+
+def _have_deb_src():
+    lists = glob.glob("/var/lib/apt/lists/*_source_Sources*")
+    return bool(lists)
+
+
+def _fetch_source(spec, dl):
+    path = os.path.join(dl, spec["tarball"])
+    if os.path.exists(path) and _sha256(path) == spec["sha256"]:
+        return path
+    os.makedirs(dl, exist_ok=True)
+    if not _have_deb_src():
+        if not _is_root():
+            raise SetupError(
+                "apt has no source-package index; run as root:\n"
+                "  printf '%s' > %s && apt-get update"
+                % (DEB_SRC_ENTRY.replace("\n", "\\n"), DEB_SRC_LIST))
+        with open(DEB_SRC_LIST, "w") as f:
+            f.write(DEB_SRC_ENTRY)
+        _run(["apt-get", "update", "-q"], env=_apt_env())
+    # The Debian part of some source packages answers 404; only the
+    # upstream tarball matters, so the exit status is not trusted: the
+    # checksum below is.
+    subprocess.run(["apt-get", "source", "--download-only", "-q",
+                    "%s=%s" % (spec["package"], spec["version"])],
+                   cwd=dl, env=_apt_env())
+    if not os.path.exists(path):
+        raise SetupError("could not download %s from the Debian archive"
+                         % spec["tarball"])
+    got = _sha256(path)
+    if got != spec["sha256"]:
+        raise SetupError("%s: SHA-256 %s, expected %s"
+                         % (spec["tarball"], got, spec["sha256"]))
+    return path
+
+
+def ensure_source(name):
+    """Unpack the pinned source `name` into .deps/<name>/ and return it."""
+    spec = SOURCES[name]
+    dest = os.path.join(DEPS, name)
+    stamp = os.path.join(dest, ".%s.ok" % spec["sha256"][:16])
+    if os.path.exists(stamp):
+        return dest
+    tarball = _fetch_source(spec, os.path.join(DEPS, "dl"))
+    shutil.rmtree(dest, ignore_errors=True)
+    os.makedirs(dest)
+    prefix = spec["member"]
+    with tarfile.open(tarball) as tar:
+        for m in tar.getmembers():
+            if not m.isfile() or not m.name.startswith(prefix):
+                continue
+            rel = m.name[len(prefix):]
+            if ".." in rel.split("/"):
+                continue
+            out = os.path.join(dest, rel)
+            os.makedirs(os.path.dirname(out), exist_ok=True)
+            with tar.extractfile(m) as src, open(out, "wb") as dst:
+                shutil.copyfileobj(src, dst)
+    open(stamp, "w").close()
+    return dest
+
+
+def ensure_python():
+    """Install the generator's Python packages into .deps/python/."""
+    dest = os.path.join(DEPS, "python")
+    req = "".join("%s --hash=sha256:%s\n" % kv
+                  for kv in sorted(PYTHON_PACKAGES.items()))
+    stamp = os.path.join(dest, ".requirements.txt")
+    if os.path.exists(stamp) and open(stamp).read() == req:
+        return dest
+    shutil.rmtree(dest, ignore_errors=True)
+    os.makedirs(dest)
+    tmp = os.path.join(dest, "requirements.in")
+    with open(tmp, "w") as f:
+        f.write(req)
+    _run([sys.executable, "-m", "pip", "install", "-q",
+          "--disable-pip-version-check", "--root-user-action=ignore",
+          "--no-deps", "--require-hashes", "--target", dest, "-r", tmp])
+    with open(stamp, "w") as f:
+        f.write(req)
+    return dest
+
+
+def ensure_all():
+    """Make every dependency present; return the paths of the unpacked ones."""
+    ensure_apt()
+    return {
+        "unity": ensure_source("unity"),
+        "libfixmath": ensure_source("libfixmath"),
+        "python": ensure_python(),
+    }
+
+
+if __name__ == "__main__":
+    try:
+        for k, v in ensure_all().items():
+            print("%s: %s" % (k, v))
+    except SetupError as e:
+        sys.exit("deps: " + str(e))

@@ -1,0 +1,44 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @brief drdc: the host command-line tool. The same library as the
+ *        firmware, so its numbers are the bits the MCU computes.
+ */
+#include <stdio.h>
+#include <string.h>
+
+#include <drdc/version.h>
+
+static const char usage[] =
+  "usage: drdc [--help | --version] COMMAND [OPTIONS]\n"
+  "\n"
+  "The libdrdc-fx data-standards library on the host, bit-identical to\n"
+  "the firmware builds. Commands read one record per line on standard\n"
+  "input and write one line per record; a record that cannot be\n"
+  "converted gives 'ERROR: <reason>' and the exit status 1 at the end.\n"
+  "\n"
+  "Commands:\n"
+  "  (none yet: time, attitude, geo and units arrive with their modules)\n"
+  "\n"
+  "Options:\n"
+  "  --help     this text\n"
+  "  --version  the library version\n";
+
+int main(int argc, char **argv)
+{
+  if ((argc == 2) && (strcmp(argv[1], "--help") == 0)) {
+    fputs(usage, stdout);
+    return 0;
+  }
+  if ((argc == 2) && (strcmp(argv[1], "--version") == 0)) {
+    printf("drdc %s\n", DRDC_VERSION_STRING);
+    return 0;
+  }
+  if (argc < 2) {
+    fputs(usage, stderr);
+  } else {
+    fprintf(stderr, "drdc: unknown command or option '%s' (see drdc --help)\n",
+            argv[1]);
+  }
+  return 2;
+}

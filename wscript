@@ -1,0 +1,272 @@
+# SPDX-License-Identifier: BSD-2-Clause
+"""Build of libdrdc-fx: one waf variant per target, all in the TARGETS table.
+
+  ./waf demo    set up, build the default target, run the demo under QEMU
+  ./waf check   build every target and run every check and test suite
+  ./waf build_<target>, clean_<target>   one target only
+"""
+import glob
+import json
+import os
+import subprocess
+import sys
+
+from waflib import Build, Configure, Context, Errors, Logs, Options
+
+top = "."
+out = "build"
+
+APPNAME = "drdc"
+VERSION = "0.1.0"  # also in core/include/drdc/version.h
+DEFAULT_TARGET = "ppc-e500"
+
+# Re-run configure by itself when it has not run or a wscript changed.
+Configure.autoconfig = True
+
+# Warnings of every file we write, on every target.
+WARNINGS = ["-std=c99", "-Wall", "-Wextra", "-Wconversion",
+            "-Wsign-conversion", "-Wshadow", "-Wcast-align",
+            "-Wstrict-prototypes", "-Wundef", "-Werror"]
+# Code generation of every file, ours and third-party.
+CODEGEN = ["-O2", "-g", "-ffunction-sections", "-fdata-sections"]
+SANITIZE = ["-fsanitize=address,undefined", "-fno-sanitize-recover=all",
+            "-fno-omit-frame-pointer"]
+
+# The one table of targets. Adding a board: a folder bsp/<name>/ with its
+# start-up code, console and exit, plus one entry here.
+#   cross      tool prefix ("" for the native compiler)
+#   bsp        folder under bsp/ with the board code
+#   qemu       machine profile of qemu/harness.py that runs the images
+#   arch       flags for compiling and assembling
+#   link       flags for linking images; bsp/<bsp>/link.ld, when there is
+#              one, is added as the linker script
+#   libs       libraries linked after everything else
+#   hard_float flags that make a floating-point unit available: the
+#              integer-only check must catch the instructions they emit
+#   intcheck   instruction set of tools/intcheck.py, or None to skip
+TARGETS = {
+    "host": {
+        "cross": "", "bsp": "host", "qemu": "host", "ext": "",
+        "arch": ["-D_POSIX_C_SOURCE=200809L"],
+        "link": [], "libs": [], "hard_float": [], "intcheck": "x86-64",
+    },
+    "host-asan": {
+        "cross": "", "bsp": "host", "qemu": "host", "ext": "",
+        "arch": ["-D_POSIX_C_SOURCE=200809L"] + SANITIZE,
+        "link": SANITIZE, "libs": [], "hard_float": None, "intcheck": None,
+    },
+    "ppc-e500": {
+        "cross": "powerpc-linux-gnu-", "bsp": "ppc-e500", "qemu": "ppc-e500",
+        "ext": ".elf",
+        "arch": ["-mcpu=powerpc", "-msoft-float", "-ffreestanding", "-fno-pic",
+                 "-fno-pie", "-msdata=none", "-G0", "-fno-stack-protector"],
+        "link": ["-nostdlib", "-static", "-no-pie", "-Wl,--gc-sections",
+                 "-Wl,--build-id=none", "-Wl,--no-warn-rwx-segments"],
+        # libgcc: 64-bit integer division (__udivdi3, __divdi3)
+        "libs": ["gcc"],
+        "hard_float": ["-mhard-float"], "intcheck": "ppc",
+    },
+    "arm-cm3": {
+        "cross": "arm-none-eabi-", "bsp": "arm-cm3", "qemu": "arm-cm3",
+        "ext": ".elf",
+        "arch": ["-mcpu=cortex-m3", "-mthumb", "-mfloat-abi=soft",
+                 "--specs=nano.specs"],
+        "link": ["--specs=rdimon.specs", "-nostartfiles",
+                 "-Wl,--gc-sections"],
+        "libs": [],
+        "hard_float": ["-mcpu=cortex-m4", "-mfpu=fpv4-sp-d16",
+                       "-mfloat-abi=hard"],
+        "intcheck": "arm",
+    },
+}
+
+# Images that test the QEMU harness itself: qemu/selftest.c built once per
+# kind (the number is SELFTEST_KIND) on each target.
+SELFTEST_KINDS = {"pass": 1, "fail": 2, "hang": 3, "crash": 4,
+                  "flood": 5, "fake-summary": 6, "silent": 7}
+
+
+def options(opt):
+    opt.load("compiler_c")
+
+
+def configure(conf):
+    sys.path.insert(0, conf.path.find_dir("tools").abspath())
+    import deps
+    try:
+        found = deps.ensure_all()
+    except deps.SetupError as e:
+        conf.fatal(str(e))
+    for name, t in TARGETS.items():
+        conf.setenv(name)
+        conf.msg("Target", name)
+        for var, tool in (("CC", "gcc"), ("AR", "ar"), ("OBJDUMP", "objdump"),
+                          ("NM", "nm"), ("SIZE", "size")):
+            conf.find_program(t["cross"] + tool, var=var)
+        conf.env.AS = conf.env.CC
+        conf.load("gcc gas")
+        if t["cross"]:
+            # static images only: no -Bstatic/-Bdynamic switching
+            conf.env.STLIB_MARKER = []
+            conf.env.SHLIB_MARKER = []
+        conf.env.ARCH = t["arch"]
+        conf.env.ASFLAGS = t["arch"] + CODEGEN
+        conf.env.LINKFLAGS = t["arch"] + t["link"]
+        ldscript = conf.path.find_node("bsp/%s/link.ld" % t["bsp"])
+        if ldscript:
+            conf.env.LINKFLAGS += ["-Wl,-T," + ldscript.abspath()]
+        conf.env.LIB = t["libs"]
+        conf.env.UNITY = found["unity"]
+        conf.env.LIBFIXMATH = found["libfixmath"]
+        conf.env.PYTHONPATH = found["python"]
+        conf.check_cc(fragment="int main(void) { return 0; }\n",
+                      features="c", cflags=t["arch"],
+                      msg="Checking that %s compiles" % name)
+
+
+def _glob(bld, pattern):
+    return bld.path.ant_glob(pattern)
+
+
+def build(bld):
+    if not bld.variant:
+        bld.fatal("choose a target: ./waf build_<target> with target in %s, "
+                  "or ./waf check" % ", ".join(TARGETS))
+    t = TARGETS[bld.variant]
+    arch = bld.env.ARCH
+    ours = arch + CODEGEN + WARNINGS
+    theirs = arch + CODEGEN + ["-w"]
+
+    # The library: fixed-point arithmetic and the data standard.
+    bld.stlib(source=_glob(bld, "fixed/**/*.c") + _glob(bld, "core/**/*.c"),
+              target="drdc", name="libdrdc", cflags=ours,
+              includes=["fixed/include", "core/include"],
+              export_includes=["fixed/include", "core/include"])
+
+    # Third-party parts, from the pinned sources in .deps/.
+    unity = bld.root.find_dir(bld.env.UNITY)
+    bld.objects(source=[unity.find_node("unity.c")], target="unity",
+                cflags=theirs, includes=[unity, "tests", "bsp"],
+                defines=["UNITY_INCLUDE_CONFIG_H"],
+                export_includes=[unity, "tests"],
+                export_defines=["UNITY_INCLUDE_CONFIG_H"])
+    fixmath = bld.root.find_dir(bld.env.LIBFIXMATH)
+    bld.stlib(source=fixmath.ant_glob("fix16*.c fract32.c uint32.c",
+                                      excl=["fix16_fft.c"]),
+              target="fixmath", cflags=theirs, includes=[fixmath],
+              export_includes=[fixmath])
+
+    # The board.
+    bld.objects(source=["bsp/console.c"] + _glob(bld, "bsp/%s/*.c" % t["bsp"])
+                + _glob(bld, "bsp/%s/*.S" % t["bsp"]),
+                target="bsp", cflags=ours, includes=["bsp"],
+                export_includes=["bsp"])
+
+    def image(name, source, use, **kw):
+        node = bld.path.find_or_declare(name + t["ext"])
+        bld.program(source=source, target=name + t["ext"], use=use,
+                    cflags=ours, **kw)
+        ldscript = bld.path.find_node("bsp/%s/link.ld" % t["bsp"])
+        if ldscript:
+            bld.add_manual_dependency(node, ldscript)
+
+    image("fw/test-runner/test-runner",
+          ["fw/test-runner/main.c"] + _glob(bld, "tests/**/test_*.c"),
+          "libdrdc unity bsp", includes=["tests"])
+    image("fw/demo/demo", _glob(bld, "fw/demo/*.c"), "libdrdc bsp")
+    for kind, number in SELFTEST_KINDS.items():
+        image("qemu/selftest-" + kind, ["qemu/selftest.c"], "unity bsp",
+              defines=["SELFTEST_KIND=%d" % number],
+              idx=number)
+
+    # Objects that must fail the integer-only check (proof that it bites).
+    if t["intcheck"]:
+        bld.stlib(source=["tests/intcheck/float_bait.c"], target="bait-soft",
+                  cflags=arch + CODEGEN + ["-w"], idx=1)
+        if t["hard_float"]:
+            bld.stlib(source=["tests/intcheck/float_bait.c"],
+                      target="bait-hard", idx=2,
+                      cflags=[f for f in arch if "float" not in f]
+                      + t["hard_float"] + CODEGEN + ["-w"])
+
+    if t["qemu"] == "host" and not bld.variant.endswith("asan"):
+        bld.program(source=_glob(bld, "tools/drdc/*.c"), target="drdc",
+                    use="libdrdc", cflags=ours)
+
+
+# One build and one clean command per target: build_host, build_ppc-e500...
+for _name in TARGETS:
+    for _base in (Build.BuildContext, Build.CleanContext):
+        type(_base.__name__ + "_" + _name, (_base,), {
+            "cmd": _base.__name__.replace("Context", "").lower() + "_" + _name,
+            "variant": _name,
+        })
+
+
+def _build_all_then(then, targets):
+    Options.commands[:0] = ["build_" + n for n in targets] + [then]
+
+
+def check(ctx):
+    """build every target, then run every check and test suite"""
+    _build_all_then("run_checks", list(TARGETS))
+
+
+def demo(ctx):
+    """build the default target and run the demo firmware under QEMU"""
+    _build_all_then("run_demo", [DEFAULT_TARGET])
+
+
+def _python(ctx, args, **kw):
+    env = dict(os.environ)
+    env["PYTHONPATH"] = ctx.env.PYTHONPATH or ""
+    return subprocess.call([sys.executable] + args, cwd=ctx.path.abspath(),
+                           env=env, **kw)
+
+
+class RunDemo(Build.BuildContext):
+    """(internal) run the demo image of the default target"""
+    cmd = "run_demo"
+    variant = DEFAULT_TARGET
+
+    def execute(self):
+        self.restore()
+        if not self.all_envs:
+            self.load_envs()
+        t = TARGETS[DEFAULT_TARGET]
+        img = os.path.join(out, DEFAULT_TARGET, "fw/demo/demo" + t["ext"])
+        if _python(self, ["qemu/harness.py", "show", t["qemu"], img]) != 0:
+            self.fatal("demo failed")
+
+
+class RunChecks(Build.BuildContext):
+    """(internal) run the checks and the Unity suites of every target"""
+    cmd = "run_checks"
+    variant = "host"
+
+    def execute(self):
+        self.restore()
+        if not self.all_envs:
+            self.load_envs()
+        steps = [
+            ("reference vectors regenerate identically",
+             ["tests/ref/generate.py", "--check"]),
+            ("integer-only check of core/ and fixed/",
+             ["tools/intcheck.py", "--build", out, "--all"]
+             + ["%s:%s" % (n, t["intcheck"]) for n, t in TARGETS.items()
+                if t["intcheck"]]),
+            ("QEMU harness judges its own test images",
+             ["-m", "unittest", "-q", "qemu.test_harness"]),
+            ("host tool drdc", ["-m", "unittest", "-q", "tools.test_drdc"]),
+        ]
+        for title, args in steps:
+            Logs.pprint("CYAN", "== " + title)
+            if _python(self, args) != 0:
+                self.fatal("check failed: " + title)
+        Logs.pprint("CYAN", "== Unity suites on every target")
+        images = ["%s=%s:%s" % (n, t["qemu"], os.path.join(
+            out, n, "fw/test-runner/test-runner" + t["ext"]))
+            for n, t in TARGETS.items()]
+        if _python(self, ["qemu/harness.py", "run", "--junit-dir",
+                          os.path.join(out, "reports")] + images) != 0:
+            self.fatal("test suites failed")
