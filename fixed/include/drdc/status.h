@@ -11,23 +11,51 @@
  * @defgroup drdc_status Status codes
  *
  * Every function that can fail returns a drdc_status_t and writes its
- * results through pointers. On any status other than DRDC_OK the outputs
- * are left unchanged unless the function's documentation says otherwise.
- * No error is ever encoded inside a valid result.
+ * results through pointers. Errors (DRDC_E_*) leave every output unchanged
+ * unless the function's documentation says otherwise. Warnings (DRDC_W_*)
+ * write the outputs and tell the caller something about them; test them
+ * with drdc_status_is_error(). No error is ever encoded inside a valid
+ * result. Values are stable: new codes are only ever appended.
  * @{
  */
 
 /** Outcome of a library call. Zero is success; every other value names
  *  one kind of failure so firmware can tell them apart. */
 typedef enum drdc_status {
-  DRDC_OK = 0,            /**< success, outputs written */
-  DRDC_E_NULL = 1,        /**< a required pointer argument is NULL */
-  DRDC_E_RANGE = 2,       /**< an input lies outside the documented domain */
-  DRDC_E_OVERFLOW = 3,    /**< the result does not fit the output format */
-  DRDC_E_YEAR = 4,        /**< year outside DRDC_YEAR_MIN..DRDC_YEAR_MAX */
-  DRDC_E_MONTH = 5,       /**< month outside 1..12 */
-  DRDC_E_DAY = 6,         /**< day outside 1..days in that month */
-  DRDC_STATUS_COUNT = 7   /**< number of status codes (not a status) */
+  DRDC_OK = 0, /**< success, outputs written */
+  DRDC_E_NULL = 1, /**< a required pointer argument is NULL */
+  DRDC_E_RANGE = 2, /**< an input lies outside the documented domain */
+  DRDC_E_OVERFLOW = 3, /**< the result does not fit the output format */
+  /** a mathematical domain error (sqrt of a negative, asin beyond 1, atanh at
+   *  +-1, atan2(0, 0)) */
+  DRDC_E_DOMAIN = 4,
+  DRDC_E_DIVIDE_BY_ZERO = 5, /**< a divisor is zero */
+  DRDC_E_YEAR = 6, /**< year outside DRDC_YEAR_MIN..DRDC_YEAR_MAX */
+  DRDC_E_MONTH = 7, /**< month outside 1..12 */
+  DRDC_E_DAY = 8, /**< day outside 1..days in that month */
+  DRDC_E_HOUR = 9, /**< hour outside 0..23 */
+  DRDC_E_MINUTE = 10, /**< minute outside 0..59 */
+  /** second outside 0..59, or 60 on a day without a leap second */
+  DRDC_E_SECOND = 11,
+  /** nanoseconds outside 0..999 999 999 (or the leap-second range) */
+  DRDC_E_NANOSECOND = 12,
+  DRDC_E_WEEK = 13, /**< GPS week negative or beyond the supported range */
+  DRDC_E_TIME_OF_WEEK = 14, /**< GPS time of week negative or >= 604 800 s */
+  /** RTEMS ticks outside 0..ticks per second - 1, or a bad ticks-per-second */
+  DRDC_E_TICKS = 15,
+  /** a leap-second table or GPS UTC parameters are malformed */
+  DRDC_E_LEAP_TABLE = 16,
+  DRDC_E_SYNTAX = 17, /**< malformed text */
+  /** well-formed text followed by unexpected characters */
+  DRDC_E_TRAILING = 18,
+  DRDC_E_BUFFER = 19, /**< an output buffer is too short; nothing was written */
+  /** warning: the instant lies past the leap-second table's expiry; the last
+   *  known offset was used and the outputs ARE written */
+  DRDC_W_LEAP_EXPIRED = 20,
+  /** warning: the result was clamped to the output format's limit by a
+   *  function whose name ends in _sat; the outputs ARE written */
+  DRDC_W_SATURATED = 21,
+  DRDC_STATUS_COUNT = 22 /**< number of status codes (not a status) */
 } drdc_status_t;
 
 /**
@@ -37,6 +65,11 @@ typedef enum drdc_status {
  * @return a static, NUL-terminated string; never NULL.
  */
 const char *drdc_status_name(drdc_status_t status);
+
+/** Whether `status` is an error (outputs unchanged), as opposed to
+ *  DRDC_OK or a DRDC_W_* warning (outputs written). */
+#define drdc_status_is_error(status) \
+  (((status) != DRDC_OK) && ((status) < DRDC_W_LEAP_EXPIRED))
 
 /** @} */
 
