@@ -3,7 +3,9 @@
 
   ./waf demo    set up, build the default target, run the demo under QEMU
   ./waf check   build every target and run every check and test suite
-  ./waf build_<target>, clean_<target>   one target only
+  ./waf build_<target>, clean_<target>, install_<target>   one target only
+  ./waf install  every configured RTEMS BSP into its prefix (tools/waf_rtems.py),
+                 or, without RTEMS, the host target into --prefix
 """
 import glob
 import logging
@@ -86,13 +88,44 @@ SELFTEST_KINDS = {"pass": 1, "fail": 2, "hang": 3, "crash": 4,
                   "flood": 5, "fake-summary": 6, "silent": 7}
 
 
+def _tools_module(name):
+    tools = os.path.join(os.path.dirname(Context.g_module.root_path), "tools")
+    if tools not in sys.path:
+        sys.path.insert(0, tools)
+    return __import__(name)
+
+
 def options(opt):
     opt.load("compiler_c")
+    _tools_module("waf_rtems").options(opt)
+
+
+def _register_variant_commands(names):
+    """build_<v>, clean_<v>, install_<v> for each variant name."""
+    for name in names:
+        for base in (Build.BuildContext, Build.CleanContext,
+                     Build.InstallContext):
+            cmd = base.__name__.replace("Context", "").lower() + "_" + name
+            type(base.__name__ + "_" + name, (base,),
+                 {"cmd": cmd, "variant": name})
+
+
+def init(ctx):
+    # RTEMS BSP variants exist only once configured: register their
+    # commands from the configuration cache (as rtems_waf does).
+    from waflib import ConfigSet
+    try:
+        lock = ConfigSet.ConfigSet(Options.lockfile)
+        cache = ConfigSet.ConfigSet(os.path.join(lock.out_dir, "c4che",
+                                                 "_cache.py"))
+    except (EnvironmentError, AttributeError):
+        return
+    _register_variant_commands(cache.RTEMS_VARIANTS or [])
 
 
 def configure(conf):
-    sys.path.insert(0, conf.path.find_dir("tools").abspath())
-    import deps
+    deps = _tools_module("deps")
+    prefix = os.path.abspath(conf.options.prefix)
     try:
         found = deps.ensure_all()
     except deps.SetupError as e:
@@ -119,29 +152,48 @@ def configure(conf):
         conf.env.UNITY = found["unity"]
         conf.env.LIBFIXMATH = found["libfixmath"]
         conf.env.PYTHONPATH = found["python"]
+        conf.env.PREFIX = prefix
+        conf.env.LIBDIR = os.path.join(prefix, "lib")
+        conf.env.INCLUDEDIR = os.path.join(prefix, "include")
+        conf.env.BINDIR = os.path.join(prefix, "bin")
         conf.check_cc(fragment="int main(void) { return 0; }\n",
                       features="c", cflags=t["arch"],
                       msg="Checking that %s compiles" % name)
+    conf.setenv("")
+    conf.env.RTEMS_VARIANTS = _tools_module("waf_rtems").configure(
+        conf, CODEGEN)
 
 
 def _glob(bld, pattern):
     return bld.path.ant_glob(pattern)
 
 
+def build_library(bld, cflags):
+    """libdrdc.a, its headers and drdc.pc, installed under the variant's
+    LIBDIR and INCLUDEDIR."""
+    bld.stlib(source=_glob(bld, "fixed/**/*.c") + _glob(bld, "core/**/*.c"),
+              target="drdc", name="libdrdc", cflags=cflags,
+              includes=["fixed/include", "core/include"],
+              export_includes=["fixed/include", "core/include"],
+              install_path="${LIBDIR}")
+    bld.install_files("${INCLUDEDIR}/drdc",
+                      _glob(bld, "fixed/include/drdc/*.h")
+                      + _glob(bld, "core/include/drdc/*.h"))
+    bld(features="subst", source="tools/drdc.pc.in", target="drdc.pc",
+        install_path="${LIBDIR}/pkgconfig", VERSION=VERSION)
+
+
 def build(bld):
     if not bld.variant:
         bld.fatal("choose a target: ./waf build_<target> with target in %s, "
                   "or ./waf check" % ", ".join(TARGETS))
-    t = TARGETS[bld.variant]
     arch = bld.env.ARCH
     ours = arch + CODEGEN + WARNINGS
     theirs = arch + CODEGEN + ["-w"]
-
-    # The library: fixed-point arithmetic and the data standard.
-    bld.stlib(source=_glob(bld, "fixed/**/*.c") + _glob(bld, "core/**/*.c"),
-              target="drdc", name="libdrdc", cflags=ours,
-              includes=["fixed/include", "core/include"],
-              export_includes=["fixed/include", "core/include"])
+    build_library(bld, ours)
+    if bld.env.RTEMS_BSP:
+        return  # an RTEMS BSP gets the library; its applications link it
+    t = TARGETS[bld.variant]
 
     # Third-party parts, from the pinned sources in .deps/.
     unity = bld.root.find_dir(bld.env.UNITY)
@@ -154,6 +206,7 @@ def build(bld):
     bld.stlib(source=fixmath.ant_glob("fix16*.c fract32.c uint32.c",
                                       excl=["fix16_fft.c"]),
               target="fixmath", cflags=theirs, includes=[fixmath],
+              install_path=None,
               export_includes=[fixmath])
 
     # The board.
@@ -164,15 +217,23 @@ def build(bld):
 
     def image(name, source, use, **kw):
         node = bld.path.find_or_declare(name + t["ext"])
-        bld.program(source=source, target=name + t["ext"], use=use,
-                    cflags=ours, **kw)
+        tg = bld.program(source=source, target=name + t["ext"], use=use,
+                         cflags=ours, install_path=None, **kw)
         ldscript = bld.path.find_node("bsp/%s/link.ld" % t["bsp"])
         if ldscript:
             bld.add_manual_dependency(node, ldscript)
+        return tg
 
-    image("fw/test-runner/test-runner",
-          ["fw/test-runner/main.c"] + _glob(bld, "tests/**/test_*.c"),
-          "libdrdc unity bsp", includes=["tests"])
+    runner = image("fw/test-runner/test-runner",
+                   ["fw/test-runner/main.c"] + _glob(bld, "tests/**/test_*.c"),
+                   "libdrdc unity bsp", includes=["tests"])
+    # The runner's object files, one path a line, so the same image can be
+    # linked against an installed libdrdc.a (tools/rtems_standin.py).
+    runner.post()
+    bld(rule=lambda task: task.outputs[0].write(
+            "".join(n.abspath() + "\n" for n in task.inputs)),
+        source=list(runner.link_task.inputs),
+        target="fw/test-runner/objects.txt")
     image("fw/demo/demo", _glob(bld, "fw/demo/*.c"), "libdrdc bsp")
     for kind, number in SELFTEST_KINDS.items():
         image("qemu/selftest-" + kind, ["qemu/selftest.c"], "unity bsp",
@@ -182,10 +243,10 @@ def build(bld):
     # Objects that must fail the integer-only check (proof that it bites).
     if t["intcheck"]:
         bld.stlib(source=["tests/intcheck/float_bait.c"], target="bait-soft",
-                  cflags=arch + CODEGEN + ["-w"], idx=1)
+                  cflags=arch + CODEGEN + ["-w"], idx=1, install_path=None)
         if t["hard_float"]:
             bld.stlib(source=["tests/intcheck/float_bait.c"],
-                      target="bait-hard", idx=2,
+                      target="bait-hard", idx=2, install_path=None,
                       cflags=[f for f in arch if "float" not in f]
                       + t["hard_float"] + CODEGEN + ["-w"])
 
@@ -194,13 +255,20 @@ def build(bld):
                     use="libdrdc", cflags=ours)
 
 
-# One build and one clean command per target: build_host, build_ppc-e500...
-for _name in TARGETS:
-    for _base in (Build.BuildContext, Build.CleanContext):
-        type(_base.__name__ + "_" + _name, (_base,), {
-            "cmd": _base.__name__.replace("Context", "").lower() + "_" + _name,
-            "variant": _name,
-        })
+# build_<target>, clean_<target>, install_<target> for every target.
+_register_variant_commands(TARGETS)
+
+
+class InstallAll(Build.InstallContext):
+    """install every configured RTEMS BSP, or else the host target"""
+    cmd = "install"
+
+    def execute(self):
+        self.restore()
+        if not self.all_envs:
+            self.load_envs()
+        Options.commands[:0] = ["install_" + v for v in
+                                (self.all_envs[""].RTEMS_VARIANTS or ["host"])]
 
 
 def _build_all_then(then, targets):
@@ -258,6 +326,8 @@ class RunChecks(Build.BuildContext):
             ("QEMU harness judges its own test images",
              ["-m", "unittest", "-q", "qemu.test_harness"]),
             ("host tool drdc", ["-m", "unittest", "-q", "tools.test_drdc"]),
+            ("RTEMS build path through a stand-in prefix",
+             ["-m", "unittest", "-q", "tools.test_rtems"]),
         ]
         for title, args in steps:
             Logs.pprint("CYAN", "== " + title)
@@ -267,6 +337,10 @@ class RunChecks(Build.BuildContext):
         images = ["%s=%s:%s" % (n, t["qemu"], os.path.join(
             out, n, "fw/test-runner/test-runner" + t["ext"]))
             for n, t in TARGETS.items()]
+        # the ppc-e500 runner linked against the library installed into
+        # the stand-in RTEMS BSP prefix (tools/rtems_standin.py)
+        images.append("rtems-standin=ppc-e500:" + os.path.join(
+            out, "rtems-standin", "test-runner.elf"))
         failed = _python(self, ["qemu/harness.py", "run", "--junit-dir",
                                 os.path.join(out, "reports")] + images)
         if failed:

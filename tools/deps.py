@@ -28,6 +28,8 @@ APT_PACKAGES = {
     "libnewlib-arm-none-eabi": "3.3.0-1.3+deb12u1",
     "qemu-system-ppc": "1:7.2+dfsg-7+deb12u18+b3",
     "qemu-system-arm": "1:7.2+dfsg-7+deb12u18+b3",
+    # pkg-config: reads RTEMS BSP flags, checks the installed drdc.pc
+    "pkgconf": "1.8.1-1",
 }
 
 # Debian source packages whose upstream tarball we unpack. The checksum is

@@ -71,9 +71,12 @@ _start:
   ori   1, 1, __stack_top@l
   li    0, 0
   stwu  0, -16(1)
-  /* No small-data anchors: the code is built with -msdata=none. */
-  li    2, 0
-  li    13, 0
+  /* Small-data anchors (see link.ld): unused by code built with
+   * -msdata=none, needed by libraries built with a BSP's -msdata. */
+  lis   13, _SDA_BASE_@ha
+  addi  13, 13, _SDA_BASE_@l
+  lis   2, _SDA2_BASE_@ha
+  addi  2, 2, _SDA2_BASE_@l
 
   /* Clear .bss word by word (the linker script aligns both ends to 4). */
   lis   3, __bss_start@h

@@ -1,0 +1,148 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-2-Clause
+"""Prove the RTEMS build path without RTEMS (run by ./waf check).
+
+RTEMS is in no package archive reachable here, so this makes a stand-in
+RTEMS 6 prefix: bin/powerpc-rtems6-* wrappers over Debian's PowerPC cross
+tools, share/rtems6/, and lib/pkgconfig/powerpc-rtems6-qoriq_e500.pc with
+that BSP's compiler flags. Then, exactly as an RTEMS user would:
+
+  ./waf configure --rtems=PREFIX --rtems-bsps=powerpc/qoriq_e500
+  ./waf install
+
+(in a build directory of its own), checks that the installed tree holds
+exactly libdrdc.a, the public headers and drdc.pc, that
+`pkg-config --cflags --libs drdc` works, and links the installed library
+into the bare-metal PowerPC test-runner image (objects of build/ppc-e500)
+(the objects listed in build/ppc-e500/fw/test-runner/objects.txt) as
+build/rtems-standin/test-runner.elf, which ./waf check then runs.
+
+What a real RTEMS run adds: the RTEMS compiler's own specs and start files
+(-qrtems), the BSP's libraries, and the test image under RTEMS itself.
+"""
+import glob
+import os
+import shutil
+import subprocess
+import sys
+
+TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+VERSION = "6"
+ARCH, BSP = "powerpc", "qoriq_e500"
+CROSS = "powerpc-linux-gnu-"
+# Compiler flags of RTEMS 6's powerpc/qoriq_e500 BSP configuration (e500
+# core, EABI, SVR4 small data, software floating point).
+BSP_CFLAGS = ("-mcpu=8540 -meabi -msdata=sysv -fno-common -msoft-float "
+              "-D__ppc_generic")
+
+GCC_WRAPPER = """#!/bin/sh
+# Stand-in for RTEMS {ver}'s {arch}-rtems{ver}-gcc, made by ./waf check:
+# Debian's cross compiler with the defaults of an RTEMS tool suite (no PIE,
+# no stack protector). -qrtems selects RTEMS start files, which a stand-in
+# does not have.
+for a do
+  shift
+  [ "$a" = -qrtems ] || set -- "$@" "$a"
+done
+exec {cross}gcc -fno-pic -fno-pie -fno-stack-protector "$@"
+"""
+TOOL_WRAPPER = """#!/bin/sh
+# Stand-in for RTEMS {ver}'s {arch}-rtems{ver}-{tool}, made by ./waf check.
+exec {cross}{tool} "$@"
+"""
+BSP_PC = """prefix={prefix}
+exec_prefix=${{prefix}}/{arch}-rtems{ver}
+includedir=${{exec_prefix}}/{bsp}/lib/include
+libdir=${{exec_prefix}}/{bsp}/lib
+
+Name: {arch}-rtems{ver}-{bsp}
+Version: {ver}
+Description: RTEMS BSP {arch}-rtems{ver}-{bsp} (stand-in made by libdrdc-fx's ./waf check)
+Libs: -L${{libdir}} -qrtems -B${{libdir}} -Wl,--gc-sections
+Cflags: {cflags} -isystem${{includedir}} -ffunction-sections -fdata-sections
+"""
+
+
+def make_prefix(prefix):
+    shutil.rmtree(prefix, ignore_errors=True)
+    os.makedirs(os.path.join(prefix, "bin"))
+    os.makedirs(os.path.join(prefix, "share", "rtems" + VERSION))
+    os.makedirs(os.path.join(prefix, "lib", "pkgconfig"))
+    os.makedirs(os.path.join(prefix, "%s-rtems%s" % (ARCH, VERSION), BSP, "lib", "include"))
+    kw = dict(ver=VERSION, arch=ARCH, cross=CROSS, bsp=BSP, prefix=prefix,
+              cflags=BSP_CFLAGS)
+    tools = {"gcc": GCC_WRAPPER.format(**kw)}
+    for tool in ("ar", "as", "ld", "nm", "objdump", "objcopy", "size", "ranlib"):
+        tools[tool] = TOOL_WRAPPER.format(tool=tool, **kw)
+    for tool, text in tools.items():
+        path = os.path.join(prefix, "bin", "%s-rtems%s-%s" % (ARCH, VERSION, tool))
+        with open(path, "w") as f:
+            f.write(text)
+        os.chmod(path, 0o755)
+    with open(os.path.join(prefix, "lib", "pkgconfig", "%s-rtems%s-%s.pc"
+                           % (ARCH, VERSION, BSP)), "w") as f:
+        f.write(BSP_PC.format(**kw))
+
+
+def waf(args, lock, out=None):
+    env = dict(os.environ, WAFLOCK=lock)
+    cmd = [sys.executable, os.path.join(TOP, "waf")] + args
+    if out:
+        cmd.append("--out=" + out)
+    print("rtems-standin: " + " ".join(args), flush=True)
+    subprocess.run(cmd, cwd=TOP, env=env, check=True, stdout=subprocess.DEVNULL)
+
+
+def installed_tree(bspdir):
+    return sorted(os.path.relpath(p, bspdir) for p in
+                  glob.glob(os.path.join(bspdir, "**"), recursive=True)
+                  if os.path.isfile(p))
+
+
+def main():
+    build = os.path.join(TOP, "build")
+    work = os.path.join(build, "rtems-standin")
+    prefix = os.path.join(work, "prefix")
+    make_prefix(prefix)
+    lock = ".lock-waf-rtems-standin"
+    waf(["configure", "--rtems=" + prefix, "--rtems-version=" + VERSION,
+         "--rtems-bsps=%s/%s" % (ARCH, BSP)], lock, out=os.path.join(work, "build"))
+    waf(["install"], lock)
+
+    bspdir = os.path.join(prefix, "%s-rtems%s" % (ARCH, VERSION), BSP, "lib")
+    headers = sorted(os.path.basename(h) for h in
+                     glob.glob(os.path.join(TOP, "fixed/include/drdc/*.h"))
+                     + glob.glob(os.path.join(TOP, "core/include/drdc/*.h")))
+    want = sorted(["libdrdc.a", "pkgconfig/drdc.pc"]
+                  + ["include/drdc/" + h for h in headers])
+    got = installed_tree(bspdir)
+    if got != want:
+        sys.exit("rtems-standin: installed tree differs:\n  got  %s\n  want %s"
+                 % (got, want))
+    print("rtems-standin: installed %d files into %s" % (len(got), bspdir))
+
+    env = dict(os.environ, PKG_CONFIG_PATH=os.path.join(bspdir, "pkgconfig"))
+    flags = subprocess.run(["pkg-config", "--cflags", "--libs", "drdc"], env=env,
+                           check=True, capture_output=True, text=True).stdout.split()
+    print("rtems-standin: pkg-config --cflags --libs drdc: " + " ".join(flags))
+
+    # Link the installed library into the bare-metal test image.
+    ppc = os.path.join(build, "ppc-e500")
+    listing = os.path.join(ppc, "fw", "test-runner", "objects.txt")
+    if not os.path.exists(listing):
+        sys.exit("rtems-standin: %s missing: build ppc-e500 first" % listing)
+    with open(listing) as f:
+        objects = f.read().split()
+    image = os.path.join(work, "test-runner.elf")
+    link = ([CROSS + "gcc", "-mcpu=powerpc", "-msoft-float", "-nostdlib", "-static",
+             "-no-pie", "-Wl,--gc-sections", "-Wl,--build-id=none",
+             "-Wl,--no-warn-rwx-segments",
+             "-Wl,-T," + os.path.join(TOP, "bsp", "ppc-e500", "link.ld")]
+            + objects + [f for f in flags if not f.startswith("-I")]
+            + ["-lgcc", "-o", image])
+    subprocess.run(link, check=True)
+    print("rtems-standin: linked %s against the installed libdrdc.a" % image)
+
+
+if __name__ == "__main__":
+    main()
