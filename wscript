@@ -225,7 +225,8 @@ def build(bld):
         return tg
 
     runner = image("fw/test-runner/test-runner",
-                   ["fw/test-runner/main.c"] + _glob(bld, "tests/**/test_*.c"),
+                   ["fw/test-runner/main.c"] + _glob(bld, "tests/**/test_*.c")
+                   + _glob(bld, "tests/golden/golden*.c"),
                    "libdrdc unity bsp", includes=["tests"])
     # The runner's object files, one path a line, so the same image can be
     # linked against an installed libdrdc.a (tools/rtems_standin.py).

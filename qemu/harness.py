@@ -47,6 +47,8 @@ END_RE = re.compile(r"^\*\*\* END OF TEST (.+) \*\*\*$")
 # (earlier releases used another separator before the message).
 RESULT_RE = re.compile(r"^(?P<file>[^:]+):(?P<line>\d+):(?P<name>[A-Za-z_]\w*):"
                        r"(?P<result>PASS|FAIL|IGNORE)(?::(?P<message>.*))?$")
+# Conformance digest (tests/golden): every image of a run must agree.
+DIGEST_RE = re.compile(r"^\*\*\* GOLDEN DIGEST: (0x[0-9a-f]{8})$")
 SUMMARY_RE = re.compile(r"^(\d+) Tests (\d+) Failures (\d+) Ignored\s*$")
 # Lines that mean the program died: our boards' exception report and the
 # host sanitizers' reports.
@@ -69,6 +71,7 @@ class Verdict:
         self.console = ""
         self.exit_status = None
         self.seconds = 0.0
+        self.digest = None     # the conformance digest the image printed
 
     @property
     def passed(self):
@@ -155,6 +158,9 @@ def judge(profile, image, data, status, killed, label=None):
             begin = i
         elif END_RE.match(line):
             end = i
+        m = DIGEST_RE.match(line)
+        if m:
+            v.digest = m.group(1)
         m = RESULT_RE.match(line)
         if m and summary is None:
             v.results.append((m["file"], int(m["line"]), m["name"], m["result"],
@@ -223,6 +229,7 @@ def run_image(profile, image, inactivity=10.0, timeout=300.0, max_bytes=8 << 20,
 
 def cmd_run(args):
     passed = failed = 0
+    digests = {}  # digest -> names of the images that printed it
     if args.junit_dir:
         os.makedirs(args.junit_dir, exist_ok=True)
     for spec in args.images:
@@ -244,6 +251,15 @@ def cmd_run(args):
             "" if v.passed else "  (" + "; ".join(v.reasons) + ")"))
         passed += v.count("PASS")
         failed += v.test_failures
+        if v.digest:
+            digests.setdefault(v.digest, []).append(v.name)
+    if len(digests) > 1:
+        failed += 1
+        print("FAIL conformance digests differ between targets: %s" % "; ".join(
+            "%s on %s" % (d, ", ".join(names)) for d, names in sorted(digests.items())))
+    elif digests:
+        d, names = next(iter(digests.items()))
+        print("PASS conformance digest %s on all %d images" % (d, len(names)))
     print("%d passed, %d failed" % (passed, failed))
     return 0 if failed == 0 else 1
 

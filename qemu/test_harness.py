@@ -58,6 +58,11 @@ class JudgeRules(unittest.TestCase):
         v = self.judge(GOOD + b"x.c:3:5: runtime error: signed integer overflow\n")
         self.assertIn("crash", " ".join(v.reasons))
 
+    def test_conformance_digest_is_read(self):
+        v = self.judge(GOOD.replace(b"t.c:1:", b"*** GOLDEN DIGEST: 0x0123abcd\nt.c:1:"))
+        self.assertTrue(v.passed, v.reasons)
+        self.assertEqual("0x0123abcd", v.digest)
+
     def test_failed_test_counts_once(self):
         v = self.judge(GOOD.replace(b"test_b:PASS", b"test_b:FAIL: Expected 1 Was 2")
                        .replace(b"0 Failures", b"1 Failures").replace(b"\nOK\n", b"\nFAIL\n"),
