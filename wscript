@@ -324,6 +324,8 @@ class RunChecks(Build.BuildContext):
              ["tools/intcheck.py", "--build", out, "--all"]
              + ["%s:%s" % (n, t["intcheck"]) for n, t in TARGETS.items()
                 if t["intcheck"]]),
+            ("MISRA C:2012 of core/ and fixed/ (cppcheck)",
+             ["tools/misra.py"]),
             ("QEMU harness judges its own test images",
              ["-m", "unittest", "-q", "qemu.test_harness"]),
             ("host tool drdc", ["-m", "unittest", "-q", "tools.test_drdc"]),

@@ -30,6 +30,8 @@ APT_PACKAGES = {
     "qemu-system-arm": "1:7.2+dfsg-7+deb12u18+b3",
     # pkg-config: reads RTEMS BSP flags, checks the installed drdc.pc
     "pkgconf": "1.8.1-1",
+    # MISRA C:2012 addon (tools/misra.py)
+    "cppcheck": "2.10-2",
 }
 
 # Debian source packages whose upstream tarball we unpack. The checksum is

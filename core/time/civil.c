@@ -37,6 +37,7 @@ drdc_status_t drdc_time_days_from_civil(int32_t year, int32_t month,
                                         int32_t day, int32_t *days)
 {
   int32_t y;
+  int32_t month_from_march;
   int32_t era;
   int32_t year_of_era;
   int32_t day_of_year;
@@ -55,13 +56,19 @@ drdc_status_t drdc_time_days_from_civil(int32_t year, int32_t month,
     return DRDC_E_DAY;
   }
 
-  /* January and February belong to the previous March-based year.
-   * year >= 1 makes y >= 0, so the divisions below never see a negative. */
-  y = (month <= 2) ? (year - 1) : year;
+  /* January and February belong to the previous March-based year and are
+   * its months 10 and 11. year >= 1 makes y >= 0, so the divisions below
+   * never see a negative. */
+  if (month <= 2) {
+    y = year - 1;
+    month_from_march = month + 9;
+  } else {
+    y = year;
+    month_from_march = month - 3;
+  }
   era = y / 400;
   year_of_era = y - (era * 400);
-  day_of_year = ((153 * ((month > 2) ? (month - 3) : (month + 9))) + 2) / 5
-                + (day - 1);
+  day_of_year = ((((153 * month_from_march) + 2) / 5) + (day - 1));
   day_of_era = (year_of_era * 365) + (year_of_era / 4) - (year_of_era / 100)
                + day_of_year;
   *days = (era * DAYS_PER_400Y) + day_of_era - DAYS_0000_03_01_TO_EPOCH;
@@ -93,10 +100,17 @@ drdc_status_t drdc_time_civil_from_days(int32_t days, int32_t *year,
   day_of_year = day_of_era
                 - ((365 * year_of_era) + (year_of_era / 4) - (year_of_era / 100));
   mp = ((5 * day_of_year) + 2) / 153;  /* month from March, 0..11 */
-  m = (mp < 10) ? (mp + 3) : (mp - 9);
+  if (mp < 10) {
+    m = mp + 3;
+  } else {
+    m = mp - 9;
+  }
 
   if (year != NULL) {
-    *year = year_of_era + (era * 400) + ((m <= 2) ? 1 : 0);
+    *year = year_of_era + (era * 400);
+    if (m <= 2) {
+      *year += 1;  /* January and February end the March-based year */
+    }
   }
   if (month != NULL) {
     *month = m;
