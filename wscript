@@ -46,16 +46,20 @@ SANITIZE = ["-fsanitize=address,undefined", "-fno-sanitize-recover=all",
 #   hard_float flags that make a floating-point unit available: the
 #              integer-only check must catch the instructions they emit
 #   intcheck   instruction set of tools/intcheck.py, or None to skip
+#   soft_float_libm  the toolchain has soft-float double and a libm: the
+#              benchmark image times double-precision baselines
 TARGETS = {
     "host": {
         "cross": "", "bsp": "host", "qemu": "host", "ext": "",
         "arch": ["-D_POSIX_C_SOURCE=200809L"],
         "link": [], "libs": [], "hard_float": [], "intcheck": "x86-64",
+        "soft_float_libm": False,
     },
     "host-asan": {
         "cross": "", "bsp": "host", "qemu": "host", "ext": "",
         "arch": ["-D_POSIX_C_SOURCE=200809L"] + SANITIZE,
         "link": SANITIZE, "libs": [], "hard_float": None, "intcheck": None,
+        "soft_float_libm": False,
     },
     "ppc-e500": {
         "cross": "powerpc-linux-gnu-", "bsp": "ppc-e500", "qemu": "ppc-e500",
@@ -67,6 +71,8 @@ TARGETS = {
         # libgcc: 64-bit integer division (__udivdi3, __divdi3)
         "libs": ["gcc"],
         "hard_float": ["-mhard-float"], "intcheck": "ppc",
+        # Debian's PowerPC libgcc is hard-float: no soft-float routines
+        "soft_float_libm": False,
     },
     "arm-cm3": {
         "cross": "arm-none-eabi-", "bsp": "arm-cm3", "qemu": "arm-cm3",
@@ -79,6 +85,7 @@ TARGETS = {
         "hard_float": ["-mcpu=cortex-m4", "-mfpu=fpv4-sp-d16",
                        "-mfloat-abi=hard"],
         "intcheck": "arm",
+        "soft_float_libm": True,
     },
 }
 
@@ -170,9 +177,11 @@ def _glob(bld, pattern):
 
 def build_library(bld, cflags):
     """libdrdc.a, its headers and drdc.pc, installed under the variant's
-    LIBDIR and INCLUDEDIR."""
+    LIBDIR and INCLUDEDIR. Each object gets a call graph with stack usage
+    (.ci) for the footprint report (tools/footprint.py)."""
     bld.stlib(source=_glob(bld, "fixed/**/*.c") + _glob(bld, "core/**/*.c"),
-              target="drdc", name="libdrdc", cflags=cflags,
+              target="drdc", name="libdrdc",
+              cflags=cflags + ["-fcallgraph-info=su"],
               includes=["fixed/include", "core/include"],
               export_includes=["fixed/include", "core/include"],
               install_path="${LIBDIR}")
@@ -207,7 +216,9 @@ def build(bld):
                                       excl=["fix16_fft.c"]),
               target="fixmath", cflags=theirs, includes=[fixmath],
               install_path=None,
-              export_includes=[fixmath])
+              # no 32-80 KiB result caches: no global state, like ours
+              defines=["FIXMATH_NO_CACHE"],
+              export_defines=["FIXMATH_NO_CACHE"])
 
     # The board.
     bld.objects(source=["bsp/console.c"] + _glob(bld, "bsp/%s/*.c" % t["bsp"])
@@ -218,7 +229,8 @@ def build(bld):
     def image(name, source, use, **kw):
         node = bld.path.find_or_declare(name + t["ext"])
         tg = bld.program(source=source, target=name + t["ext"], use=use,
-                         cflags=ours, install_path=None, **kw)
+                         cflags=ours + kw.pop("extra_cflags", []),
+                         install_path=None, **kw)
         ldscript = bld.path.find_node("bsp/%s/link.ld" % t["bsp"])
         if ldscript:
             bld.add_manual_dependency(node, ldscript)
@@ -236,6 +248,14 @@ def build(bld):
         source=list(runner.link_task.inputs),
         target="fw/test-runner/objects.txt")
     image("fw/demo/demo", _glob(bld, "fw/demo/*.c"), "libdrdc bsp")
+    if t["qemu"] != "host":
+        # soft-float double baselines where the toolchain has soft-float
+        image("fw/bench/bench", _glob(bld, "fw/bench/*.c"),
+              "libdrdc bsp fixmath",
+              defines=["BENCH_DOUBLE=%d" % bool(t["soft_float_libm"])],
+              lib=t["libs"] + (["m"] if t["soft_float_libm"] else []),
+              # third-party header: its warnings are not ours to fix
+              extra_cflags=["-isystem", fixmath.abspath()])
     for kind, number in SELFTEST_KINDS.items():
         image("qemu/selftest-" + kind, ["qemu/selftest.c"], "unity bsp",
               defines=["SELFTEST_KIND=%d" % number],
@@ -286,6 +306,15 @@ def demo(ctx):
     _build_all_then("run_demo", [DEFAULT_TARGET])
 
 
+# Targets with a deterministic counter under QEMU -icount (tools/bench.py).
+BENCH_TARGETS = ["ppc-e500", "arm-cm3"]
+
+
+def bench(ctx):
+    """benchmark and footprint: build/bench/report.json, docs/performance.*"""
+    _build_all_then("run_bench", BENCH_TARGETS)
+
+
 def _python(ctx, args, **kw):
     env = dict(os.environ)
     env["PYTHONPATH"] = ctx.env.PYTHONPATH or ""
@@ -308,6 +337,21 @@ class RunDemo(Build.BuildContext):
             self.fatal("demo failed")
 
 
+class RunBench(Build.BuildContext):
+    """(internal) run the benchmark images and write the reports"""
+    cmd = "run_bench"
+    variant = "host"
+
+    def execute(self):
+        self.restore()
+        if not self.all_envs:
+            self.load_envs()
+        if _python(self, ["tools/bench.py", "--build", out, "--out",
+                          os.path.join(out, "bench", "report.json"),
+                          "--docs", "docs"]) != 0:
+            self.fatal("benchmark failed")
+
+
 class RunChecks(Build.BuildContext):
     """(internal) run the checks and the Unity suites of every target"""
     cmd = "run_checks"
@@ -326,9 +370,13 @@ class RunChecks(Build.BuildContext):
                 if t["intcheck"]]),
             ("MISRA C:2012 of core/ and fixed/ (cppcheck)",
              ["tools/misra.py"]),
+            ("cycles and flash within 5 % of docs/performance.json",
+             ["tools/bench.py", "--build", out, "--check",
+              "docs/performance.json"]),
             ("QEMU harness judges its own test images",
              ["-m", "unittest", "-q", "qemu.test_harness"]),
-            ("host tool drdc", ["-m", "unittest", "-q", "tools.test_drdc"]),
+            ("host tool drdc and the benchmark guard",
+             ["-m", "unittest", "-q", "tools.test_drdc", "tools.test_bench"]),
             ("RTEMS build path through a stand-in prefix",
              ["-m", "unittest", "-q", "tools.test_rtems"]),
         ]

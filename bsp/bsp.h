@@ -24,6 +24,26 @@ void bsp_puts(const char *s);
  *  status out (ppc-e500), the console carries the verdict. Never returns. */
 void bsp_exit(int status) __attribute__((__noreturn__));
 
+/** Start the board's free-running tick counter (benchmarks only). */
+void bsp_ticks_start(void);
+
+/** Ticks of the counter, increasing modulo bsp_ticks_mask + 1: the
+ *  time base on ppc-e500, SysTick at the core clock on arm-cm3. Under QEMU
+ *  -icount shift=0 the count follows executed instructions, so it repeats
+ *  exactly from run to run; tools/bench.py converts ticks to instructions
+ *  with bsp_spin(). Subtract two readings modulo the mask. */
+uint32_t bsp_ticks(void);
+
+/** Width of bsp_ticks(): the largest difference it can measure. */
+extern const uint32_t bsp_ticks_mask;
+
+/** Execute exactly bsp_spin_insns_per_iteration * n instructions in a
+ *  loop (plus a fixed entry and exit), to calibrate ticks to instructions. */
+void bsp_spin(uint32_t n);
+
+/** Instructions per iteration of bsp_spin(). */
+extern const uint32_t bsp_spin_insns_per_iteration;
+
 /** Prefix of the line a board prints when the CPU takes an exception; the
  *  QEMU harness judges any image that prints it as crashed. */
 #define BSP_EXCEPTION_MARKER "*** EXCEPTION: "

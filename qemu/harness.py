@@ -91,14 +91,16 @@ class Verdict:
         return self.count("FAIL") + (1 if extra else 0)
 
 
-def boot(profile, image, inactivity, timeout, max_bytes, echo=None):
-    """Run an image; return (console bytes, exit status or None, why killed)."""
+def boot(profile, image, inactivity, timeout, max_bytes, echo=None, extra=()):
+    """Run an image; return (console bytes, exit status or None, why killed).
+    `extra` arguments go to QEMU (e.g. -icount shift=0 for benchmarks)."""
     if profile not in PROFILES:
         raise SystemExit("harness: unknown profile %r (have %s)"
                          % (profile, ", ".join(PROFILES)))
     if not os.path.exists(image):
         return b"", None, "image not found: %s" % image
     cmd = [a.format(image=os.path.abspath(image)) for a in PROFILES[profile]]
+    cmd[1:1] = list(extra)
     proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, start_new_session=True)
     fd = proc.stdout.fileno()

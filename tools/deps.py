@@ -56,6 +56,29 @@ SOURCES = {
 PYTHON_PACKAGES = {
     "mpmath==1.3.0":
         "a0b2b9fe80bbcd81a6647ff13108738cfb482d481d826cc0e02f5b35e5c88d2c",
+    "numpy==2.4.6":
+        "89cd468399cfd2504718f0ba50e410dca55a170b61a02ad92bb18c8a65186e93",
+    # the benchmark chart (tools/bench.py) and its dependencies
+    "matplotlib==3.11.2":
+        "07d9b9fa60cd4c393692f50d0bb03123242ddf61c99bb0e95e75feb354e7c1a8",
+    "contourpy==1.3.3":
+        "51e79c1f7470158e838808d4a996fa9bac72c498e93d8ebe5119bc1e6becb0db",
+    "cycler==0.12.1":
+        "85cef7cff222d8644161529808465972e51340599459b8ac3ccbac5a854e0d30",
+    "fonttools==4.68.0":
+        "4b9c89b5876f1a74b1341632dfaf4c4c2be565d76c060445df401ebe7a4ceefa",
+    "kiwisolver==1.5.1":
+        "95a02752aa032eef4aed01cda6d9b687c669bd0396bf4519eef8bba22a286720",
+    "packaging==26.3":
+        "d7193f7c8e4e93f444fde0262bf90af30e16fa0ad0ad44cb553c87339b23cd1c",
+    "pillow==13.0.0":
+        "a625df9a2a5597fa5e5266e01aefc82604bb85d291e3547981e863560d75da6c",
+    "pyparsing==3.3.3":
+        "ece8c00a69cf01b45d0b1dedabb469c90d8caf996d4fda40f147627a122849a4",
+    "python-dateutil==4.0.0":
+        "a5e246f79eb80475e691bf93862cead98decd8a498cf53ba0516fcdc0f50dc1c",
+    "tzdata==2026.6":
+        "0a10eec6e13ef16b627fabed9a5f2ba61a62b1c67f327305f4e7e412a70b4aec",
 }
 
 DEB_SRC_LIST = "/etc/apt/sources.list.d/drdc-deb-src.sources"

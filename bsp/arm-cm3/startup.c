@@ -134,3 +134,38 @@ static const vector_t vectors[16 + 48] = {
   [15] = fault_entry, /* SysTick */
   [16 ... 63] = fault_entry,
 };
+
+/* Benchmark counter: SysTick, a 24-bit down-counter at the core clock. */
+#define SYST_CSR (*(volatile uint32_t *)0xE000E010u)
+#define SYST_RVR (*(volatile uint32_t *)0xE000E014u)
+#define SYST_CVR (*(volatile uint32_t *)0xE000E018u)
+#define SYST_CSR_ENABLE_CORE_CLOCK 5u /* ENABLE | CLKSOURCE, no interrupt */
+
+const uint32_t bsp_spin_insns_per_iteration = 2u;
+const uint32_t bsp_ticks_mask = 0xFFFFFFu;
+
+void bsp_ticks_start(void)
+{
+  SYST_RVR = bsp_ticks_mask;
+  SYST_CVR = 0u;
+  SYST_CSR = SYST_CSR_ENABLE_CORE_CLOCK;
+}
+
+uint32_t bsp_ticks(void)
+{
+  /* counts down: invert so that the count increases */
+  return bsp_ticks_mask - SYST_CVR;
+}
+
+/* Two instructions per iteration: subs and bne. */
+void bsp_spin(uint32_t n)
+{
+  if (n == 0u) {
+    return;
+  }
+  __asm__ volatile("1: subs %0, %0, #1\n"
+                   "bne 1b\n"
+                   : "+r"(n)
+                   :
+                   : "cc");
+}

@@ -63,3 +63,25 @@ __attribute__((__constructor__)) static void host_board_init(void)
   (void)on_fatal_signal;
 #endif
 }
+
+/* The host has no deterministic counter; benchmarks run on the QEMU boards
+ * only. These keep the interface complete. */
+const uint32_t bsp_spin_insns_per_iteration = 1u;
+const uint32_t bsp_ticks_mask = 0xFFFFFFFFu;
+
+void bsp_ticks_start(void)
+{
+}
+
+uint32_t bsp_ticks(void)
+{
+  return 0u;
+}
+
+void bsp_spin(uint32_t n)
+{
+  volatile uint32_t i;
+
+  for (i = 0u; i < n; i++) {
+  }
+}

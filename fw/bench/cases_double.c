@@ -1,0 +1,88 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @brief Baselines in double precision: the same algorithms as the library,
+ *        as an engineer would write them, compiled with soft-float and
+ *        newlib's libm (arm-cm3 only: Debian's PowerPC libgcc has no
+ *        soft-float routines). Never linked into the library.
+ */
+#include "bench.h"
+
+#if BENCH_DOUBLE
+#include <math.h>
+
+/* Results land here: a double sink, since converting an out-of-range
+ * double to an integer would be undefined behaviour. */
+static volatile double sink;
+
+#define BENCH_LOOP_DOUBLE(fn, expr)                                            \
+  static void fn(uint32_t calls)                                               \
+  {                                                                            \
+    uint32_t i;                                                                \
+    double acc = 0.0;                                                          \
+    for (i = 0u; i < calls; i++) {                                             \
+      uint32_t x = bench_u32[i % BENCH_INPUTS];                                \
+      acc += (expr);                                                           \
+    }                                                                          \
+    sink = acc;                                                                \
+  }
+
+/* The calendar algorithm of core/time/civil.c with doubles and floor(). */
+static double days_from_civil(double year, double month, double day)
+{
+  double y = (month <= 2.0) ? (year - 1.0) : year;
+  double era = floor(y / 400.0);
+  double yoe = y - (era * 400.0);
+  double mp = (month > 2.0) ? (month - 3.0) : (month + 9.0);
+  double doy = floor(((153.0 * mp) + 2.0) / 5.0) + day - 1.0;
+  double doe = (yoe * 365.0) + floor(yoe / 4.0) - floor(yoe / 100.0) + doy;
+
+  return (era * 146097.0) + doe - 719468.0;
+}
+
+static double civil_from_days(double days)
+{
+  double z = days + 719468.0;
+  double era = floor(z / 146097.0);
+  double doe = z - (era * 146097.0);
+  double yoe = floor((doe - floor(doe / 1460.0) + floor(doe / 36524.0)
+                      - floor(doe / 146096.0)) / 365.0);
+  double doy = doe - ((365.0 * yoe) + floor(yoe / 4.0) - floor(yoe / 100.0));
+  double mp = floor(((5.0 * doy) + 2.0) / 153.0);
+  double d = doy - floor(((153.0 * mp) + 2.0) / 5.0) + 1.0;
+  double m = (mp < 10.0) ? (mp + 3.0) : (mp - 9.0);
+
+  return (yoe + (era * 400.0) + ((m <= 2.0) ? 1.0 : 0.0)) + m + d;
+}
+
+static double angle(uint32_t x)
+{
+  return ((double)(x % 1000000u) / 1000000.0 - 0.5) * 6.283185307179586;
+}
+
+BENCH_LOOP_DOUBLE(run_days_from_civil,
+           days_from_civil(1900.0 + (double)(x % 200u), 1.0 + (double)((x >> 8) % 12u),
+                           1.0 + (double)((x >> 16) % 28u)))
+BENCH_LOOP_DOUBLE(run_civil_from_days, civil_from_days((double)(x % 73000u) - 25000.0))
+BENCH_LOOP_DOUBLE(run_sin, sin(angle(x)))
+BENCH_LOOP_DOUBLE(run_cos, cos(angle(x)))
+BENCH_LOOP_DOUBLE(run_atan2, atan2((double)(x & 0xFFFFu) - 32768.0,
+                            (double)(x >> 16) - 32768.0))
+BENCH_LOOP_DOUBLE(run_sqrt, sqrt((double)(x >> 1)))
+BENCH_LOOP_DOUBLE(run_mul, (double)(int32_t)x * (double)(int32_t)(x >> 7) / 65536.0)
+
+const bench_case_t bench_cases_double[] = {
+  { "days_from_civil", "double", "run_days_from_civil", run_days_from_civil },
+  { "civil_from_days", "double", "run_civil_from_days", run_civil_from_days },
+  { "sin", "double", "run_sin", run_sin },
+  { "cos", "double", "run_cos", run_cos },
+  { "atan2", "double", "run_atan2", run_atan2 },
+  { "sqrt", "double", "run_sqrt", run_sqrt },
+  { "mul_q15_16", "double", "run_mul", run_mul },
+  { 0, 0, 0, 0 },
+};
+#else
+const bench_case_t bench_cases_double[] = {
+  { 0, 0, 0, 0 },
+};
+#endif

@@ -1,0 +1,257 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-2-Clause
+"""Deterministic benchmarks and footprint of the library (./waf bench).
+
+Boots fw/bench on each QEMU target with -icount shift=0, where QEMU's
+virtual clock advances by exactly one nanosecond per executed instruction,
+so the board's tick counter (time base on ppc-e500, SysTick on arm-cm3)
+follows the instruction count and repeats run to run. The image prints raw
+ticks; this tool calibrates ticks to instructions with bsp_spin() (a loop
+of known instruction count), subtracts the measured loop overhead and
+reports instructions per call, which is QEMU's cycle model: one cycle per
+instruction. Real silicon adds wait states and pipeline effects; ratios
+between implementations on the same target are the meaningful figures.
+
+  bench.py --build build --out build/bench/report.json [--docs docs]
+  bench.py --build build --check docs/performance.json   (the guard)
+
+The guard fails when a function's cycles on a target grow more than 5 %
+over the committed report, or the library's flash (text + rodata + data)
+grows more than 5 %; regenerating the report (./waf bench) and committing
+it with the change that causes the growth is what makes it pass.
+"""
+import argparse
+import json
+import os
+import re
+import subprocess
+import sys
+
+TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, TOP)
+from qemu import harness  # noqa: E402
+from tools import footprint  # noqa: E402
+
+TARGETS = ("ppc-e500", "arm-cm3")
+GROWTH_LIMIT = 1.05
+
+CASE_RE = re.compile(r"^BENCH (\S+) (\S+) symbol=(\S+) calls=(\d+) ticks=(\d+)$")
+CAL_RE = re.compile(r"^BENCH-CALIBRATE iterations=(\d+) per_iteration=(\d+) ticks=(\d+)$")
+
+
+def run_target(build, target):
+    image = os.path.join(build, target, "fw", "bench", "bench.elf")
+    data, status, killed = harness.boot(target, image, inactivity=20, timeout=300,
+                                        max_bytes=1 << 20, extra=["-icount", "shift=0"])
+    text = data.decode("ascii", errors="replace").replace("\r", "")
+    if killed or "BENCH-DONE" not in text:
+        sys.exit("bench: %s did not finish (%s)\n%s" % (target, killed, text[-2000:]))
+    per_tick = None
+    raw = []
+    for line in text.splitlines():
+        m = CAL_RE.match(line)
+        if m:
+            iterations, per_iter, ticks = (int(x) for x in m.groups())
+            per_tick = iterations * per_iter / ticks
+        m = CASE_RE.match(line)
+        if m:
+            raw.append((m.group(1), m.group(2), m.group(3), int(m.group(4)), int(m.group(5))))
+    overhead = next(r for r in raw if r[0] == "overhead")
+    cases = {}
+    for impl, name, symbol, calls, ticks in raw:
+        if impl == "overhead":
+            continue
+        cycles = (ticks - overhead[4] * calls / overhead[3]) * per_tick / calls
+        cases[(impl, name)] = {"cycles": round(cycles, 1), "symbol": symbol}
+    return cases, per_tick
+
+
+def symbol_sizes(build, target):
+    image = os.path.join(build, target, "fw", "bench", "bench.elf")
+    out = subprocess.run([footprint.PREFIX[target] + "nm", "-S", image], check=True,
+                         capture_output=True, text=True).stdout
+    sizes = {}
+    for line in out.splitlines():
+        parts = line.split()
+        if len(parts) == 4:
+            sizes[parts[3]] = int(parts[1], 16)
+    return sizes
+
+
+def records(build):
+    out = []
+    calibration = {}
+    for target in TARGETS:
+        cases, per_tick = run_target(build, target)
+        calibration[target] = round(per_tick, 4)
+        sizes = symbol_sizes(build, target)
+        for (impl, name), c in sorted(cases.items()):
+            if impl != "drdc":
+                continue
+            rec = {"name": name, "target": target, "function": c["symbol"],
+                   "cycles": c["cycles"], "code_bytes": sizes.get(c["symbol"]),
+                   "baselines": []}
+            for base in ("double", "libfixmath"):
+                b = cases.get((base, name))
+                if b:
+                    rec["baselines"].append({
+                        "name": base, "function": b["symbol"], "cycles": b["cycles"],
+                        "ratio": round(b["cycles"] / c["cycles"], 2)})
+            first = rec["baselines"][0] if rec["baselines"] else None
+            rec["baseline"] = first["name"] if first else None
+            rec["baseline_cycles"] = first["cycles"] if first else None
+            rec["ratio"] = first["ratio"] if first else None
+            out.append(rec)
+        # baselines without a drdc counterpart yet: listed for reference
+        for (impl, name), c in sorted(cases.items()):
+            if impl != "drdc" and ("drdc", name) not in cases:
+                out.append({"name": name, "target": target, "function": None,
+                            "cycles": None, "code_bytes": None,
+                            "baselines": [{"name": impl, "function": c["symbol"],
+                                           "cycles": c["cycles"], "ratio": None}],
+                            "baseline": impl, "baseline_cycles": c["cycles"],
+                            "ratio": None})
+    return out, calibration
+
+
+def flash(fp):
+    lib = fp["library"]
+    return lib["text"] + lib["rodata"] + lib["data"]
+
+
+def write_docs(report, docs):
+    lines = ["# Performance and footprint", "",
+             "Generated by `./waf bench` (tools/bench.py); do not edit. Cycles are",
+             "instructions per call under QEMU `-icount shift=0` (one cycle per",
+             "instruction), after subtracting the loop overhead, over %d-call runs"
+             % 4096,
+             "on fixed inputs. Baselines: `double` is the same algorithm in double",
+             "precision with soft-float and newlib's libm (Cortex-M3 only: Debian's",
+             "PowerPC libgcc has no soft-float routines); `libfixmath` is Debian's",
+             "libfixmath 0~20220222 (Q16.16, FIXMATH_NO_CACHE). Ratio = baseline",
+             "cycles / our cycles (higher is better for us).", "",
+             "![cycles per call](performance.png)", "",
+             "| function | target | cycles | code bytes | baseline | baseline cycles | ratio |",
+             "|---|---|---:|---:|---|---:|---:|"]
+    for r in report["functions"]:
+        bases = r["baselines"] or [{"name": "-", "cycles": None, "ratio": None}]
+        for b in bases:
+            lines.append("| %s | %s | %s | %s | %s | %s | %s |" % (
+                r["function"] or "(%s)" % r["name"], r["target"],
+                "-" if r["cycles"] is None else "%.1f" % r["cycles"],
+                "-" if r["code_bytes"] is None else r["code_bytes"], b["name"],
+                "-" if b["cycles"] is None else "%.1f" % b["cycles"],
+                "-" if b["ratio"] is None else "%.1fx" % b["ratio"]))
+    lines += ["", "## Footprint of libdrdc.a", "",
+              "| target | module | .text | .rodata | .data | .bss |", "|---|---|---:|---:|---:|---:|"]
+    for target, fp in sorted(report["footprint"].items()):
+        for module, s in sorted(fp["modules"].items()) + [("**library**", fp["library"])]:
+            lines.append("| %s | %s | %d | %d | %d | %d |" % (
+                target, module, s["text"], s["rodata"], s["data"], s["bss"]))
+    lines += ["", "## Worst-case stack of each public function (bytes)", "",
+              "From GCC's call graphs (`-fcallgraph-info=su`): own frame plus the",
+              "deepest chain of library callees; libgcc helpers listed, not counted.", "",
+              "| function | " + " | ".join(sorted(report["footprint"])) + " | calls outside |",
+              "|---|" + "---:|" * len(report["footprint"]) + "---|"]
+    fns = sorted(set(f for fp in report["footprint"].values() for f in fp["stack"]))
+    for fn in fns:
+        cells, outside = [], set()
+        for target in sorted(report["footprint"]):
+            s = report["footprint"][target]["stack"].get(fn, {})
+            cells.append("-" if s.get("bytes") is None else str(s["bytes"]))
+            outside |= set(s.get("calls_outside", []))
+        lines.append("| %s | %s | %s |" % (fn, " | ".join(cells), ", ".join(sorted(outside))))
+    with open(os.path.join(docs, "performance.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    with open(os.path.join(docs, "performance.json"), "w") as f:
+        json.dump(report, f, indent=1, sort_keys=True)
+        f.write("\n")
+    chart(report, os.path.join(docs, "performance.png"))
+
+
+def chart(report, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    rows = [r for r in report["functions"] if r["cycles"] is not None]
+    fig, axes = plt.subplots(1, len(TARGETS), figsize=(12, 0.5 * max(4, len(rows)) + 1.5))
+    for ax, target in zip(axes, TARGETS):
+        mine = [r for r in rows if r["target"] == target]
+        labels = [r["name"] for r in mine]
+        y = range(len(mine))
+        ax.barh([i - 0.25 for i in y], [r["cycles"] for r in mine], height=0.25,
+                label="libdrdc-fx", color="#1f77b4")
+        for k, (base, colour) in enumerate((("libfixmath", "#ff7f0e"), ("double", "#7f7f7f"))):
+            vals = [next((b["cycles"] for b in r["baselines"] if b["name"] == base), 0)
+                    for r in mine]
+            if any(vals):
+                ax.barh([i + 0.25 * k for i in y], vals, height=0.25, label=base, color=colour)
+        ax.set_yticks(list(y))
+        ax.set_yticklabels(labels)
+        ax.set_xscale("log")
+        ax.set_xlim(left=1)
+        ax.set_xlabel("cycles per call (QEMU -icount, log scale)")
+        ax.set_title(target)
+        ax.invert_yaxis()
+        ax.legend(loc="lower right", fontsize="small")
+    fig.tight_layout()
+    fig.savefig(path, dpi=80, metadata={"Software": None})
+    plt.close(fig)
+
+
+def measure(build):
+    functions, calibration = records(build)
+    return {"functions": functions, "instructions_per_tick": calibration,
+            "footprint": {t: footprint.footprint(build, t) for t in TARGETS}}
+
+
+def check(report, committed_path):
+    with open(committed_path) as f:
+        old = json.load(f)
+    before = {(r["function"], r["target"]): r["cycles"] for r in old["functions"]
+              if r["cycles"] is not None}
+    bad = []
+    for r in report["functions"]:
+        prev = before.get((r["function"], r["target"]))
+        if prev and r["cycles"] > prev * GROWTH_LIMIT:
+            bad.append("%s on %s: %.1f cycles, committed %.1f (+%.0f %%)" % (
+                r["function"], r["target"], r["cycles"], prev, 100 * (r["cycles"] / prev - 1)))
+    for target, fp in report["footprint"].items():
+        prev = old["footprint"].get(target)
+        if prev and flash(fp) > flash(prev) * GROWTH_LIMIT:
+            bad.append("library flash on %s: %d bytes, committed %d" % (
+                target, flash(fp), flash(prev)))
+    for line in bad:
+        print("bench guard: " + line)
+    print("bench guard: %d function(s) and %d target(s) within 5 %% of %s"
+          % (len(report["functions"]), len(report["footprint"]), committed_path)
+          if not bad else "bench guard: regenerate with ./waf bench and commit the "
+          "report with the change that costs it")
+    return not bad
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--build", default="build")
+    ap.add_argument("--out", help="write the report JSON here")
+    ap.add_argument("--docs", help="write performance.md/.json/.png here")
+    ap.add_argument("--check", help="compare with this committed report")
+    args = ap.parse_args()
+    report = measure(args.build)
+    if args.out:
+        os.makedirs(os.path.dirname(args.out), exist_ok=True)
+        with open(args.out, "w") as f:
+            json.dump(report, f, indent=1, sort_keys=True)
+            f.write("\n")
+        print("bench: wrote " + args.out)
+    if args.docs:
+        write_docs(report, args.docs)
+        print("bench: wrote %s/performance.md, .json, .png" % args.docs)
+    if args.check:
+        return 0 if check(report, args.check) else 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,136 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-2-Clause
+"""Footprint of libdrdc.a per target: section sizes of the library and of
+each module (folder of core/ or fixed/), and the worst-case stack of every
+public function from GCC's call graphs (-fcallgraph-info=su, one .ci file
+per object, written by the library build).
+
+  footprint.py [--build build] TARGET...   print JSON {target: footprint}
+
+Worst-case stack of a function = its own frame + the deepest chain of
+callees inside the library. Calls out of the library (libgcc's integer
+helpers) are listed with the function; their frames are not counted, and a
+recursive chain is reported as such instead of a number.
+"""
+import argparse
+import glob
+import json
+import os
+import re
+import subprocess
+import sys
+
+PREFIX = {"host": "", "host-asan": "", "ppc-e500": "powerpc-linux-gnu-",
+          "arm-cm3": "arm-none-eabi-"}
+NODE = re.compile(r'node: \{ title: "([^"]+)" label: "([^"]*)"')
+EDGE = re.compile(r'edge: \{ sourcename: "([^"]+)" targetname: "([^"]+)"')
+STACK = re.compile(r"\\n(\d+) bytes \((static|dynamic|dynamic,bounded)\)")
+SECTIONS = ("text", "rodata", "data", "bss")
+
+
+def members(build, target):
+    """Library objects by archive member name, with their module folder."""
+    lib = os.path.join(build, target, "libdrdc.a")
+    names = subprocess.run([PREFIX[target] + "ar", "t", lib], check=True,
+                           capture_output=True, text=True).stdout.split()
+    found = {}
+    for top in ("core", "fixed"):
+        for path in glob.glob(os.path.join(build, target, top, "**", "*.o"),
+                              recursive=True):
+            name = os.path.basename(path)
+            if name in names:
+                module = os.path.relpath(os.path.dirname(path),
+                                         os.path.join(build, target))
+                found[name] = (path, module)
+    missing = sorted(set(names) - set(found))
+    if missing:
+        sys.exit("footprint: objects of %s not found: %s" % (lib, missing))
+    return found
+
+
+def section_sizes(target, path):
+    """Sizes of .text/.rodata/.data/.bss (with their subsections) of one object."""
+    sizes = dict.fromkeys(SECTIONS, 0)
+    out = subprocess.run([PREFIX[target] + "size", "-A", path], check=True,
+                         capture_output=True, text=True).stdout
+    for line in out.splitlines():
+        parts = line.split()
+        if len(parts) < 2 or not parts[1].isdigit():
+            continue
+        name = parts[0]
+        for sec in SECTIONS:
+            if name == "." + sec or name.startswith("." + sec + ".") or \
+                    (sec == "rodata" and name.startswith(".sdata2")) or \
+                    (sec == "data" and name.startswith(".sdata")) or \
+                    (sec == "bss" and name.startswith(".sbss")):
+                sizes[sec] += int(parts[1])
+                break
+    return sizes
+
+
+def call_graph(paths):
+    frames, edges = {}, {}
+    for ci in paths:
+        with open(ci) as f:
+            text = f.read()
+        for name, label in NODE.findall(text):
+            m = STACK.search(label)
+            if m:
+                frames[name] = int(m.group(1))
+        for src, dst in EDGE.findall(text):
+            edges.setdefault(src, set()).add(dst)
+    return frames, edges
+
+
+def worst_stack(fn, frames, edges, chain=()):
+    """(bytes, outside callees) of the deepest chain from fn."""
+    if fn in chain:
+        raise RecursionError(" -> ".join(chain + (fn,)))
+    own = frames[fn]
+    deepest, outside = 0, set()
+    for callee in sorted(edges.get(fn, ())):
+        if callee in frames:
+            depth, out = worst_stack(callee, frames, edges, chain + (fn,))
+            deepest = max(deepest, depth)
+            outside |= out
+        else:
+            outside.add(callee)
+    return own + deepest, outside
+
+
+def footprint(build, target):
+    objs = members(build, target)
+    library = dict.fromkeys(SECTIONS, 0)
+    modules = {}
+    for name, (path, module) in sorted(objs.items()):
+        sizes = section_sizes(target, path)
+        mod = modules.setdefault(module, dict.fromkeys(SECTIONS, 0))
+        for sec in SECTIONS:
+            mod[sec] += sizes[sec]
+            library[sec] += sizes[sec]
+    cis = [os.path.splitext(p)[0] + ".ci" for p, _ in objs.values()]
+    frames, edges = call_graph([c for c in cis if os.path.exists(c)])
+    public = sorted(f for f in frames if f.startswith("drdc_"))
+    stack = {}
+    for fn in public:
+        try:
+            depth, outside = worst_stack(fn, frames, edges)
+            stack[fn] = {"bytes": depth, "calls_outside": sorted(outside)}
+        except RecursionError as e:
+            stack[fn] = {"bytes": None, "recursion": str(e)}
+    return {"library": library, "modules": modules, "stack": stack}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--build", default="build")
+    ap.add_argument("targets", nargs="+")
+    args = ap.parse_args()
+    json.dump({t: footprint(args.build, t) for t in args.targets}, sys.stdout,
+              indent=1, sort_keys=True)
+    print()
+
+
+if __name__ == "__main__":
+    main()
