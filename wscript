@@ -37,6 +37,9 @@ SANITIZE = ["-fsanitize=address,undefined", "-fno-sanitize-recover=all",
 # The one table of targets. Adding a board: a folder bsp/<name>/ with its
 # start-up code, console and exit, plus one entry here.
 #   cross      tool prefix ("" for the native compiler)
+#   compiler   the C compiler without prefix (default gcc)
+#   images     firmware images and test runner (default True); False
+#              builds the library and the libFuzzer targets only
 #   bsp        folder under bsp/ with the board code
 #   qemu       machine profile of qemu/harness.py that runs the images
 #   arch       flags for compiling and assembling
@@ -60,6 +63,14 @@ TARGETS = {
         "arch": ["-D_POSIX_C_SOURCE=200809L"] + SANITIZE,
         "link": SANITIZE, "libs": [], "hard_float": None, "intcheck": None,
         "soft_float_libm": False,
+    },
+    "host-fuzz": {
+        "cross": "", "compiler": "clang-14", "bsp": "host", "qemu": None,
+        "ext": "", "images": False,
+        "arch": ["-fsanitize=fuzzer-no-link,address,undefined",
+                 "-fno-sanitize-recover=all", "-fno-omit-frame-pointer"],
+        "link": ["-fsanitize=fuzzer,address,undefined"], "libs": [],
+        "hard_float": None, "intcheck": None, "soft_float_libm": False,
     },
     "ppc-e500": {
         "cross": "powerpc-linux-gnu-", "bsp": "ppc-e500", "qemu": "ppc-e500",
@@ -105,6 +116,8 @@ def _tools_module(name):
 def options(opt):
     opt.load("compiler_c")
     _tools_module("waf_rtems").options(opt)
+    opt.add_option("--seconds", type="int", default=60, dest="fuzz_seconds",
+                   help="./waf fuzz: seconds per fuzzer (default 60)")
 
 
 def _register_variant_commands(names):
@@ -140,11 +153,12 @@ def configure(conf):
     for name, t in TARGETS.items():
         conf.setenv(name)
         conf.msg("Target", name)
-        for var, tool in (("CC", "gcc"), ("AR", "ar"), ("OBJDUMP", "objdump"),
+        compiler = t.get("compiler", "gcc")
+        for var, tool in (("CC", compiler), ("AR", "ar"), ("OBJDUMP", "objdump"),
                           ("NM", "nm"), ("SIZE", "size")):
             conf.find_program(t["cross"] + tool, var=var)
         conf.env.AS = conf.env.CC
-        conf.load("gcc gas")
+        conf.load(("clang" if compiler.startswith("clang") else "gcc") + " gas")
         if t["cross"]:
             # static images only: no -Bstatic/-Bdynamic switching
             conf.env.STLIB_MARKER = []
@@ -181,7 +195,8 @@ def build_library(bld, cflags):
     (.ci) for the footprint report (tools/footprint.py)."""
     bld.stlib(source=_glob(bld, "fixed/**/*.c") + _glob(bld, "core/**/*.c"),
               target="drdc", name="libdrdc",
-              cflags=cflags + ["-fcallgraph-info=su"],
+              cflags=cflags + (["-fcallgraph-info=su"]
+                               if bld.env.CC_NAME == "gcc" else []),
               includes=["fixed/include", "core/include"],
               export_includes=["fixed/include", "core/include"],
               install_path="${LIBDIR}")
@@ -203,6 +218,12 @@ def build(bld):
     if bld.env.RTEMS_BSP:
         return  # an RTEMS BSP gets the library; its applications link it
     t = TARGETS[bld.variant]
+    if not t.get("images", True):
+        # libFuzzer targets (tools/fuzz.py), one program per file
+        for src in _glob(bld, "tests/fuzz/fuzz_*.c"):
+            bld.program(source=[src], target="tests/fuzz/" + src.name[:-2],
+                        use="libdrdc", cflags=ours, install_path=None)
+        return
 
     # Third-party parts, from the pinned sources in .deps/.
     unity = bld.root.find_dir(bld.env.UNITY)
@@ -337,6 +358,25 @@ class RunDemo(Build.BuildContext):
             self.fatal("demo failed")
 
 
+def fuzz(ctx):
+    """run every libFuzzer target for --seconds each (tests/fuzz/)"""
+    _build_all_then("run_fuzz", ["host-fuzz"])
+
+
+class RunFuzz(Build.BuildContext):
+    """(internal) run the fuzzers"""
+    cmd = "run_fuzz"
+    variant = "host"
+
+    def execute(self):
+        self.restore()
+        if not self.all_envs:
+            self.load_envs()
+        if _python(self, ["tools/fuzz.py", "--build", out, "--seconds",
+                          str(Options.options.fuzz_seconds)]) != 0:
+            self.fatal("fuzzing found something")
+
+
 class RunBench(Build.BuildContext):
     """(internal) run the benchmark images and write the reports"""
     cmd = "run_bench"
@@ -368,6 +408,8 @@ class RunChecks(Build.BuildContext):
              ["tools/intcheck.py", "--build", out, "--all"]
              + ["%s:%s" % (n, t["intcheck"]) for n, t in TARGETS.items()
                 if t["intcheck"]]),
+            ("fuzz corpora replay without a finding",
+             ["tools/fuzz.py", "--build", out, "--replay"]),
             ("MISRA C:2012 of core/ and fixed/ (cppcheck)",
              ["tools/misra.py"]),
             ("cycles and flash within 5 % of docs/performance.json",
@@ -387,7 +429,7 @@ class RunChecks(Build.BuildContext):
         Logs.pprint("CYAN", "== Unity suites on every target")
         images = ["%s=%s:%s" % (n, t["qemu"], os.path.join(
             out, n, "fw/test-runner/test-runner" + t["ext"]))
-            for n, t in TARGETS.items()]
+            for n, t in TARGETS.items() if t.get("images", True)]
         # the ppc-e500 runner linked against the library installed into
         # the stand-in RTEMS BSP prefix (tools/rtems_standin.py)
         images.append("rtems-standin=ppc-e500:" + os.path.join(
