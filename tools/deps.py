@@ -56,6 +56,11 @@ SOURCES = {
 }
 
 # Python packages of the host reference-vector generator (tests/ref/).
+# Wheels for CPython 3.11 on manylinux x86_64 (pyerfa is abi3).
+#   numpy, pyerfa: ERFA (the C library behind astropy's time scales) is the
+#     oracle of TAI-UTC and of UTC <-> TAI across leap seconds;
+#   astropy-iers-data: the IERS Leap_Second.dat (Bulletin C) that dates the
+#     expiry of the built-in leap-second table.
 PYTHON_PACKAGES = {
     "mpmath==1.3.0":
         "a0b2b9fe80bbcd81a6647ff13108738cfb482d481d826cc0e02f5b35e5c88d2c",
@@ -82,6 +87,11 @@ PYTHON_PACKAGES = {
         "a5e246f79eb80475e691bf93862cead98decd8a498cf53ba0516fcdc0f50dc1c",
     "tzdata==2026.6":
         "0a10eec6e13ef16b627fabed9a5f2ba61a62b1c67f327305f4e7e412a70b4aec",
+    # time vectors: ERFA (TAI-UTC) and the IERS leap-second file
+    "pyerfa==2.0.1.5":
+        "0e43c7194e3242083f2350b46c09fd4bf8ba1bcc0ebd1460b98fc47fe2389906",
+    "astropy-iers-data==0.2026.11.2.0.34.55":
+        "785cd5bc193d9206316bd7c786fe0647e212ebf017cd861beabedd91cbe585bf",
 }
 
 DEB_SRC_LIST = "/etc/apt/sources.list.d/drdc-deb-src.sources"

@@ -9,8 +9,14 @@ DRDC = os.path.join(os.environ.get("DRDC_BUILD", "build"), "host", "drdc")
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
-def run(*args):
-    return subprocess.run([DRDC] + list(args), capture_output=True, text=True)
+def run(*args, stdin=""):
+    return subprocess.run([DRDC] + list(args), capture_output=True, text=True,
+                          input=stdin)
+
+
+def convert(src, dst, *lines):
+    r = run("time", "--from", src, "--to", dst, stdin="".join(l + "\n" for l in lines))
+    return r.returncode, r.stdout.splitlines(), r.stderr
 
 
 class Tool(unittest.TestCase):
@@ -31,6 +37,120 @@ class Tool(unittest.TestCase):
         r = run("no-such-command")
         self.assertEqual(2, r.returncode)
         self.assertIn("unknown command", r.stderr)
+
+
+class TimeCommand(unittest.TestCase):
+    """drdc time --from F --to T (issue 4). Expected values: calendar.timegm
+    for Unix/RTEMS, and TAI-UTC / GPS = TAI - 19 s as in ERFA."""
+
+    LEAP = "2016-12-31T23:59:60.500000000Z"
+
+    def test_leap_second_in_every_scale(self):
+        want = {"utc": self.LEAP, "gps": "1930 17.500000000",
+                "tai": "1861920036.500000000",
+                # no Unix or RTEMS value of its own: the next midnight
+                "unix": "1483228800.500000000",
+                "rtems": "915235200.500000000"}
+        for dst, text in want.items():
+            self.assertEqual((0, [text]), convert("utc", dst, self.LEAP)[:2], dst)
+        for src, text in want.items():
+            if src in ("unix", "rtems"):
+                continue
+            self.assertEqual((0, [self.LEAP]), convert(src, "utc", text)[:2], src)
+
+    def test_round_trips_through_every_pair(self):
+        lines = ["1999-08-21T23:59:47.000000000Z", "2019-04-06T23:59:42.123456789Z",
+                 "2024-02-29T12:00:00.000000001Z", "2017-01-01T00:00:00.000000000Z"]
+        for mid in ("gps", "tai", "unix", "rtems", "utc"):
+            code, out, _ = convert("utc", mid, *lines)
+            self.assertEqual(0, code)
+            self.assertEqual((0, lines), convert(mid, "utc", *out)[:2], mid)
+
+    def test_unix_and_rtems_match_calendar_timegm(self):
+        import calendar
+        t = calendar.timegm((2024, 2, 29, 12, 34, 56))
+        code, out, _ = convert("utc", "unix", "2024-02-29T12:34:56.25Z")
+        self.assertEqual([str(t) + ".250000000"], out)
+        r = t - calendar.timegm((1988, 1, 1, 0, 0, 0))
+        self.assertEqual([str(r) + ".250000000"],
+                         convert("utc", "rtems", "2024-02-29T12:34:56.25Z")[1])
+        self.assertEqual(["-0.500000000", "-1.000000000"],
+                         convert("utc", "unix", "1969-12-31T23:59:59.5Z",
+                                 "1969-12-31T23:59:59Z")[1])
+        self.assertEqual(["1969-12-31T23:59:58.750000000Z"],
+                         convert("unix", "utc", "-1.25")[1])
+
+    def test_gps_week_rollovers(self):
+        self.assertEqual(["1024 0.000000000", "2048 0.000000000"],
+                         convert("utc", "gps", "1999-08-21T23:59:47Z",
+                                 "2019-04-06T23:59:42Z")[1])
+
+    def test_bad_lines_give_errors_and_the_rest_go_on(self):
+        code, out, _ = convert("utc", "tai", "2024-13-01T00:00:00Z",
+                               "2023-02-29T00:00:00Z", "2015-12-31T23:59:60Z",
+                               "2024-01-01T00:00:00Zjunk", "10000-01-01T00:00:00Z",
+                               "2024-01-01T00:00:00Z")
+        self.assertEqual(1, code)
+        self.assertEqual(6, len(out))
+        for line, status in zip(out, ["DRDC_E_MONTH", "DRDC_E_DAY", "DRDC_E_SECOND",
+                                      "DRDC_E_TRAILING", "DRDC_E_SYNTAX"]):
+            self.assertTrue(line.startswith("ERROR: "), line)
+            self.assertIn(status, line)
+        self.assertEqual("2082758437.000000000", out[5])
+        code, out, _ = convert("gps", "utc", "2000 604800", "-1 0", "2000 1.5 x",
+                               "1.5 0", "2000 0.1234567891")
+        self.assertEqual(1, code)
+        self.assertEqual(["DRDC_E_TIME_OF_WEEK", "DRDC_E_WEEK", "DRDC_E_TRAILING",
+                          "DRDC_E_SYNTAX", "DRDC_E_SYNTAX"],
+                         [l.split("(")[-1].rstrip(")") for l in out])
+
+    def test_past_expiry_converts_with_a_warning(self):
+        code, out, err = convert("utc", "tai", "2030-01-01T00:00:00Z")
+        self.assertEqual(0, code)
+        self.assertEqual(["2272147237.000000000"], out)
+        self.assertIn("expiry", err)
+
+    def test_random_instants_match_erfa(self):
+        """200 random instants 1972..2026, UTC -> TAI and GPS, against ERFA's
+        TAI-UTC (eraDat) and GPS = TAI - 19 s."""
+        try:
+            import erfa
+        except ImportError:
+            self.skipTest("pyerfa not on PYTHONPATH (./waf check sets it)")
+        import calendar
+        import random
+        import warnings
+        rng = random.Random(4)
+        lines, want_tai, want_gps = [], [], []
+        lo = calendar.timegm((1972, 1, 1, 0, 0, 0))
+        hi = calendar.timegm((2026, 12, 31, 0, 0, 0))
+        for _ in range(200):
+            sec, ns = rng.randrange(lo, hi), rng.randrange(10 ** 9)
+            y, mo, d, h, mi, s = __import__("time").gmtime(sec)[:6]
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                dat = int(erfa.dat(y, mo, d, 0.0))
+            lines.append("%04d-%02d-%02dT%02d:%02d:%02d.%09dZ" % (y, mo, d, h, mi, s, ns))
+            tai = sec + 378691200 + dat
+            want_tai.append("%d.%09d" % (tai, ns))
+            if sec >= calendar.timegm((1980, 1, 6, 0, 0, 0)):
+                g = tai - 19 - 694656000
+                want_gps.append("%d %d.%09d" % (g // 604800, g % 604800, ns))
+            else:
+                want_gps.append(None)
+        code, out, _ = convert("utc", "tai", *lines)
+        self.assertEqual((0, want_tai), (code, out))
+        _, out, _ = convert("utc", "gps", *lines)
+        for got, want in zip(out, want_gps):
+            if want is None:
+                self.assertIn("DRDC_E_RANGE", got)
+            else:
+                self.assertEqual(want, got)
+
+    def test_usage_errors(self):
+        self.assertEqual(2, run("time", "--from", "utc").returncode)
+        self.assertEqual(2, run("time", "--from", "utc", "--to", "gpst").returncode)
+        self.assertEqual(0, run("time", "--help").returncode)
 
 
 if __name__ == "__main__":

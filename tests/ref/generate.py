@@ -20,6 +20,9 @@ TOP = os.path.dirname(os.path.dirname(HERE))
 # One entry per generator module; each has generate() -> {path: text}.
 GENERATORS = [
     "gen_time_civil",
+    "gen_time_scales",
+    "gen_time_text",
+    "gen_time_calculus",
 ]
 
 

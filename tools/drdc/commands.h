@@ -1,0 +1,13 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @brief Subcommands of the drdc host tool, one file each.
+ */
+#ifndef DRDC_TOOL_COMMANDS_H
+#define DRDC_TOOL_COMMANDS_H
+
+/** `drdc time --from F --to T`: argv[0] is "time". Returns the exit
+ *  status: 0 all lines converted, 1 a line failed, 2 usage error. */
+int drdc_cmd_time(int argc, char **argv);
+
+#endif /* DRDC_TOOL_COMMANDS_H */
