@@ -203,8 +203,17 @@ def build_library(bld, cflags):
     bld.install_files("${INCLUDEDIR}/drdc",
                       _glob(bld, "fixed/include/drdc/*.h")
                       + _glob(bld, "core/include/drdc/*.h"))
+    glue = bool(bld.env.RTEMS_BSP and bld.env.HAVE_RTEMS_H)
+    if glue:
+        # RTEMS clock glue, installed beside the library
+        bld.stlib(source=_glob(bld, "bsp/rtems/drdc_rtems.c"),
+                  target="drdc_rtems", name="libdrdc_rtems", use="libdrdc",
+                  cflags=cflags, includes=["bsp/rtems"],
+                  install_path="${LIBDIR}")
+        bld.install_as("${INCLUDEDIR}/drdc/rtems.h", "bsp/rtems/drdc_rtems.h")
     bld(features="subst", source="tools/drdc.pc.in", target="drdc.pc",
-        install_path="${LIBDIR}/pkgconfig", VERSION=VERSION)
+        install_path="${LIBDIR}/pkgconfig", VERSION=VERSION,
+        EXTRA_LIBS=" -ldrdc_rtems" if glue else "")
 
 
 def build(bld):
@@ -216,7 +225,24 @@ def build(bld):
     theirs = arch + CODEGEN + ["-w"]
     build_library(bld, ours)
     if bld.env.RTEMS_BSP:
-        return  # an RTEMS BSP gets the library; its applications link it
+        # An RTEMS BSP gets the library; its applications link it. With a
+        # full RTEMS installation also the Unity suites as an RTEMS
+        # application, named *.exe for rtems-test.
+        if bld.env.HAVE_RTEMS_CONFDEFS:
+            unity = bld.root.find_dir(bld.env.UNITY)
+            bld.program(
+                source=["fw/test-runner/main.c", "fw/test-runner/rtems_init.c",
+                        "bsp/rtems/board.c", "bsp/console.c",
+                        unity.find_node("unity.c")]
+                + _glob(bld, "tests/**/test_*.c")
+                + _glob(bld, "tests/golden/golden*.c"),
+                target="fw/test-runner/test-runner.exe", use="libdrdc",
+                cflags=ours, includes=["tests", "bsp", "fw/test-runner", unity],
+                defines=["UNITY_INCLUDE_CONFIG_H"], install_path=None)
+        else:
+            Logs.info("%s: no rtems/confdefs.h, so no test-runner.exe"
+                      % bld.variant)
+        return
     t = TARGETS[bld.variant]
     if not t.get("images", True):
         # libFuzzer targets (tools/fuzz.py), one program per file

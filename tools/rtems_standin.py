@@ -38,18 +38,45 @@ BSP_CFLAGS = ("-mcpu=8540 -meabi -msdata=sysv -fno-common -msoft-float "
 GCC_WRAPPER = """#!/bin/sh
 # Stand-in for RTEMS {ver}'s {arch}-rtems{ver}-gcc, made by ./waf check:
 # Debian's cross compiler with the defaults of an RTEMS tool suite (no PIE,
-# no stack protector). -qrtems selects RTEMS start files, which a stand-in
-# does not have.
+# no stack protector, __rtems__ defined). -qrtems selects RTEMS start
+# files, which a stand-in does not have.
 for a do
   shift
   [ "$a" = -qrtems ] || set -- "$@" "$a"
 done
-exec {cross}gcc -fno-pic -fno-pie -fno-stack-protector "$@"
+exec {cross}gcc -D__rtems__ -fno-pic -fno-pie -fno-stack-protector "$@"
 """
 TOOL_WRAPPER = """#!/bin/sh
 # Stand-in for RTEMS {ver}'s {arch}-rtems{ver}-{tool}, made by ./waf check.
 exec {cross}{tool} "$@"
 """
+# The few declarations of the RTEMS Classic API that the glue of bsp/rtems
+# uses, as the RTEMS 6 manual documents them, so that the glue compiles in
+# the stand-in. A real BSP installs the real <rtems.h>; the stand-in has no
+# <rtems/confdefs.h>, so no RTEMS test application is built here.
+RTEMS_H = """/* Stand-in for <rtems.h> made by libdrdc-fx's ./waf check: only the
+ * Classic API declarations that bsp/rtems/drdc_rtems.c uses. */
+#ifndef STANDIN_RTEMS_H
+#define STANDIN_RTEMS_H
+#include <stdint.h>
+typedef enum {{ RTEMS_SUCCESSFUL = 0, RTEMS_INVALID_CLOCK = 20,
+               RTEMS_NOT_DEFINED = 11, RTEMS_INVALID_ADDRESS = 9 }} rtems_status_code;
+typedef uint32_t rtems_interval;
+typedef struct {{
+  uint32_t year;
+  uint32_t month;
+  uint32_t day;
+  uint32_t hour;
+  uint32_t minute;
+  uint32_t second;
+  uint32_t ticks;
+}} rtems_time_of_day;
+rtems_status_code rtems_clock_get_tod(rtems_time_of_day *time_of_day);
+rtems_status_code rtems_clock_set(const rtems_time_of_day *time_of_day);
+rtems_interval rtems_clock_get_ticks_per_second(void);
+#endif
+"""
+
 BSP_PC = """prefix={prefix}
 exec_prefix=${{prefix}}/{arch}-rtems{ver}
 includedir=${{exec_prefix}}/{bsp}/lib/include
@@ -68,7 +95,10 @@ def make_prefix(prefix):
     os.makedirs(os.path.join(prefix, "bin"))
     os.makedirs(os.path.join(prefix, "share", "rtems" + VERSION))
     os.makedirs(os.path.join(prefix, "lib", "pkgconfig"))
-    os.makedirs(os.path.join(prefix, "%s-rtems%s" % (ARCH, VERSION), BSP, "lib", "include"))
+    include = os.path.join(prefix, "%s-rtems%s" % (ARCH, VERSION), BSP, "lib", "include")
+    os.makedirs(include)
+    with open(os.path.join(include, "rtems.h"), "w") as f:
+        f.write(RTEMS_H.format())
     kw = dict(ver=VERSION, arch=ARCH, cross=CROSS, bsp=BSP, prefix=prefix,
               cflags=BSP_CFLAGS)
     tools = {"gcc": GCC_WRAPPER.format(**kw)}
@@ -113,9 +143,11 @@ def main():
     headers = sorted(os.path.basename(h) for h in
                      glob.glob(os.path.join(TOP, "fixed/include/drdc/*.h"))
                      + glob.glob(os.path.join(TOP, "core/include/drdc/*.h")))
-    want = sorted(["libdrdc.a", "pkgconfig/drdc.pc"]
+    want = sorted(["libdrdc.a", "libdrdc_rtems.a", "pkgconfig/drdc.pc",
+                   "include/drdc/rtems.h"]
                   + ["include/drdc/" + h for h in headers])
-    got = installed_tree(bspdir)
+    # everything under the BSP's lib/ except the stand-in's own <rtems.h>
+    got = [p for p in installed_tree(bspdir) if p != "include/rtems.h"]
     if got != want:
         sys.exit("rtems-standin: installed tree differs:\n  got  %s\n  want %s"
                  % (got, want))
@@ -124,6 +156,9 @@ def main():
     env = dict(os.environ, PKG_CONFIG_PATH=os.path.join(bspdir, "pkgconfig"))
     flags = subprocess.run(["pkg-config", "--cflags", "--libs", "drdc"], env=env,
                            check=True, capture_output=True, text=True).stdout.split()
+    # the RTEMS glue needs an RTEMS kernel to link; the bare-metal image
+    # takes the library alone
+    flags = [f for f in flags if f != "-ldrdc_rtems"]
     print("rtems-standin: pkg-config --cflags --libs drdc: " + " ".join(flags))
 
     # Link the installed library into the bare-metal test image.

@@ -135,6 +135,16 @@ def configure(conf, codegen):
         conf.check_cc(fragment="int main(void) { return 0; }\n", features="c",
                       cflags=cflags + codegen,
                       msg="Compiling a program for %s/%s" % (arch, bsp))
+        # The RTEMS glue (bsp/rtems) needs the Classic API header; the
+        # Unity test application (test-runner.exe) needs the configuration.
+        conf.env.HAVE_RTEMS_H = bool(conf.check_cc(
+            fragment="#include <rtems.h>\nint main(void) { return 0; }\n",
+            features="c", cflags=cflags + codegen, mandatory=False,
+            msg="Checking for rtems.h"))
+        conf.env.HAVE_RTEMS_CONFDEFS = bool(conf.check_cc(
+            fragment="#include <rtems.h>\n#include <rtems/confdefs.h>\n",
+            features="c", cflags=cflags + codegen, mandatory=False,
+            msg="Checking for rtems/confdefs.h"))
         variants.append(name)
     conf.setenv("")
     return variants

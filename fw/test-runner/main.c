@@ -1,12 +1,15 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /**
  * @file
- * @brief Test-runner image: every Unity suite, framed by the RTEMS test
- *        markers so RTEMS's tester and other log parsers read the console.
+ * @brief Test runner: every Unity suite, framed by the RTEMS test markers
+ *        so RTEMS's tester and other log parsers read the console. main()
+ *        on bare-metal boards and the host; the RTEMS Init task
+ *        (fw/test-runner/rtems_init.c) calls test_runner_run() instead.
  */
 #include <drdc/version.h>
 
 #include "bsp.h"
+#include "runner.h"
 #include "suites.h"
 #include "unity.h"
 
@@ -19,7 +22,7 @@ void tearDown(void)
 {
 }
 
-int main(void)
+int test_runner_run(void)
 {
   int failures;
 
@@ -44,3 +47,10 @@ int main(void)
   }
   return failures;
 }
+
+#if !defined(__rtems__)
+int main(void)
+{
+  return test_runner_run();
+}
+#endif
