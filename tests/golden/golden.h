@@ -29,5 +29,6 @@ uint32_t golden_next(golden_t *g);
 /** One per module: feed its functions golden inputs, fold their outputs
  *  and statuses into the digest. */
 void golden_time(golden_t *g);
+void golden_time_scales(golden_t *g);
 
 #endif /* DRDC_GOLDEN_H */

@@ -4,6 +4,8 @@
  * @brief Golden inputs and outputs of the time module.
  */
 #include <drdc/time.h>
+#include <drdc/time_iso8601.h>
+#include <drdc/time_scales.h>
 
 #include "golden.h"
 
@@ -31,5 +33,49 @@ void golden_time(golden_t *g)
     golden_i32(g, y);
     golden_i32(g, m);
     golden_i32(g, d);
+  }
+}
+
+/* Instants from 1970 to 2106 with any nanoseconds, through every time
+ * scale and the ISO 8601 text (its characters fold into the digest). */
+void golden_time_scales(golden_t *g)
+{
+  int i;
+
+  for (i = 0; i < 2048; i++) {
+    drdc_time_t utc;
+    drdc_time_t back = { 0, 0 };
+    drdc_time_count_t count = { 0, 0 };
+    drdc_time_gps_t gps = { 0, 0, 0 };
+    drdc_time_civil_t civil = { 0, 0, 0, 0, 0, 0, 0 };
+    char text[40];
+    size_t k;
+
+    utc.sec = (int64_t)golden_next(g);
+    utc.nsec = (int32_t)(golden_next(g) % 1000000000u);
+    golden_i32(g, (int32_t)drdc_time_utc_to_tai(NULL, &utc, &count));
+    golden_i64(g, count.sec);
+    golden_i32(g, count.nsec);
+    golden_i32(g, (int32_t)drdc_time_utc_to_gps(NULL, &utc, &gps));
+    golden_i32(g, gps.week);
+    golden_i32(g, gps.tow);
+    golden_i32(g, gps.nsec);
+    golden_i32(g, (int32_t)drdc_time_gps_to_utc(NULL, &gps, &back));
+    golden_i64(g, back.sec);
+    golden_i32(g, back.nsec);
+    golden_i32(g, (int32_t)drdc_time_utc_to_unix(NULL, &utc, &count));
+    golden_i64(g, count.sec);
+    golden_i32(g, (int32_t)drdc_time_utc_to_rtems(NULL, &utc, &count));
+    golden_i64(g, count.sec);
+    golden_i32(g, (int32_t)drdc_time_to_civil(NULL, &utc, &civil));
+    golden_i32(g, civil.year);
+    golden_i32(g, civil.second);
+    for (k = 0; k < sizeof text; k++) {
+      text[k] = '\0';
+    }
+    golden_i32(g, (int32_t)drdc_time_iso8601_format(NULL, &utc, 9, text, sizeof text));
+    for (k = 0; k < sizeof text; k++) {
+      golden_u32(g, (uint32_t)(unsigned char)text[k]);
+    }
   }
 }
