@@ -55,6 +55,51 @@ static double civil_from_days(double days)
   return (yoe + (era * 400.0) + ((m <= 2.0) ? 1.0 : 0.0)) + m + d;
 }
 
+/* UTC -> GPS as it is often written: Unix seconds as a double, a table of
+ * leap-second instants, floor and fmod. Leap seconds after 1980 (Unix
+ * seconds of the first second with the new TAI - UTC). */
+static const double leaps[] = {
+  362793600.0, 394329600.0, 425865600.0, 489024000.0, 567993600.0,
+  631152000.0, 662688000.0, 709948800.0, 741484800.0, 773020800.0,
+  820454400.0, 867715200.0, 915148800.0, 1136073600.0, 1230768000.0,
+  1341100800.0, 1435708800.0, 1483228800.0,
+};
+
+static double gps_seconds(double unix_seconds)
+{
+  double leap = 0.0;
+  unsigned i;
+
+  for (i = 0; i < sizeof leaps / sizeof leaps[0]; i++) {
+    if (unix_seconds >= leaps[i]) {
+      leap += 1.0;
+    }
+  }
+  return unix_seconds - 315964800.0 + leap;
+}
+
+static double utc_to_gps(double unix_seconds)
+{
+  double s = gps_seconds(unix_seconds);
+  double week = floor(s / 604800.0);
+
+  return week + fmod(s, 604800.0);
+}
+
+static double gps_to_utc(double week, double tow)
+{
+  double s = (week * 604800.0) + tow;
+  double u = s + 315964800.0;
+  unsigned i;
+
+  for (i = 0; i < sizeof leaps / sizeof leaps[0]; i++) {
+    if (u - (double)(i + 1u) >= leaps[i]) {
+      u -= 1.0;
+    }
+  }
+  return u;
+}
+
 static double angle(uint32_t x)
 {
   return ((double)(x % 1000000u) / 1000000.0 - 0.5) * 6.283185307179586;
@@ -64,6 +109,11 @@ BENCH_LOOP_DOUBLE(run_days_from_civil,
            days_from_civil(1900.0 + (double)(x % 200u), 1.0 + (double)((x >> 8) % 12u),
                            1.0 + (double)((x >> 16) % 28u)))
 BENCH_LOOP_DOUBLE(run_civil_from_days, civil_from_days((double)(x % 73000u) - 25000.0))
+BENCH_LOOP_DOUBLE(run_utc_to_gps,
+                  utc_to_gps(631152000.0 + (double)(x % 1136073600u)
+                             + (double)((x >> 3) % 1000000000u) * 1e-9))
+BENCH_LOOP_DOUBLE(run_gps_to_utc, gps_to_utc(522.0 + (double)(x % 1900u),
+                                             (double)((x >> 11) % 604800u)))
 BENCH_LOOP_DOUBLE(run_sin, sin(angle(x)))
 BENCH_LOOP_DOUBLE(run_cos, cos(angle(x)))
 BENCH_LOOP_DOUBLE(run_atan2, atan2((double)(x & 0xFFFFu) - 32768.0,
@@ -74,6 +124,8 @@ BENCH_LOOP_DOUBLE(run_mul, (double)(int32_t)x * (double)(int32_t)(x >> 7) / 6553
 const bench_case_t bench_cases_double[] = {
   { "days_from_civil", "double", "run_days_from_civil", run_days_from_civil },
   { "civil_from_days", "double", "run_civil_from_days", run_civil_from_days },
+  { "utc_to_gps", "double", "run_utc_to_gps", run_utc_to_gps },
+  { "gps_to_utc", "double", "run_gps_to_utc", run_gps_to_utc },
   { "sin", "double", "run_sin", run_sin },
   { "cos", "double", "run_cos", run_cos },
   { "atan2", "double", "run_atan2", run_atan2 },
