@@ -434,6 +434,8 @@ class RunChecks(Build.BuildContext):
              ["tools/intcheck.py", "--build", out, "--all"]
              + ["%s:%s" % (n, t["intcheck"]) for n, t in TARGETS.items()
                 if t["intcheck"]]),
+            ("bad-input catalogue docs/bad-input.md up to date",
+             ["tools/badinput.py", "--check"]),
             ("fuzz corpora replay without a finding",
              ["tools/fuzz.py", "--build", out, "--replay"]),
             ("MISRA C:2012 of core/ and fixed/ (cppcheck)",
