@@ -20,6 +20,7 @@ TOP = os.path.dirname(os.path.dirname(HERE))
 # One entry per generator module; each has generate() -> {path: text}.
 GENERATORS = [
     "gen_time_civil",
+    "gen_fixed_arith",
 ]
 
 

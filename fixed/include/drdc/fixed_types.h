@@ -10,6 +10,13 @@
  * of 2^-30; Q15.16 is an int32_t covering [-32768, 32768) in steps of
  * 2^-16, bit-identical to libfixmath's fix16_t.
  *
+ * Rounding rule of the whole library: every result that is not exact is
+ * rounded to nearest, ties away from zero (2.5 -> 3, -2.5 -> -3), never
+ * truncated. A function documented as "correctly rounded" returns exactly
+ * that rounding of the true real result (error <= 0.5 LSB); the others
+ * state their measured maximum error in LSB against the correctly rounded
+ * value.
+ *
  * The choice of each format, its range, resolution and reason are in
  * docs/conventions.md.
  */
