@@ -21,6 +21,7 @@ TOP = os.path.dirname(os.path.dirname(HERE))
 GENERATORS = [
     "gen_time_civil",
     "gen_fixed_arith",
+    "gen_fixed_sqrt",
 ]
 
 
