@@ -22,6 +22,7 @@ GENERATORS = [
     "gen_time_civil",
     "gen_fixed_arith",
     "gen_fixed_sqrt",
+    "gen_fixed_trig",
 ]
 
 
