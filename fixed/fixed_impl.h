@@ -127,6 +127,23 @@ static inline fx_u128_t fx_shr_u128(fx_u128_t a, unsigned n)
   return a;
 }
 
+/** round(a b / 2^n) for 0 < n < 64 when the result fits 64 bits (the
+ *  caller's bounds guarantee it; the high part is dropped). */
+static inline uint64_t fx_mul_shr_round(uint64_t a, uint64_t b, unsigned n)
+{
+  fx_u128_t p = fx_add_u128(fx_mul_u64(a, b), UINT64_C(1) << (n - 1u));
+
+  return fx_shr_u128(p, n).lo;
+}
+
+/** a << n for 0 < n < 64. */
+static inline fx_u128_t fx_shl_u128(fx_u128_t a, unsigned n)
+{
+  a.hi = (a.hi << n) | (a.lo >> (64u - n));
+  a.lo <<= n;
+  return a;
+}
+
 /** a <= b. */
 static inline int fx_le_u128(fx_u128_t a, fx_u128_t b)
 {

@@ -14,7 +14,7 @@ I64 = (-(1 << 63), (1 << 63) - 1)
 # op codes shared with tests/fixed/test_arith.c
 OPS32 = ["MUL_Q1_30", "MUL_Q15_16", "DIV_Q1_30", "DIV_Q15_16", "MULDIV_S32"]
 OPS64 = ["MUL_Q47_16", "DIV_Q47_16", "MULDIV_S64"]
-ROWS_PER_OP = 120
+ROWS_PER_OP = 80
 
 
 def round_away(x):
