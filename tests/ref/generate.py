@@ -23,6 +23,10 @@ GENERATORS = [
     "gen_time_scales",
     "gen_time_text",
     "gen_time_calculus",
+    "gen_fixed_arith",
+    "gen_fixed_sqrt",
+    "gen_fixed_trig",
+    "gen_fixed_hyper",
 ]
 
 

@@ -10,6 +10,13 @@
  * of 2^-30; Q15.16 is an int32_t covering [-32768, 32768) in steps of
  * 2^-16, bit-identical to libfixmath's fix16_t.
  *
+ * Rounding rule of the whole library: every result that is not exact is
+ * rounded to nearest, ties away from zero (2.5 -> 3, -2.5 -> -3), never
+ * truncated. A function documented as "correctly rounded" returns exactly
+ * that rounding of the true real result (error <= 0.5 LSB); the others
+ * state their measured maximum error in LSB against the correctly rounded
+ * value.
+ *
  * The choice of each format, its range, resolution and reason are in
  * docs/conventions.md.
  */
@@ -37,6 +44,11 @@ typedef int32_t drdc_q15_16_t;
  *  drdc_q15_16_t, so global minus global is a local length with no shift. */
 typedef int64_t drdc_q47_16_t;
 
+/** Arguments and results of the hyperbolic functions (geodesy: the
+ *  transverse Mercator series): Q5.58 in int64_t, range [-32, 32),
+ *  resolution 2^-58 = 3.5e-18. */
+typedef int64_t drdc_q5_58_t;
+
 /** Attitude angles (yaw, pitch, roll, heading) as a binary angle: 2^32
  *  units per turn, resolution 1.46e-9 rad. Unsigned so that adding and
  *  subtracting angles wraps modulo one turn without undefined behaviour;
@@ -51,6 +63,9 @@ typedef uint32_t drdc_bam32_t;
 
 /** The value 1.0 m in Q15.16 (and Q47.16). */
 #define DRDC_Q15_16_ONE ((drdc_q15_16_t)1 << 16)
+
+/** The value 1.0 in Q5.58. */
+#define DRDC_Q5_58_ONE ((drdc_q5_58_t)1 << 58)
 
 /** @} */
 

@@ -1,0 +1,191 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @ingroup drdc_fixed_arith
+ * @brief Internal helpers of fixed/: magnitudes, rounded division, the
+ *        final range check of a signed result, 128-bit unsigned integers.
+ *
+ * Every routine works on magnitudes (unsigned) and a separate sign, so no
+ * signed overflow and no shift of a negative value can happen; rounding to
+ * nearest with ties away from zero is then "add half, truncate" on the
+ * magnitude.
+ */
+#ifndef DRDC_FIXED_IMPL_H
+#define DRDC_FIXED_IMPL_H
+
+#include <stdint.h>
+
+#include <drdc/status.h>
+
+/** |x| of an int32_t as uint32_t; exact for INT32_MIN (2^31). */
+static inline uint32_t fx_abs32(int32_t x)
+{
+  return (x < 0) ? (0u - (uint32_t)x) : (uint32_t)x;
+}
+
+/** |x| of an int64_t as uint64_t; exact for INT64_MIN (2^63). */
+static inline uint64_t fx_abs64(int64_t x)
+{
+  return (x < 0) ? (UINT64_C(0) - (uint64_t)x) : (uint64_t)x;
+}
+
+/** n / d rounded to nearest, ties away from zero (d != 0). The
+ *  comparison r >= d - r is 2r >= d without overflow. */
+static inline uint64_t fx_div_round_u64(uint64_t n, uint64_t d)
+{
+  uint64_t q = n / d;
+  uint64_t r = n - (q * d);
+
+  return (r >= (d - r)) ? (q + 1u) : q;
+}
+
+/**
+ * Signed int32 result of sign `neg` and magnitude `mag`: writes it and
+ * returns DRDC_OK when it fits; otherwise DRDC_E_OVERFLOW with `*out`
+ * unchanged, or, when `sat`, the clamped limit and DRDC_W_SATURATED.
+ */
+static inline drdc_status_t fx_finish_s32(int neg, uint64_t mag, int sat,
+                                          int32_t *out)
+{
+  uint64_t limit = neg ? (UINT64_C(1) << 31) : (uint64_t)INT32_MAX;
+
+  if (mag > limit) {
+    if (!sat) {
+      return DRDC_E_OVERFLOW;
+    }
+    *out = neg ? INT32_MIN : INT32_MAX;
+    return DRDC_W_SATURATED;
+  }
+  *out = neg ? (int32_t)(0u - (uint32_t)mag) : (int32_t)mag;
+  return DRDC_OK;
+}
+
+/** As fx_finish_s32() for int64; `too_big` flags a magnitude >= 2^64. */
+static inline drdc_status_t fx_finish_s64(int neg, int too_big, uint64_t mag,
+                                          int sat, int64_t *out)
+{
+  uint64_t limit = neg ? (UINT64_C(1) << 63) : (uint64_t)INT64_MAX;
+
+  if (too_big || (mag > limit)) {
+    if (!sat) {
+      return DRDC_E_OVERFLOW;
+    }
+    *out = neg ? INT64_MIN : INT64_MAX;
+    return DRDC_W_SATURATED;
+  }
+  /* Two's complement negation in uint64_t, then the conversion of a value
+   * in int64_t range (2^63 maps to INT64_MIN through the explicit case). */
+  if (neg && (mag == (UINT64_C(1) << 63))) {
+    *out = INT64_MIN;
+  } else {
+    *out = neg ? -(int64_t)mag : (int64_t)mag;
+  }
+  return DRDC_OK;
+}
+
+/** Unsigned 128-bit integer as two 64-bit halves. */
+typedef struct fx_u128 {
+  uint64_t hi;
+  uint64_t lo;
+} fx_u128_t;
+
+/** a * b exactly, from four 32 x 32 -> 64 products. */
+static inline fx_u128_t fx_mul_u64(uint64_t a, uint64_t b)
+{
+  uint64_t a0 = a & 0xFFFFFFFFu;
+  uint64_t a1 = a >> 32;
+  uint64_t b0 = b & 0xFFFFFFFFu;
+  uint64_t b1 = b >> 32;
+  uint64_t p00 = a0 * b0;
+  uint64_t p01 = a0 * b1;
+  uint64_t p10 = a1 * b0;
+  uint64_t p11 = a1 * b1;
+  /* middle column: at most 3 (2^32 - 1) < 2^34, no overflow */
+  uint64_t mid = (p00 >> 32) + (p01 & 0xFFFFFFFFu) + (p10 & 0xFFFFFFFFu);
+  fx_u128_t r;
+
+  r.lo = (mid << 32) | (p00 & 0xFFFFFFFFu);
+  r.hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+  return r;
+}
+
+/** a + b (mod 2^128). */
+static inline fx_u128_t fx_add_u128(fx_u128_t a, uint64_t b)
+{
+  a.lo += b;
+  if (a.lo < b) {
+    a.hi++;
+  }
+  return a;
+}
+
+/** a >> n for 0 < n < 64. */
+static inline fx_u128_t fx_shr_u128(fx_u128_t a, unsigned n)
+{
+  a.lo = (a.lo >> n) | (a.hi << (64u - n));
+  a.hi >>= n;
+  return a;
+}
+
+/** round(a b / 2^n) for 0 < n < 64 when the result fits 64 bits (the
+ *  caller's bounds guarantee it; the high part is dropped). */
+static inline uint64_t fx_mul_shr_round(uint64_t a, uint64_t b, unsigned n)
+{
+  fx_u128_t p = fx_add_u128(fx_mul_u64(a, b), UINT64_C(1) << (n - 1u));
+
+  return fx_shr_u128(p, n).lo;
+}
+
+/** a << n for 0 < n < 64. */
+static inline fx_u128_t fx_shl_u128(fx_u128_t a, unsigned n)
+{
+  a.hi = (a.hi << n) | (a.lo >> (64u - n));
+  a.lo <<= n;
+  return a;
+}
+
+/** a <= b. */
+static inline int fx_le_u128(fx_u128_t a, fx_u128_t b)
+{
+  return (a.hi < b.hi) || ((a.hi == b.hi) && (a.lo <= b.lo));
+}
+
+/**
+ * n / d rounded to nearest, ties away from zero, for a 128-bit n and
+ * 64-bit d != 0. Returns 0 and writes `*q` when the quotient fits 64 bits,
+ * 1 when it does not. Restoring long division, one quotient bit per step:
+ * the remainder stays below d, so after the shift it is below 2d < 2^65
+ * and the bit shifted out (`carry`) is its 65th bit.
+ */
+static inline int fx_div_round_u128(fx_u128_t n, uint64_t d, uint64_t *q)
+{
+  uint64_t rem = n.hi;
+  uint64_t lo = n.lo;
+  uint64_t quo = 0;
+  int i;
+
+  if (rem >= d) {
+    return 1; /* quotient >= 2^64 */
+  }
+  for (i = 0; i < 64; i++) {
+    uint64_t carry = rem >> 63;
+
+    rem = (rem << 1) | (lo >> 63);
+    lo <<= 1;
+    quo <<= 1;
+    if ((carry != 0u) || (rem >= d)) {
+      rem -= d;
+      quo |= 1u;
+    }
+  }
+  if (rem >= (d - rem)) {
+    if (quo == UINT64_MAX) {
+      return 1;
+    }
+    quo++;
+  }
+  *q = quo;
+  return 0;
+}
+
+#endif /* DRDC_FIXED_IMPL_H */

@@ -1,0 +1,86 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-2-Clause
+"""Generator of fixed/trig_table.c, the constant tables of fixed/ trig.
+
+Run from the top of the tree with the project's Python packages:
+  PYTHONPATH=.deps/python python3 fixed/gen_tables.py
+Values come from mpmath at 100 digits, rounded to nearest (ties away from
+zero, never met by these irrational values) and written as exact integers.
+"""
+import os
+
+import mpmath
+
+mpmath.mp.dps = 100
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+STEPS = 256                          # intervals per table
+B = mpmath.mpf(2) ** 32 / (2 * mpmath.pi)  # binary-angle units per radian
+
+
+def rnd(x):
+    return int(mpmath.sign(x) * mpmath.floor(abs(x) + mpmath.mpf(1) / 2))
+
+
+def rows(values, per_line=6):
+    out = []
+    for i in range(0, len(values), per_line):
+        out.append("  " + " ".join("%s," % v for v in values[i:i + per_line]))
+    return "\n".join(out)
+
+
+def main():
+    sin_q31 = [rnd(mpmath.sin(mpmath.pi / 2 * i / STEPS) * 2 ** 31)
+               for i in range(STEPS + 1)]
+    t0 = [mpmath.mpf(i) / STEPS for i in range(STEPS + 1)]
+    atan_a = [rnd(B * mpmath.atan(t) * 4) for t in t0]
+    atan_d1 = [rnd(B / (1 + t * t) * 4) for t in t0]
+    atan_c2 = [rnd(B * t / (1 + t * t) ** 2 * 4) for t in t0]
+    atan_c3 = [rnd(B * (t * t - mpmath.mpf(1) / 3) / (1 + t * t) ** 3 * 4)
+               for t in t0]
+    assert max(sin_q31) == 2 ** 31 and atan_a[-1] == 2 ** 31
+    text = """/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @ingroup drdc_fixed_trig
+ * @brief Constant tables of the trig functions (generated: do not edit;
+ *        run fixed/gen_tables.py). Values from mpmath at 100 digits,
+ *        rounded to nearest.
+ */
+#include "trig_impl.h"
+
+/* sin(i pi / 512) in Q0.31 (2^31 = 1.0), i = 0..256: a quarter wave. */
+const uint32_t fx_sin_q31[FX_TRIG_STEPS + 1] = {
+%s
+};
+
+/* B atan(i / 256) in binary-angle units times 4 (B = 2^32 / (2 pi)). */
+const uint32_t fx_atan_a[FX_TRIG_STEPS + 1] = {
+%s
+};
+
+/* B / (1 + t^2) at t = i / 256, binary-angle units per unit t, times 4:
+ * the first derivative of B atan(t). */
+const uint32_t fx_atan_d1[FX_TRIG_STEPS + 1] = {
+%s
+};
+
+/* B t / (1 + t^2)^2 times 4: minus the second Taylor coefficient. */
+const int32_t fx_atan_c2[FX_TRIG_STEPS + 1] = {
+%s
+};
+
+/* B (t^2 - 1/3) / (1 + t^2)^3 times 4: the third Taylor coefficient. */
+const int32_t fx_atan_c3[FX_TRIG_STEPS + 1] = {
+%s
+};
+""" % (rows(["%du" % v for v in sin_q31]), rows(["%du" % v for v in atan_a]),
+       rows(["%du" % v for v in atan_d1]), rows(["%d" % v for v in atan_c2]),
+       rows(["%d" % v for v in atan_c3]))
+    with open(os.path.join(HERE, "trig_table.c"), "w") as f:
+        f.write(text)
+    print("wrote fixed/trig_table.c")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,266 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @ingroup drdc_fixed_hyper
+ * @brief sinh, cosh, atanh, asinh in Q5.58 from an exp and an atanh
+ *        series in Q62 with rounded 128-bit products.
+ *
+ * exp: x = k ln 2 + r with k = round(x / ln 2), |r| <= ln 2 / 2 (Q63, the
+ * product k ln 2 from ln 2 in Q64, so r is good to 2^-64); e^r by Taylor
+ * to the last term that is not 0 (<= 22 terms), e^r in (0.70, 1.42), Q63.
+ * Then sinh, cosh = (e^r 2^(2k) -+ e^-r) / 2^(k+1), rounded once from a
+ * 128-bit numerator.
+ *
+ * log: y = m 2^e with m in [1/sqrt 2, sqrt 2), s = (m - 1) / (m + 1),
+ * |s| <= 3 - 2 sqrt 2 = 0.1716, ln y = e ln 2 + 2 atanh(s), atanh(s) by
+ * its series s + s^3/3 + ... (s^2 <= 0.0295: <= 13 terms to 2^-62).
+ */
+#include <drdc/fixed_hyper.h>
+
+#include <stddef.h>
+
+#include <drdc/fixed_sqrt.h>
+
+#include "fixed_impl.h"
+
+/* ln 2 in Q64 and Q58, rounded. */
+#define LN2_Q64 UINT64_C(12786308645202655660)
+#define LN2_Q58 INT64_C(199786072581291495)
+/* 1.0 in Q62. */
+#define ONE_Q62 (UINT64_C(1) << 62)
+/* sqrt(2) and sqrt(1/2) in Q62: the mantissa interval of the logarithm. */
+#define SQRT2_Q62 UINT64_C(6521908912666391106)
+#define SQRTH_Q62 UINT64_C(3260954456333195553)
+/* 3 - 2 sqrt 2 in Q58 (floor): below it atanh(x) is its series directly. */
+#define ATANH_SERIES_MAX INT64_C(49452514371836343)
+/* Largest |x| for sinh/cosh before the final range check: ln(64) < 4.5. */
+#define EXP_ARG_MAX (INT64_C(9) << 57)
+
+/* 1.0 in Q63: e^r < 1.42 fits Q63 in a uint64_t. */
+#define ONE_Q63 (UINT64_C(1) << 63)
+
+/* e^r in Q63 for |r| <= ln 2 / 2 + 2^-63 (r Q63, sign separate). Each
+ * term is rounded (product and division), so the errors do not pile up
+ * in one direction: about 2^-62 in all. */
+static uint64_t exp_small_q63(uint64_t mag, int neg)
+{
+  uint64_t sum = ONE_Q63;
+  uint64_t term = ONE_Q63;
+  uint64_t n;
+
+  for (n = 1u; n < 32u; n++) {
+    term = fx_mul_shr_round(term, mag, 63u);
+    term = (term + (n >> 1)) / n;
+    if (term == 0u) {
+      break;
+    }
+    sum = (neg && ((n & 1u) != 0u)) ? (sum - term) : (sum + term);
+  }
+  return sum;
+}
+
+/* sinh (plus == 0) or cosh (plus == 1) of |x| <= EXP_ARG_MAX, Q58. */
+static int sinh_cosh_mag(uint64_t x, int plus, uint64_t *out)
+{
+  uint64_t k = (x + (uint64_t)(LN2_Q58 / 2)) / (uint64_t)LN2_Q58; /* <= 6 */
+  fx_u128_t kln2 = fx_shr_u128(fx_add_u128(fx_mul_u64(k, LN2_Q64), 1u), 1u);
+  uint64_t d = (x << 5) - kln2.lo; /* r in Q63 modulo 2^64: |r| < 2^62 */
+  int neg = d >= (UINT64_C(1) << 63);
+  uint64_t mag = neg ? (0u - d) : d;
+  uint64_t ep = exp_small_q63(mag, neg);  /* e^r  */
+  uint64_t em = exp_small_q63(mag, !neg); /* e^-r */
+  fx_u128_t n;
+  unsigned shift = (unsigned)k + 6u; /* 2^(k+1), and Q63 -> Q58 */
+
+  n.hi = 0u;
+  n.lo = ep;
+  if (k != 0u) {
+    n = fx_shl_u128(n, 2u * (unsigned)k);
+  }
+  if (plus) {
+    n = fx_add_u128(n, em);
+  } else {
+    /* e^r 2^(2k) >= e^-r: for k = 0, r = x >= 0 */
+    n.hi -= (n.lo < em) ? 1u : 0u;
+    n.lo -= em;
+  }
+  n = fx_shr_u128(fx_add_u128(n, UINT64_C(1) << (shift - 1u)), shift);
+  if ((n.hi != 0u) || (n.lo > (uint64_t)INT64_MAX)) {
+    return 1;
+  }
+  *out = n.lo;
+  return 0;
+}
+
+drdc_status_t drdc_fx_sinh_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
+{
+  uint64_t r = 0;
+
+  if (out == NULL) {
+    return DRDC_E_NULL;
+  }
+  if ((x > EXP_ARG_MAX) || (x < -EXP_ARG_MAX)
+      || sinh_cosh_mag(fx_abs64(x), 0, &r)) {
+    return DRDC_E_OVERFLOW;
+  }
+  *out = (x < 0) ? -(int64_t)r : (int64_t)r;
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_fx_cosh_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
+{
+  uint64_t r = 0;
+
+  if (out == NULL) {
+    return DRDC_E_NULL;
+  }
+  if ((x > EXP_ARG_MAX) || (x < -EXP_ARG_MAX)
+      || sinh_cosh_mag(fx_abs64(x), 1, &r)) {
+    return DRDC_E_OVERFLOW;
+  }
+  *out = (int64_t)r;
+  return DRDC_OK;
+}
+
+/* atanh(s) in Q62 for |s| <= 0.1716 (magnitude; the sign is the caller's):
+ * s + s^3/3 + s^5/5 + ... */
+static uint64_t atanh_series_q62(uint64_t s)
+{
+  uint64_t s2 = fx_mul_shr_round(s, s, 62u);
+  uint64_t power = s;
+  uint64_t sum = s;
+  uint64_t n;
+
+  for (n = 3u; n < 64u; n += 2u) {
+    power = fx_mul_shr_round(power, s2, 62u);
+    if (power == 0u) {
+      break;
+    }
+    sum += (power + (n >> 1)) / n;
+  }
+  return sum;
+}
+
+/* Bit length minus one of v > 0. */
+static unsigned top_bit(uint64_t v)
+{
+  unsigned p = 0;
+
+  while ((v >> 1) != 0u) {
+    v >>= 1;
+    p++;
+  }
+  return p;
+}
+
+/* ln(num / den) = e ln 2 + 2 atanh(s), for num, den > 0: writes e and
+ * s (Q62 magnitude, sign in *s_neg). */
+static void log_parts(uint64_t num, uint64_t den, int32_t *e, uint64_t *s,
+                      int *s_neg)
+{
+  unsigned pn = top_bit(num);
+  unsigned pd = top_bit(den);
+  uint64_t nn = num << (63u - pn); /* both normalised to [2^63, 2^64) */
+  uint64_t dn = den << (63u - pd);
+  fx_u128_t q;
+  uint64_t m = 0;
+  uint64_t diff;
+
+  *e = (int32_t)pn - (int32_t)pd;
+  /* m = nn / dn in Q62, in (1/2, 2): nn 2^62 / dn */
+  q.hi = nn >> 2;
+  q.lo = nn << 62;
+  (void)fx_div_round_u128(q, dn, &m);
+  if (m < SQRTH_Q62) {
+    m <<= 1;
+    *e -= 1;
+  } else if (m >= SQRT2_Q62) {
+    m = (m + 1u) >> 1;
+    *e += 1;
+  }
+  *s_neg = m < ONE_Q62;
+  diff = *s_neg ? (ONE_Q62 - m) : (m - ONE_Q62);
+  q.hi = diff >> 2;
+  q.lo = diff << 62;
+  (void)fx_div_round_u128(q, m + ONE_Q62, s);
+}
+
+/* e ln 2 / 2^half + atanh(s) 2 / 2^half, rounded to Q58 (half = 1 gives
+ * ln(y) / 2, half = 0 gives ln(y)); e >= 0 here. */
+static uint64_t log_q58(int32_t e, uint64_t s, int s_neg, unsigned half)
+{
+  /* e ln 2 in Q64 (128 bits), then Q62: e <= 64 keeps it < 2^68 */
+  fx_u128_t acc = fx_mul_u64((uint64_t)e, LN2_Q64);
+  uint64_t a = atanh_series_q62(s) << 1; /* 2 atanh(s), Q62, < 2^62 */
+
+  acc = fx_shr_u128(acc, 2u); /* Q62 (drops 2^-63 at most) */
+  if (s_neg) {
+    acc.hi -= (acc.lo < a) ? 1u : 0u;
+    acc.lo -= a;
+  } else {
+    acc = fx_add_u128(acc, a);
+  }
+  /* to Q58 and halve when asked, rounded once */
+  acc = fx_shr_u128(fx_add_u128(acc, UINT64_C(1) << (3u + half)), 4u + half);
+  return acc.lo;
+}
+
+drdc_status_t drdc_fx_atanh_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
+{
+  uint64_t ax = fx_abs64(x);
+  uint64_t r;
+
+  if (out == NULL) {
+    return DRDC_E_NULL;
+  }
+  if (ax >= (UINT64_C(1) << 58)) {
+    return DRDC_E_DOMAIN;
+  }
+  if (ax <= (uint64_t)ATANH_SERIES_MAX) {
+    r = (atanh_series_q62(ax << 4) + 8u) >> 4;
+  } else {
+    int32_t e = 0;
+    uint64_t s = 0;
+    int s_neg = 0;
+
+    /* atanh(x) = ln((1 + x) / (1 - x)) / 2, both exact in Q58 */
+    log_parts((UINT64_C(1) << 58) + ax, (UINT64_C(1) << 58) - ax, &e, &s,
+              &s_neg);
+    r = log_q58(e, s, s_neg, 1u);
+  }
+  *out = (x < 0) ? -(int64_t)r : (int64_t)r;
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_fx_asinh_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
+{
+  uint64_t ax = fx_abs64(x);
+  uint64_t r;
+
+  if (out == NULL) {
+    return DRDC_E_NULL;
+  }
+  if (ax <= (uint64_t)ATANH_SERIES_MAX) {
+    /* asinh(x) = atanh(x / sqrt(1 + x^2)): the quotient in Q62 */
+    uint64_t h = drdc_fx_hypot_s64(x, INT64_C(1) << 58); /* Q58 */
+    fx_u128_t q;
+    uint64_t t = 0;
+
+    q.hi = ax >> 2;
+    q.lo = ax << 62;
+    (void)fx_div_round_u128(q, h, &t); /* x / sqrt(1 + x^2), Q62 */
+    r = (atanh_series_q62(t) + 8u) >> 4;
+  } else {
+    int32_t e = 0;
+    uint64_t s = 0;
+    int s_neg = 0;
+    /* y = |x| + sqrt(x^2 + 1) in Q58, halved so it fits 64 bits */
+    uint64_t h = drdc_fx_hypot_s64(x, INT64_C(1) << 58);
+
+    log_parts((ax >> 1) + (h >> 1) + (ax & h & 1u), UINT64_C(1) << 57, &e,
+              &s, &s_neg);
+    r = log_q58(e, s, s_neg, 0u);
+  }
+  *out = (x < 0) ? -(int64_t)r : (int64_t)r;
+  return DRDC_OK;
+}

@@ -1,0 +1,70 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @ingroup drdc_fixed_arith
+ * @brief a * b / c with an exact intermediate: 64 bits for int32, 128 bits
+ *        for int64, one correctly rounded division.
+ */
+#include <drdc/fixed_arith.h>
+
+#include <stddef.h>
+
+#include "fixed_impl.h"
+
+static drdc_status_t muldiv_s32(int32_t a, int32_t b, int32_t c, int sat,
+                                int32_t *out)
+{
+  if (out == NULL) {
+    return DRDC_E_NULL;
+  }
+  if (c == 0) {
+    return DRDC_E_DIVIDE_BY_ZERO;
+  }
+  /* |a b| <= 2^62: exact in uint64_t */
+  return fx_finish_s32(((a < 0) != (b < 0)) != (c < 0),
+                       fx_div_round_u64((uint64_t)fx_abs32(a) * fx_abs32(b),
+                                        fx_abs32(c)),
+                       sat, out);
+}
+
+drdc_status_t drdc_fx_muldiv_s32(int32_t a, int32_t b, int32_t c,
+                                 int32_t *out)
+{
+  return muldiv_s32(a, b, c, 0, out);
+}
+
+drdc_status_t drdc_fx_muldiv_s32_sat(int32_t a, int32_t b, int32_t c,
+                                     int32_t *out)
+{
+  return muldiv_s32(a, b, c, 1, out);
+}
+
+static drdc_status_t muldiv_s64(int64_t a, int64_t b, int64_t c, int sat,
+                                int64_t *out)
+{
+  uint64_t q = 0;
+  int too_big;
+
+  if (out == NULL) {
+    return DRDC_E_NULL;
+  }
+  if (c == 0) {
+    return DRDC_E_DIVIDE_BY_ZERO;
+  }
+  too_big = fx_div_round_u128(fx_mul_u64(fx_abs64(a), fx_abs64(b)),
+                              fx_abs64(c), &q);
+  /* a zero product is never negative */
+  return fx_finish_s64(((a < 0) != (b < 0)) != (c < 0), too_big, q, sat, out);
+}
+
+drdc_status_t drdc_fx_muldiv_s64(int64_t a, int64_t b, int64_t c,
+                                 int64_t *out)
+{
+  return muldiv_s64(a, b, c, 0, out);
+}
+
+drdc_status_t drdc_fx_muldiv_s64_sat(int64_t a, int64_t b, int64_t c,
+                                     int64_t *out)
+{
+  return muldiv_s64(a, b, c, 1, out);
+}
