@@ -33,7 +33,7 @@ PROFILES = {
     "host": ["{image}"],
     "ppc-e500": ["qemu-system-ppc", "-M", "mpc8544ds", "-nographic",
                  "-no-reboot", "-kernel", "{image}"],
-    "arm-cm3": ["qemu-system-arm", "-M", "lm3s6965evb", "-nographic",
+    "arm-cm3": ["qemu-system-arm", "-M", "mps2-an385", "-nographic",
                 "-semihosting-config", "enable=on,target=native",
                 "-kernel", "{image}"],
 }

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /**
  * @file
- * @brief QEMU lm3s6965evb (Cortex-M3): vector table, reset, fault reports,
+ * @brief QEMU mps2-an385 (Cortex-M3): vector table, reset, fault reports,
  *        console and exit through newlib and ARM semihosting.
  */
 #include <stdint.h>
