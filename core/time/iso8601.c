@@ -51,7 +51,7 @@ drdc_status_t drdc_time_iso8601_format(const drdc_time_leap_t *leap,
   if ((digits < 0) || (digits > MAX_DIGITS)) {
     return DRDC_E_RANGE;
   }
-  need = (size_t)BASE_SIZE + ((digits > 0) ? (size_t)digits + 1u : 0u);
+  need = (size_t)BASE_SIZE + ((digits > 0) ? ((size_t)digits + 1u) : 0u);
   st = drdc_time_to_civil(leap, utc, &c);
   if (st != DRDC_OK) {
     return st;
