@@ -7,10 +7,12 @@
  */
 #include <drdc/time_calculus.h>
 
+#include <stdbool.h>
+
 #include "time_impl.h"
 
 #define NS_PER_SECOND_U64 UINT64_C(1000000000)
-#define LOW32 UINT64_C(0xFFFFFFFF)
+#define LOW32 ((uint64_t)0xFFFFFFFFu)
 
 /* Graininess of stamps a < b, as an unsigned count (the difference of two
  * int64_t may exceed INT64_MAX; computed modulo 2^64 it is exact). */
@@ -24,11 +26,11 @@ static drdc_status_t check_stamps(const int64_t *t, size_t n)
 {
   size_t i;
 
-  for (i = 0; i + 1 < n; i++) {
-    if (t[i + 1] == t[i]) {
+  for (i = 0; (i + 1u) < n; i++) {
+    if (t[i + 1u] == t[i]) {
       return DRDC_E_DIVIDE_BY_ZERO;
     }
-    if (t[i + 1] < t[i]) {
+    if (t[i + 1u] < t[i]) {
       return DRDC_E_RANGE;
     }
   }
@@ -42,7 +44,7 @@ static uint64_t div_round(uint64_t num, uint64_t den)
   uint64_t r = num - (q * den);
 
   /* r >= den - r, written so that nothing overflows */
-  return (r >= den - r) ? (q + 1u) : q;
+  return (r >= (den - r)) ? (q + 1u) : q;
 }
 
 drdc_status_t drdc_time_delta_derivative(const int64_t *t_ns,
@@ -55,18 +57,18 @@ drdc_status_t drdc_time_delta_derivative(const int64_t *t_ns,
   if ((t_ns == NULL) || (f == NULL) || (deriv == NULL)) {
     return DRDC_E_NULL;
   }
-  if (n < 2) {
+  if (n < 2u) {
     return DRDC_E_RANGE;
   }
   st = check_stamps(t_ns, n);
   if (st != DRDC_OK) {
     return st;
   }
-  for (i = 0; i + 1 < n; i++) {
-    int64_t df = (int64_t)f[i + 1] - (int64_t)f[i]; /* 33 bits */
+  for (i = 0; (i + 1u) < n; i++) {
+    int64_t df = (int64_t)f[i + 1u] - (int64_t)f[i]; /* 33 bits */
     uint64_t mag = (uint64_t)((df < 0) ? -df : df) * NS_PER_SECOND_U64;
     /* mag < 2^32 * 2^30 = 2^62, and so is the quotient: fits int64_t */
-    int64_t q = (int64_t)div_round(mag, graininess(t_ns[i], t_ns[i + 1]));
+    int64_t q = (int64_t)div_round(mag, graininess(t_ns[i], t_ns[i + 1u]));
 
     deriv[i] = (df < 0) ? -q : q;
   }
@@ -79,17 +81,20 @@ struct i128 {
   uint64_t lo;
 };
 
-static void add128(struct i128 *acc, uint64_t hi, uint64_t lo, int negative)
+static void add128(struct i128 *acc, uint64_t hi, uint64_t lo, bool negative)
 {
+  uint64_t h = hi;
+  uint64_t l = lo;
+
   if (negative) { /* two's complement of (hi, lo) */
-    hi = ~hi;
-    lo = ~lo + 1u;
-    if (lo == 0u) {
-      hi += 1u;
+    h = ~hi;
+    l = ~lo + 1u;
+    if (l == 0u) {
+      h += 1u;
     }
   }
-  acc->lo += lo;
-  acc->hi += hi + ((acc->lo < lo) ? 1u : 0u);
+  acc->lo += l;
+  acc->hi += h + ((acc->lo < l) ? 1u : 0u);
 }
 
 drdc_status_t drdc_time_delta_integral(const int64_t *t_ns, const int32_t *f,
@@ -100,7 +105,7 @@ drdc_status_t drdc_time_delta_integral(const int64_t *t_ns, const int32_t *f,
   uint64_t rem = 0;
   uint64_t q_hi;
   uint64_t q_lo;
-  int negative;
+  bool negative;
   size_t i;
   int k;
   drdc_status_t st;
@@ -108,15 +113,15 @@ drdc_status_t drdc_time_delta_integral(const int64_t *t_ns, const int32_t *f,
   if ((t_ns == NULL) || (f == NULL) || (integral == NULL)) {
     return DRDC_E_NULL;
   }
-  if (n == 0) {
+  if (n == 0u) {
     return DRDC_E_RANGE;
   }
   st = check_stamps(t_ns, n);
   if (st != DRDC_OK) {
     return st;
   }
-  for (i = 0; i + 1 < n; i++) {
-    uint64_t mu = graininess(t_ns[i], t_ns[i + 1]);
+  for (i = 0; (i + 1u) < n; i++) {
+    uint64_t mu = graininess(t_ns[i], t_ns[i + 1u]);
     uint64_t a = (f[i] < 0) ? (uint64_t)(-(int64_t)f[i]) : (uint64_t)f[i];
     /* a <= 2^31, mu < 2^64: a * mu = a * mu_hi * 2^32 + a * mu_lo, each
      * partial product < 2^63. */
@@ -161,8 +166,9 @@ drdc_status_t drdc_time_delta_integral(const int64_t *t_ns, const int32_t *f,
     return DRDC_E_OVERFLOW;
   }
   if (negative) {
-    /* -q_lo in [-2^63, 0]: written without overflowing int64_t */
-    *integral = (q_lo == (UINT64_C(1) << 63)) ? INT64_MIN
+    /* -q_lo in [-2^63, 0]: written without overflowing int64_t, and -2^63
+     * spelt -INT64_MAX - 1 as <stdint.h> does, an int64_t expression */
+    *integral = (q_lo == (UINT64_C(1) << 63)) ? (-INT64_MAX - 1)
                                                : -(int64_t)q_lo;
   } else {
     *integral = (int64_t)q_lo;

@@ -12,16 +12,25 @@
 /* "YYYY-MM-DDTHH:MM:SS" + "Z" + NUL */
 #define BASE_SIZE 21
 
-/* Write `n` decimal digits of v (0 <= v < 10^n), most significant first. */
+/* Write `n` decimal digits of v (0 <= v < 10^n), most significant first;
+ * return the position after them. */
 static char *put_digits(char *p, int32_t v, int32_t n)
 {
+  int32_t rest = v;
   int32_t i;
 
   for (i = n - 1; i >= 0; i--) {
-    p[i] = (char)('0' + (v % 10));
-    v /= 10;
+    p[i] = (char)('0' + (rest % 10));
+    rest /= 10;
   }
-  return p + n;
+  return &p[n];
+}
+
+/* Write the character ch; return the position after it. */
+static char *put_char(char *p, char ch)
+{
+  p[0] = ch;
+  return &p[1];
 }
 
 drdc_status_t drdc_time_iso8601_format(const drdc_time_leap_t *leap,
@@ -42,7 +51,7 @@ drdc_status_t drdc_time_iso8601_format(const drdc_time_leap_t *leap,
   if ((digits < 0) || (digits > MAX_DIGITS)) {
     return DRDC_E_RANGE;
   }
-  need = (size_t)BASE_SIZE + ((digits > 0) ? (size_t)digits + 1u : 0u);
+  need = (size_t)BASE_SIZE + ((digits > 0) ? ((size_t)digits + 1u) : 0u);
   st = drdc_time_to_civil(leap, utc, &c);
   if (st != DRDC_OK) {
     return st;
@@ -51,21 +60,21 @@ drdc_status_t drdc_time_iso8601_format(const drdc_time_leap_t *leap,
     return DRDC_E_BUFFER;
   }
   p = put_digits(buf, c.year, 4); /* DRDC_YEAR_MAX has four digits */
-  *p++ = '-';
+  p = put_char(p, '-');
   p = put_digits(p, c.month, 2);
-  *p++ = '-';
+  p = put_char(p, '-');
   p = put_digits(p, c.day, 2);
-  *p++ = 'T';
+  p = put_char(p, 'T');
   p = put_digits(p, c.hour, 2);
-  *p++ = ':';
+  p = put_char(p, ':');
   p = put_digits(p, c.minute, 2);
-  *p++ = ':';
+  p = put_char(p, ':');
   p = put_digits(p, c.second, 2);
   if (digits > 0) {
-    *p++ = '.';
+    p = put_char(p, '.');
     p = put_digits(p, c.nsec / pow10[MAX_DIGITS - digits], digits);
   }
-  *p++ = 'Z';
+  p = put_char(p, 'Z');
   *p = '\0';
   return DRDC_OK;
 }
@@ -91,7 +100,8 @@ drdc_status_t drdc_time_iso8601_parse(const drdc_time_leap_t *leap,
   /* Field positions in "YYYY-MM-DDTHH:MM:SS": start, width, and the
    * separator that follows it. */
   static const struct {
-    uint8_t at, width;
+    uint8_t at;
+    uint8_t width;
     char after;
   } fields[6] = { { 0, 4, '-' },  { 5, 2, '-' },  { 8, 2, 'T' },
                   { 11, 2, ':' }, { 14, 2, ':' }, { 17, 2, '\0' } };
@@ -106,16 +116,19 @@ drdc_status_t drdc_time_iso8601_parse(const drdc_time_leap_t *leap,
   /* The scan stops at the first mismatch, so it never reads past the
    * string's NUL. */
   for (i = 0; i < 6; i++) {
-    v[i] = get_digits(text + fields[i].at, fields[i].width);
+    char after;
+
+    v[i] = get_digits(&text[fields[i].at], fields[i].width);
     if (v[i] < 0) {
       return DRDC_E_SYNTAX;
     }
-    if ((fields[i].after != '\0')
-        && (text[fields[i].at + fields[i].width] != fields[i].after)) {
+    after = fields[i].after;
+    if ((after != '\0')
+        && (text[fields[i].at + fields[i].width] != after)) {
       return DRDC_E_SYNTAX;
     }
   }
-  p = text + 19;
+  p = &text[19];
   c.nsec = 0;
   if (*p == '.') {
     int32_t n = 0;

@@ -24,6 +24,7 @@ drdc_status_t drdc_time_jaus_pack(const drdc_time_leap_t *leap,
                                   const drdc_time_t *utc, uint32_t *stamp)
 {
   drdc_time_civil_t c;
+  int32_t msec;
   drdc_status_t st;
 
   if (stamp == NULL) {
@@ -34,10 +35,11 @@ drdc_status_t drdc_time_jaus_pack(const drdc_time_leap_t *leap,
     return st;
   }
   /* Every field is within its mask after the civil conversion. */
+  msec = c.nsec / NS_PER_MS;
   *stamp = ((uint32_t)c.day << DAY_SHIFT) | ((uint32_t)c.hour << HOUR_SHIFT)
            | ((uint32_t)c.minute << MINUTE_SHIFT)
            | ((uint32_t)c.second << SECOND_SHIFT)
-           | ((uint32_t)(c.nsec / NS_PER_MS) << MSEC_SHIFT);
+           | ((uint32_t)msec << MSEC_SHIFT);
   return DRDC_OK;
 }
 
@@ -54,19 +56,19 @@ drdc_status_t drdc_time_jaus_unpack(uint32_t stamp,
   f.minute = (stamp >> MINUTE_SHIFT) & MINUTE_MASK;
   f.second = (stamp >> SECOND_SHIFT) & SECOND_MASK;
   f.msec = (stamp >> MSEC_SHIFT) & MSEC_MASK;
-  if (f.day == 0) {
+  if (f.day == 0u) {
     return DRDC_E_DAY;
   }
-  if (f.hour > 23) {
+  if (f.hour > 23u) {
     return DRDC_E_HOUR;
   }
-  if (f.minute > 59) {
+  if (f.minute > 59u) {
     return DRDC_E_MINUTE;
   }
-  if (f.second > 60) {
+  if (f.second > 60u) {
     return DRDC_E_SECOND;
   }
-  if (f.msec > 999) {
+  if (f.msec > 999u) {
     return DRDC_E_NANOSECOND;
   }
   *fields = f;
@@ -115,6 +117,8 @@ drdc_status_t drdc_time_jaus_to_utc(const drdc_time_leap_t *leap,
     } else if (c.month > 12) {
       c.month = 1;
       c.year++;
+    } else {
+      /* 1..12 already: the year stays */
     }
     st = drdc_time_from_civil(leap, &c, &t);
     if (st != DRDC_OK) {

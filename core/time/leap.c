@@ -7,6 +7,8 @@
  */
 #include <drdc/time_scales.h>
 
+#include <stdbool.h>
+
 #include "time_impl.h"
 
 /* Field ranges of the GPS UTC parameters (IS-GPS-200 table 20-IX):
@@ -70,7 +72,7 @@ drdc_status_t drdc_time_leap_update_gps(drdc_time_leap_t *leap,
   int32_t entry_day;
   int32_t new_off;
   int32_t prev_off;
-  int add = 0;
+  bool add = false;
 
   if (leap == NULL) {
     return DRDC_E_NULL;
@@ -86,9 +88,9 @@ drdc_status_t drdc_time_leap_update_gps(drdc_time_leap_t *leap,
   }
   /* WN_LSF is within -128..+127 weeks of the current week: the difference
    * of the low 8 bits, brought into that window. Both terms are 0..255,
-   * so the sum below is 0..510 before the remainder. */
-  delta = ((wn_lsf - (week_now % GPS_WN_LSF_MODULUS)) + GPS_WN_LSF_MODULUS
-           + GPS_WN_LSF_HALF) % GPS_WN_LSF_MODULUS - GPS_WN_LSF_HALF;
+   * so the sum below is 129..639 before the remainder: never negative. */
+  delta = (((wn_lsf - (week_now % GPS_WN_LSF_MODULUS)) + GPS_WN_LSF_MODULUS
+            + GPS_WN_LSF_HALF) % GPS_WN_LSF_MODULUS) - GPS_WN_LSF_HALF;
   week = week_now + delta;
   if (week < 0) {
     return DRDC_E_LEAP_TABLE;
@@ -106,14 +108,15 @@ drdc_status_t drdc_time_leap_update_gps(drdc_time_leap_t *leap,
   if (dt_lsf == dt_ls) {
     /* Nothing scheduled; the event fields name the last leap second. */
     if (new_off != last.tai_utc) {
-      if ((new_off - last.tai_utc != 1) && (new_off - last.tai_utc != -1)) {
+      if (((new_off - last.tai_utc) != 1)
+          && ((new_off - last.tai_utc) != -1)) {
         return DRDC_E_LEAP_TABLE;
       }
       prev_off = last.tai_utc;
-      add = 1;
+      add = true;
     }
   } else {
-    add = 1;
+    add = true;
   }
   if (add) {
     if (entry_day <= last.day) {

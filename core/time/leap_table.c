@@ -45,7 +45,7 @@ static const drdc_time_leap_t builtin_state = {
   builtin_table,
   DRDC_TIME_LEAP_BUILTIN_COUNT,
   0,
-  { { 0, 0 } },
+  { [0] = { 0, 0 } }, /* no entries learnt: all zero */
   DRDC_TIME_LEAP_BUILTIN_EXPIRY_DAY,
 };
 

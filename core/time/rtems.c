@@ -61,7 +61,7 @@ drdc_status_t drdc_time_utc_to_rtems_tod(const drdc_time_leap_t *leap,
   if (tod == NULL) {
     return DRDC_E_NULL;
   }
-  if ((ticks_per_second == 0)
+  if ((ticks_per_second == 0u)
       || (ticks_per_second > (uint32_t)DRDC_NS_PER_SECOND)) {
     return DRDC_E_TICKS;
   }
@@ -95,31 +95,33 @@ drdc_status_t drdc_time_rtems_tod_to_utc(const drdc_time_rtems_tod_t *tod,
                                          drdc_time_t *utc)
 {
   drdc_time_civil_t c;
+  uint64_t nsec;
 
   if ((tod == NULL) || (utc == NULL)) {
     return DRDC_E_NULL;
   }
-  if ((ticks_per_second == 0)
+  if ((ticks_per_second == 0u)
       || (ticks_per_second > (uint32_t)DRDC_NS_PER_SECOND)) {
     return DRDC_E_TICKS;
   }
   /* Bound every unsigned field before it becomes an int32_t. */
-  if ((tod->year < DRDC_TIME_RTEMS_YEAR_MIN) || (tod->year > DRDC_YEAR_MAX)) {
+  if ((tod->year < (uint32_t)DRDC_TIME_RTEMS_YEAR_MIN)
+      || (tod->year > (uint32_t)DRDC_YEAR_MAX)) {
     return DRDC_E_YEAR;
   }
-  if ((tod->month < 1) || (tod->month > 12)) {
+  if ((tod->month < 1u) || (tod->month > 12u)) {
     return DRDC_E_MONTH;
   }
-  if ((tod->day < 1) || (tod->day > 31)) {
+  if ((tod->day < 1u) || (tod->day > 31u)) {
     return DRDC_E_DAY;
   }
-  if (tod->hour > 23) {
+  if (tod->hour > 23u) {
     return DRDC_E_HOUR;
   }
-  if (tod->minute > 59) {
+  if (tod->minute > 59u) {
     return DRDC_E_MINUTE;
   }
-  if (tod->second > 59) {
+  if (tod->second > 59u) {
     return DRDC_E_SECOND;
   }
   if (tod->ticks >= ticks_per_second) {
@@ -132,7 +134,8 @@ drdc_status_t drdc_time_rtems_tod_to_utc(const drdc_time_rtems_tod_t *tod,
   c.minute = (int32_t)tod->minute;
   c.second = (int32_t)tod->second;
   /* ticks < ticks_per_second <= 1e9: the product is < 1e18. */
-  c.nsec = (int32_t)(((uint64_t)tod->ticks * (uint64_t)DRDC_NS_PER_SECOND)
-                     / ticks_per_second);
+  nsec = ((uint64_t)tod->ticks * (uint64_t)DRDC_NS_PER_SECOND)
+         / ticks_per_second;
+  c.nsec = (int32_t)nsec; /* < 1e9 */
   return drdc_time_from_civil(NULL, &c, utc);
 }

@@ -67,7 +67,7 @@ drdc_status_t drdc_time_tai_to_utc(const drdc_time_leap_t *leap,
   i = drdc_time_leap_count(l) - 1;
   while (i >= 0) {
     e = drdc_time_leap_entry(l, i);
-    if (((int64_t)e.day * SECONDS_PER_DAY) + e.tai_utc <= t) {
+    if ((((int64_t)e.day * SECONDS_PER_DAY) + e.tai_utc) <= t) {
       break;
     }
     i--;

@@ -41,6 +41,8 @@ drdc_status_t drdc_time_check(const drdc_time_leap_t *leap,
     }
   } else if (utc->nsec >= DRDC_NS_PER_SECOND) {
     return DRDC_E_NANOSECOND;
+  } else {
+    /* any other second of the day, nsec < 1e9 */
   }
   return DRDC_OK;
 }
@@ -75,6 +77,8 @@ drdc_status_t drdc_time_civil_check(const drdc_time_leap_t *leap,
     }
   } else if (c->second == 60) {
     return DRDC_E_SECOND;
+  } else {
+    /* seconds 0..59 before 23:59:59 exist on every day */
   }
   if ((c->nsec < 0) || (c->nsec >= DRDC_NS_PER_SECOND)) {
     return DRDC_E_NANOSECOND;
