@@ -50,7 +50,7 @@ static uint64_t exp_small_q63(uint64_t mag, int neg)
 
   for (n = 1u; n < 32u; n++) {
     term = fx_mul_shr_round(term, mag, 63u);
-    term = (term + (n >> 1)) / n;
+    term = fx_div_u64_small(term + (n >> 1), (uint32_t)n);
     if (term == 0u) {
       break;
     }
@@ -136,7 +136,7 @@ static uint64_t atanh_series_q62(uint64_t s)
     if (power == 0u) {
       break;
     }
-    sum += (power + (n >> 1)) / n;
+    sum += fx_div_u64_small(power + (n >> 1), (uint32_t)n);
   }
   return sum;
 }
