@@ -129,7 +129,15 @@ uint64_t drdc_fx_hypot_s64(int64_t x, int64_t y);
 drdc_status_t drdc_fx_hypot_q15_16(drdc_q15_16_t x, drdc_q15_16_t y,
                                    drdc_q15_16_t *out);
 
-/** Saturating drdc_fx_hypot_q15_16(): INT32_MAX and DRDC_W_SATURATED. */
+/**
+ * Saturating form of drdc_fx_hypot_q15_16(): the same correctly rounded
+ * result when it fits; otherwise `*out` = INT32_MAX, the limit on the side
+ * of the true result, and DRDC_W_SATURATED.
+ *
+ * @retval DRDC_OK written
+ * @retval DRDC_W_SATURATED written, clamped to the limit
+ * @retval DRDC_E_NULL `out` is NULL; nothing written
+ */
 drdc_status_t drdc_fx_hypot_q15_16_sat(drdc_q15_16_t x, drdc_q15_16_t y,
                                        drdc_q15_16_t *out);
 
