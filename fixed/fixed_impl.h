@@ -29,14 +29,15 @@ static inline uint64_t fx_abs64(int64_t x)
   return (x < 0) ? (UINT64_C(0) - (uint64_t)x) : (uint64_t)x;
 }
 
-/** n / d rounded to nearest, ties away from zero (d != 0). The
- *  comparison r >= d - r is 2r >= d without overflow. */
+/** n / d rounded to nearest, ties away from zero, for d != 0 and
+ *  n <= 2^63 (so n + d / 2 cannot overflow). One division: n / d is a tie
+ *  k + 1/2 only for an even d, and then n + d / 2 = (k + 1) d; otherwise
+ *  adding floor(d / 2) reaches the next multiple of d exactly when the
+ *  remainder is at least half of d. (Computing the remainder as well would
+ *  cost a second libgcc call on 32-bit targets.) */
 static inline uint64_t fx_div_round_u64(uint64_t n, uint64_t d)
 {
-  uint64_t q = n / d;
-  uint64_t r = n - (q * d);
-
-  return (r >= (d - r)) ? (q + 1u) : q;
+  return (n + (d >> 1)) / d;
 }
 
 /**
@@ -56,7 +57,13 @@ static inline drdc_status_t fx_finish_s32(int neg, uint64_t mag, int sat,
     *out = neg ? INT32_MIN : INT32_MAX;
     return DRDC_W_SATURATED;
   }
-  *out = neg ? (int32_t)(0u - (uint32_t)mag) : (int32_t)mag;
+  /* negate in range: 2^31 is INT32_MIN, smaller magnitudes negate as
+   * int32_t (no out-of-range conversion anywhere) */
+  if (neg && (mag == (UINT64_C(1) << 31))) {
+    *out = INT32_MIN;
+  } else {
+    *out = neg ? -(int32_t)mag : (int32_t)mag;
+  }
   return DRDC_OK;
 }
 
@@ -81,6 +88,25 @@ static inline drdc_status_t fx_finish_s64(int neg, int too_big, uint64_t mag,
     *out = neg ? -(int64_t)mag : (int64_t)mag;
   }
   return DRDC_OK;
+}
+
+/** x / n (truncated) for a small divisor 0 < n < 2^16, by four 32-bit
+ *  divisions of 16-bit digits (each partial dividend is below n 2^16):
+ *  no call to libgcc's 64-bit division, which is slower and needs stack. */
+static inline uint64_t fx_div_u64_small(uint64_t x, uint32_t n)
+{
+  uint64_t q = 0;
+  uint32_t r = 0;
+  int shift;
+
+  for (shift = 48; shift >= 0; shift -= 16) {
+    uint32_t cur = (r << 16) | (uint32_t)((x >> shift) & 0xFFFFu);
+    uint32_t digit = cur / n;
+
+    r = cur - (digit * n);
+    q = (q << 16) | digit;
+  }
+  return q;
 }
 
 /** Unsigned 128-bit integer as two 64-bit halves. */

@@ -4,6 +4,8 @@
 
 Run from the top of the tree with the project's Python packages:
   PYTHONPATH=.deps/python python3 fixed/gen_tables.py
+(tests/ref/generate.py runs it too, and `./waf check` fails when the
+committed table differs from what this script computes.)
 Values come from mpmath at 100 digits, rounded to nearest (ties away from
 zero, never met by these irrational values) and written as exact integers.
 """
@@ -29,7 +31,8 @@ def rows(values, per_line=6):
     return "\n".join(out)
 
 
-def main():
+def table_text():
+    """The text of fixed/trig_table.c."""
     sin_q31 = [rnd(mpmath.sin(mpmath.pi / 2 * i / STEPS) * 2 ** 31)
                for i in range(STEPS + 1)]
     t0 = [mpmath.mpf(i) / STEPS for i in range(STEPS + 1)]
@@ -77,8 +80,12 @@ const int32_t fx_atan_c3[FX_TRIG_STEPS + 1] = {
 """ % (rows(["%du" % v for v in sin_q31]), rows(["%du" % v for v in atan_a]),
        rows(["%du" % v for v in atan_d1]), rows(["%d" % v for v in atan_c2]),
        rows(["%d" % v for v in atan_c3]))
+    return text
+
+
+def main():
     with open(os.path.join(HERE, "trig_table.c"), "w") as f:
-        f.write(text)
+        f.write(table_text())
     print("wrote fixed/trig_table.c")
 
 

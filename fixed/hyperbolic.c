@@ -50,7 +50,7 @@ static uint64_t exp_small_q63(uint64_t mag, int neg)
 
   for (n = 1u; n < 32u; n++) {
     term = fx_mul_shr_round(term, mag, 63u);
-    term = (term + (n >> 1)) / n;
+    term = fx_div_u64_small(term + (n >> 1), (uint32_t)n);
     if (term == 0u) {
       break;
     }
@@ -59,8 +59,12 @@ static uint64_t exp_small_q63(uint64_t mag, int neg)
   return sum;
 }
 
-/* sinh (plus == 0) or cosh (plus == 1) of |x| <= EXP_ARG_MAX, Q58. */
-static int sinh_cosh_mag(uint64_t x, int plus, uint64_t *out)
+/* Internal marker of a sinh/cosh result beyond INT64_MAX. */
+#define SINH_COSH_OVERFLOW UINT64_MAX
+
+/* sinh (plus == 0) or cosh (plus == 1) of |x| <= EXP_ARG_MAX in Q58, or
+ * SINH_COSH_OVERFLOW when it does not fit int64_t. */
+static uint64_t sinh_cosh_mag(uint64_t x, int plus)
 {
   uint64_t k = (x + (uint64_t)(LN2_Q58 / 2)) / (uint64_t)LN2_Q58; /* <= 6 */
   fx_u128_t kln2 = fx_shr_u128(fx_add_u128(fx_mul_u64(k, LN2_Q64), 1u), 1u);
@@ -86,21 +90,23 @@ static int sinh_cosh_mag(uint64_t x, int plus, uint64_t *out)
   }
   n = fx_shr_u128(fx_add_u128(n, UINT64_C(1) << (shift - 1u)), shift);
   if ((n.hi != 0u) || (n.lo > (uint64_t)INT64_MAX)) {
-    return 1;
+    return SINH_COSH_OVERFLOW;
   }
-  *out = n.lo;
-  return 0;
+  return n.lo;
 }
 
 drdc_status_t drdc_fx_sinh_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
 {
-  uint64_t r = 0;
+  uint64_t r;
 
   if (out == NULL) {
     return DRDC_E_NULL;
   }
-  if ((x > EXP_ARG_MAX) || (x < -EXP_ARG_MAX)
-      || sinh_cosh_mag(fx_abs64(x), 0, &r)) {
+  if ((x > EXP_ARG_MAX) || (x < -EXP_ARG_MAX)) {
+    return DRDC_E_OVERFLOW;
+  }
+  r = sinh_cosh_mag(fx_abs64(x), 0);
+  if (r == SINH_COSH_OVERFLOW) {
     return DRDC_E_OVERFLOW;
   }
   *out = (x < 0) ? -(int64_t)r : (int64_t)r;
@@ -109,13 +115,16 @@ drdc_status_t drdc_fx_sinh_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
 
 drdc_status_t drdc_fx_cosh_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
 {
-  uint64_t r = 0;
+  uint64_t r;
 
   if (out == NULL) {
     return DRDC_E_NULL;
   }
-  if ((x > EXP_ARG_MAX) || (x < -EXP_ARG_MAX)
-      || sinh_cosh_mag(fx_abs64(x), 1, &r)) {
+  if ((x > EXP_ARG_MAX) || (x < -EXP_ARG_MAX)) {
+    return DRDC_E_OVERFLOW;
+  }
+  r = sinh_cosh_mag(fx_abs64(x), 1);
+  if (r == SINH_COSH_OVERFLOW) {
     return DRDC_E_OVERFLOW;
   }
   *out = (int64_t)r;
@@ -136,7 +145,7 @@ static uint64_t atanh_series_q62(uint64_t s)
     if (power == 0u) {
       break;
     }
-    sum += (power + (n >> 1)) / n;
+    sum += fx_div_u64_small(power + (n >> 1), (uint32_t)n);
   }
   return sum;
 }
@@ -185,13 +194,14 @@ static void log_parts(uint64_t num, uint64_t den, int32_t *e, uint64_t *s,
   (void)fx_div_round_u128(q, m + ONE_Q62, s);
 }
 
-/* e ln 2 / 2^half + atanh(s) 2 / 2^half, rounded to Q58 (half = 1 gives
- * ln(y) / 2, half = 0 gives ln(y)); e >= 0 here. */
-static uint64_t log_q58(int32_t e, uint64_t s, int s_neg, unsigned half)
+/* (e ln 2 + 2 atanh(s)) / 2^half rounded to Q58, given at = atanh(s) in
+ * Q62 (half = 1 gives ln(y) / 2, half = 0 gives ln(y)); e >= 0 here. The
+ * caller evaluates the series first, so the two frames are not stacked. */
+static uint64_t log_q58(int32_t e, uint64_t at, int s_neg, unsigned half)
 {
   /* e ln 2 in Q64 (128 bits), then Q62: e <= 64 keeps it < 2^68 */
   fx_u128_t acc = fx_mul_u64((uint64_t)e, LN2_Q64);
-  uint64_t a = atanh_series_q62(s) << 1; /* 2 atanh(s), Q62, < 2^62 */
+  uint64_t a = at << 1; /* 2 atanh(s), Q62, < 2^62 */
 
   acc = fx_shr_u128(acc, 2u); /* Q62 (drops 2^-63 at most) */
   if (s_neg) {
@@ -226,7 +236,7 @@ drdc_status_t drdc_fx_atanh_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
     /* atanh(x) = ln((1 + x) / (1 - x)) / 2, both exact in Q58 */
     log_parts((UINT64_C(1) << 58) + ax, (UINT64_C(1) << 58) - ax, &e, &s,
               &s_neg);
-    r = log_q58(e, s, s_neg, 1u);
+    r = log_q58(e, atanh_series_q62(s), s_neg, 1u);
   }
   *out = (x < 0) ? -(int64_t)r : (int64_t)r;
   return DRDC_OK;
@@ -259,7 +269,7 @@ drdc_status_t drdc_fx_asinh_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
 
     log_parts((ax >> 1) + (h >> 1) + (ax & h & 1u), UINT64_C(1) << 57, &e,
               &s, &s_neg);
-    r = log_q58(e, s, s_neg, 0u);
+    r = log_q58(e, atanh_series_q62(s), s_neg, 0u);
   }
   *out = (x < 0) ? -(int64_t)r : (int64_t)r;
   return DRDC_OK;

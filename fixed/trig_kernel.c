@@ -45,11 +45,14 @@ int64_t fx_sin_quadrant_q62(uint32_t r)
   int64_t c0 = (int64_t)fx_sin_q31[FX_TRIG_STEPS - i];
   int64_t dl = fx_floor_shift64((int64_t)d * TWO_PI_Q31, 24u);   /* Q39 */
   int64_t d2 = (int64_t)((uint64_t)(dl * dl) >> 32);              /* Q46 */
-  int64_t d3 = fx_floor_shift64(d2 * dl, 27u) / 6;                /* Q58 */
+  int64_t d3 = fx_floor_shift64(d2 * dl, 27u);                    /* Q58 */
   int64_t acc = s0 << 31;                                         /* Q62 */
 
   acc += fx_floor_shift64(c0 * dl, 8u);    /* c0 delta:         Q70 */
   acc -= (s0 * d2) >> 16;                  /* s0 delta^2 / 2:   Q77 */
+  /* delta^3 / 6 by the magnitude (truncated, 2^-58) */
+  d3 = (d3 < 0) ? -(int64_t)fx_div_u64_small(fx_abs64(d3), 6u)
+                : (int64_t)fx_div_u64_small((uint64_t)d3, 6u);
   acc -= fx_floor_shift64(c0 * d3, 27u);   /* c0 delta^3 / 6:   Q89 */
   return (acc < 0) ? 0 : acc;
 }

@@ -4,6 +4,7 @@
  * @brief Tests of the fix16_t interop: same bits both ways, libfixmath's
  *        overflow marker refused both ways, outputs unchanged on error.
  */
+#include <drdc/fixed.h>
 #include <drdc/fixed_fix16.h>
 
 #include <stddef.h>

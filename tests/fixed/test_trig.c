@@ -41,9 +41,12 @@ static void note(int32_t got, int32_t want)
 /* Angles compare modulo one turn. */
 static void note_angle(uint32_t got, uint32_t want)
 {
-  uint32_t d = got - want;
+  int64_t d = (int64_t)(got - want);
 
-  note((d >= (UINT32_C(1) << 31)) ? -(int32_t)(0u - d) : (int32_t)d, 0);
+  if (d >= ((int64_t)1 << 31)) {
+    d -= (int64_t)1 << 32;
+  }
+  note((d < INT32_MIN + 1) ? INT32_MAX : (int32_t)((d < 0) ? -d : d), 0);
 }
 
 /* Every grid angle k 2^16 of the circle, sin and cos (131 072 values),
@@ -198,6 +201,35 @@ static void test_tan_poles_and_bad_inputs(void)
   TEST_ASSERT_EQUAL_INT32(-(1 << 16), t);
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_tan_bam32(UINT32_C(1) << 31, &t));
   TEST_ASSERT_EQUAL_INT32(0, t);
+}
+
+/* Regression: before tan used the cot series within 2^21 units of a pole,
+ * the quotient of two kernel values there was off by up to 53 LSB (the
+ * kernel's 2^-40 absolute precision on a tiny denominator). mpmath
+ * values, exactly on both sides of the pole at 90 degrees. */
+static void test_regression_tan_near_pole_precision(void)
+{
+  static const struct {
+    uint32_t d;    /* distance from the pole, units */
+    int32_t tan_q16; /* tan(90 deg - d), rounded */
+  } pt[] = {
+    { 100000u, 447981336 },                  /* 447981335.806 */
+    { (UINT32_C(1) << 21) - 1u, 21361358 },  /* last cot-series point */
+    { UINT32_C(1) << 21, 21361348 },         /* first kernel point */
+    { UINT32_C(1) << 24, 2669641 },
+  };
+  size_t i;
+
+  for (i = 0; i < COUNT(pt); i++) {
+    drdc_q15_16_t t = 0;
+
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_fx_tan_bam32((UINT32_C(1) << 30) - pt[i].d, &t));
+    TEST_ASSERT_EQUAL_INT32(pt[i].tan_q16, t);
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_fx_tan_bam32((UINT32_C(1) << 30) + pt[i].d, &t));
+    TEST_ASSERT_EQUAL_INT32(-pt[i].tan_q16, t);
+  }
 }
 
 /* 8 octants x 8 193 grid points from the stored octant. */
@@ -361,6 +393,7 @@ void suite_fixed_trig(void)
   RUN_TEST(test_tan_full_circle_grid);
   RUN_TEST(test_tan_near_poles_and_random);
   RUN_TEST(test_tan_poles_and_bad_inputs);
+  RUN_TEST(test_regression_tan_near_pole_precision);
   RUN_TEST(test_atan2_full_circle_grid);
   RUN_TEST(test_atan2_random_and_extremes);
   RUN_TEST(test_asin_acos_grid);

@@ -72,8 +72,15 @@ int64_t drdc_fx_rshift_round_s64(int64_t x, unsigned n);
  */
 drdc_status_t drdc_fx_q15_16_from_int(int32_t i, drdc_q15_16_t *out);
 
-/** Saturating drdc_fx_q15_16_from_int(): out-of-range `i` gives
- *  INT32_MIN or INT32_MAX and DRDC_W_SATURATED. */
+/**
+ * Saturating form of drdc_fx_q15_16_from_int(): the same correctly rounded
+ * result when it fits; otherwise `*out` = INT32_MIN or INT32_MAX, the limit
+ * on the side of the true result, and DRDC_W_SATURATED.
+ *
+ * @retval DRDC_OK written
+ * @retval DRDC_W_SATURATED written, clamped to the limit
+ * @retval DRDC_E_NULL `out` is NULL; nothing written
+ */
 drdc_status_t drdc_fx_q15_16_from_int_sat(int32_t i, drdc_q15_16_t *out);
 
 /** Q15.16 -> nearest integer (ties away from zero); never fails: the
@@ -91,8 +98,15 @@ int32_t drdc_fx_int_from_q15_16(drdc_q15_16_t x);
  */
 drdc_status_t drdc_fx_q47_16_from_int(int64_t i, drdc_q47_16_t *out);
 
-/** Saturating drdc_fx_q47_16_from_int(): INT64_MIN/INT64_MAX and
- *  DRDC_W_SATURATED when `i` is out of range. */
+/**
+ * Saturating form of drdc_fx_q47_16_from_int(): the same correctly rounded
+ * result when it fits; otherwise `*out` = INT64_MIN or INT64_MAX, the limit
+ * on the side of the true result, and DRDC_W_SATURATED.
+ *
+ * @retval DRDC_OK written
+ * @retval DRDC_W_SATURATED written, clamped to the limit
+ * @retval DRDC_E_NULL `out` is NULL; nothing written
+ */
 drdc_status_t drdc_fx_q47_16_from_int_sat(int64_t i, drdc_q47_16_t *out);
 
 /** Q47.16 -> nearest integer (ties away from zero); never fails. */
@@ -113,7 +127,15 @@ drdc_q47_16_t drdc_fx_q47_16_from_q15_16(drdc_q15_16_t x);
  */
 drdc_status_t drdc_fx_q15_16_from_q47_16(drdc_q47_16_t x, drdc_q15_16_t *out);
 
-/** Saturating drdc_fx_q15_16_from_q47_16(). */
+/**
+ * Saturating form of drdc_fx_q15_16_from_q47_16(): the same correctly
+ * rounded result when it fits; otherwise `*out` = INT32_MIN or INT32_MAX,
+ * the limit on the side of the true result, and DRDC_W_SATURATED.
+ *
+ * @retval DRDC_OK written
+ * @retval DRDC_W_SATURATED written, clamped to the limit
+ * @retval DRDC_E_NULL `out` is NULL; nothing written
+ */
 drdc_status_t drdc_fx_q15_16_from_q47_16_sat(drdc_q47_16_t x,
                                              drdc_q15_16_t *out);
 
@@ -128,7 +150,15 @@ drdc_status_t drdc_fx_q15_16_from_q47_16_sat(drdc_q47_16_t x,
  */
 drdc_status_t drdc_fx_q1_30_from_q15_16(drdc_q15_16_t x, drdc_q1_30_t *out);
 
-/** Saturating drdc_fx_q1_30_from_q15_16(). */
+/**
+ * Saturating form of drdc_fx_q1_30_from_q15_16(): the same correctly rounded
+ * result when it fits; otherwise `*out` = INT32_MIN or INT32_MAX, the limit
+ * on the side of the true result, and DRDC_W_SATURATED.
+ *
+ * @retval DRDC_OK written
+ * @retval DRDC_W_SATURATED written, clamped to the limit
+ * @retval DRDC_E_NULL `out` is NULL; nothing written
+ */
 drdc_status_t drdc_fx_q1_30_from_q15_16_sat(drdc_q15_16_t x,
                                             drdc_q1_30_t *out);
 
@@ -154,14 +184,23 @@ drdc_q15_16_t drdc_fx_q15_16_from_q1_30(drdc_q1_30_t x);
 drdc_status_t drdc_fx_mul_q1_30(drdc_q1_30_t a, drdc_q1_30_t b,
                                 drdc_q1_30_t *out);
 
-/** Saturating drdc_fx_mul_q1_30(). */
+/**
+ * Saturating form of drdc_fx_mul_q1_30(): the same correctly rounded result
+ * when it fits; otherwise `*out` = INT32_MIN or INT32_MAX, the limit on the
+ * side of the true result, and DRDC_W_SATURATED.
+ *
+ * @retval DRDC_OK written
+ * @retval DRDC_W_SATURATED written, clamped to the limit
+ * @retval DRDC_E_NULL `out` is NULL; nothing written
+ */
 drdc_status_t drdc_fx_mul_q1_30_sat(drdc_q1_30_t a, drdc_q1_30_t b,
                                     drdc_q1_30_t *out);
 
 /**
- * Q15.16 product: a * b / 2^16, correctly rounded (same result as
- * libfixmath's fix16_mul with FIXMATH_NO_ROUNDING off, except that
- * overflow is reported instead of returning fix16_overflow).
+ * Q15.16 product: a * b / 2^16, correctly rounded. Same result as
+ * libfixmath's fix16_mul (rounding build) for every in-range product
+ * (checked on the host on 20 million random pairs); overflow is reported
+ * instead of returning fix16_overflow, which equals a valid value.
  *
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL `out` is NULL
@@ -170,7 +209,15 @@ drdc_status_t drdc_fx_mul_q1_30_sat(drdc_q1_30_t a, drdc_q1_30_t b,
 drdc_status_t drdc_fx_mul_q15_16(drdc_q15_16_t a, drdc_q15_16_t b,
                                  drdc_q15_16_t *out);
 
-/** Saturating drdc_fx_mul_q15_16(). */
+/**
+ * Saturating form of drdc_fx_mul_q15_16(): the same correctly rounded result
+ * when it fits; otherwise `*out` = INT32_MIN or INT32_MAX, the limit on the
+ * side of the true result, and DRDC_W_SATURATED.
+ *
+ * @retval DRDC_OK written
+ * @retval DRDC_W_SATURATED written, clamped to the limit
+ * @retval DRDC_E_NULL `out` is NULL; nothing written
+ */
 drdc_status_t drdc_fx_mul_q15_16_sat(drdc_q15_16_t a, drdc_q15_16_t b,
                                      drdc_q15_16_t *out);
 
@@ -184,7 +231,15 @@ drdc_status_t drdc_fx_mul_q15_16_sat(drdc_q15_16_t a, drdc_q15_16_t b,
 drdc_status_t drdc_fx_mul_q47_16(drdc_q47_16_t a, drdc_q47_16_t b,
                                  drdc_q47_16_t *out);
 
-/** Saturating drdc_fx_mul_q47_16(). */
+/**
+ * Saturating form of drdc_fx_mul_q47_16(): the same correctly rounded result
+ * when it fits; otherwise `*out` = INT64_MIN or INT64_MAX, the limit on the
+ * side of the true result, and DRDC_W_SATURATED.
+ *
+ * @retval DRDC_OK written
+ * @retval DRDC_W_SATURATED written, clamped to the limit
+ * @retval DRDC_E_NULL `out` is NULL; nothing written
+ */
 drdc_status_t drdc_fx_mul_q47_16_sat(drdc_q47_16_t a, drdc_q47_16_t b,
                                      drdc_q47_16_t *out);
 
@@ -199,7 +254,16 @@ drdc_status_t drdc_fx_mul_q47_16_sat(drdc_q47_16_t a, drdc_q47_16_t b,
 drdc_status_t drdc_fx_div_q1_30(drdc_q1_30_t a, drdc_q1_30_t b,
                                 drdc_q1_30_t *out);
 
-/** Saturating drdc_fx_div_q1_30(); b == 0 is still DRDC_E_DIVIDE_BY_ZERO. */
+/**
+ * Saturating form of drdc_fx_div_q1_30(): the same correctly rounded result
+ * when it fits; otherwise `*out` = INT32_MIN or INT32_MAX, the limit on the
+ * side of the true result, and DRDC_W_SATURATED.
+ *
+ * @retval DRDC_OK written
+ * @retval DRDC_W_SATURATED written, clamped to the limit
+ * @retval DRDC_E_NULL `out` is NULL; nothing written
+ * @retval DRDC_E_DIVIDE_BY_ZERO the divisor is 0; `*out` unchanged
+ */
 drdc_status_t drdc_fx_div_q1_30_sat(drdc_q1_30_t a, drdc_q1_30_t b,
                                     drdc_q1_30_t *out);
 
@@ -214,7 +278,16 @@ drdc_status_t drdc_fx_div_q1_30_sat(drdc_q1_30_t a, drdc_q1_30_t b,
 drdc_status_t drdc_fx_div_q15_16(drdc_q15_16_t a, drdc_q15_16_t b,
                                  drdc_q15_16_t *out);
 
-/** Saturating drdc_fx_div_q15_16(). */
+/**
+ * Saturating form of drdc_fx_div_q15_16(): the same correctly rounded result
+ * when it fits; otherwise `*out` = INT32_MIN or INT32_MAX, the limit on the
+ * side of the true result, and DRDC_W_SATURATED.
+ *
+ * @retval DRDC_OK written
+ * @retval DRDC_W_SATURATED written, clamped to the limit
+ * @retval DRDC_E_NULL `out` is NULL; nothing written
+ * @retval DRDC_E_DIVIDE_BY_ZERO the divisor is 0; `*out` unchanged
+ */
 drdc_status_t drdc_fx_div_q15_16_sat(drdc_q15_16_t a, drdc_q15_16_t b,
                                      drdc_q15_16_t *out);
 
@@ -229,7 +302,16 @@ drdc_status_t drdc_fx_div_q15_16_sat(drdc_q15_16_t a, drdc_q15_16_t b,
 drdc_status_t drdc_fx_div_q47_16(drdc_q47_16_t a, drdc_q47_16_t b,
                                  drdc_q47_16_t *out);
 
-/** Saturating drdc_fx_div_q47_16(). */
+/**
+ * Saturating form of drdc_fx_div_q47_16(): the same correctly rounded result
+ * when it fits; otherwise `*out` = INT64_MIN or INT64_MAX, the limit on the
+ * side of the true result, and DRDC_W_SATURATED.
+ *
+ * @retval DRDC_OK written
+ * @retval DRDC_W_SATURATED written, clamped to the limit
+ * @retval DRDC_E_NULL `out` is NULL; nothing written
+ * @retval DRDC_E_DIVIDE_BY_ZERO the divisor is 0; `*out` unchanged
+ */
 drdc_status_t drdc_fx_div_q47_16_sat(drdc_q47_16_t a, drdc_q47_16_t b,
                                      drdc_q47_16_t *out);
 
@@ -246,7 +328,16 @@ drdc_status_t drdc_fx_div_q47_16_sat(drdc_q47_16_t a, drdc_q47_16_t b,
 drdc_status_t drdc_fx_muldiv_s32(int32_t a, int32_t b, int32_t c,
                                  int32_t *out);
 
-/** Saturating drdc_fx_muldiv_s32(). */
+/**
+ * Saturating form of drdc_fx_muldiv_s32(): the same correctly rounded result
+ * when it fits; otherwise `*out` = INT32_MIN or INT32_MAX, the limit on the
+ * side of the true result, and DRDC_W_SATURATED.
+ *
+ * @retval DRDC_OK written
+ * @retval DRDC_W_SATURATED written, clamped to the limit
+ * @retval DRDC_E_NULL `out` is NULL; nothing written
+ * @retval DRDC_E_DIVIDE_BY_ZERO the divisor is 0; `*out` unchanged
+ */
 drdc_status_t drdc_fx_muldiv_s32_sat(int32_t a, int32_t b, int32_t c,
                                      int32_t *out);
 
@@ -261,7 +352,16 @@ drdc_status_t drdc_fx_muldiv_s32_sat(int32_t a, int32_t b, int32_t c,
 drdc_status_t drdc_fx_muldiv_s64(int64_t a, int64_t b, int64_t c,
                                  int64_t *out);
 
-/** Saturating drdc_fx_muldiv_s64(). */
+/**
+ * Saturating form of drdc_fx_muldiv_s64(): the same correctly rounded result
+ * when it fits; otherwise `*out` = INT64_MIN or INT64_MAX, the limit on the
+ * side of the true result, and DRDC_W_SATURATED.
+ *
+ * @retval DRDC_OK written
+ * @retval DRDC_W_SATURATED written, clamped to the limit
+ * @retval DRDC_E_NULL `out` is NULL; nothing written
+ * @retval DRDC_E_DIVIDE_BY_ZERO the divisor is 0; `*out` unchanged
+ */
 drdc_status_t drdc_fx_muldiv_s64_sat(int64_t a, int64_t b, int64_t c,
                                      int64_t *out);
 

@@ -21,10 +21,12 @@
  * rounded reference). A square root is never exactly half-way between two
  * integers (4n would equal an odd square), so no tie rule is needed.
  * Checked in tests/fixed/test_sqrt.c by the exact integer criterion
- * (2r - 1)^2 < 4n < (2r + 1)^2 over every uint32 n below 2^20, every
- * square and its neighbours up to 2^64, and millions of structured and
- * pseudo-random points; the Q forms and rsqrt by the same kind of
- * criterion scaled to their formats; hypot against mpmath.
+ * (2r - 1)^2 < 4n < (2r + 1)^2 (as r^2 - r < n <= r^2 + r): every uint32
+ * n below 2^20; k^2 - 1, k^2, k^2 + 1, k^2 + k (rounds down) and
+ * k^2 + k + 1 (rounds up) for every k < 2^16 and for 131 068 k spread up
+ * to 2^32; 262 144 pseudo-random uint64; the Q forms and rsqrt by the
+ * same criterion scaled to their formats; rsqrt and hypot also against
+ * exact roots from Python's math.isqrt (tests/ref/gen_fixed_sqrt.py).
  * @{
  */
 
@@ -129,7 +131,15 @@ uint64_t drdc_fx_hypot_s64(int64_t x, int64_t y);
 drdc_status_t drdc_fx_hypot_q15_16(drdc_q15_16_t x, drdc_q15_16_t y,
                                    drdc_q15_16_t *out);
 
-/** Saturating drdc_fx_hypot_q15_16(): INT32_MAX and DRDC_W_SATURATED. */
+/**
+ * Saturating form of drdc_fx_hypot_q15_16(): the same correctly rounded
+ * result when it fits; otherwise `*out` = INT32_MAX, the limit on the side
+ * of the true result, and DRDC_W_SATURATED.
+ *
+ * @retval DRDC_OK written
+ * @retval DRDC_W_SATURATED written, clamped to the limit
+ * @retval DRDC_E_NULL `out` is NULL; nothing written
+ */
 drdc_status_t drdc_fx_hypot_q15_16_sat(drdc_q15_16_t x, drdc_q15_16_t y,
                                        drdc_q15_16_t *out);
 

@@ -94,8 +94,16 @@ void drdc_fx_sincos_bam32(drdc_bam32_t a, drdc_q1_30_t *s, drdc_q1_30_t *c);
  */
 drdc_status_t drdc_fx_tan_bam32(drdc_bam32_t a, drdc_q15_16_t *out);
 
-/** Saturating drdc_fx_tan_bam32(): out-of-range values give INT32_MAX or
- *  INT32_MIN with DRDC_W_SATURATED; the poles are still DRDC_E_DOMAIN. */
+/**
+ * Saturating form of drdc_fx_tan_bam32(): the same correctly rounded result
+ * when it fits; otherwise `*out` = INT32_MIN or INT32_MAX, the limit on the
+ * side of the true result, and DRDC_W_SATURATED.
+ *
+ * @retval DRDC_OK written
+ * @retval DRDC_W_SATURATED written, clamped to the limit
+ * @retval DRDC_E_NULL `out` is NULL; nothing written
+ * @retval DRDC_E_DOMAIN a pole (2^30 or 3 2^30); `*out` unchanged
+ */
 drdc_status_t drdc_fx_tan_bam32_sat(drdc_bam32_t a, drdc_q15_16_t *out);
 
 /**

@@ -8,7 +8,8 @@
  * fraction bits, so a signed Qm.n value occupies 1 + m + n bits and its
  * real value is raw / 2^n. Q1.30 is an int32_t covering [-2, 2) in steps
  * of 2^-30; Q15.16 is an int32_t covering [-32768, 32768) in steps of
- * 2^-16, bit-identical to libfixmath's fix16_t.
+ * 2^-16, bit-identical to libfixmath's fix16_t. Q47.16 and Q5.58 are
+ * int64_t formats (global lengths; hyperbolic functions).
  *
  * Rounding rule of the whole library: every result that is not exact is
  * rounded to nearest, ties away from zero (2.5 -> 3, -2.5 -> -3), never
