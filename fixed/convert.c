@@ -51,7 +51,7 @@ static drdc_status_t q47_16_from_int(int64_t i, int sat, drdc_q47_16_t *out)
     if (!sat) {
       return DRDC_E_OVERFLOW;
     }
-    *out = (i < 0) ? INT64_MIN : INT64_MAX;
+    *out = (i < 0) ? FX_INT64_MIN : INT64_MAX;
     return DRDC_W_SATURATED;
   }
   /* |i| <= 2^47: the magnitude shift is exact; i * 65536 has no overflow */

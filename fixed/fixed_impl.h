@@ -67,6 +67,11 @@ static inline drdc_status_t fx_finish_s32(int neg, uint64_t mag, int sat,
   return DRDC_OK;
 }
 
+/* INT64_MIN spelled as <stdint.h> spells it: the plain constant
+ * 9223372036854775808 has no signed type, and MISRA rule 7.2 checkers
+ * (cppcheck) read INT64_MIN as that constant. */
+#define FX_INT64_MIN (-INT64_MAX - 1)
+
 /** As fx_finish_s32() for int64; `too_big` flags a magnitude >= 2^64. */
 static inline drdc_status_t fx_finish_s64(int neg, int too_big, uint64_t mag,
                                           int sat, int64_t *out)
@@ -77,13 +82,13 @@ static inline drdc_status_t fx_finish_s64(int neg, int too_big, uint64_t mag,
     if (!sat) {
       return DRDC_E_OVERFLOW;
     }
-    *out = neg ? INT64_MIN : INT64_MAX;
+    *out = neg ? FX_INT64_MIN : INT64_MAX;
     return DRDC_W_SATURATED;
   }
   /* Two's complement negation in uint64_t, then the conversion of a value
    * in int64_t range (2^63 maps to INT64_MIN through the explicit case). */
   if (neg && (mag == (UINT64_C(1) << 63))) {
-    *out = INT64_MIN;
+    *out = FX_INT64_MIN;
   } else {
     *out = neg ? -(int64_t)mag : (int64_t)mag;
   }
@@ -97,14 +102,16 @@ static inline uint64_t fx_div_u64_small(uint64_t x, uint32_t n)
 {
   uint64_t q = 0;
   uint32_t r = 0;
-  int shift;
+  unsigned digit_index;
 
-  for (shift = 48; shift >= 0; shift -= 16) {
-    uint32_t cur = (r << 16) | (uint32_t)((x >> shift) & 0xFFFFu);
+  /* four 16-bit digits, most significant first */
+  for (digit_index = 0u; digit_index < 4u; digit_index++) {
+    unsigned shift = 48u - (16u * digit_index);
+    uint32_t cur = (r << 16u) | (uint32_t)((x >> shift) & 0xFFFFu);
     uint32_t digit = cur / n;
 
     r = cur - (digit * n);
-    q = (q << 16) | digit;
+    q = (q << 16u) | digit;
   }
   return q;
 }

@@ -24,7 +24,7 @@
 #include "fixed_impl.h"
 
 /* ln 2 in Q64 and Q58, rounded. */
-#define LN2_Q64 UINT64_C(12786308645202655660)
+#define LN2_Q64 ((uint64_t)0xB17217F7D1CF79ACu) /* 12786308645202655660 */
 #define LN2_Q58 INT64_C(199786072581291495)
 /* 1.0 in Q62. */
 #define ONE_Q62 (UINT64_C(1) << 62)
@@ -69,19 +69,25 @@ static uint64_t sinh_cosh_mag(uint64_t x, int plus)
   uint64_t k = (x + (uint64_t)(LN2_Q58 / 2)) / (uint64_t)LN2_Q58; /* <= 6 */
   fx_u128_t kln2 = fx_shr_u128(fx_add_u128(fx_mul_u64(k, LN2_Q64), 1u), 1u);
   uint64_t d = (x << 5) - kln2.lo; /* r in Q63 modulo 2^64: |r| < 2^62 */
-  int neg = d >= (UINT64_C(1) << 63);
-  uint64_t mag = neg ? (0u - d) : d;
-  uint64_t ep = exp_small_q63(mag, neg);  /* e^r  */
-  uint64_t em = exp_small_q63(mag, !neg); /* e^-r */
+  int neg = 0;
+  uint64_t mag = d;
+  uint64_t ep;
+  uint64_t em;
   fx_u128_t n;
   unsigned shift = (unsigned)k + 6u; /* 2^(k+1), and Q63 -> Q58 */
 
+  if (d >= (UINT64_C(1) << 63)) {
+    neg = 1;
+    mag = 0u - d;
+  }
+  ep = exp_small_q63(mag, neg);     /* e^r  */
+  em = exp_small_q63(mag, 1 - neg); /* e^-r */
   n.hi = 0u;
   n.lo = ep;
   if (k != 0u) {
     n = fx_shl_u128(n, 2u * (unsigned)k);
   }
-  if (plus) {
+  if (plus != 0) {
     n = fx_add_u128(n, em);
   } else {
     /* e^r 2^(2k) >= e^-r: for k = 0, r = x >= 0 */
@@ -153,10 +159,11 @@ static uint64_t atanh_series_q62(uint64_t s)
 /* Bit length minus one of v > 0. */
 static unsigned top_bit(uint64_t v)
 {
+  uint64_t rest = v;
   unsigned p = 0;
 
-  while ((v >> 1) != 0u) {
-    v >>= 1;
+  while ((rest >> 1) != 0u) {
+    rest >>= 1;
     p++;
   }
   return p;
@@ -169,8 +176,10 @@ static void log_parts(uint64_t num, uint64_t den, int32_t *e, uint64_t *s,
 {
   unsigned pn = top_bit(num);
   unsigned pd = top_bit(den);
-  uint64_t nn = num << (63u - pn); /* both normalised to [2^63, 2^64) */
-  uint64_t dn = den << (63u - pd);
+  unsigned num_shift = 63u - pn;
+  unsigned den_shift = 63u - pd;
+  uint64_t nn = num << num_shift; /* both normalised to [2^63, 2^64) */
+  uint64_t dn = den << den_shift;
   fx_u128_t q;
   uint64_t m = 0;
   uint64_t diff;
@@ -186,6 +195,8 @@ static void log_parts(uint64_t num, uint64_t den, int32_t *e, uint64_t *s,
   } else if (m >= SQRT2_Q62) {
     m = (m + 1u) >> 1;
     *e += 1;
+  } else {
+    /* already in [sqrt(1/2), sqrt(2)) */
   }
   *s_neg = m < ONE_Q62;
   diff = *s_neg ? (ONE_Q62 - m) : (m - ONE_Q62);
@@ -204,7 +215,7 @@ static uint64_t log_q58(int32_t e, uint64_t at, int s_neg, unsigned half)
   uint64_t a = at << 1; /* 2 atanh(s), Q62, < 2^62 */
 
   acc = fx_shr_u128(acc, 2u); /* Q62 (drops 2^-63 at most) */
-  if (s_neg) {
+  if (s_neg != 0) {
     acc.hi -= (acc.lo < a) ? 1u : 0u;
     acc.lo -= a;
   } else {

@@ -39,7 +39,7 @@ uint64_t drdc_fx_hypot_s64(int64_t x, int64_t y)
   for (bit = UINT64_C(1) << 63; bit != 0u; bit >>= 1) {
     uint64_t cand = root | bit;
 
-    if (fx_le_u128(fx_mul_u64(cand, cand), n)) {
+    if (fx_le_u128(fx_mul_u64(cand, cand), n) != 0) {
       root = cand;
     }
   }

@@ -11,6 +11,13 @@
 
 #include "fixed_impl.h"
 
+/* 1 when the quotient a * b / c is negative: an odd count of negative
+ * operands. */
+static int quotient_negative(int a_negative, int b_negative, int c_negative)
+{
+  return (a_negative + b_negative + c_negative) & 1;
+}
+
 static drdc_status_t muldiv_s32(int32_t a, int32_t b, int32_t c, int sat,
                                 int32_t *out)
 {
@@ -21,7 +28,8 @@ static drdc_status_t muldiv_s32(int32_t a, int32_t b, int32_t c, int sat,
     return DRDC_E_DIVIDE_BY_ZERO;
   }
   /* |a b| <= 2^62: exact in uint64_t */
-  return fx_finish_s32(((a < 0) != (b < 0)) != (c < 0),
+  return fx_finish_s32(quotient_negative((a < 0) ? 1 : 0, (b < 0) ? 1 : 0,
+                                             (c < 0) ? 1 : 0),
                        fx_div_round_u64((uint64_t)fx_abs32(a) * fx_abs32(b),
                                         fx_abs32(c)),
                        sat, out);
@@ -54,7 +62,8 @@ static drdc_status_t muldiv_s64(int64_t a, int64_t b, int64_t c, int sat,
   too_big = fx_div_round_u128(fx_mul_u64(fx_abs64(a), fx_abs64(b)),
                               fx_abs64(c), &q);
   /* a zero product is never negative */
-  return fx_finish_s64(((a < 0) != (b < 0)) != (c < 0), too_big, q, sat, out);
+  return fx_finish_s64(quotient_negative((a < 0) ? 1 : 0, (b < 0) ? 1 : 0,
+                                             (c < 0) ? 1 : 0), too_big, q, sat, out);
 }
 
 drdc_status_t drdc_fx_muldiv_s64(int64_t a, int64_t b, int64_t c,

@@ -35,7 +35,7 @@ int64_t drdc_fx_rshift_round_s64(int64_t x, unsigned n)
     return x;
   }
   if (n >= 64u) {
-    return ((n == 64u) && (x == INT64_MIN)) ? -1 : 0;
+    return ((n == 64u) && (x == FX_INT64_MIN)) ? -1 : 0;
   }
   mag = (mag + (UINT64_C(1) << (n - 1u))) >> n; /* <= 2^62 */
   return (x < 0) ? -(int64_t)mag : (int64_t)mag;

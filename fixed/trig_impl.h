@@ -36,11 +36,33 @@ int64_t fx_sin_quadrant_q62(uint32_t r);
  */
 uint32_t fx_atan_ratio_bam(uint32_t num, uint32_t den);
 
-/** floor(x / 2^n) for 0 < n < 64 without shifting a negative value. */
+/** floor(x / 2^n) for 0 < n < 64, shifting only unsigned values. */
 static inline int64_t fx_floor_shift64(int64_t x, unsigned n)
 {
-  /* for x < 0, ~x = -x - 1 >= 0 and ~(~x >> n) = floor(x / 2^n) */
-  return (x < 0) ? ~(~x >> n) : (x >> n);
+  int64_t result;
+
+  if (x < 0) {
+    /* -x - 1 (= ~x) is >= 0 and in range; floor(x / 2^n) = -(m + 1)
+     * where m = (-x - 1) / 2^n truncated */
+    uint64_t m = (uint64_t)(-(x + 1)) >> n;
+
+    result = -(int64_t)m - 1;
+  } else {
+    uint64_t m = (uint64_t)x >> n;
+
+    result = (int64_t)m;
+  }
+  return result;
+}
+
+/** x * 2^n for 0 <= n < 63 by multiplication (no shift of a signed
+ *  value); the caller keeps the product within int64_t. */
+static inline int64_t fx_scale_pow2_64(int64_t x, unsigned n)
+{
+  uint64_t p = UINT64_C(1) << n;
+  int64_t factor = (int64_t)p;
+
+  return x * factor;
 }
 
 #endif /* DRDC_TRIG_IMPL_H */

@@ -40,16 +40,17 @@
 int64_t fx_sin_quadrant_q62(uint32_t r)
 {
   uint32_t i = (r + (UINT32_C(1) << (SIN_STEP_SHIFT - 1u))) >> SIN_STEP_SHIFT;
-  int32_t d = (int32_t)r - (int32_t)(i << SIN_STEP_SHIFT); /* |d| <= 2^21 */
+  uint32_t node = i << SIN_STEP_SHIFT;
+  int32_t d = (int32_t)r - (int32_t)node;                         /* |d| <= 2^21 */
   int64_t s0 = (int64_t)fx_sin_q31[i];
-  int64_t c0 = (int64_t)fx_sin_q31[FX_TRIG_STEPS - i];
+  int64_t c0 = (int64_t)fx_sin_q31[(uint32_t)FX_TRIG_STEPS - i];
   int64_t dl = fx_floor_shift64((int64_t)d * TWO_PI_Q31, 24u);   /* Q39 */
-  int64_t d2 = (int64_t)((uint64_t)(dl * dl) >> 32);              /* Q46 */
+  int64_t d2 = fx_floor_shift64(dl * dl, 32u);                    /* Q46 */
   int64_t d3 = fx_floor_shift64(d2 * dl, 27u);                    /* Q58 */
-  int64_t acc = s0 << 31;                                         /* Q62 */
+  int64_t acc = fx_scale_pow2_64(s0, 31u);                        /* Q62 */
 
   acc += fx_floor_shift64(c0 * dl, 8u);    /* c0 delta:         Q70 */
-  acc -= (s0 * d2) >> 16;                  /* s0 delta^2 / 2:   Q77 */
+  acc -= fx_floor_shift64(s0 * d2, 16u);   /* s0 delta^2 / 2:   Q77 */
   /* delta^3 / 6 by the magnitude (truncated, 2^-58) */
   d3 = (d3 < 0) ? -(int64_t)fx_div_u64_small(fx_abs64(d3), 6u)
                 : (int64_t)fx_div_u64_small((uint64_t)d3, 6u);
@@ -65,13 +66,13 @@ uint32_t fx_atan_ratio_bam(uint32_t num, uint32_t den)
   uint64_t t = fx_div_round_u64((uint64_t)num << 32, den); /* Q32, <= 2^32 */
   uint32_t i = (uint32_t)((t + (UINT64_C(1) << (ATAN_STEP_SHIFT - 1u)))
                           >> ATAN_STEP_SHIFT);
-  int64_t h = (int64_t)t - ((int64_t)i << ATAN_STEP_SHIFT); /* |h| <= 2^23 */
-  int64_t h2 = (h * h) >> 22;                            /* Q42 */
+  int64_t h = (int64_t)t - fx_scale_pow2_64((int64_t)i, ATAN_STEP_SHIFT); /* |h| <= 2^23 */
+  int64_t h2 = fx_floor_shift64(h * h, 22u);             /* Q42 */
   int64_t h3 = fx_floor_shift64(h2 * h, 32u);            /* Q42 */
-  int64_t acc = (int64_t)fx_atan_a[i] << 31;             /* units 2^33 */
+  int64_t acc = fx_scale_pow2_64((int64_t)fx_atan_a[i], 31u); /* units 2^33 */
 
   acc += fx_floor_shift64((int64_t)fx_atan_d1[i] * h, 1u);
-  acc -= ((int64_t)fx_atan_c2[i] * h2) >> 11;
+  acc -= fx_floor_shift64((int64_t)fx_atan_c2[i] * h2, 11u);
   acc += fx_floor_shift64((int64_t)fx_atan_c3[i] * h3, 11u);
   if (acc < 0) {
     return 0;

@@ -32,6 +32,7 @@ void bench_inputs_init(void);
 /** Case tables, one per module and baseline family; each ends with a
  *  case whose name is NULL. */
 extern const bench_case_t bench_cases_time[];
+extern const bench_case_t bench_cases_fixed[];
 extern const bench_case_t bench_cases_libfixmath[];
 extern const bench_case_t bench_cases_double[];
 

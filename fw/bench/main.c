@@ -97,6 +97,7 @@ int main(void)
   bsp_putc('\n');
 
   time_case(&overhead);
+  time_table(bench_cases_fixed);
   time_table(bench_cases_time);
   time_table(bench_cases_libfixmath);
   time_table(bench_cases_double);

@@ -30,5 +30,6 @@ uint32_t golden_next(golden_t *g);
  *  and statuses into the digest. */
 void golden_time(golden_t *g);
 void golden_time_scales(golden_t *g);
+void golden_fixed(golden_t *g);
 
 #endif /* DRDC_GOLDEN_H */
