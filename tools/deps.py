@@ -52,6 +52,11 @@ SOURCES = {
 PYTHON_PACKAGES = {
     "mpmath==1.3.0":
         "a0b2b9fe80bbcd81a6647ff13108738cfb482d481d826cc0e02f5b35e5c88d2c",
+    # cp311 manylinux x86-64 wheels; scipy 1.17.1 supports numpy < 2.7
+    "numpy==2.4.6":
+        "89cd468399cfd2504718f0ba50e410dca55a170b61a02ad92bb18c8a65186e93",
+    "scipy==1.17.1":
+        "43af8d1f3bea642559019edfe64e9b11192a8978efbd1539d7bc2aaa23d92de4",
 }
 
 DEB_SRC_LIST = "/etc/apt/sources.list.d/drdc-deb-src.sources"

@@ -23,6 +23,7 @@ GENERATORS = [
     "gen_fixed_arith",
     "gen_fixed_sqrt",
     "gen_fixed_trig",
+    "gen_orient_quat",
 ]
 
 
