@@ -159,3 +159,34 @@ drdc_status_t drdc_dcm_from_euler(const drdc_euler_t *e, drdc_dcm_t *out)
   out->m[2][2] = (drdc_q1_30_t)drdc_fx_rshift_round_s64((int64_t)cp * cr, 30u);
   return DRDC_OK;
 }
+
+drdc_status_t drdc_euler_canonical(const drdc_euler_t *e, drdc_euler_t *out)
+{
+  const drdc_bam32_t quarter = UINT32_C(1) << 30;
+  const drdc_bam32_t half = UINT32_C(1) << 31;
+  drdc_euler_t r;
+
+  if ((e == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  r = *e;
+  /* |pitch| > 90 degrees: Rz(y) Ry(p) Rx(r) = Rz(y + 180) Ry(180 - p)
+   * Rx(r + 180). The pitch is outside [-90, 90] exactly when the
+   * unsigned value is in (2^30, 3 2^30). */
+  if ((r.pitch > quarter) && (r.pitch < (3u * quarter))) {
+    r.pitch = half - r.pitch;
+    r.yaw += half;
+    r.roll += half;
+  }
+  /* Gimbal lock: only yaw - roll (pitch +90) or yaw + roll (pitch -90)
+   * is defined; the rule puts it all in yaw. */
+  if (r.pitch == quarter) {
+    r.yaw -= r.roll;
+    r.roll = 0u;
+  } else if (r.pitch == (3u * quarter)) {
+    r.yaw += r.roll;
+    r.roll = 0u;
+  }
+  *out = r;
+  return DRDC_OK;
+}

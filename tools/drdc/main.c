@@ -9,6 +9,8 @@
 
 #include <drdc/version.h>
 
+#include "commands.h"
+
 static const char usage[] =
   "usage: drdc [--help | --version] COMMAND [OPTIONS]\n"
   "\n"
@@ -18,7 +20,8 @@ static const char usage[] =
   "converted gives 'ERROR: <reason>' and the exit status 1 at the end.\n"
   "\n"
   "Commands:\n"
-  "  (none yet: time, attitude, geo and units arrive with their modules)\n"
+  "  attitude --from F --to T   orientations: euler, quat, dcm\n"
+  "           (drdc attitude --help for the formats)\n"
   "\n"
   "Options:\n"
   "  --help     this text\n"
@@ -33,6 +36,9 @@ int main(int argc, char **argv)
   if ((argc == 2) && (strcmp(argv[1], "--version") == 0)) {
     printf("drdc %s\n", DRDC_VERSION_STRING);
     return 0;
+  }
+  if ((argc >= 2) && (strcmp(argv[1], "attitude") == 0)) {
+    return drdc_cmd_attitude(argc - 1, argv + 1);
   }
   if (argc < 2) {
     fputs(usage, stderr);

@@ -336,6 +336,21 @@ drdc_status_t drdc_dcm_from_quat(const drdc_quat_t *q, drdc_dcm_t *out);
 drdc_status_t drdc_quat_from_dcm(const drdc_dcm_t *r, drdc_quat_t *out);
 
 /**
+ * The same Euler angles in their canonical ranges, exactly: pitch in
+ * [-90, 90] degrees (a pitch beyond, e.g. 100 degrees, becomes 80 degrees
+ * with yaw and roll turned by 180 degrees), and at pitch exactly +-90
+ * degrees (2^30 or 3 2^30) the gimbal-lock rule: roll 0, yaw - roll
+ * (pitch +90) or yaw + roll (pitch -90) in yaw. Yaw and roll stay binary
+ * angles ([-180, 180) read as int32_t). Integer arithmetic modulo a turn:
+ * no rounding.
+ * @param e any angles
+ * @param[out] out canonical angles; may be e
+ * @retval DRDC_OK written
+ * @retval DRDC_E_NULL a pointer is NULL
+ */
+drdc_status_t drdc_euler_canonical(const drdc_euler_t *e, drdc_euler_t *out);
+
+/**
  * Rotation matrix of Z-Y-X Euler angles: R = Rz(yaw) Ry(pitch) Rx(roll).
  * @param e any angles
  * @param[out] out matrix; unchanged on error
