@@ -35,7 +35,7 @@
 #define TOL_SLERP 2              /* slerp against SciPy's Slerp, per part */
 #define TOL_ROUND_TRIP_EULER 3   /* Euler -> q -> Euler, binary-angle units */
 #define TOL_ROUND_TRIP_DCM 1     /* q -> matrix -> q, per part */
-#define TOL_Q_CONJ_Q 3           /* q conj(q) - 1 = 2 (|q| - 1), rounded */
+#define TOL_Q_CONJ_Q 2           /* q conj(q) - 1 = 2 (|q| - 1), rounded */
 
 /* Number of in-test random cases of each consistency check. */
 #define RANDOM_CASES 20000u

@@ -24,6 +24,7 @@ GENERATORS = [
     "gen_fixed_sqrt",
     "gen_fixed_trig",
     "gen_orient_quat",
+    "gen_orient_dh",
 ]
 
 
