@@ -383,6 +383,34 @@ static void test_random_dcm_round_trip(void)
 
 /* ------------------------------------------------------- boundaries */
 
+/* drdc_euler_canonical: exact, pitch beyond 90 degrees and the lock. */
+static void test_euler_canonical(void)
+{
+  static const uint32_t in[4][3] = {
+    { 0u, UINT32_C(0x50000000), 0u },          /* pitch 112.5 */
+    { 5u, UINT32_C(0xB0000000), 7u },          /* pitch -112.5 */
+    { UINT32_C(0x20000000), UINT32_C(0x40000000), UINT32_C(0x10000000) },
+    { UINT32_C(0x20000000), UINT32_C(0xC0000000), UINT32_C(0x10000000) },
+  };
+  static const uint32_t want[4][3] = {
+    { UINT32_C(0x80000000), UINT32_C(0x30000000), UINT32_C(0x80000000) },
+    { UINT32_C(0x80000005), UINT32_C(0xD0000000), UINT32_C(0x80000007) },
+    { UINT32_C(0x10000000), UINT32_C(0x40000000), 0u },
+    { UINT32_C(0x30000000), UINT32_C(0xC0000000), 0u },
+  };
+  unsigned k;
+
+  for (k = 0u; k < 4u; k++) {
+    drdc_euler_t e = { in[k][0], in[k][1], in[k][2] };
+
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_euler_canonical(&e, &e));
+    TEST_ASSERT_EQUAL_HEX32(want[k][0], e.yaw);
+    TEST_ASSERT_EQUAL_HEX32(want[k][1], e.pitch);
+    TEST_ASSERT_EQUAL_HEX32(want[k][2], e.roll);
+  }
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_euler_canonical(NULL, NULL));
+}
+
 static void test_gimbal_lock_sets_roll_to_zero(void)
 {
   static const uint32_t pitches[2] = { UINT32_C(1) << 30,
@@ -689,6 +717,7 @@ void suite_orient_quat(void)
   RUN_TEST(test_random_euler_round_trip);
   RUN_TEST(test_random_normalize_is_unit);
   RUN_TEST(test_random_dcm_round_trip);
+  RUN_TEST(test_euler_canonical);
   RUN_TEST(test_gimbal_lock_sets_roll_to_zero);
   RUN_TEST(test_near_gimbal_lock_keeps_the_rotation);
   RUN_TEST(test_zero_and_null_inputs);
