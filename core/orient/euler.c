@@ -15,9 +15,9 @@
 
 #include "orient_impl.h"
 
-/* Round a Q62 value to Q1.30. |v| < 2^63 gives |result| <= 2^31 - 1
- * only when |v| < 2^61 (2 - 2^-31); the callers' sums are <= sqrt(2)
- * 2^62 / 2^... and within [-1, 1] + slop, see their comments. */
+/* Round a Q62 value to Q1.30. The callers' values are sums of two
+ * products of half-angle factors, at most sqrt(2) 2^62 in magnitude (so
+ * the result is at most 2^30 sqrt(2) < 2^31: no overflow). */
 static drdc_q1_30_t q62_to_q30(int64_t v)
 {
   return (drdc_q1_30_t)drdc_fx_rshift_round_s64(v, 32u);
