@@ -158,9 +158,16 @@ class Attitude(unittest.TestCase):
             self.assertTrue(line.startswith("ERROR: "), line)
         self.assertEqual(out[0], out[6])
         r, out = attitude("dcm", "quat", ["1 0 0 0 1 0 0 0 -1",
-                                          "2 0 0 0 1 0 0 0 1"])
+                                          "2 0 0 0 1 0 0 0 1",
+                                          "1 0 0 0 0.9990 0 0 0 1",
+                                          "1 0 0 0 1 0 0 0"])
         self.assertEqual(1, r.returncode)
-        self.assertTrue(all(l.startswith("ERROR: ") for l in out))
+        self.assertTrue(all(l.startswith("ERROR: ") for l in out), out)
+        # six decimals are orthonormal enough (1e-4)
+        r, out = attitude("dcm", "euler", ["0.866025 -0.5 0 0.5 0.866025 0 "
+                                           "0 0 1"])
+        self.assertEqual(0, r.returncode, out)
+        self.assertAlmostEqual(30.0, numbers(out[0])[0], delta=1e-4)
 
     def test_bad_arguments(self):
         self.assertEqual(2, run("attitude", "--from", "euler").returncode)

@@ -43,7 +43,7 @@ static const int repr_fields[3] = { 3, 4, 9 };
 #define LINE_MAX_CHARS 4096
 /* Largest deviation of a matrix from orthonormality (R R^T - I, per
  * element) and of its determinant from 1 that is accepted as a rotation. */
-#define DCM_TOLERANCE 1e-6
+#define DCM_TOLERANCE 1e-4
 
 static enum repr parse_repr(const char *s)
 {
@@ -141,7 +141,7 @@ static int check_rotation(const double *m, char *err, size_t errlen)
 
       if (absd(d) > DCM_TOLERANCE) {
         snprintf(err, errlen, "not a rotation matrix (rows not orthonormal"
-                 " to 1e-6)");
+                 " to 1e-4)");
         return -1;
       }
     }
