@@ -9,6 +9,8 @@
  */
 #include <drdc/orient.h>
 
+#include <stddef.h>
+
 #include "orient_test_util.h"
 #include "suites.h"
 #include "unity.h"
@@ -70,6 +72,52 @@ static void test_20000_random_orientations_match_scipy(void)
   TEST_ASSERT_TRUE(mq <= TOL_RANDOM_QUAT);
   TEST_ASSERT_TRUE(me <= TOL_RANDOM_EULER_SUB);
 }
+
+/* angle_between, nlerp and axis-angle against SciPy / numpy (200 pairs:
+ * random, q vs -q, nearly equal, exactly 180 degrees apart). */
+#define TOL_ANGLE_BETWEEN_SUB 32 /* 1/16 units: 2 binary-angle units */
+#define TOL_NLERP 2
+#define TOL_AXIS 1
+#define TOL_ROT_ANGLE_SUB 26
+
+static void test_angle_nlerp_axis_match_scipy(void)
+{
+  int64_t ma = 0;
+  int64_t mn = 0;
+  int64_t mx = 0;
+  int64_t mr = 0;
+  size_t i;
+
+  for (i = 0; i < COUNT(orient_extra_vectors); i++) {
+    const struct orient_extra_vector *v = &orient_extra_vectors[i];
+    const drdc_quat_t a = { v->a[0], v->a[1], v->a[2], v->a[3] };
+    const drdc_quat_t b = { v->b[0], v->b[1], v->b[2], v->b[3] };
+    drdc_quat_t n;
+    drdc_vec3_q1_30_t axis;
+    drdc_bam32_t ang;
+    int64_t d;
+
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_quat_angle_between(&a, &b, &ang));
+    d = orient_abs64(((int64_t)ang * 16) - v->angle);
+    ma = (d > ma) ? d : ma;
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_quat_nlerp(&a, &b, v->t, &n));
+    d = orient_qdiff(&n, v->nlerp);
+    mn = (d > mn) ? d : mn;
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_axis_angle_from_quat(&a, &axis, &ang));
+    d = orient_maxdiff32(&axis.x, v->axis, 3u);
+    mx = (d > mx) ? d : mx;
+    d = orient_abs64(((int64_t)ang * 16) - v->rot_angle);
+    mr = (d > mr) ? d : mr;
+  }
+  ORIENT_REPORT("angle_between 1/16 bam", ma);
+  ORIENT_REPORT("nlerp LSB", mn);
+  ORIENT_REPORT("axis from quat LSB", mx);
+  ORIENT_REPORT("angle from quat 1/16 bam", mr);
+  TEST_ASSERT_TRUE(ma <= TOL_ANGLE_BETWEEN_SUB);
+  TEST_ASSERT_TRUE(mn <= TOL_NLERP);
+  TEST_ASSERT_TRUE(mx <= TOL_AXIS);
+  TEST_ASSERT_TRUE(mr <= TOL_ROT_ANGLE_SUB);
+}
 #endif
 
 void suite_orient_random(void)
@@ -77,5 +125,6 @@ void suite_orient_random(void)
   UnitySetTestFile(__FILE__);
 #if !ORIENT_FLASH_SMALL
   RUN_TEST(test_20000_random_orientations_match_scipy);
+  RUN_TEST(test_angle_nlerp_axis_match_scipy);
 #endif
 }

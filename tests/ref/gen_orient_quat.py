@@ -432,6 +432,43 @@ def random_eulers():
     return out
 
 
+def extra_rows(rng):
+    """angle_between, nlerp and axis-angle of a quaternion (host, PPC)."""
+    rots = R.random(400, random_state=rng.randrange(1 << 30))
+    qs = [q30(q) for q in rots.as_quat(scalar_first=True)]
+    rows = []
+    for i in range(200):
+        a, b = qs[2 * i], qs[2 * i + 1]
+        if i % 10 == 1:
+            b = [-c for c in a]                      # q vs -q: angle 0
+        elif i % 10 == 2:
+            b = [a[0] + 5, a[1] - 3, a[2] + 1, a[3]]  # tiny angle
+        elif i % 10 == 3:
+            b = [-a[1], a[0], -a[3], a[2]]            # exactly 180 degrees
+        t = rng.randrange(ONE + 1)
+        ra, rb = rot_of_q(a), rot_of_q(b)
+        ang = (ra.inv() * rb).magnitude()
+        qa = ra.as_quat(scalar_first=True)
+        qb = rb.as_quat(scalar_first=True)
+        if np.dot(qa, qb) < 0:
+            qb = -qb
+        # nlerp of the normalised inputs: both are unit to 1e-9 already
+        qn = (1 - t / ONE) * np.array(a, float) / ONE + \
+            (t / ONE) * np.array(b if np.dot(a, b) >= 0 else
+                                 [-c for c in b], float) / ONE
+        qn = qn / np.linalg.norm(qn)
+        rv = ra.as_rotvec()
+        th = np.linalg.norm(rv)
+        axis = rv / th if th > 0 else np.array([1.0, 0, 0])
+        rows.append("  { { %s }, { %s }, %d, %s, { %s }, { %s }, %s }," % (
+            ", ".join(str(c) for c in a), ", ".join(str(c) for c in b), t,
+            _lit(rnd(ang / (2 * math.pi) * TURN * SUB)),
+            ", ".join(str(c) for c in q30(qn)),
+            ", ".join(str(c) for c in q30(axis)),
+            _lit(rnd(th / (2 * math.pi) * TURN * SUB))))
+    return rows
+
+
 def generate_random():
     es = random_eulers()
     rad3 = np.array([[rad(a) for a in e] for e in es])
@@ -481,8 +518,25 @@ static const int16_t orient_random_euler_delta[%d] = {
 %s
 };
 
+/* angle between a and b (1/16 units), nlerp(a, b, t), axis and angle of
+ * a (SciPy as_rotvec; angle in 1/16 units). */
+struct orient_extra_vector {
+  int32_t a[4];
+  int32_t b[4];
+  int32_t t;
+  int64_t angle;
+  int32_t nlerp[4];
+  int32_t axis[3];
+  int64_t rot_angle;
+};
+
+static const struct orient_extra_vector orient_extra_vectors[] = {
+%s
+};
+
 #endif
 """ % (scipy.__version__, RANDOM_COUNT, RANDOM_SEED, SUB, RANDOM_COUNT,
        RANDOM_SEED, PITCH_MAX, 4 * RANDOM_COUNT,
-       "\n".join(qrows), 3 * RANDOM_COUNT, "\n".join(drows))
+       "\n".join(qrows), 3 * RANDOM_COUNT, "\n".join(drows),
+       "\n".join(extra_rows(random.Random(5))))
     return text
