@@ -3,7 +3,8 @@
  * @file
  * @ingroup drdc_orient
  * @brief Rotation of local (Q15.16) and global (Q47.16) vectors by a
- *        quaternion, with the exact rational matrix of q (never rounded to Q1.30).
+ *        quaternion, with the exact rational matrix of q (never rounded
+ *        to Q1.30).
  */
 #include <drdc/orient.h>
 

@@ -509,6 +509,9 @@ static void test_zero_and_null_inputs(void)
   TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN, drdc_quat_from_dcm(&m, &out));
 }
 
+/* Includes the regression of a shift by 64 in the root's headroom
+ * (|q|^2 = 2^62 after scaling, e.g. four equal parts of 1.0), which
+ * host-asan reported as undefined behaviour. */
 static void test_near_zero_and_huge_quaternions(void)
 {
   static const drdc_quat_t in[] = {

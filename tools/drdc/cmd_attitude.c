@@ -76,7 +76,9 @@ static int parse_numbers(char *line, double *v, int max, char *err,
       snprintf(err, errlen, "'%.40s' is not a number", tok);
       return -1;
     }
-    if ((x != x) || (absd(x) > 1e300) || ((errno == ERANGE) && (absd(x) > 1.0))) {
+    /* NaN, infinities (and overflowing text) are rejected */
+    if ((x != x) || (absd(x) > 1e300)
+        || ((errno == ERANGE) && (absd(x) > 1.0))) {
       snprintf(err, errlen, "'%.40s' is not a finite number", tok);
       return -1;
     }
