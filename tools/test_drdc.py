@@ -169,6 +169,12 @@ class Attitude(unittest.TestCase):
         self.assertEqual(0, r.returncode, out)
         self.assertAlmostEqual(30.0, numbers(out[0])[0], delta=1e-4)
 
+    def test_angle_limit(self):
+        r, out = attitude("euler", "quat", ["1e10 0 0", "1e9 0 0"])
+        self.assertEqual(1, r.returncode)
+        self.assertTrue(out[0].startswith("ERROR: "))
+        self.assertFalse(out[1].startswith("ERROR: "))
+
     def test_bad_arguments(self):
         self.assertEqual(2, run("attitude", "--from", "euler").returncode)
         self.assertEqual(2, run("attitude", "--from", "rpy", "--to",

@@ -21,7 +21,7 @@
 #include "commands.h"
 
 /* Largest |angle| accepted, degrees: keeps the turn count exact. */
-#define DEGREES_MAX 1e12
+#define DEGREES_MAX 1e9
 
 static double absd(double x)
 {
@@ -184,7 +184,7 @@ static int convert(enum repr from, enum repr to, char *line, char *out,
   case REPR_EULER:
     for (i = 0; i < 3; i++) {
       if (absd(v[i]) > DEGREES_MAX) {
-        snprintf(err, errlen, "angle beyond +-1e12 degrees");
+        snprintf(err, errlen, "angle beyond +-1e9 degrees");
         return -1;
       }
     }
