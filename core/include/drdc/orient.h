@@ -124,7 +124,7 @@ typedef struct drdc_vec3_q47_16 {
  *
  * @code
  * drdc_quat_t yaw90 = { 759250125, 0, 0, 759250125 }, r;
- * drdc_quat_mul(&yaw90, &yaw90, &r);   // r = { 1, 0, 0, 2^30 - 1 }: 180 deg
+ * drdc_quat_mul(&yaw90, &yaw90, &r);   // r = { 0, 0, 0, 2^30 }: yaw 180 deg
  * @endcode
  */
 drdc_status_t drdc_quat_mul(const drdc_quat_t *a, const drdc_quat_t *b,
@@ -172,6 +172,11 @@ drdc_status_t drdc_quat_inverse(const drdc_quat_t *q, drdc_quat_t *out);
  * final rounding, 0.25 from the 31-bit root); | |out| - 1 | measured at
  * most 1.01 LSB of Q1.30 (20 000 random quaternions of every length;
  * issue bound 2 LSB).
+ *
+ * @code
+ * drdc_quat_t q = { 3, 0, 4, 0 }, n;   // any length
+ * drdc_quat_normalize(&q, &n);   // n = { 644245094, 0, 858993459, 0 }
+ * @endcode
  */
 drdc_status_t drdc_quat_normalize(const drdc_quat_t *q, drdc_quat_t *out);
 
@@ -202,6 +207,12 @@ drdc_status_t drdc_quat_canonical(const drdc_quat_t *q, drdc_quat_t *out);
  * 6 guard bits through a 128-bit intermediate, the sum rounded once.
  * Accuracy: within 0.53 LSB of Q15.16 (8 um) of the exact rotation of
  * q / |q| at every length; measured max 1 LSB against SciPy rounded.
+ *
+ * @code
+ * drdc_quat_t yaw90 = { 759250125, 0, 0, 759250125 };
+ * drdc_vec3_q15_16_t v = { 1 << 16, 0, 0 };   // 1 m forward
+ * drdc_quat_rotate_q15_16(&yaw90, &v, &v);   // v = { 0, 65536, 0 }: east
+ * @endcode
  */
 drdc_status_t drdc_quat_rotate_q15_16(const drdc_quat_t *q,
                                       const drdc_vec3_q15_16_t *v,
@@ -285,6 +296,12 @@ drdc_status_t drdc_quat_angle_between(const drdc_quat_t *a,
  * in 64 bits with one intermediate rounding to Q1.31 and one final one.
  * Accuracy: measured max 2 LSB of Q1.30 per part against SciPy (20 256
  * orientations incl. yaw +-180 and pitch +-90 degrees; issue bound 4).
+ *
+ * @code
+ * drdc_euler_t e = { 1u << 30, 0u, 0u };   // heading east (yaw 90 deg)
+ * drdc_quat_t q;
+ * drdc_quat_from_euler(&e, &q);   // q = { 759250125, 0, 0, 759250125 }
+ * @endcode
  */
 drdc_status_t drdc_quat_from_euler(const drdc_euler_t *e, drdc_quat_t *out);
 
@@ -307,6 +324,12 @@ drdc_status_t drdc_quat_from_euler(const drdc_euler_t *e, drdc_quat_t *out);
  * issue bound 1e-7 degree). Closer to the lock the angles are
  * ill-conditioned; they then describe the input rotation to 3 LSB per
  * matrix element.
+ *
+ * @code
+ * drdc_quat_t q = { 759250125, 0, 0, 759250125 };
+ * drdc_euler_t e;
+ * drdc_euler_from_quat(&q, &e);   // e = { 1u << 30, 0u, 0u }
+ * @endcode
  */
 drdc_status_t drdc_euler_from_quat(const drdc_quat_t *q, drdc_euler_t *out);
 
@@ -322,6 +345,12 @@ drdc_status_t drdc_euler_from_quat(const drdc_quat_t *q, drdc_euler_t *out);
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
  * @retval DRDC_E_DOMAIN q is zero
+ *
+ * @code
+ * drdc_quat_t q = { 759250125, 0, 0, 759250125 };   // yaw 90 deg
+ * drdc_dcm_t r;
+ * drdc_dcm_from_quat(&q, &r);   // first column { 0, 2^30, 0 }: x -> east
+ * @endcode
  */
 drdc_status_t drdc_dcm_from_quat(const drdc_quat_t *q, drdc_dcm_t *out);
 
