@@ -122,6 +122,13 @@ typedef struct drdc_vec3_q47_16 {
  * Python-integer products (55 cases incl. overflow); q * conj(q) of a
  * normalised q is 1 within 2 LSB.
  *
+ * Cost (QEMU -icount, 2 048 products of unit quaternions, one-off
+ * measurement): 4.4 times the instructions of a hand-written 16
+ * multiply-accumulate product with truncating shifts on Cortex-M3 (3.7
+ * times on PowerPC e500); the difference is the four calls of
+ * drdc_fx_rshift_round_s64() for the rounding. Soft-float double takes
+ * 6.4 times as long as this function on Cortex-M3.
+ *
  * @code
  * drdc_quat_t yaw90 = { 759250125, 0, 0, 759250125 }, r;
  * drdc_quat_mul(&yaw90, &yaw90, &r);   // r = { 0, 0, 0, 2^30 }: yaw 180 deg
