@@ -327,7 +327,7 @@ drdc_status_t drdc_quat_from_euler(const drdc_euler_t *e, drdc_quat_t *out);
  * atan2(R32, R33), each with both arguments scaled to 31 bits.
  * Accuracy: measured max 1.125 binary-angle units (9.4e-8 degree) from
  * SciPy's angles of the exact integer input, when |pitch| is at least
- * 0.001 degree from 90 degrees or exactly in gimbal lock (20 260 cases;
+ * 0.001 degree from 90 degrees or exactly in gimbal lock (20 249 cases;
  * issue bound 1e-7 degree). Closer to the lock the angles are
  * ill-conditioned; they then describe the input rotation to 3 LSB per
  * matrix element.
