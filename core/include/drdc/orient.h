@@ -29,10 +29,11 @@
  * - the rotation matrix ("DCM") is body-to-world, Q1.30, m[row][col].
  * - local lengths are Q15.16 metres, global lengths Q47.16 metres.
  *
- * Gimbal lock: when |pitch| is within DRDC_ORIENT_GIMBAL_COS of 90
- * degrees (cos(pitch) < 2^-24, 6e-8 rad, 3.4e-6 degree), yaw and roll
+ * Gimbal lock: when cos(pitch) < 2^-DRDC_ORIENT_GIMBAL_COS_LOG2 (2^-24:
+ * |pitch| within 6e-8 rad, 3.4e-6 degree, of 90 degrees), yaw and roll
  * are not separable; the conversions to Euler angles then set roll to 0
- * and put all the rotation about the vertical into yaw.
+ * and put all the rotation about the vertical into yaw (yaw - roll at
+ * pitch +90, yaw + roll at pitch -90).
  *
  * Rounding: every result is computed from exact 64-bit (Q60) or 128-bit
  * intermediates and rounded once to nearest, ties away from zero, unless
