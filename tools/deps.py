@@ -92,6 +92,10 @@ PYTHON_PACKAGES = {
         "0e43c7194e3242083f2350b46c09fd4bf8ba1bcc0ebd1460b98fc47fe2389906",
     "astropy-iers-data==0.2026.11.2.0.34.55":
         "785cd5bc193d9206316bd7c786fe0647e212ebf017cd861beabedd91cbe585bf",
+    # orientation vectors: SciPy's Rotation (numpy pinned above)
+    # cp311 manylinux x86-64 wheels; scipy 1.17.1 supports numpy < 2.7
+    "scipy==1.17.1":
+        "43af8d1f3bea642559019edfe64e9b11192a8978efbd1539d7bc2aaa23d92de4",
 }
 
 DEB_SRC_LIST = "/etc/apt/sources.list.d/drdc-deb-src.sources"

@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: BSD-2-Clause
 """Tests of the host tool build/host/drdc (run by ./waf check)."""
+import math
 import os
 import re
 import subprocess
@@ -17,6 +18,16 @@ def run(*args, stdin=""):
 def convert(src, dst, *lines):
     r = run("time", "--from", src, "--to", dst, stdin="".join(l + "\n" for l in lines))
     return r.returncode, r.stdout.splitlines(), r.stderr
+
+
+def attitude(src, dst, lines):
+    r = run("attitude", "--from", src, "--to", dst,
+            stdin="".join(l + "\n" for l in lines))
+    return r, r.stdout.splitlines()
+
+
+def numbers(line):
+    return [float(x) for x in line.split()]
 
 
 class Tool(unittest.TestCase):
@@ -151,6 +162,145 @@ class TimeCommand(unittest.TestCase):
         self.assertEqual(2, run("time", "--from", "utc").returncode)
         self.assertEqual(2, run("time", "--from", "utc", "--to", "gpst").returncode)
         self.assertEqual(0, run("time", "--help").returncode)
+
+
+class Attitude(unittest.TestCase):
+    """drdc attitude against SciPy (scipy.spatial.transform.Rotation,
+    intrinsic 'ZYX' = yaw, pitch, roll; scalar-first quaternions)."""
+
+    @classmethod
+    def setUpClass(cls):
+        import random
+        rng = random.Random(5)
+        cls.eulers = [[rng.uniform(-180, 180), rng.uniform(-89.9, 89.9),
+                       rng.uniform(-180, 180)] for _ in range(300)]
+
+    def rot(self):
+        from scipy.spatial.transform import Rotation
+        return Rotation
+
+    def test_euler_to_quat_and_dcm_match_scipy(self):
+        R = self.rot()
+        lines = ["%.9f %.9f %.9f" % tuple(e) for e in self.eulers]
+        r, out = attitude("euler", "quat", lines)
+        self.assertEqual(0, r.returncode, r.stdout)
+        r2, out2 = attitude("euler", "dcm", lines)
+        self.assertEqual(0, r2.returncode)
+        for e, q, m in zip(self.eulers, out, out2):
+            want = R.from_euler("ZYX", e, degrees=True).as_quat(
+                scalar_first=True)
+            if want[0] < 0:
+                want = -want
+            for a, b in zip(numbers(q), want):
+                self.assertAlmostEqual(a, b, delta=3e-9)
+            for a, b in zip(numbers(m), R.from_euler(
+                    "ZYX", e, degrees=True).as_matrix().ravel()):
+                self.assertAlmostEqual(a, b, delta=3e-9)
+
+    def test_quat_to_euler_matches_scipy(self):
+        R = self.rot()
+        qs = [R.from_euler("ZYX", e, degrees=True).as_quat(scalar_first=True)
+              * s for e, s in zip(self.eulers, [1, -3.5, 0.01] * 100)]
+        r, out = attitude("quat", "euler", ["%.12f %.12f %.12f %.12f"
+                                            % tuple(q) for q in qs])
+        self.assertEqual(0, r.returncode, r.stdout)
+        for q, line in zip(qs, out):
+            want = R.from_quat(q, scalar_first=True).as_euler(
+                "ZYX", degrees=True)
+            got = numbers(line)
+            # the text quaternion is rounded to Q1.30 (4.7e-10): yaw and
+            # roll inherit 2^-30 / cos(pitch) rad from it near the lock
+            tol = 2e-7 + 1.1e-7 / math.cos(math.radians(want[1]))
+            for a, b in zip(got, want):
+                d = (a - b + 180.0) % 360.0 - 180.0
+                self.assertLess(abs(d), tol, (line, want))
+            self.assertTrue(-180 < got[0] <= 180 and -180 < got[2] <= 180)
+            self.assertTrue(-90 <= got[1] <= 90)
+
+    def test_dcm_round_trip_and_180_degrees(self):
+        R = self.rot()
+        mats = [R.from_rotvec([3.141592653589793, 0, 0]).as_matrix(),
+                R.from_rotvec([0, 0, 3.141592653589793]).as_matrix()]
+        mats += [R.from_euler("ZYX", e, degrees=True).as_matrix()
+                 for e in self.eulers[:50]]
+        lines = [" ".join("%.12f" % x for x in m.ravel()) for m in mats]
+        r, out = attitude("dcm", "quat", lines)
+        self.assertEqual(0, r.returncode, r.stdout)
+        self.assertEqual("0.0000000000 1.0000000000 0.0000000000 "
+                         "0.0000000000", out[0])
+        self.assertEqual("0.0000000000 0.0000000000 0.0000000000 "
+                         "1.0000000000", out[1])
+        r, back = attitude("quat", "dcm", out)
+        for m, line in zip(mats, back):
+            for a, b in zip(numbers(line), m.ravel()):
+                self.assertAlmostEqual(a, b, delta=5e-9)
+
+    def test_formats_ranges_and_signs(self):
+        r, out = attitude("euler", "euler", ["180 0 -180", "-180 45 180",
+                                             "0 112.5 0", "370 0 0"])
+        self.assertEqual(["180.00000000 0.00000000 180.00000000",
+                          "180.00000000 45.00000000 180.00000000",
+                          "180.00000000 67.50000000 180.00000000"], out[:3])
+        # 10 degrees is not a binary angle: 119304647 units, 9.9999999916
+        self.assertEqual("9.99999999 0.00000000 0.00000000", out[3])
+        r, out = attitude("quat", "quat", ["-5 0 0 0", "0 0 -2 0",
+                                           "0 0 0 1e-300", "0 -1 1 0"])
+        self.assertEqual(["1.0000000000 0.0000000000 0.0000000000 "
+                          "0.0000000000",
+                          "0.0000000000 0.0000000000 1.0000000000 "
+                          "0.0000000000",
+                          "0.0000000000 0.0000000000 0.0000000000 "
+                          "1.0000000000",
+                          "0.0000000000 0.7071067812 -0.7071067812 "
+                          "0.0000000000"], out)
+
+    def test_gimbal_lock_roll_zero(self):
+        r, out = attitude("euler", "euler", ["45 90 22.5", "45 -90 22.5"])
+        self.assertEqual(0, r.returncode)
+        self.assertEqual("22.50000000 90.00000000 0.00000000", out[0])
+        self.assertEqual("67.50000000 -90.00000000 0.00000000", out[1])
+        r, out = attitude("euler", "quat", ["30 90 10"])
+        r, out = attitude("quat", "euler", out)
+        got = numbers(out[0])
+        self.assertAlmostEqual(20.0, got[0], delta=2e-7)
+        self.assertEqual(90.0, got[1])
+        self.assertEqual(0.0, got[2])
+
+    def test_bad_lines_give_error_and_status_1(self):
+        r, out = attitude("quat", "euler", ["1 0 0 0", "0 0 0 0", "1 2 3",
+                                            "a b c d", "nan 0 0 0",
+                                            "", "1 0 0 0"])
+        self.assertEqual(1, r.returncode)
+        self.assertEqual(7, len(out))
+        self.assertEqual("0.00000000 0.00000000 0.00000000", out[0])
+        for line in out[1:6]:
+            self.assertTrue(line.startswith("ERROR: "), line)
+        self.assertEqual(out[0], out[6])
+        r, out = attitude("dcm", "quat", ["1 0 0 0 1 0 0 0 -1",
+                                          "2 0 0 0 1 0 0 0 1",
+                                          "1 0 0 0 0.9990 0 0 0 1",
+                                          "1 0 0 0 1 0 0 0"])
+        self.assertEqual(1, r.returncode)
+        self.assertTrue(all(l.startswith("ERROR: ") for l in out), out)
+        # six decimals are orthonormal enough (1e-4)
+        r, out = attitude("dcm", "euler", ["0.866025 -0.5 0 0.5 0.866025 0 "
+                                           "0 0 1"])
+        self.assertEqual(0, r.returncode, out)
+        self.assertAlmostEqual(30.0, numbers(out[0])[0], delta=1e-4)
+
+    def test_angle_limit(self):
+        r, out = attitude("euler", "quat", ["1e10 0 0", "1e9 0 0"])
+        self.assertEqual(1, r.returncode)
+        self.assertTrue(out[0].startswith("ERROR: "))
+        self.assertFalse(out[1].startswith("ERROR: "))
+
+    def test_bad_arguments(self):
+        self.assertEqual(2, run("attitude", "--from", "euler").returncode)
+        self.assertEqual(2, run("attitude", "--from", "rpy", "--to",
+                                "quat").returncode)
+        r = run("attitude", "--help")
+        self.assertEqual(0, r.returncode)
+        self.assertIn("YAW PITCH ROLL", r.stdout)
 
 
 if __name__ == "__main__":

@@ -28,6 +28,8 @@ GENERATORS = [
     "gen_fixed_trig",
     "gen_fixed_hyper",
     "gen_fixed_tables",
+    "gen_orient_quat",
+    "gen_orient_dh",
 ]
 
 

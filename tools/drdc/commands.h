@@ -10,4 +10,9 @@
  *  status: 0 all lines converted, 1 a line failed, 2 usage error. */
 int drdc_cmd_time(int argc, char **argv);
 
+/** drdc attitude --from F --to T (tools/drdc/cmd_attitude.c). argv[0] is
+ *  "attitude". Returns the exit status: 0, 1 (a line gave ERROR) or 2
+ *  (bad arguments). */
+int drdc_cmd_attitude(int argc, char **argv);
+
 #endif /* DRDC_TOOL_COMMANDS_H */

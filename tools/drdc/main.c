@@ -22,6 +22,9 @@ static const char usage[] =
   "Commands:\n"
   "  time --from F --to T   convert times between utc, gps, unix, rtems\n"
   "                         and tai (drdc time --help for the formats)\n"
+  "  attitude --from F --to T\n"
+  "                         convert orientations between euler, quat and\n"
+  "                         dcm (drdc attitude --help for the formats)\n"
   "\n"
   "Options:\n"
   "  --help     this text\n"
@@ -39,6 +42,9 @@ int main(int argc, char **argv)
   }
   if ((argc >= 2) && (strcmp(argv[1], "time") == 0)) {
     return drdc_cmd_time(argc - 1, argv + 1);
+  }
+  if ((argc >= 2) && (strcmp(argv[1], "attitude") == 0)) {
+    return drdc_cmd_attitude(argc - 1, argv + 1);
   }
   if (argc < 2) {
     fputs(usage, stderr);

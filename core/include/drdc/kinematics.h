@@ -1,0 +1,109 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @ingroup drdc_kinematics
+ * @brief Manipulator link parameters (Denavit-Hartenberg, standard and
+ *        modified) and forward kinematics of chains of up to 16 links.
+ */
+#ifndef DRDC_KINEMATICS_H
+#define DRDC_KINEMATICS_H
+
+#include <drdc/transform.h>
+
+/**
+ * @defgroup drdc_kinematics Manipulator kinematics
+ *
+ * Link i is described by four parameters: link length a (Q15.16 m), link
+ * twist alpha (binary angle), link offset d (Q15.16 m) and joint angle
+ * theta (binary angle). The joint variable q adds to theta (revolute) or
+ * to d (prismatic). Conventions:
+ * - standard (distal) DH: T = Rz(theta) Tz(d) Tx(a) Rx(alpha);
+ * - modified (proximal, Craig) DH: T = Rx(alpha) Tx(a) Rz(theta) Tz(d).
+ * A chain's transform is T1 T2 ... Tn (base to tool).
+ * @{
+ */
+
+/** Longest chain of drdc_dh_forward(). */
+#define DRDC_DH_MAX_LINKS 16
+
+/** Kind of joint: which parameter the joint variable moves. */
+typedef enum drdc_joint_type {
+  DRDC_JOINT_REVOLUTE = 0, /**< q is an angle added to theta */
+  DRDC_JOINT_PRISMATIC = 1 /**< q is a length added to d */
+} drdc_joint_type_t;
+
+/** Which Denavit-Hartenberg convention the parameters follow. */
+typedef enum drdc_dh_convention {
+  DRDC_DH_STANDARD = 0, /**< T = Rz(theta) Tz(d) Tx(a) Rx(alpha) */
+  DRDC_DH_MODIFIED = 1  /**< T = Rx(alpha) Tx(a) Rz(theta) Tz(d) (Craig) */
+} drdc_dh_convention_t;
+
+/** One link's parameters. */
+typedef struct drdc_dh_link {
+  drdc_q15_16_t a;        /**< link length, Q15.16 m */
+  drdc_bam32_t alpha;     /**< link twist, binary angle */
+  drdc_q15_16_t d;        /**< link offset, Q15.16 m (plus q if prismatic) */
+  drdc_bam32_t theta;     /**< joint angle offset (plus q if revolute) */
+  drdc_joint_type_t type; /**< revolute or prismatic */
+} drdc_dh_link_t;
+
+/**
+ * Transform of one link for the joint variable q.
+ * @param convention DRDC_DH_STANDARD or DRDC_DH_MODIFIED
+ * @param link parameters
+ * @param q joint variable: a binary angle (drdc_bam32_t bits in an
+ *          int32_t) for a revolute joint, Q15.16 metres for a prismatic
+ *          one
+ * @param[out] out link transform; unchanged on error
+ * @retval DRDC_OK written
+ * @retval DRDC_E_NULL a pointer is NULL
+ * @retval DRDC_E_RANGE bad convention or joint type
+ * @retval DRDC_E_OVERFLOW d + q leaves +-32768 m (prismatic)
+ * Accuracy: each element of R is one rounding of an exact product of
+ * drdc_fx_sincos_bam32() values (max 1 LSB each): within 1.5 LSB;
+ * t within 0.5 LSB of Q15.16 plus |a| or |d| times 1 LSB of Q1.30.
+ */
+drdc_status_t drdc_dh_link_transform(drdc_dh_convention_t convention,
+                                     const drdc_dh_link_t *link, int32_t q,
+                                     drdc_transform_t *out);
+
+/**
+ * Forward kinematics: the base-to-tool transform T1(q1) ... Tn(qn).
+ * @param convention DRDC_DH_STANDARD or DRDC_DH_MODIFIED
+ * @param links n link parameter sets
+ * @param n number of links, 0..DRDC_DH_MAX_LINKS (0 gives the identity)
+ * @param q n joint variables (see drdc_dh_link_transform())
+ * @param[out] out base-to-tool transform; unchanged on error
+ * @retval DRDC_OK written
+ * @retval DRDC_E_NULL a pointer is NULL (links and q may be NULL for n 0)
+ * @retval DRDC_E_RANGE n > DRDC_DH_MAX_LINKS, or a bad convention or
+ *         joint type
+ * @retval DRDC_E_OVERFLOW a translation leaves +-32768 m on the way
+ * Method: the product is accumulated with the rotation in Q2.61 and the
+ * translation in Q17.46 (int64), each link's elements exact products of
+ * its sines and cosines, every step correctly rounded with 128-bit
+ * intermediates (drdc_fx_muldiv_s64()); the result is rounded once.
+ * Accuracy: measured against an independent numpy double model (PUMA 560
+ * and a 7-link arm with prismatic joints 2 and 5, standard and modified,
+ * 160 configurations): rotation max 2 LSB per element, position max
+ * 7.6 um (0.5 LSB of Q15.16, the final rounding; issue bounds 8 LSB and
+ * 10 um). Composing the link transforms one by one instead costs up to 3
+ * LSB of both.
+ *
+ * @code
+ * static const drdc_dh_link_t arm[2] = {
+ *   { 1 << 16, 0u, 0, 0u, DRDC_JOINT_REVOLUTE },    // a = 1 m
+ *   { 0, 0u, 0, 0u, DRDC_JOINT_PRISMATIC },
+ * };
+ * const int32_t q[2] = { 1 << 30, 1 << 15 };   // 90 deg, 0.5 m
+ * drdc_transform_t t;
+ * drdc_dh_forward(DRDC_DH_STANDARD, arm, 2u, q, &t);   // t.t = (0, 1, 0.5)
+ * @endcode
+ */
+drdc_status_t drdc_dh_forward(drdc_dh_convention_t convention,
+                              const drdc_dh_link_t *links, unsigned n,
+                              const int32_t *q, drdc_transform_t *out);
+
+/** @} */
+
+#endif /* DRDC_KINEMATICS_H */

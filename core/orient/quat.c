@@ -1,0 +1,277 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @ingroup drdc_orient
+ * @brief Quaternion algebra: product, conjugate, inverse, normalisation,
+ *        canonical sign, composition and difference.
+ */
+#include <drdc/orient.h>
+
+#include <stddef.h>
+
+#include <drdc/fixed_arith.h>
+#include <drdc/fixed_sqrt.h>
+#include <drdc/fixed_trig.h>
+
+#include "orient_impl.h"
+
+/* |part| <= 1.0 for all four parts: every product is <= 2^60 and every
+ * sum of four is <= 2^62, so the sums need no overflow test. */
+static int unit_range(const drdc_quat_t *q)
+{
+  const uint32_t lim = UINT32_C(1) << 31;
+  const uint32_t off = UINT32_C(1) << 30;
+
+  return (((uint32_t)q->s + off) <= lim) && (((uint32_t)q->x + off) <= lim)
+         && (((uint32_t)q->y + off) <= lim) && (((uint32_t)q->z + off) <= lim);
+}
+
+drdc_status_t drdc_quat_mul(const drdc_quat_t *a, const drdc_quat_t *b,
+                            drdc_quat_t *out)
+{
+  int64_t p[4];
+  drdc_quat_t r;
+  drdc_status_t st = DRDC_OK;
+
+  if ((a == NULL) || (b == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  if (unit_range(a) && unit_range(b)) {
+    p[0] = ((int64_t)a->s * b->s) - ((int64_t)a->x * b->x)
+           - ((int64_t)a->y * b->y) - ((int64_t)a->z * b->z);
+    p[1] = ((int64_t)a->s * b->x) + ((int64_t)a->x * b->s)
+           + ((int64_t)a->y * b->z) - ((int64_t)a->z * b->y);
+    p[2] = ((int64_t)a->s * b->y) - ((int64_t)a->x * b->z)
+           + ((int64_t)a->y * b->s) + ((int64_t)a->z * b->x);
+    p[3] = ((int64_t)a->s * b->z) + ((int64_t)a->x * b->y)
+           - ((int64_t)a->y * b->x) + ((int64_t)a->z * b->s);
+  } else {
+    /* Parts up to 2.0: products up to 2^62, sums checked. Negating a
+     * product of int32 values cannot overflow (|p| <= 2^62). */
+    st = drdc_orient_impl_sum4((int64_t)a->s * b->s, -((int64_t)a->x * b->x),
+                               -((int64_t)a->y * b->y),
+                               -((int64_t)a->z * b->z), &p[0]);
+    if (st == DRDC_OK) {
+      st = drdc_orient_impl_sum4((int64_t)a->s * b->x, (int64_t)a->x * b->s,
+                                 (int64_t)a->y * b->z,
+                                 -((int64_t)a->z * b->y), &p[1]);
+    }
+    if (st == DRDC_OK) {
+      st = drdc_orient_impl_sum4((int64_t)a->s * b->y,
+                                 -((int64_t)a->x * b->z),
+                                 (int64_t)a->y * b->s, (int64_t)a->z * b->x,
+                                 &p[2]);
+    }
+    if (st == DRDC_OK) {
+      st = drdc_orient_impl_sum4((int64_t)a->s * b->z, (int64_t)a->x * b->y,
+                                 -((int64_t)a->y * b->x),
+                                 (int64_t)a->z * b->s, &p[3]);
+    }
+    if (st != DRDC_OK) {
+      return st;
+    }
+  }
+  st = drdc_orient_impl_q60_to_q30(p[0], &r.s);
+  if (st == DRDC_OK) {
+    st = drdc_orient_impl_q60_to_q30(p[1], &r.x);
+  }
+  if (st == DRDC_OK) {
+    st = drdc_orient_impl_q60_to_q30(p[2], &r.y);
+  }
+  if (st == DRDC_OK) {
+    st = drdc_orient_impl_q60_to_q30(p[3], &r.z);
+  }
+  if (st == DRDC_OK) {
+    *out = r;
+  }
+  return st;
+}
+
+drdc_status_t drdc_quat_conj(const drdc_quat_t *q, drdc_quat_t *out)
+{
+  drdc_quat_t r;
+
+  if ((q == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  if ((q->x == INT32_MIN) || (q->y == INT32_MIN) || (q->z == INT32_MIN)) {
+    return DRDC_E_OVERFLOW;
+  }
+  r.s = q->s;
+  r.x = -q->x;
+  r.y = -q->y;
+  r.z = -q->z;
+  *out = r;
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_quat_inverse(const drdc_quat_t *q, drdc_quat_t *out)
+{
+  orient_scaled_quat_t sq;
+  int64_t v[4];
+  int64_t num;
+  drdc_status_t st;
+  unsigned i;
+
+  if ((q == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  st = drdc_orient_impl_scale(q, &sq);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  /* With c = q 2^k: q^-1 = conj(c) 2^k / |c|^2, raw parts
+   * conj(c) 2^(60 + k) / n2. k >= 2 means |q| < 0.5, |q^-1| > 2. */
+  if (sq.k >= 2) {
+    return DRDC_E_OVERFLOW;
+  }
+  num = (int64_t)1 << (unsigned)(60 + sq.k);
+  for (i = 0u; i < 4u; i++) {
+    int32_t c = (i == 0u) ? sq.c[0] : -sq.c[i]; /* |c| <= 2^30 */
+
+    st = drdc_fx_muldiv_s64(c, num, sq.n2, &v[i]);
+    if ((st != DRDC_OK) || (v[i] > INT32_MAX) || (v[i] < INT32_MIN)) {
+      return DRDC_E_OVERFLOW;
+    }
+  }
+  out->s = (drdc_q1_30_t)v[0];
+  out->x = (drdc_q1_30_t)v[1];
+  out->y = (drdc_q1_30_t)v[2];
+  out->z = (drdc_q1_30_t)v[3];
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_quat_normalize(const drdc_quat_t *q, drdc_quat_t *out)
+{
+  orient_scaled_quat_t sq;
+  unsigned j;
+  uint64_t root;
+  int64_t num;
+  int64_t v[4];
+  unsigned i;
+  drdc_status_t st;
+
+  if ((q == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  st = drdc_orient_impl_scale(q, &sq);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  /* n2 in [2^58, 2^62]: shift it by an even 2j into [2^62, 2^64) so the
+   * root r = sqrt(n2) 2^j has 31..32 bits; then part = c 2^(30 + j) / r. */
+  j = drdc_orient_impl_headroom((uint64_t)sq.n2, 64u) / 2u;
+  root = drdc_fx_sqrt_u64((uint64_t)sq.n2 << (2u * j));
+  num = (int64_t)1 << (30u + j);
+  for (i = 0u; i < 4u; i++) {
+    /* |c| 2^(30 + j) / r <= 2^30: cannot overflow. */
+    (void)drdc_fx_muldiv_s64(sq.c[i], num, (int64_t)root, &v[i]);
+  }
+  out->s = (drdc_q1_30_t)v[0];
+  out->x = (drdc_q1_30_t)v[1];
+  out->y = (drdc_q1_30_t)v[2];
+  out->z = (drdc_q1_30_t)v[3];
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_quat_canonical(const drdc_quat_t *q, drdc_quat_t *out)
+{
+  const int32_t p[4] = { q == NULL ? 0 : q->s, q == NULL ? 0 : q->x,
+                         q == NULL ? 0 : q->y, q == NULL ? 0 : q->z };
+  unsigned i = 0u;
+
+  if ((q == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  while ((i < 3u) && (p[i] == 0)) {
+    i++;
+  }
+  if (p[i] >= 0) {
+    *out = *q;
+    return DRDC_OK;
+  }
+  if ((p[0] == INT32_MIN) || (p[1] == INT32_MIN) || (p[2] == INT32_MIN)
+      || (p[3] == INT32_MIN)) {
+    return DRDC_E_OVERFLOW;
+  }
+  out->s = -p[0];
+  out->x = -p[1];
+  out->y = -p[2];
+  out->z = -p[3];
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_quat_compose(const drdc_quat_t *a, const drdc_quat_t *b,
+                                drdc_quat_t *out)
+{
+  drdc_quat_t p;
+  drdc_status_t st;
+
+  if ((a == NULL) || (b == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  st = drdc_quat_mul(a, b, &p);
+  if (st == DRDC_OK) {
+    st = drdc_quat_normalize(&p, out);
+  }
+  return st;
+}
+
+drdc_status_t drdc_quat_difference(const drdc_quat_t *a,
+                                   const drdc_quat_t *b, drdc_quat_t *out)
+{
+  drdc_quat_t c;
+  drdc_status_t st;
+
+  if ((a == NULL) || (b == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  st = drdc_quat_conj(a, &c);
+  if (st == DRDC_OK) {
+    st = drdc_quat_compose(&c, b, out);
+  }
+  return st;
+}
+
+drdc_status_t drdc_quat_angle_between(const drdc_quat_t *a,
+                                      const drdc_quat_t *b,
+                                      drdc_bam32_t *angle)
+{
+  drdc_quat_t na;
+  drdc_quat_t nb;
+  drdc_quat_t d;
+  uint64_t v2;
+  uint64_t vn;
+  int32_t s;
+  drdc_bam32_t half;
+  drdc_status_t st;
+
+  if ((a == NULL) || (b == NULL) || (angle == NULL)) {
+    return DRDC_E_NULL;
+  }
+  st = drdc_quat_normalize(a, &na);
+  if (st == DRDC_OK) {
+    st = drdc_quat_normalize(b, &nb);
+  }
+  if (st != DRDC_OK) {
+    return st;
+  }
+  /* Unit inputs: conj never overflows (|x| <= 2^30), nor the product. */
+  na.x = -na.x;
+  na.y = -na.y;
+  na.z = -na.z;
+  (void)drdc_quat_mul(&na, &nb, &d);
+  /* |v| from the exact sum of squares (<= 3 2^60), correctly rounded. */
+  v2 = ((uint64_t)((int64_t)d.x * d.x)) + ((uint64_t)((int64_t)d.y * d.y))
+       + ((uint64_t)((int64_t)d.z * d.z));
+  vn = drdc_fx_sqrt_u64(v2);
+  s = (d.s < 0) ? -d.s : d.s;
+  if ((vn == 0u) && (s == 0)) {
+    return DRDC_E_DOMAIN; /* not reachable for unit inputs */
+  }
+  st = drdc_fx_atan2_bam32((int32_t)vn, s, &half);
+  if (st == DRDC_OK) {
+    *angle = half * 2u; /* half in [0, 2^30]: the angle in [0, 2^31] */
+  }
+  return st;
+}
