@@ -34,6 +34,47 @@ uint32_t drdc_fx_sqrt_u32(uint32_t n)
   return (rem > root) ? (root + 1u) : root;
 }
 
+/* The same digit-by-digit root for n < 2^58 with 32-bit registers only
+ * (the targets are 32-bit): two input bits enter the remainder per step,
+ * high word first. The remainder stays below 2 root + 1 < 2^30, so after
+ * taking two more bits it is below 2^32; the root stays below 2^29. */
+static uint64_t sqrt_u58(uint64_t n)
+{
+  uint32_t words[2];
+  uint32_t rem = 0;
+  uint32_t root = 0;
+  unsigned w;
+
+  words[0] = (uint32_t)(n >> 32);
+  words[1] = (uint32_t)n;
+  for (w = 0u; w < 2u; w++) {
+    uint32_t word = words[w];
+    unsigned pairs = 16u;
+
+    if ((w == 0u) || (root == 0u)) {
+      /* leading zero pairs of the number add nothing */
+      while ((pairs != 0u) && ((word >> 30) == 0u)) {
+        word <<= 2;
+        pairs--;
+      }
+    }
+    for (; pairs != 0u; pairs--) {
+      uint32_t trial;
+
+      rem = (rem << 2) | (word >> 30);
+      word <<= 2;
+      trial = (root << 2) | 1u;
+      if (rem >= trial) {
+        rem -= trial;
+        root = (root << 1) | 1u;
+      } else {
+        root <<= 1;
+      }
+    }
+  }
+  return (rem > root) ? ((uint64_t)root + 1u) : (uint64_t)root;
+}
+
 uint64_t drdc_fx_sqrt_u64(uint64_t n)
 {
   uint64_t rem = n;
@@ -42,6 +83,9 @@ uint64_t drdc_fx_sqrt_u64(uint64_t n)
 
   if (n <= UINT32_MAX) {
     return drdc_fx_sqrt_u32((uint32_t)n); /* 32-bit steps are cheaper */
+  }
+  if (n < (UINT64_C(1) << 58)) {
+    return sqrt_u58(n);
   }
   while (bit > rem) {
     bit >>= 2;
@@ -67,7 +111,7 @@ drdc_status_t drdc_fx_sqrt_q15_16(drdc_q15_16_t x, drdc_q15_16_t *out)
     return DRDC_E_DOMAIN;
   }
   /* x 2^16 < 2^47, root < 2^23.5 */
-  *out = (drdc_q15_16_t)drdc_fx_sqrt_u64((uint64_t)x << 16);
+  *out = (drdc_q15_16_t)sqrt_u58((uint64_t)x << 16);
   return DRDC_OK;
 }
 
