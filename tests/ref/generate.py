@@ -27,6 +27,7 @@ GENERATORS = [
     "gen_fixed_sqrt",
     "gen_fixed_trig",
     "gen_fixed_hyper",
+    "gen_units",
 ]
 
 

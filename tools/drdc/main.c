@@ -22,6 +22,9 @@ static const char usage[] =
   "Commands:\n"
   "  time --from F --to T   convert times between utc, gps, unix, rtems\n"
   "                         and tai (drdc time --help for the formats)\n"
+  "  units                  convert 'VALUE FROM TO' lines between units\n"
+  "                         named as GNU units names them (drdc units\n"
+  "                         --help)\n"
   "\n"
   "Options:\n"
   "  --help     this text\n"
@@ -39,6 +42,9 @@ int main(int argc, char **argv)
   }
   if ((argc >= 2) && (strcmp(argv[1], "time") == 0)) {
     return drdc_cmd_time(argc - 1, argv + 1);
+  }
+  if ((argc >= 2) && (strcmp(argv[1], "units") == 0)) {
+    return drdc_cmd_units(argc - 1, argv + 1);
   }
   if (argc < 2) {
     fputs(usage, stderr);
