@@ -28,6 +28,7 @@ GENERATORS = [
     "gen_fixed_trig",
     "gen_fixed_hyper",
     "gen_units",
+    "gen_jaus",
 ]
 
 
