@@ -29,6 +29,7 @@ GENERATORS = [
     "gen_fixed_hyper",
     "gen_units",
     "gen_jaus",
+    "gen_nmea",
 ]
 
 
