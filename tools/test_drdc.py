@@ -170,9 +170,12 @@ class UnitsCommand(unittest.TestCase):
                           "4.4482216152605", "4.184"], out)
 
     def test_errors_and_the_rest_go_on(self):
-        code, out = units("1 furlongs m", "1 ft kg", "x ft m", "1 ft m more", "", "2 ft in")
+        code, out = units("1 furlongs m", "1 ft kg", "x ft m", "1 ft m more", "", "2 ft in",
+                          "nan ft m", "inf ft m")
         self.assertEqual(1, code)
-        self.assertEqual(6, len(out))
+        self.assertEqual(8, len(out))
+        self.assertTrue(out[6].startswith("ERROR: malformed value"))
+        self.assertTrue(out[7].startswith("ERROR: malformed value"))
         for line, why in zip(out, ["DRDC_E_UNKNOWN_UNIT", "DRDC_E_DIMENSION", "malformed",
                                    "DRDC_E_TRAILING", "expected"]):
             self.assertTrue(line.startswith("ERROR: "), line)

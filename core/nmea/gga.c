@@ -9,6 +9,8 @@
 
 /* $--GGA,hhmmss.ss,llll.ll,a,yyyyy.yy,a,x,xx,x.x,x.x,M,x.x,M,x.x,xxxx */
 #define GGA_FIELDS 14u
+/* Fix quality 1..8 in NMEA 0183 v4.10 (8: simulator) */
+#define GGA_QUALITY_MAX 8
 
 drdc_status_t nmea_gga(const nmea_frame_t *fr, drdc_nmea_t *n)
 {
@@ -24,6 +26,9 @@ drdc_status_t nmea_gga(const nmea_frame_t *fr, drdc_nmea_t *n)
   }
   if (n->quality == 0) {
     return DRDC_E_NO_FIX;
+  }
+  if (n->quality > GGA_QUALITY_MAX) {
+    return DRDC_E_RANGE;
   }
   st = nmea_tod(nmea_field(fr, 1u), &n->time);
   if (st == DRDC_OK) {

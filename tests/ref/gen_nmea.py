@@ -233,6 +233,7 @@ def bad():
         (sentence("GPGST,082356.00,1.8,,,,1.7,1.3,40000"), "DRDC_E_RANGE"),
         (sentence("GPGGA,123519,4807.038,N,01131.000,E,1,08,40000.0,545.4,M,46.9,M,,"), "DRDC_E_RANGE"),
         (sentence("GPZDA,082710.00,16,09,2002,14,00"), "DRDC_E_RANGE"),
+        (sentence("GPGGA,123519,4807.038,N,01131.000,E,9,08,0.9,545.4,M,46.9,M,,"), "DRDC_E_RANGE"),
         (sentence("GPRMC,083559.00,A,4717.11437,N,00833.91522,E,0.004,77.52,321202,,,A"), "DRDC_E_DAY"),
         (sentence("GPZDA,082710.00,00,09,2002,00,00"), "DRDC_E_DAY"),
         (sentence("GPRMC,083559.00,A,4717.11437,N,00833.91522,E,0.004,77.52,091302,,,A"), "DRDC_E_MONTH"),

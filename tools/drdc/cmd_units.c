@@ -102,7 +102,7 @@ static int convert_line(char *line, char *out, size_t size)
   }
   errno = 0;
   v = strtold(word, &end);
-  if ((end != word + n) || (errno != 0) || (*word == '\0')) {
+  if ((end != word + n) || (errno != 0) || (*word == '\0') || !isfinite(v)) {
     snprintf(out, size, "ERROR: malformed value '%.*s'", (int)n, word);
     return 1;
   }

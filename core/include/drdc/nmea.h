@@ -164,7 +164,7 @@ typedef struct drdc_nmea {
  * @retval DRDC_E_YEAR ZDA year outside DRDC_YEAR_MIN..DRDC_YEAR_MAX
  * @retval DRDC_E_RANGE latitude beyond 90 or longitude beyond 180
  *         degrees, a number too long for 64 bits, a value beyond its
- *         format, or ZDA zone hours beyond 13
+ *         format, GGA quality 9, or ZDA zone hours beyond 13
  *
  * Accuracy: positions and times exact; other numbers <= 0.5 LSB. Checked
  * against Python's fractions.Fraction parsing of the same text over a
