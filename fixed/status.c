@@ -32,6 +32,15 @@ const char *drdc_status_name(drdc_status_t status)
     "DRDC_E_BUFFER",
     "DRDC_W_LEAP_EXPIRED",
     "DRDC_W_SATURATED",
+    "DRDC_E_UNKNOWN_UNIT",
+    "DRDC_E_DIMENSION",
+    "DRDC_E_CHECKSUM",
+    "DRDC_E_TRUNCATED",
+    "DRDC_E_OVERLONG",
+    "DRDC_E_CHARACTER",
+    "DRDC_E_MISSING_FIELD",
+    "DRDC_E_NO_FIX",
+    "DRDC_E_SENTENCE",
   };
   unsigned index = (unsigned)status;
 

@@ -35,6 +35,8 @@ APT_PACKAGES = {
     # libFuzzer (tools/fuzz.py)
     "clang-14": "1:14.0.6-12",
     "libclang-rt-14-dev": "1:14.0.6-12",
+    # GNU units: oracle of the unit-conversion vectors (tests/ref/gen_units.py)
+    "units": "2.22-2",
 }
 
 # Debian source packages whose upstream tarball we unpack. The checksum is

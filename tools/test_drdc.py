@@ -303,5 +303,69 @@ class Attitude(unittest.TestCase):
         self.assertIn("YAW PITCH ROLL", r.stdout)
 
 
+def units(*lines):
+    r = run("units", stdin="".join(l + "\n" for l in lines))
+    return r.returncode, r.stdout.splitlines()
+
+
+class UnitsCommand(unittest.TestCase):
+    """drdc units (issue 7): 'VALUE FROM TO' lines, the value alone with at
+    least 12 significant digits, 'ERROR: <reason>' and exit status 1."""
+
+    def test_examples(self):
+        code, out = units("3.5 ft m", "1 nmi m", "100 tempC tempF", "0 degC K",
+                          "32 degF degC", "60 rpm Hz", "1 lbf N", "1 cal J")
+        self.assertEqual(0, code)
+        self.assertEqual(["1.0668", "1852", "212", "273.15", "0", "6.28318530717959",
+                          "4.4482216152605", "4.184"], out)
+
+    def test_errors_and_the_rest_go_on(self):
+        code, out = units("1 furlongs m", "1 ft kg", "x ft m", "1 ft m more", "", "2 ft in",
+                          "nan ft m", "inf ft m")
+        self.assertEqual(1, code)
+        self.assertEqual(8, len(out))
+        self.assertTrue(out[6].startswith("ERROR: malformed value"))
+        self.assertTrue(out[7].startswith("ERROR: malformed value"))
+        for line, why in zip(out, ["DRDC_E_UNKNOWN_UNIT", "DRDC_E_DIMENSION", "malformed",
+                                   "DRDC_E_TRAILING", "expected"]):
+            self.assertTrue(line.startswith("ERROR: "), line)
+            self.assertIn(why, line)
+        self.assertEqual("24", out[5])
+
+    def test_every_unit_matches_gnu_units(self):
+        """Every unit of the table, value 1.75 (and a temperature of 21.5)
+        to its SI unit and back, against GNU units 2.22 to 1e-12."""
+        import shutil
+        import sys
+        if shutil.which("units") is None:
+            self.skipTest("GNU units not installed")
+        sys.path.insert(0, os.path.join(TOP, "tests", "ref"))
+        import gen_units
+        rows = gen_units.table()
+        lines, pairs = [], []
+        for name, dim, _ in rows:
+            si = gen_units.si_unit(rows, dim)
+            value = 21.5 if dim == (0, 0, 0, 1, 0) else 1.75
+            for src, dst in ((name, si), (si, name)):
+                v = value + 300 if src == "K" else value
+                lines.append("%r %s %s" % (v, src, dst))
+                pairs.append((gen_units.have_text(v, src), gen_units.want_text(dst)))
+        want = gen_units.units_batch(pairs)
+        code, out = units(*lines)
+        self.assertEqual(0, code)
+        for line, got, ref in zip(lines, out, want):
+            self.assertLessEqual(abs(float(got) - float(ref)), 1e-12 * abs(float(ref)), line)
+        digits = [len(o.split("e")[0].replace("-", "").replace(".", "").lstrip("0"))
+                  for o in out]
+        self.assertGreaterEqual(max(digits), 12)
+
+    def test_help_and_usage(self):
+        self.assertEqual(0, run("units", "--help").returncode)
+        self.assertEqual(2, run("units", "bogus").returncode)
+        r = run("units", "--list")
+        self.assertEqual(0, r.returncode)
+        self.assertGreaterEqual(len(r.stdout.splitlines()), 80)
+
+
 if __name__ == "__main__":
     unittest.main()

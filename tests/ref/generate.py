@@ -30,6 +30,9 @@ GENERATORS = [
     "gen_fixed_tables",
     "gen_orient_quat",
     "gen_orient_dh",
+    "gen_units",
+    "gen_jaus",
+    "gen_nmea",
 ]
 
 

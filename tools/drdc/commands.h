@@ -15,4 +15,8 @@ int drdc_cmd_time(int argc, char **argv);
  *  (bad arguments). */
 int drdc_cmd_attitude(int argc, char **argv);
 
+/** `drdc units`: argv[0] is "units". Returns the exit status: 0 all lines
+ *  converted, 1 a line failed, 2 usage error. */
+int drdc_cmd_units(int argc, char **argv);
+
 #endif /* DRDC_TOOL_COMMANDS_H */

@@ -25,6 +25,9 @@ static const char usage[] =
   "  attitude --from F --to T\n"
   "                         convert orientations between euler, quat and\n"
   "                         dcm (drdc attitude --help for the formats)\n"
+  "  units                  convert 'VALUE FROM TO' lines between units\n"
+  "                         named as GNU units names them (drdc units\n"
+  "                         --help)\n"
   "\n"
   "Options:\n"
   "  --help     this text\n"
@@ -45,6 +48,9 @@ int main(int argc, char **argv)
   }
   if ((argc >= 2) && (strcmp(argv[1], "attitude") == 0)) {
     return drdc_cmd_attitude(argc - 1, argv + 1);
+  }
+  if ((argc >= 2) && (strcmp(argv[1], "units") == 0)) {
+    return drdc_cmd_units(argc - 1, argv + 1);
   }
   if (argc < 2) {
     fputs(usage, stderr);

@@ -55,7 +55,20 @@ typedef enum drdc_status {
   /** warning: the result was clamped to the output format's limit by a
    *  function whose name ends in _sat; the outputs ARE written */
   DRDC_W_SATURATED = 21,
-  DRDC_STATUS_COUNT = 22 /**< number of status codes (not a status) */
+  DRDC_E_UNKNOWN_UNIT = 22, /**< a unit name is not in the unit table */
+  /** two units (or a value and a unit) measure different quantities */
+  DRDC_E_DIMENSION = 23,
+  DRDC_E_CHECKSUM = 24, /**< a message's checksum does not match its text */
+  /** text ends before a complete message (e.g. no checksum or line end) */
+  DRDC_E_TRUNCATED = 25,
+  DRDC_E_OVERLONG = 26, /**< a message is longer than its standard allows */
+  /** a character outside the allowed set (e.g. non-ASCII in NMEA 0183) */
+  DRDC_E_CHARACTER = 27,
+  DRDC_E_MISSING_FIELD = 28, /**< a required field is empty or absent */
+  DRDC_E_NO_FIX = 29, /**< the receiver reports no valid position fix */
+  /** a message of a type or from a talker this function does not decode */
+  DRDC_E_SENTENCE = 30,
+  DRDC_STATUS_COUNT = 31 /**< number of status codes (not a status) */
 } drdc_status_t;
 
 /**
@@ -67,9 +80,11 @@ typedef enum drdc_status {
 const char *drdc_status_name(drdc_status_t status);
 
 /** Whether `status` is an error (outputs unchanged), as opposed to
- *  DRDC_OK or a DRDC_W_* warning (outputs written). */
+ *  DRDC_OK or a DRDC_W_* warning (outputs written). Errors appended after
+ *  the warnings count as errors. */
 #define drdc_status_is_error(status) \
-  (((status) != DRDC_OK) && ((status) < DRDC_W_LEAP_EXPIRED))
+  (((status) != DRDC_OK) && ((status) != DRDC_W_LEAP_EXPIRED) \
+   && ((status) != DRDC_W_SATURATED))
 
 /** @} */
 

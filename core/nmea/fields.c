@@ -1,0 +1,242 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @ingroup drdc_nmea
+ * @brief Integer-only parsers of NMEA fields: unsigned integers, decimal
+ *        numbers to fixed point (one rounding), time of day and
+ *        latitude/longitude to nano-arcseconds (exact).
+ */
+#include <drdc/fixed_arith.h>
+
+#include "nmea_impl.h"
+
+/* Digits of a decimal mantissa that int64_t always holds. */
+#define DECIMAL_DIGITS_MAX 18u
+/* Decimals of a number converted with a scale: 10^15 x 3600 < 2^63. */
+#define DECIMALS_MAX 15u
+/* Decimals of minutes kept exactly: 1e-10 minute = 6 nas. */
+#define MINUTE_DECIMALS_MAX 10u
+#define NAS_PER_MINUTE INT64_C(60000000000)
+
+static int is_digit(char c)
+{
+  return ((c >= '0') && (c <= '9')) ? 1 : 0;
+}
+
+static int64_t digit(char c)
+{
+  return (int64_t)c - (int64_t)'0';
+}
+
+static int64_t pow10_s64(size_t n)
+{
+  int64_t p = 1;
+  size_t i;
+
+  for (i = 0u; i < n; i++) {
+    p *= 10;
+  }
+  return p;
+}
+
+drdc_status_t nmea_uint(nmea_field_t f, size_t min_digits, size_t max_digits,
+                        int32_t *out)
+{
+  int32_t v = 0;
+  size_t i;
+  const char *p = f.p;
+
+  if (f.n == 0u) {
+    return DRDC_E_MISSING_FIELD;
+  }
+  if ((f.n < min_digits) || (f.n > max_digits)) {
+    return DRDC_E_SYNTAX;
+  }
+  for (i = 0u; i < f.n; i++) {
+    if (is_digit(p[i]) == 0) {
+      return DRDC_E_SYNTAX;
+    }
+    v = (v * 10) + (int32_t)digit(p[i]);
+  }
+  *out = v;
+  return DRDC_OK;
+}
+
+/* [-]digits[.digits] -> mantissa and number of decimals. */
+static drdc_status_t decimal(nmea_field_t f, int64_t *mantissa,
+                             size_t *decimals)
+{
+  size_t i = 0u;
+  size_t digits = 0u;
+  size_t after = 0u;
+  int point = 0;
+  int negative = 0;
+  int64_t m = 0;
+  const char *p = f.p;
+
+  if (f.n == 0u) {
+    return DRDC_E_MISSING_FIELD;
+  }
+  if (p[0] == '-') {
+    negative = 1;
+    i = 1u;
+  }
+  for (; i < f.n; i++) {
+    char c = p[i];
+
+    if ((c == '.') && (point == 0)) {
+      point = 1;
+    } else if (is_digit(c) != 0) {
+      if (digits == DECIMAL_DIGITS_MAX) {
+        return DRDC_E_RANGE;
+      }
+      m = (m * 10) + digit(c);
+      digits++;
+      if (point != 0) {
+        after++;
+      }
+    } else {
+      return DRDC_E_SYNTAX;
+    }
+  }
+  if (digits == 0u) {
+    return DRDC_E_SYNTAX;
+  }
+  *mantissa = (negative != 0) ? -m : m;
+  *decimals = after;
+  return DRDC_OK;
+}
+
+drdc_status_t nmea_fixed(nmea_field_t f, int64_t num, int64_t den,
+                         unsigned frac, int64_t *out)
+{
+  int64_t m = 0;
+  size_t k = 0u;
+  drdc_status_t st = decimal(f, &m, &k);
+
+  if (st != DRDC_OK) {
+    return st;
+  }
+  if (k > DECIMALS_MAX) {
+    return DRDC_E_RANGE;
+  }
+  /* num << frac <= 2^43 and den x 10^15 < 2^63 for every caller */
+  st = drdc_fx_muldiv_s64(m, num * (INT64_C(1) << frac), den * pow10_s64(k),
+                          out);
+  return (st == DRDC_OK) ? DRDC_OK : DRDC_E_RANGE;
+}
+
+drdc_status_t nmea_tod(nmea_field_t f, drdc_nmea_tod_t *out)
+{
+  int32_t v[3] = { 0, 0, 0 };
+  int32_t nsec = 0;
+  size_t i;
+  size_t k;
+  const char *p = f.p;
+
+  if (f.n == 0u) {
+    return DRDC_E_MISSING_FIELD;
+  }
+  if ((f.n < 6u) || ((f.n > 6u) && ((p[6] != '.') || (f.n == 7u)
+                                     || (f.n > 16u)))) {
+    return DRDC_E_SYNTAX;
+  }
+  for (i = 0u; i < 6u; i++) {
+    if (is_digit(p[i]) == 0) {
+      return DRDC_E_SYNTAX;
+    }
+    v[i / 2u] = (v[i / 2u] * 10) + (int32_t)digit(p[i]);
+  }
+  for (k = 7u; k < f.n; k++) {
+    if (is_digit(p[k]) == 0) {
+      return DRDC_E_SYNTAX;
+    }
+    nsec = (nsec * 10) + (int32_t)digit(p[k]);
+  }
+  for (k = f.n; k < 16u; k++) {
+    if (k >= 7u) {
+      nsec *= 10; /* fewer than 9 decimals: scale to nanoseconds */
+    }
+  }
+  if (v[0] > 23) {
+    return DRDC_E_HOUR;
+  }
+  if (v[1] > 59) {
+    return DRDC_E_MINUTE;
+  }
+  if (v[2] > 60) {
+    return DRDC_E_SECOND;
+  }
+  out->hour = v[0];
+  out->minute = v[1];
+  out->second = v[2];
+  out->nsec = nsec;
+  return DRDC_OK;
+}
+
+drdc_status_t nmea_angle(nmea_field_t value, nmea_field_t hemisphere,
+                         int latitude, drdc_nas_t *out)
+{
+  size_t point = value.n;
+  size_t i;
+  int64_t degrees = 0;
+  int64_t minutes = 0;
+  int64_t fraction = 0;
+  int64_t limit = 180;
+  size_t max_int = 5u;
+  char positive = 'E';
+  char negative = 'W';
+  char h;
+  const char *vp = value.p;
+  drdc_nas_t nas;
+
+  if ((value.n == 0u) || (hemisphere.n == 0u)) {
+    return DRDC_E_MISSING_FIELD;
+  }
+  if (latitude != 0) {
+    limit = 90;
+    max_int = 4u;
+    positive = 'N';
+    negative = 'S';
+  }
+  h = hemisphere.p[0];
+  for (i = 0u; i < value.n; i++) {
+    if ((vp[i] == '.') && (point == value.n)) {
+      point = i;
+    } else if (is_digit(vp[i]) == 0) {
+      return DRDC_E_SYNTAX;
+    } else {
+      /* a digit */
+    }
+  }
+  /* (d)ddmm: 3..max_int integer digits, the last two are minutes */
+  if ((point < 3u) || (point > max_int) || (point == (value.n - 1u))
+      || ((value.n - point) > (MINUTE_DECIMALS_MAX + 1u))) {
+    return DRDC_E_SYNTAX;
+  }
+  if ((hemisphere.n != 1u)
+      || ((h != positive) && (h != negative))) {
+    return DRDC_E_SYNTAX;
+  }
+  for (i = 0u; i < (point - 2u); i++) {
+    degrees = (degrees * 10) + digit(vp[i]);
+  }
+  minutes = (digit(vp[point - 2u]) * 10) + digit(vp[point - 1u]);
+  for (i = point + 1u; i < value.n; i++) {
+    fraction = (fraction * 10) + digit(vp[i]);
+  }
+  if (minutes >= 60) {
+    return DRDC_E_MINUTE;
+  }
+  /* fraction of a minute in units of 1e-10 minute = 6 nas */
+  if (value.n > point) {
+    fraction *= pow10_s64((MINUTE_DECIMALS_MAX + point + 1u) - value.n);
+  }
+  nas = (degrees * DRDC_NAS_PER_DEGREE) + (minutes * NAS_PER_MINUTE)
+        + (fraction * 6);
+  if (nas > (limit * DRDC_NAS_PER_DEGREE)) {
+    return DRDC_E_RANGE;
+  }
+  *out = (h == negative) ? -nas : nas;
+  return DRDC_OK;
+}

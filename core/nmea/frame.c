@@ -1,0 +1,165 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @ingroup drdc_nmea
+ * @brief NMEA 0183 framing: `$`, printable ASCII, `*hh` checksum, length,
+ *        address; fields split in place, never reading past `length`.
+ */
+#include "nmea_impl.h"
+
+/* Characters up to the end of the checksum: 82 minus CR LF. */
+#define NMEA_BODY_MAX (DRDC_NMEA_LENGTH_MAX - 2u)
+
+/* Value of a hex digit, or -1. */
+static int hex_value(char c)
+{
+  int v = -1;
+
+  if ((c >= '0') && (c <= '9')) {
+    v = (int)c - (int)'0';
+  } else if ((c >= 'A') && (c <= 'F')) {
+    v = ((int)c - (int)'A') + 10;
+  } else if ((c >= 'a') && (c <= 'f')) {
+    v = ((int)c - (int)'a') + 10;
+  } else {
+    v = -1;
+  }
+  return v;
+}
+
+static int is_upper(char c)
+{
+  return ((c >= 'A') && (c <= 'Z')) ? 1 : 0;
+}
+
+/* The sentence formatter of the address, or DRDC_E_SENTENCE. */
+static drdc_status_t formatter(const char *a, drdc_nmea_type_t *type)
+{
+  static const char names[5][3] = { { 'G', 'G', 'A' }, { 'R', 'M', 'C' },
+                                     { 'G', 'N', 'S' }, { 'Z', 'D', 'A' },
+                                     { 'G', 'S', 'T' } };
+  static const drdc_nmea_type_t types[5] = { DRDC_NMEA_GGA, DRDC_NMEA_RMC,
+                                             DRDC_NMEA_GNS, DRDC_NMEA_ZDA,
+                                             DRDC_NMEA_GST };
+  size_t i;
+
+  for (i = 0u; i < 5u; i++) {
+    if ((a[0] == names[i][0]) && (a[1] == names[i][1])
+        && (a[2] == names[i][2])) {
+      *type = types[i];
+      return DRDC_OK;
+    }
+  }
+  return DRDC_E_SENTENCE;
+}
+
+/* Whether the rest of the text after the checksum is empty or a line
+ * end (CR LF, LF or CR). */
+static int line_end_only(const char *rest, size_t n)
+{
+  int ok = 0;
+  char c0 = '\0';
+  char c1 = '\0';
+
+  if (n >= 1u) {
+    c0 = rest[0];
+  }
+  if (n >= 2u) {
+    c1 = rest[1];
+  }
+  if (n == 0u) {
+    ok = 1;
+  } else if ((n == 1u) && ((c0 == '\r') || (c0 == '\n'))) {
+    ok = 1;
+  } else if ((n == 2u) && (c0 == '\r') && (c1 == '\n')) {
+    ok = 1;
+  } else {
+    ok = 0;
+  }
+  return ok;
+}
+
+drdc_status_t nmea_frame(const char *text, size_t length, nmea_frame_t *fr)
+{
+  size_t i = 1u;
+  size_t star = 0u;
+  unsigned sum = 0u;
+  int hi;
+  int lo;
+  size_t start;
+  size_t k;
+
+  if ((length == 0u) || (text[0] != '$')) {
+    return DRDC_E_SYNTAX;
+  }
+  /* scan to '*': printable ASCII only; a line end before it truncates */
+  while ((i < length) && (star == 0u)) {
+    unsigned char c = (unsigned char)text[i];
+
+    if (c == (unsigned char)'*') {
+      star = i;
+    } else if ((c == (unsigned char)'\r') || (c == (unsigned char)'\n')) {
+      return (i > NMEA_BODY_MAX) ? DRDC_E_OVERLONG : DRDC_E_TRUNCATED;
+    } else if ((c < 0x20u) || (c > 0x7Eu)) {
+      return DRDC_E_CHARACTER;
+    } else {
+      sum ^= (unsigned)c;
+      i++;
+    }
+  }
+  if (star == 0u) {
+    return (length > NMEA_BODY_MAX) ? DRDC_E_OVERLONG : DRDC_E_TRUNCATED;
+  }
+  if ((star + 3u) > NMEA_BODY_MAX) {
+    return DRDC_E_OVERLONG;
+  }
+  if ((star + 3u) > length) {
+    return DRDC_E_TRUNCATED;
+  }
+  hi = hex_value(text[star + 1u]);
+  lo = hex_value(text[star + 2u]);
+  if ((hi < 0) || (lo < 0)) {
+    return DRDC_E_SYNTAX;
+  }
+  if (line_end_only(&text[star + 3u], length - (star + 3u)) == 0) {
+    return DRDC_E_TRAILING;
+  }
+  if (sum != (((unsigned)hi * 16u) + (unsigned)lo)) {
+    return DRDC_E_CHECKSUM;
+  }
+  /* address: two-letter talker and a three-letter formatter, then ',' */
+  if ((star < 7u) || (text[6] != ',') || (is_upper(text[1]) == 0)
+      || (is_upper(text[2]) == 0)) {
+    return DRDC_E_SENTENCE;
+  }
+  if (formatter(&text[3], &fr->type) != DRDC_OK) {
+    return DRDC_E_SENTENCE;
+  }
+  fr->talker[0] = text[1];
+  fr->talker[1] = text[2];
+  fr->talker[2] = '\0';
+  /* fields between the address and '*' */
+  fr->count = 0u;
+  start = 7u;
+  for (k = 7u; k <= star; k++) {
+    if ((k == star) || (text[k] == ',')) {
+      if (fr->count < NMEA_FIELDS_MAX) {
+        fr->f[fr->count].p = &text[start];
+        fr->f[fr->count].n = k - start;
+        fr->count++;
+      }
+      start = k + 1u;
+    }
+  }
+  return DRDC_OK;
+}
+
+nmea_field_t nmea_field(const nmea_frame_t *fr, size_t i)
+{
+  nmea_field_t f = { NULL, 0u };
+
+  if ((i >= 1u) && (i <= fr->count)) {
+    f = fr->f[i - 1u];
+  }
+  return f;
+}

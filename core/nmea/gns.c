@@ -1,0 +1,97 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @ingroup drdc_nmea
+ * @brief GNS: multi-constellation fix with a mode letter per system.
+ */
+#include "nmea_impl.h"
+
+/* $--GNS,hhmmss.ss,llll.ll,a,yyyyy.yy,a,c--c,xx,x.x,x.x,x.x,x.x,x.x */
+#define GNS_FIELDS 12u
+/* mode letters kept (one per constellation: GPS, GLONASS, Galileo, BDS,
+ * QZSS, NavIC) */
+#define GNS_MODES_MAX 6u
+
+/* Mode letters of NMEA 0183 v4.10: A autonomous, D differential,
+ * E estimated, F float RTK, M manual, N no fix, P precise, R RTK,
+ * S simulator. */
+static int is_mode(char c)
+{
+  return ((c == 'A') || (c == 'D') || (c == 'E') || (c == 'F') || (c == 'M')
+          || (c == 'N') || (c == 'P') || (c == 'R') || (c == 'S')) ? 1 : 0;
+}
+
+drdc_status_t nmea_gns(const nmea_frame_t *fr, drdc_nmea_t *n)
+{
+  nmea_field_t mode = nmea_field(fr, 6u);
+  drdc_status_t st;
+  int64_t v = 0;
+  size_t i;
+  int fix = 0;
+
+  if (fr->count < GNS_FIELDS) {
+    return DRDC_E_MISSING_FIELD;
+  }
+  if (mode.n == 0u) {
+    return DRDC_E_MISSING_FIELD;
+  }
+  if (mode.n > GNS_MODES_MAX) {
+    return DRDC_E_SYNTAX;
+  }
+  for (i = 0u; i < mode.n; i++) {
+    char c = mode.p[i];
+
+    if (is_mode(c) == 0) {
+      return DRDC_E_SYNTAX;
+    }
+    if (c != 'N') {
+      fix = 1;
+    }
+    n->mode[i] = c;
+  }
+  n->mode[mode.n] = '\0';
+  if (fix == 0) {
+    return DRDC_E_NO_FIX;
+  }
+  st = nmea_tod(nmea_field(fr, 1u), &n->time);
+  if (st == DRDC_OK) {
+    st = nmea_angle(nmea_field(fr, 2u), nmea_field(fr, 3u), 1, &n->latitude);
+  }
+  if (st == DRDC_OK) {
+    st = nmea_angle(nmea_field(fr, 4u), nmea_field(fr, 5u), 0, &n->longitude);
+  }
+  if (st == DRDC_OK) {
+    n->has |= DRDC_NMEA_HAS_POSITION;
+    st = nmea_uint(nmea_field(fr, 7u), 1u, 2u, &n->satellites);
+  }
+  if (st != DRDC_OK) {
+    return st;
+  }
+  n->has |= DRDC_NMEA_HAS_SATELLITES;
+  if (nmea_field(fr, 8u).n != 0u) {
+    st = nmea_fixed(nmea_field(fr, 8u), 1, 1, 16u, &v);
+    if ((st == DRDC_OK) && ((v > INT32_MAX) || (v < INT32_MIN))) {
+      st = DRDC_E_RANGE;
+    }
+    if (st != DRDC_OK) {
+      return st;
+    }
+    n->hdop = (drdc_q15_16_t)v;
+    n->has |= DRDC_NMEA_HAS_HDOP;
+  }
+  if (nmea_field(fr, 9u).n != 0u) {
+    st = nmea_fixed(nmea_field(fr, 9u), 1, 1, 16u, &n->altitude);
+    if (st != DRDC_OK) {
+      return st;
+    }
+    n->has |= DRDC_NMEA_HAS_ALTITUDE;
+  }
+  if (nmea_field(fr, 10u).n != 0u) {
+    st = nmea_fixed(nmea_field(fr, 10u), 1, 1, 16u, &n->separation);
+    if (st != DRDC_OK) {
+      return st;
+    }
+    n->has |= DRDC_NMEA_HAS_SEPARATION;
+  }
+  return DRDC_OK;
+}

@@ -1,0 +1,55 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @ingroup drdc_nmea
+ * @brief A sentence's time of day on the date of an RMC or ZDA sentence,
+ *        across midnight, as a UTC instant.
+ */
+#include "nmea_impl.h"
+
+#define SECONDS_PER_HALF_DAY 43200
+
+static int32_t seconds_of_day(const drdc_nmea_tod_t *t)
+{
+  return (((t->hour * 60) + t->minute) * 60) + t->second;
+}
+
+drdc_status_t drdc_nmea_utc(const drdc_time_leap_t *leap,
+                            const drdc_nmea_t *dated, const drdc_nmea_t *s,
+                            drdc_time_t *utc)
+{
+  int32_t days = 0;
+  int32_t shift;
+  drdc_time_civil_t c;
+  drdc_status_t st;
+
+  if ((dated == NULL) || (s == NULL) || (utc == NULL)) {
+    return DRDC_E_NULL;
+  }
+  if ((dated->has & DRDC_NMEA_HAS_DATE) == 0u) {
+    return DRDC_E_MISSING_FIELD;
+  }
+  st = drdc_time_days_from_civil(dated->year, dated->month, dated->day,
+                                 &days);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  /* the day of `s`: the one nearest to the dated time of day */
+  shift = seconds_of_day(&s->time) - seconds_of_day(&dated->time);
+  if (shift < -SECONDS_PER_HALF_DAY) {
+    days += 1;
+  } else if (shift > SECONDS_PER_HALF_DAY) {
+    days -= 1;
+  } else {
+    /* same day */
+  }
+  st = drdc_time_civil_from_days(days, &c.year, &c.month, &c.day);
+  if (st != DRDC_OK) {
+    return DRDC_E_RANGE;
+  }
+  c.hour = s->time.hour;
+  c.minute = s->time.minute;
+  c.second = s->time.second;
+  c.nsec = s->time.nsec;
+  return drdc_time_from_civil(leap, &c, utc);
+}

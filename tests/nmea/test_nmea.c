@@ -1,0 +1,268 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @brief NMEA 0183: a corpus of sentences against Python's Fraction
+ *        reading of the same text, every malformation with its status,
+ *        every prefix of every sentence parsed from a buffer that ends
+ *        where the text ends (ASan catches any over-read), and UTC
+ *        stitching across midnight and a leap second.
+ */
+#include <stddef.h>
+#include <stdint.h>
+
+#include <drdc/nmea.h>
+
+#include "suites.h"
+#include "unity.h"
+#include "vectors_nmea.h"
+
+#define COUNT(a) (sizeof(a) / sizeof((a)[0]))
+#define BUFFER 128u
+
+static void sentinel(drdc_nmea_t *n)
+{
+  const unsigned char *end = (const unsigned char *)(n + 1);
+  unsigned char *p = (unsigned char *)n;
+
+  while (p < end) {
+    *p = 0xA5u;
+    p++;
+  }
+}
+
+static int unchanged(const drdc_nmea_t *n)
+{
+  const unsigned char *end = (const unsigned char *)(n + 1);
+  const unsigned char *p = (const unsigned char *)n;
+
+  while (p < end) {
+    if (*p != 0xA5u) {
+      return 0;
+    }
+    p++;
+  }
+  return 1;
+}
+
+static void parse_ok(const char *text, size_t length, drdc_nmea_t *n)
+{
+  sentinel(n);
+  TEST_ASSERT_EQUAL_INT_MESSAGE(DRDC_OK, drdc_nmea_parse(text, length, n), text);
+}
+
+static void test_corpus_matches_the_fraction_model(void)
+{
+  size_t i;
+  size_t k;
+
+  for (i = 0u; i < COUNT(nmea_vectors); i++) {
+    const struct nmea_vector *v = &nmea_vectors[i];
+    drdc_nmea_t n;
+
+    parse_ok(v->text, v->length, &n);
+
+    TEST_ASSERT_EQUAL_INT_MESSAGE(v->type, n.type, v->text);
+    TEST_ASSERT_EQUAL_STRING(v->talker, n.talker);
+    TEST_ASSERT_EQUAL_HEX32_MESSAGE(v->has, n.has, v->text);
+    TEST_ASSERT_EQUAL_INT32(v->tod[0], n.time.hour);
+    TEST_ASSERT_EQUAL_INT32(v->tod[1], n.time.minute);
+    TEST_ASSERT_EQUAL_INT32(v->tod[2], n.time.second);
+    TEST_ASSERT_EQUAL_INT32(v->tod[3], n.time.nsec);
+    TEST_ASSERT_EQUAL_INT64_MESSAGE(v->latitude, n.latitude, v->text);
+    TEST_ASSERT_EQUAL_INT64_MESSAGE(v->longitude, n.longitude, v->text);
+    TEST_ASSERT_EQUAL_INT64(v->altitude, n.altitude);
+    TEST_ASSERT_EQUAL_INT64(v->separation, n.separation);
+    TEST_ASSERT_EQUAL_INT32(v->quality, n.quality);
+    TEST_ASSERT_EQUAL_INT32(v->satellites, n.satellites);
+    TEST_ASSERT_EQUAL_INT32(v->hdop, n.hdop);
+    TEST_ASSERT_EQUAL_INT32(v->speed, n.speed);
+    TEST_ASSERT_EQUAL_UINT32(v->course, n.course);
+    TEST_ASSERT_EQUAL_STRING(v->mode, n.mode);
+    TEST_ASSERT_EQUAL_INT32(v->year, n.year);
+    TEST_ASSERT_EQUAL_INT32(v->month, n.month);
+    TEST_ASSERT_EQUAL_INT32(v->day, n.day);
+    TEST_ASSERT_EQUAL_INT32(v->zone_hours, n.zone_hours);
+    TEST_ASSERT_EQUAL_INT32(v->zone_minutes, n.zone_minutes);
+    TEST_ASSERT_EQUAL_INT32(v->gst[0], n.rms);
+    TEST_ASSERT_EQUAL_INT32(v->gst[1], n.sigma_major);
+    TEST_ASSERT_EQUAL_INT32(v->gst[2], n.sigma_minor);
+    TEST_ASSERT_EQUAL_UINT32((uint32_t)v->gst[3], n.orientation);
+    TEST_ASSERT_EQUAL_INT32(v->gst[4], n.sigma_latitude);
+    TEST_ASSERT_EQUAL_INT32(v->gst[5], n.sigma_longitude);
+    TEST_ASSERT_EQUAL_INT32(v->gst[6], n.sigma_altitude);
+    for (k = 0u; k < 3u; k++) {
+      /* the talker is NUL-terminated within its array */
+      TEST_ASSERT_TRUE((k < 2u) || (n.talker[k] == '\0'));
+    }
+  }
+  TEST_ASSERT_TRUE(COUNT(nmea_vectors) >= 30u);
+}
+
+/* Every malformation gives its own status and leaves the output as it
+ * was; the test names every status drdc_nmea_parse() documents. */
+static void test_drdc_nmea_parse_malformations(void)
+{
+  static const drdc_status_t documented[] = {
+    DRDC_E_SYNTAX,  DRDC_E_CHARACTER,     DRDC_E_TRUNCATED, DRDC_E_OVERLONG,
+    DRDC_E_TRAILING, DRDC_E_CHECKSUM,     DRDC_E_SENTENCE,  DRDC_E_NO_FIX,
+    DRDC_E_MISSING_FIELD, DRDC_E_HOUR,    DRDC_E_MINUTE,    DRDC_E_SECOND,
+    DRDC_E_DAY,     DRDC_E_MONTH,         DRDC_E_YEAR,      DRDC_E_RANGE,
+  };
+  size_t i;
+  size_t k;
+
+  for (i = 0u; i < COUNT(nmea_bad_vectors); i++) {
+    const struct nmea_bad_vector *v = &nmea_bad_vectors[i];
+    drdc_nmea_t n;
+
+    sentinel(&n);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(v->status, drdc_nmea_parse(v->text, v->length, &n), v->text);
+    TEST_ASSERT_TRUE(unchanged(&n));
+  }
+  for (k = 0u; k < COUNT(documented); k++) {
+    int seen = 0;
+
+    for (i = 0u; i < COUNT(nmea_bad_vectors); i++) {
+      if (nmea_bad_vectors[i].status == documented[k]) {
+        seen = 1;
+      }
+    }
+    TEST_ASSERT_TRUE_MESSAGE(seen, drdc_status_name(documented[k]));
+  }
+}
+
+static void test_drdc_nmea_parse_null(void)
+{
+  drdc_nmea_t n;
+
+  sentinel(&n);
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_nmea_parse(NULL, 10u, &n));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_nmea_parse(nmea_vectors[0].text,
+                                                     nmea_vectors[0].length, NULL));
+  TEST_ASSERT_TRUE(unchanged(&n));
+}
+
+/* Parse every prefix of `text` from the end of a buffer, so that a read
+ * at or past `length` leaves the object (ASan reports it on host-asan). */
+static void parse_every_prefix(const char *text, size_t length)
+{
+  char buffer[BUFFER];
+  size_t n;
+  size_t i;
+
+  TEST_ASSERT_TRUE(length <= BUFFER);
+  for (n = 0u; n <= length; n++) {
+    drdc_nmea_t out;
+    drdc_status_t st;
+    char *start = &buffer[BUFFER - n];
+
+    for (i = 0u; i < n; i++) {
+      start[i] = text[i];
+    }
+    sentinel(&out);
+    st = drdc_nmea_parse(start, n, &out);
+    if (st != DRDC_OK) {
+      TEST_ASSERT_TRUE(unchanged(&out));
+    }
+  }
+}
+
+static void test_never_reads_past_the_buffer(void)
+{
+  size_t i;
+
+  for (i = 0u; i < COUNT(nmea_vectors); i++) {
+    parse_every_prefix(nmea_vectors[i].text, nmea_vectors[i].length);
+  }
+  for (i = 0u; i < COUNT(nmea_bad_vectors); i++) {
+    parse_every_prefix(nmea_bad_vectors[i].text, nmea_bad_vectors[i].length);
+  }
+}
+
+static void parse_text(const char *text, drdc_nmea_t *out)
+{
+  size_t n = 0u;
+
+  while (text[n] != '\0') {
+    n++;
+  }
+  parse_ok(text, n, out);
+}
+
+/* Named cases: the header's example, a GGA after midnight on the date of
+ * an RMC before it, a leap second dated by ZDA, an RMC dating itself. */
+static void test_drdc_nmea_utc_stitching(void)
+{
+  drdc_nmea_t rmc;
+  drdc_nmea_t gga;
+  drdc_nmea_t zda;
+  drdc_nmea_t leap;
+  drdc_time_t t = { 0, 0 };
+
+  parse_text("$GPRMC,235959.00,A,4807.038,N,01131.000,E,22.4,84.4,311216,3.1,W,A*2C\r\n", &rmc);
+  parse_text("$GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,*47\r\n", &gga);
+
+  TEST_ASSERT_EQUAL_INT64(INT64_C(173222280000000), gga.latitude);
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_nmea_utc(NULL, &rmc, &rmc, &t));
+  TEST_ASSERT_EQUAL_INT64(INT64_C(1483228799), t.sec); /* 2016-12-31T23:59:59Z */
+  TEST_ASSERT_EQUAL_INT32(0, t.nsec);
+  gga.time.hour = 0;
+  gga.time.minute = 0;
+  gga.time.second = 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_nmea_utc(NULL, &rmc, &gga, &t));
+  TEST_ASSERT_EQUAL_INT64(INT64_C(1483228801), t.sec); /* 2017-01-01T00:00:01Z */
+  parse_text("$GPZDA,235960.50,31,12,2016,-05,30*47\r\n", &zda);
+  TEST_ASSERT_EQUAL_INT32(-5, zda.zone_hours);
+  TEST_ASSERT_EQUAL_INT32(30, zda.zone_minutes);
+  parse_text("$GPGGA,235960.50,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,*6A\r\n", &leap);
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_nmea_utc(NULL, &zda, &leap, &t));
+  TEST_ASSERT_EQUAL_INT64(INT64_C(1483228799), t.sec);
+  TEST_ASSERT_EQUAL_INT32(1500000000, t.nsec);
+  /* a GGA late in the day before the RMC's date */
+  rmc.time.hour = 0;
+  gga.time.hour = 23;
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_nmea_utc(NULL, &rmc, &gga, &t));
+  TEST_ASSERT_EQUAL_INT64(INT64_C(1483138801), t.sec); /* 2016-12-30T23:00:01Z */
+}
+
+static void test_drdc_nmea_utc_bad_input(void)
+{
+  drdc_nmea_t zda;
+  drdc_nmea_t gga;
+  drdc_time_t t = { 7, 7 };
+
+  parse_text("$GPZDA,235959.00,31,12,9999,,*66\r\n", &zda);
+  parse_text("$GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,*47\r\n", &gga);
+
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_nmea_utc(NULL, NULL, &gga, &t));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_nmea_utc(NULL, &zda, NULL, &t));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_nmea_utc(NULL, &zda, &gga, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_MISSING_FIELD, drdc_nmea_utc(NULL, &gga, &gga, &t));
+  /* 00:00:01 after 9999-12-31T23:59:59 is past the calendar */
+  gga.time.hour = 0;
+  gga.time.minute = 0;
+  gga.time.second = 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_nmea_utc(NULL, &zda, &gga, &t));
+  /* 30 February */
+  zda.year = 2024;
+  zda.month = 2;
+  zda.day = 30;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DAY, drdc_nmea_utc(NULL, &zda, &zda, &t));
+  /* second 60 on a day without a leap second */
+  zda.day = 28;
+  zda.time.second = 60;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_SECOND, drdc_nmea_utc(NULL, &zda, &zda, &t));
+  TEST_ASSERT_EQUAL_INT64(7, t.sec);
+  TEST_ASSERT_EQUAL_INT32(7, t.nsec);
+}
+
+void suite_nmea(void)
+{
+  UnitySetTestFile(__FILE__);
+  RUN_TEST(test_corpus_matches_the_fraction_model);
+  RUN_TEST(test_drdc_nmea_parse_malformations);
+  RUN_TEST(test_drdc_nmea_parse_null);
+  RUN_TEST(test_never_reads_past_the_buffer);
+  RUN_TEST(test_drdc_nmea_utc_stitching);
+  RUN_TEST(test_drdc_nmea_utc_bad_input);
+}

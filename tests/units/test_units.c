@@ -1,0 +1,264 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @brief Units of measure: every unit against GNU units 2.22 vectors
+ *        (1 LSB, relative error below 1e-9), the table's own rules, named
+ *        conversions matched exactly, and the bad-input catalogue.
+ */
+#include <stddef.h>
+#include <stdint.h>
+
+#include <drdc/units.h>
+
+#include "suites.h"
+#include "unity.h"
+#include "vectors_units.h"
+
+#define N_VECTORS (sizeof units_vectors / sizeof units_vectors[0])
+
+static size_t length_of(const char *s)
+{
+  size_t n = 0u;
+
+  while (s[n] != '\0') {
+    n++;
+  }
+  return n;
+}
+
+static const drdc_unit_t *unit(const char *name)
+{
+  const drdc_unit_t *u = NULL;
+
+  TEST_ASSERT_EQUAL_INT_MESSAGE(DRDC_OK, drdc_units_find(name, length_of(name), &u), name);
+  return u;
+}
+
+static int64_t convert(int64_t raw, unsigned from_frac, const char *from, unsigned to_frac,
+                       const char *to)
+{
+  int64_t out = 0;
+
+  TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                        drdc_units_convert(raw, from_frac, unit(from), to_frac, unit(to), &out));
+  return out;
+}
+
+/* Every vector: within 1 LSB of GNU units' 15-digit value, and a
+ * relative error below 1e-9 wherever the result has 2^32 LSB or more. */
+static void test_every_unit_matches_gnu_units(void)
+{
+  size_t i;
+  int64_t worst = 0;
+
+  for (i = 0u; i < N_VECTORS; i++) {
+    const struct units_vector *v = &units_vectors[i];
+    int64_t got = convert(v->raw, v->from_frac, v->from, v->to_frac, v->to);
+    int64_t diff = (got > v->expect) ? (got - v->expect) : (v->expect - got);
+    int64_t mag = (v->expect < 0) ? -v->expect : v->expect;
+
+    TEST_ASSERT_TRUE_MESSAGE(diff <= 1, v->from);
+    if (mag >= (INT64_C(1) << 32)) {
+      /* diff <= 1 and mag >= 2^32 > 1e9 */
+      TEST_ASSERT_TRUE((diff * INT64_C(1000000000)) < mag);
+    }
+    if (diff > worst) {
+      worst = diff;
+    }
+  }
+  TEST_ASSERT_TRUE(worst <= 1);
+}
+
+/* Table index of a unit. */
+static size_t index_of(const drdc_unit_t *u)
+{
+  size_t i = 0u;
+
+  while ((i < drdc_units_count()) && (drdc_units_at(i) != u)) {
+    i++;
+  }
+  return i;
+}
+
+/* At least 80 units; names unique (find() gives back each row itself);
+ * fractions positive, below 2^56; every unit has GNU units vectors. */
+static void test_table_rules(void)
+{
+  static uint8_t covered[256];
+  size_t n = drdc_units_count();
+  size_t i;
+
+  TEST_ASSERT_TRUE(n >= 80u);
+  TEST_ASSERT_TRUE(n <= sizeof covered);
+  TEST_ASSERT_NULL(drdc_units_at(n));
+  for (i = 0u; i < N_VECTORS; i++) {
+    covered[index_of(unit(units_vectors[i].from))] = 1u;
+    covered[index_of(unit(units_vectors[i].to))] = 1u;
+  }
+  for (i = 0u; i < n; i++) {
+    const drdc_unit_t *u = drdc_units_at(i);
+
+    TEST_ASSERT_NOT_NULL(u);
+    TEST_ASSERT_TRUE(u->factor_num > 0);
+    TEST_ASSERT_TRUE(u->factor_den > 0);
+    TEST_ASSERT_TRUE(u->offset_den > 0);
+    TEST_ASSERT_TRUE(u->factor_num < (INT64_C(1) << 56));
+    TEST_ASSERT_TRUE(u->factor_den < (INT64_C(1) << 56));
+    TEST_ASSERT_TRUE_MESSAGE(covered[i] != 0u, u->name);
+    TEST_ASSERT_EQUAL_PTR(u, unit(u->name));
+  }
+}
+
+static void test_named_conversions(void)
+{
+  /* the header's example: 10 ft in Q47.16 metres */
+  TEST_ASSERT_EQUAL_INT64(199754, convert(INT64_C(10) << 16, 16, "ft", 16, "m"));
+  /* exact definitions */
+  TEST_ASSERT_EQUAL_INT64(1852, convert(1, 0, "nmi", 0, "m"));
+  TEST_ASSERT_EQUAL_INT64(INT64_C(45359237000), convert(100000000, 0, "lb", 0, "g"));
+  TEST_ASSERT_EQUAL_INT64(INT64_C(44482216152605),
+                          convert(INT64_C(10000000000000), 0, "lbf", 0, "N"));
+  TEST_ASSERT_EQUAL_INT64(4184, convert(1000, 0, "cal", 0, "J"));
+  /* pi-based: 360 degree is one turn; 1 degree = 3600 arcsec exactly */
+  TEST_ASSERT_EQUAL_INT64(INT64_C(1) << 40, convert(INT64_C(360) << 40, 40, "degree", 40, "turn"));
+  TEST_ASSERT_EQUAL_INT64(3600, convert(1, 0, "degree", 0, "arcsec"));
+  /* rpm and Hz share a dimension, as in GNU units: 60 rpm = 2 pi / s */
+  TEST_ASSERT_EQUAL_INT64(6, convert(60, 0, "rpm", 0, "Hz"));
+  TEST_ASSERT_EQUAL_INT64(INT64_C(6283185307), convert(INT64_C(60000000000), 0, "rpm", 0, "radian/s"));
+  /* data rate */
+  TEST_ASSERT_EQUAL_INT64(125000, convert(1, 0, "Mbps", 0, "byte/s"));
+}
+
+/* Temperatures are points on a scale: offsets apply. */
+static void test_temperatures_are_affine(void)
+{
+  const int64_t one = INT64_C(1) << 32;
+
+  /* 273.15 x 2^32 = 1173170316902.4 */
+  TEST_ASSERT_EQUAL_INT64(INT64_C(1173170316902), convert(0, 32, "degC", 32, "K"));
+  TEST_ASSERT_EQUAL_INT64(INT64_C(-1173170316902), convert(0, 32, "K", 32, "degC"));
+  TEST_ASSERT_EQUAL_INT64(0, convert(32 * one, 32, "degF", 32, "degC"));
+  TEST_ASSERT_EQUAL_INT64(-40 * one, convert(-40 * one, 32, "degC", 32, "degF"));
+  TEST_ASSERT_EQUAL_INT64(212 * one, convert(100 * one, 32, "tempC", 32, "tempF"));
+  TEST_ASSERT_EQUAL_INT64(0, convert(0, 32, "K", 32, "degR"));
+  /* -459.67 degF rounds to -460 */
+  TEST_ASSERT_EQUAL_INT64(-460, convert(0, 0, "degR", 0, "degF"));
+  /* (27315 + 273.15) x 9/5 = 49658.67 */
+  TEST_ASSERT_EQUAL_INT64(49659, convert(27315, 0, "degC", 0, "degR"));
+}
+
+/* One rounding, ties away from zero, symmetric for negative values. */
+static void test_rounding_is_symmetric(void)
+{
+  TEST_ASSERT_EQUAL_INT64(1, convert(5, 0, "mm", 0, "cm"));
+  TEST_ASSERT_EQUAL_INT64(-1, convert(-5, 0, "mm", 0, "cm"));
+  TEST_ASSERT_EQUAL_INT64(3, convert(25, 0, "mm", 0, "cm"));
+  TEST_ASSERT_EQUAL_INT64(-3, convert(-25, 0, "mm", 0, "cm"));
+  TEST_ASSERT_EQUAL_INT64(0, convert(4, 0, "mm", 0, "cm"));
+  /* one rounding, not two: 1 ft in Q0 to Q16 metres */
+  TEST_ASSERT_EQUAL_INT64(19975, convert(1, 0, "ft", 16, "m"));
+}
+
+/* The documented guarantee of no DRDC_E_RANGE: every unit to and from
+ * its SI unit (found as the `to` of its vectors) with format changes up
+ * to 7 bits; temperatures with from_frac <= 48 and |raw| <= 2^53. */
+static void test_no_range_error_to_and_from_si(void)
+{
+  static const unsigned fracs[] = { 0u, 7u, 16u, 32u, 48u, 55u, 62u };
+  size_t i;
+
+  for (i = 0u; i < N_VECTORS; i += 1u) {
+    const drdc_unit_t *a = unit(units_vectors[i].from);
+    const drdc_unit_t *b = unit(units_vectors[i].to);
+    int affine = (a->offset_num != 0) || (b->offset_num != 0);
+    size_t f;
+    int d;
+
+    if ((i > 0u) && (units_vectors[i - 1u].from == units_vectors[i].from)
+        && (units_vectors[i - 1u].to == units_vectors[i].to)) {
+      continue; /* one pass per unit pair */
+    }
+    for (f = 0u; f < sizeof fracs / sizeof fracs[0]; f++) {
+      for (d = -7; d <= 7; d++) {
+        int to = (int)fracs[f] + d;
+        int64_t out = 0;
+        drdc_status_t st;
+
+        if ((to < 0) || (to > 62) || (affine && (fracs[f] > 48u))) {
+          continue;
+        }
+        st = drdc_units_convert(affine ? (INT64_C(1) << 53) : INT64_C(1), fracs[f], a,
+                                (unsigned)to, b, &out);
+        TEST_ASSERT_TRUE_MESSAGE((st == DRDC_OK) || (st == DRDC_E_OVERFLOW), a->name);
+        st = drdc_units_convert(-1, fracs[f], a, (unsigned)to, b, &out);
+        TEST_ASSERT_TRUE_MESSAGE((st == DRDC_OK) || (st == DRDC_E_OVERFLOW), a->name);
+      }
+    }
+  }
+}
+
+static void test_drdc_units_find_bad_input(void)
+{
+  const drdc_unit_t *u = NULL;
+  const drdc_unit_t *keep = drdc_units_at(0);
+
+  u = keep;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_units_find(NULL, 2, &u));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_units_find("ft", 2, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_UNKNOWN_UNIT, drdc_units_find("furlongs", 8, &u));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_UNKNOWN_UNIT, drdc_units_find("ft", 0, &u));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_UNKNOWN_UNIT, drdc_units_find("FT", 2, &u));
+  TEST_ASSERT_EQUAL_PTR(keep, u);
+  /* exactly `length` characters are read: no NUL needed */
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_units_find("ftXYZ", 2, &u));
+  TEST_ASSERT_EQUAL_STRING("ft", u->name);
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_units_find("m/s^2 rest", 5, &u));
+  TEST_ASSERT_EQUAL_STRING("m/s^2", u->name);
+}
+
+static void test_drdc_units_convert_bad_input(void)
+{
+  int64_t out = 7;
+
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_units_convert(1, 0, NULL, 0, unit("m"), &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_units_convert(1, 0, unit("m"), 0, NULL, &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_units_convert(1, 0, unit("m"), 0, unit("ft"), NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DIMENSION,
+                        drdc_units_convert(1, 0, unit("ft"), 0, unit("kg"), &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DIMENSION,
+                        drdc_units_convert(1, 0, unit("degC"), 0, unit("Pa"), &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_units_convert(1, 63, unit("m"), 0, unit("ft"), &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_units_convert(1, 0, unit("m"), 63, unit("ft"), &out));
+  /* 9.46e25: no 63-bit factor */
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
+                        drdc_units_convert(1, 0, unit("lightyear"), 0, unit("angstrom"), &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        drdc_units_convert(INT64_MAX / 100, 0, unit("km"), 0, unit("mm"), &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        drdc_units_convert(INT64_MIN, 0, unit("ft"), 0, unit("in"), &out));
+  TEST_ASSERT_EQUAL_INT64(7, out);
+}
+
+static void test_drdc_units_compatible_bad_input(void)
+{
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_units_compatible(unit("rpm"), unit("Hz")));
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_units_compatible(unit("degree"), unit("radian")));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_units_compatible(NULL, unit("m")));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_units_compatible(unit("m"), NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DIMENSION, drdc_units_compatible(unit("bps"), unit("Hz")));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DIMENSION, drdc_units_compatible(unit("J"), unit("W")));
+}
+
+void suite_units(void)
+{
+  UnitySetTestFile(__FILE__);
+  RUN_TEST(test_every_unit_matches_gnu_units);
+  RUN_TEST(test_table_rules);
+  RUN_TEST(test_named_conversions);
+  RUN_TEST(test_temperatures_are_affine);
+  RUN_TEST(test_rounding_is_symmetric);
+  RUN_TEST(test_no_range_error_to_and_from_si);
+  RUN_TEST(test_drdc_units_find_bad_input);
+  RUN_TEST(test_drdc_units_convert_bad_input);
+  RUN_TEST(test_drdc_units_compatible_bad_input);
+}
