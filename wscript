@@ -445,8 +445,9 @@ class RunChecks(Build.BuildContext):
               "docs/performance.json"]),
             ("QEMU harness judges its own test images",
              ["-m", "unittest", "-q", "qemu.test_harness"]),
-            ("host tool drdc and the benchmark guard",
-             ["-m", "unittest", "-q", "tools.test_drdc", "tools.test_bench"]),
+            ("host tool drdc, the demo against it, the benchmark guard",
+             ["-m", "unittest", "-q", "tools.test_drdc", "tools.test_demo",
+              "tools.test_bench"]),
             ("RTEMS build path through a stand-in prefix",
              ["-m", "unittest", "-q", "tools.test_rtems"]),
         ]

@@ -43,6 +43,38 @@ void console_put_i64(int64_t value)
   }
 }
 
+void console_put_decimal(int64_t value, unsigned decimals)
+{
+  uint64_t magnitude;
+  uint64_t scale = 1u;
+  uint64_t fraction;
+  unsigned i;
+
+  if (value < 0) {
+    bsp_putc('-');
+    magnitude = 0u - (uint64_t)value;
+  } else {
+    magnitude = (uint64_t)value;
+  }
+  for (i = 0u; (i < decimals) && (i < 18u); i++) {
+    scale *= 10u;
+  }
+  console_put_u64(magnitude / scale);
+  if (scale == 1u) {
+    return;
+  }
+  bsp_putc('.');
+  fraction = magnitude % scale;
+  /* leading zeros of the fraction */
+  for (scale /= 10u; scale > fraction; scale /= 10u) {
+    if (scale == 1u) {
+      break;
+    }
+    bsp_putc('0');
+  }
+  console_put_u64(fraction);
+}
+
 void console_put_hex32(uint32_t value)
 {
   static const char hex[] = "0123456789abcdef";

@@ -1,75 +1,193 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /**
  * @file
- * @brief Demo firmware: what the library computes, printed on the board
- *        console. For now the calendar slice; the pose-node demo grows here
- *        with the time, orientation, geodesy and interop modules.
+ * @brief Demo firmware: a pose node like one of libdrdc's robot controllers.
+ *
+ * It reads a scripted stream from a GNSS receiver (NMEA GGA and RMC
+ * sentences; on a board this would be a UART) and from an IMU (attitude
+ * quaternions), and for each epoch prints the UTC and GPS time, the global
+ * pose {W} (longitude, latitude, height, quaternion), {We} (the same with
+ * Z-Y-X Euler angles) and the JAUS scaled integers of the position. All of
+ * it integer arithmetic; the same numbers come out of the host tool drdc.
+ * UTM/MGRS and the local pose arrive with the geodesy module.
  */
+#include <stddef.h>
+
+#include <drdc/fixed.h>
+#include <drdc/jaus_scaled.h>
+#include <drdc/nmea.h>
+#include <drdc/orient.h>
 #include <drdc/time.h>
+#include <drdc/time_iso8601.h>
+#include <drdc/time_scales.h>
 #include <drdc/version.h>
 
 #include "bsp.h"
 #include "console.h"
 
-/* Dates every robot clock meets: the epochs of the time scales it
- * converts between, and the days that test calendar code. */
-static const struct {
-  const char *what;
-  int32_t year, month, day;
-} dates[] = {
-  { "Unix epoch      ", 1970, 1, 1 },
-  { "GPS epoch       ", 1980, 1, 6 },
-  { "RTEMS epoch     ", 1988, 1, 1 },
-  { "leap day 2000   ", 2000, 2, 29 },
-  { "Y2038 (int32)   ", 2038, 1, 19 },
-  { "no leap day 2100", 2100, 2, 29 },
+/* The receiver's stream: one GGA and one RMC per second (RTK fixed, near
+ * DRDC Suffield, Alberta), as a u-blox-style receiver sends them. */
+static const char *const gnss[] = {
+  "$GNGGA,170000.00,5016.20000,N,11110.20000,W,4,12,0.7,754.3,M,-16.2,M,1.0,0001*66\r\n",
+  "$GNRMC,170000.00,A,5016.20000,N,11110.20000,W,0.97,045.00,221126,,,R*4E\r\n",
+  "$GNGGA,170001.00,5016.20050,N,11110.20080,W,4,12,0.7,754.4,M,-16.2,M,1.0,0001*6D\r\n",
+  "$GNRMC,170001.00,A,5016.20050,N,11110.20080,W,0.97,045.00,221126,,,R*42\r\n",
+  "$GNGGA,170002.00,5016.20100,N,11110.20160,W,4,12,0.7,754.5,M,-16.2,M,1.0,0001*64\r\n",
+  "$GNRMC,170002.00,A,5016.20100,N,11110.20160,W,0.97,045.00,221126,,,R*4A\r\n",
+  "$GNGGA,170003.00,5016.20150,N,11110.20240,W,4,12,0.7,754.6,M,-16.2,M,1.0,0001*62\r\n",
+  "$GNRMC,170003.00,A,5016.20150,N,11110.20240,W,0.97,045.00,221126,,,R*4F\r\n",
 };
 
-static void put_date(int32_t y, int32_t m, int32_t d)
+/* The IMU's attitude at each epoch, body FRD to world NED, Q1.30. */
+static const drdc_quat_t imu[] = {
+  { 991756660, -15826452, 13727054, 410976062 }, /* yaw 45.0 pitch 2.0 roll -1.0 */
+  { 986281899, -15022750, 15980188, 423896769 }, /* yaw 46.5 pitch 2.2 roll -0.8 */
+  { 980703000, -12282277, 16069705, 436731086 }, /* yaw 48.0 pitch 2.1 roll -0.5 */
+  { 974954420, -10005645, 14990451, 449511465 }, /* yaw 49.5 pitch 1.9 roll -0.3 */
+};
+
+#define EPOCHS (sizeof imu / sizeof imu[0])
+#define NAS_PER_DEGREE_INT DRDC_NAS_PER_DEGREE
+
+static size_t length_of(const char *s)
 {
-  console_put_i64(y);
-  bsp_putc('-');
-  if (m < 10) {
-    bsp_putc('0');
+  size_t n = 0;
+
+  while (s[n] != '\0') {
+    n++;
   }
-  console_put_i64(m);
-  bsp_putc('-');
-  if (d < 10) {
-    bsp_putc('0');
+  return n;
+}
+
+/* value * num / den rounded by the library's one rule */
+static int64_t scaled(int64_t value, int64_t num, int64_t den)
+{
+  int64_t out = 0;
+
+  (void)drdc_fx_muldiv_s64(value, num, den, &out);
+  return out;
+}
+
+/* degrees with 9 decimals of an angle in nano-arcseconds */
+static void put_nas(drdc_nas_t a)
+{
+  console_put_decimal(scaled(a, 1, 3600), 9u);
+}
+
+/* degrees with 8 decimals of a binary angle, in (-180, 180] */
+static void put_bam(drdc_bam32_t a)
+{
+  /* 360e8 / 2^32 = 140625000 / 2^24 */
+  console_put_decimal(scaled((int32_t)a, 140625000, INT64_C(1) << 24), 8u);
+}
+
+static void put_q1_30(drdc_q1_30_t v)
+{
+  console_put_decimal(scaled(v, 10000000, INT64_C(1) << 30), 7u);
+}
+
+static void put_status(drdc_status_t st)
+{
+  bsp_puts("  ERROR ");
+  bsp_puts(drdc_status_name(st));
+  bsp_putc('\n');
+}
+
+static void epoch(unsigned k, const drdc_nmea_t *gga, const drdc_nmea_t *rmc)
+{
+  drdc_time_t utc = { 0, 0 };
+  drdc_time_gps_t gps = { 0, 0, 0 };
+  drdc_euler_t e = { 0u, 0u, 0u };
+  char iso[DRDC_TIME_ISO8601_SIZE];
+  int64_t jaus_lat = 0;
+  int64_t jaus_lon = 0;
+  drdc_status_t st;
+
+  st = drdc_nmea_utc(NULL, rmc, gga, &utc);
+  if (st == DRDC_OK) {
+    st = drdc_time_iso8601_format(NULL, &utc, 3, iso, sizeof iso);
   }
-  console_put_i64(d);
+  if (st == DRDC_OK) {
+    st = drdc_time_utc_to_gps(NULL, &utc, &gps);
+  }
+  if (st == DRDC_OK) {
+    st = drdc_euler_from_quat(&imu[k], &e);
+  }
+  if (st == DRDC_OK) {
+    st = drdc_jaus_scaled_encode(gga->latitude, -90 * NAS_PER_DEGREE_INT,
+                                 90 * NAS_PER_DEGREE_INT, DRDC_JAUS_INT32,
+                                 DRDC_JAUS_FORM_RA3, &jaus_lat);
+  }
+  if (st == DRDC_OK) {
+    st = drdc_jaus_scaled_encode(gga->longitude, -180 * NAS_PER_DEGREE_INT,
+                                 180 * NAS_PER_DEGREE_INT, DRDC_JAUS_INT32,
+                                 DRDC_JAUS_FORM_RA3, &jaus_lon);
+  }
+  if (st != DRDC_OK) {
+    put_status(st);
+    return;
+  }
+  bsp_puts("epoch ");
+  console_put_u64(k + 1u);
+  bsp_puts("  fix quality ");
+  console_put_i64(gga->quality);
+  bsp_puts(", ");
+  console_put_i64(gga->satellites);
+  bsp_puts(" satellites\n  UTC   ");
+  bsp_puts(iso);
+  bsp_puts("   GPS week ");
+  console_put_i64(gps.week);
+  bsp_puts(" TOW ");
+  console_put_i64(gps.tow);
+  bsp_puts("\n  {W}   lon ");
+  put_nas(gga->longitude);
+  bsp_puts(" lat ");
+  put_nas(gga->latitude);
+  bsp_puts(" deg  h ");
+  console_put_decimal(scaled(gga->altitude, 1000, 65536), 3u);
+  bsp_puts(" m MSL  q [");
+  put_q1_30(imu[k].s);
+  bsp_putc(' ');
+  put_q1_30(imu[k].x);
+  bsp_putc(' ');
+  put_q1_30(imu[k].y);
+  bsp_putc(' ');
+  put_q1_30(imu[k].z);
+  bsp_puts("]\n  {We}  yaw ");
+  put_bam(e.yaw);
+  bsp_puts(" pitch ");
+  put_bam(e.pitch);
+  bsp_puts(" roll ");
+  put_bam(e.roll);
+  bsp_puts(" deg\n  JAUS  latitude ");
+  console_put_i64(jaus_lat);
+  bsp_puts(" longitude ");
+  console_put_i64(jaus_lon);
+  bsp_puts(" (int32, RA 3.x scaled)\n");
 }
 
 int main(void)
 {
-  unsigned i;
+  unsigned k;
 
-  bsp_puts("libdrdc-fx " DRDC_VERSION_STRING " demo on ");
+  bsp_puts("libdrdc-fx " DRDC_VERSION_STRING " pose-node demo on ");
   bsp_puts(bsp_name);
-  bsp_puts(": integer-only calendar (days since 1970-01-01)\n");
-  for (i = 0; i < sizeof dates / sizeof dates[0]; i++) {
-    int32_t days = 0;
-    drdc_status_t st = drdc_time_days_from_civil(dates[i].year, dates[i].month,
-                                                 dates[i].day, &days);
+  bsp_puts(": GNSS (NMEA) + IMU -> UTC, GPS time, {W}, {We}, JAUS\n");
+  for (k = 0u; k < EPOCHS; k++) {
+    drdc_nmea_t gga;
+    drdc_nmea_t rmc;
+    drdc_status_t st;
 
-    bsp_puts("  ");
-    bsp_puts(dates[i].what);
-    bsp_puts("  ");
-    put_date(dates[i].year, dates[i].month, dates[i].day);
-    bsp_puts("  -> ");
+    st = drdc_nmea_parse(gnss[2u * k], length_of(gnss[2u * k]), &gga);
     if (st == DRDC_OK) {
-      int32_t y = 0;
-      int32_t m = 0;
-      int32_t d = 0;
-
-      console_put_i64(days);
-      (void)drdc_time_civil_from_days(days, &y, &m, &d);
-      bsp_puts(" days -> ");
-      put_date(y, m, d);
-    } else {
-      bsp_puts(drdc_status_name(st));
+      st = drdc_nmea_parse(gnss[(2u * k) + 1u],
+                           length_of(gnss[(2u * k) + 1u]), &rmc);
     }
-    bsp_putc('\n');
+    if (st != DRDC_OK) {
+      put_status(st);
+      continue;
+    }
+    epoch(k, &gga, &rmc);
   }
   return 0;
 }

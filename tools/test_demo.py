@@ -1,0 +1,89 @@
+# SPDX-License-Identifier: BSD-2-Clause
+"""The demo firmware against the host tool and an exact model (./waf check).
+
+The demo (fw/demo) prints, per epoch, what a pose node computes from its
+scripted NMEA sentences and IMU quaternions. Checked here:
+- PowerPC e500 and Cortex-M3 print exactly what the host build prints;
+- UTC -> GPS week and time of week equal `drdc time --from utc --to gps`;
+- yaw, pitch, roll equal `drdc attitude --from quat --to euler` for the
+  same Q1.30 quaternions;
+- longitude and latitude equal the NMEA text's degrees and minutes,
+  computed with Python's fractions.
+"""
+import fractions
+import os
+import re
+import subprocess
+import unittest
+
+from qemu import harness
+
+BUILD = os.environ.get("DRDC_BUILD", "build")
+TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+DRDC = os.path.join(BUILD, "host", "drdc")
+IMAGES = {"host": os.path.join(BUILD, "host", "fw", "demo", "demo"),
+          "ppc-e500": os.path.join(BUILD, "ppc-e500", "fw", "demo", "demo.elf"),
+          "arm-cm3": os.path.join(BUILD, "arm-cm3", "fw", "demo", "demo.elf")}
+
+
+def console(target):
+    data, status, killed = harness.boot(target, IMAGES[target], 10, 60, 1 << 20)
+    assert not killed, killed
+    text = data.decode("ascii").replace("\r", "")
+    return text.split(": GNSS", 1)[1]  # after the line naming the board
+
+
+def tool(*args, stdin):
+    r = subprocess.run([DRDC] + list(args), input=stdin, capture_output=True,
+                       text=True, check=True)
+    return r.stdout.split("\n")
+
+
+def demo_source():
+    with open(os.path.join(TOP, "fw", "demo", "main.c")) as f:
+        return f.read()
+
+
+class Demo(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.host = console("host")
+
+    def test_every_target_prints_the_same_bits(self):
+        for target in ("ppc-e500", "arm-cm3"):
+            self.assertEqual(self.host, console(target), target)
+
+    def test_gps_time_matches_the_host_tool(self):
+        found = re.findall(r"UTC   (\S+)   GPS week (\d+) TOW (\d+)", self.host)
+        self.assertEqual(4, len(found))
+        out = tool("time", "--from", "utc", "--to", "gps",
+                   stdin="".join(u + "\n" for u, _, _ in found))
+        for (utc, week, tow), line in zip(found, out):
+            self.assertEqual("%s %s.000000000" % (week, tow), line, utc)
+
+    def test_euler_matches_the_host_tool(self):
+        quats = re.findall(r"\{ (-?\d+), (-?\d+), (-?\d+), (-?\d+) \}, /\* yaw",
+                           demo_source())
+        self.assertEqual(4, len(quats))
+        lines = "".join(" ".join("%.15f" % (int(v) / 2 ** 30) for v in q) + "\n"
+                        for q in quats)
+        want = tool("attitude", "--from", "quat", "--to", "euler", stdin=lines)
+        got = re.findall(r"yaw (\S+) pitch (\S+) roll (\S+) deg", self.host)
+        for g, w in zip(got, want):
+            for a, b in zip(g, w.split()):
+                self.assertAlmostEqual(float(a), float(b), delta=1.01e-8)
+
+    def test_position_is_the_nmea_text_exactly(self):
+        sentences = re.findall(r'"\$GNGGA,[^,]*,(\d\d)(\d\d\.\d+),N,(\d\d\d)(\d\d\.\d+),W',
+                               demo_source())
+        got = re.findall(r"lon (\S+) lat (\S+) deg", self.host)
+        self.assertEqual(4, len(sentences))
+        for (lad, lam, lod, lom), (lon, lat) in zip(sentences, got):
+            want_lat = int(lad) + fractions.Fraction(lam) / 60
+            want_lon = -(int(lod) + fractions.Fraction(lom) / 60)
+            self.assertEqual(round(want_lat * 10 ** 9), round(fractions.Fraction(lat) * 10 ** 9))
+            self.assertEqual(round(want_lon * 10 ** 9), round(fractions.Fraction(lon) * 10 ** 9))
+
+
+if __name__ == "__main__":
+    unittest.main()
