@@ -116,7 +116,7 @@ def _tools_module(name):
 def options(opt):
     opt.load("compiler_c")
     _tools_module("waf_rtems").options(opt)
-    opt.add_option("--seconds", type="int", default=60, dest="fuzz_seconds",
+    opt.add_option("--seconds", type=int, default=60, dest="fuzz_seconds",
                    help="./waf fuzz: seconds per fuzzer (default 60)")
 
 

@@ -31,5 +31,7 @@ uint32_t golden_next(golden_t *g);
 void golden_time(golden_t *g);
 void golden_time_scales(golden_t *g);
 void golden_fixed(golden_t *g);
+void golden_orient(golden_t *g);
+void golden_interop(golden_t *g);
 
 #endif /* DRDC_GOLDEN_H */
