@@ -384,6 +384,19 @@ class RunDemo(Build.BuildContext):
             self.fatal("demo failed")
 
 
+def docs(ctx):
+    """API reference from the headers with Doxygen into build/docs/html"""
+    deps = _tools_module("deps")
+    try:
+        deps.ensure_apt()  # Doxygen is one of the pinned packages
+    except deps.SetupError as e:
+        ctx.fatal(str(e))
+    if subprocess.call(["doxygen", "docs/Doxyfile"],
+                       cwd=ctx.path.abspath()) != 0:
+        ctx.fatal("Doxygen found undocumented or badly documented symbols")
+    Logs.info("API reference: build/docs/html/index.html")
+
+
 def fuzz(ctx):
     """run every libFuzzer target for --seconds each (tests/fuzz/)"""
     _build_all_then("run_fuzz", ["host-fuzz"])
@@ -434,6 +447,9 @@ class RunChecks(Build.BuildContext):
              ["tools/intcheck.py", "--build", out, "--all"]
              + ["%s:%s" % (n, t["intcheck"]) for n, t in TARGETS.items()
                 if t["intcheck"]]),
+            ("API reference: Doxygen without a warning",
+             ["-c", "import subprocess, sys; sys.exit(subprocess.call("
+              "['doxygen', 'docs/Doxyfile']))"]),
             ("bad-input catalogue docs/bad-input.md up to date",
              ["tools/badinput.py", "--check"]),
             ("fuzz corpora replay without a finding",

@@ -32,6 +32,8 @@ APT_PACKAGES = {
     "pkgconf": "1.8.1-1",
     # MISRA C:2012 addon (tools/misra.py)
     "cppcheck": "2.10-2",
+    # API reference (./waf docs)
+    "doxygen": "1.9.4-4",
     # libFuzzer (tools/fuzz.py)
     "clang-14": "1:14.0.6-12",
     "libclang-rt-14-dev": "1:14.0.6-12",

@@ -420,6 +420,8 @@ drdc_status_t drdc_euler_from_dcm(const drdc_dcm_t *r, drdc_euler_t *out);
 /**
  * Product of rotation matrices out = a b, each element one correctly
  * rounded sum of three exact Q60 products.
+ * @param a left factor, Q1.30
+ * @param b right factor, Q1.30
  * @param[out] out product; may be a or b; unchanged on error
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
@@ -431,6 +433,7 @@ drdc_status_t drdc_dcm_mul(const drdc_dcm_t *a, const drdc_dcm_t *b,
 
 /**
  * Transpose (the inverse rotation, world to body): exact.
+ * @param r rotation matrix, Q1.30
  * @param[out] out transpose; may be r
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
@@ -441,6 +444,8 @@ drdc_status_t drdc_dcm_transpose(const drdc_dcm_t *r, drdc_dcm_t *out);
  * out = R v for a local vector (Q15.16 metres): each part one correctly
  * rounded sum of three exact products (error <= 0.5 LSB of Q15.16 from
  * the arithmetic, plus |v| times the matrix's own error).
+ * @param r rotation matrix, Q1.30
+ * @param v local vector, Q15.16 m
  * @param[out] out may be v; unchanged on error
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
@@ -454,6 +459,7 @@ drdc_status_t drdc_dcm_apply_q15_16(const drdc_dcm_t *r,
  * out = R v for a global vector (Q47.16 metres). Each product is rounded
  * to 6 guard bits (128-bit intermediate), the sum once more: error <= 0.55
  * LSB of Q47.16 from the arithmetic.
+ * @param r rotation matrix, Q1.30
  * @param v |parts| <= DRDC_ORIENT_Q47_16_MAX
  * @param[out] out may be v; unchanged on error
  * @retval DRDC_OK written
@@ -552,6 +558,10 @@ drdc_status_t drdc_quat_squad_control(const drdc_quat_t *q0,
  * Spherical quadrangle interpolation between keys q1 and q2 with control
  * points s1 and s2: slerp(slerp(q1, q2, t), slerp(s1, s2, t), 2t(1 - t))
  * (the inner slerps without the shorter-arc flip, as Shoemake defines it).
+ * @param q1 key at t = 0, unit quaternion
+ * @param q2 key at t = 1, unit quaternion
+ * @param s1 control point of q1 (drdc_quat_squad_control())
+ * @param s2 control point of q2
  * @param t Q1.30 fraction in [0, 1]
  * @param[out] out unit quaternion; unchanged on error
  * @retval DRDC_OK written

@@ -104,10 +104,10 @@ drdc_status_t drdc_time_jaus_unpack(uint32_t stamp,
  *             error
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
- * @retval DRDC_E_DAY, DRDC_E_HOUR, DRDC_E_MINUTE, DRDC_E_SECOND,
- *         DRDC_E_NANOSECOND as drdc_time_jaus_unpack()
- * @retval DRDC_E_SECOND second 60 and no candidate day ends with a leap
- *         second
+ * @retval DRDC_E_DAY, DRDC_E_HOUR, DRDC_E_MINUTE, DRDC_E_NANOSECOND as
+ *         drdc_time_jaus_unpack()
+ * @retval DRDC_E_SECOND second 61..63 (as drdc_time_jaus_unpack()), or
+ *         second 60 and no candidate day ends with a leap second
  * @retval DRDC_E_RANGE no candidate within the window, or `ref` invalid
  *
  * Accuracy: exact to the millisecond; checked on 10 000 random instants

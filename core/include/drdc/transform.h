@@ -59,6 +59,8 @@ drdc_status_t drdc_transform_from_quat(const drdc_quat_t *q,
 
 /**
  * Composition out = a b (apply b, then a): R = Ra Rb, t = Ra tb + ta.
+ * @param a outer transform (applied second)
+ * @param b inner transform (applied first)
  * @param[out] out may be a or b; unchanged on error
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
@@ -73,6 +75,7 @@ drdc_status_t drdc_transform_compose(const drdc_transform_t *a,
 
 /**
  * Inverse [R^T, -R^T t]: R^T is exact; -R^T t is rounded once (0.5 LSB).
+ * @param a transform
  * @param[out] out may be a; unchanged on error
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
@@ -83,6 +86,8 @@ drdc_status_t drdc_transform_invert(const drdc_transform_t *a,
 
 /**
  * Point mapping p_A = R p_B + t (Q15.16 m).
+ * @param a transform from frame B to frame A
+ * @param p point in frame B, Q15.16 m
  * @param[out] out may be p; unchanged on error
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
@@ -97,6 +102,9 @@ drdc_status_t drdc_transform_point(const drdc_transform_t *a,
 /**
  * Direction (free vector) mapping d_A = R d_B: the translation does not
  * apply. Same accuracy as drdc_transform_point().
+ * @param a transform from frame B to frame A
+ * @param d direction in frame B, Q15.16
+ * @param[out] out may be d; unchanged on error
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
  * @retval DRDC_E_OVERFLOW a part leaves +-32768 m
@@ -108,6 +116,8 @@ drdc_status_t drdc_transform_direction(const drdc_transform_t *a,
 /**
  * Global transform followed by a local one: out = g b, R = Rg Rb,
  * t = Rg tb + tg (Q47.16; the local part is exact-widened).
+ * @param g global transform (applied second)
+ * @param b local transform (applied first)
  * @param[out] out unchanged on error
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL

@@ -73,11 +73,15 @@
 /** Number of base dimensions: m, kg, s, K, bit. */
 #define DRDC_UNITS_DIMENSIONS 5
 
-/** Index of each base dimension in drdc_unit_t::dimension. */
+/** Index of the metre in drdc_unit_t::dimension. */
 #define DRDC_UNITS_DIM_METRE 0
+/** Index of the kilogram in drdc_unit_t::dimension. */
 #define DRDC_UNITS_DIM_KILOGRAM 1
+/** Index of the second in drdc_unit_t::dimension. */
 #define DRDC_UNITS_DIM_SECOND 2
+/** Index of the kelvin in drdc_unit_t::dimension. */
 #define DRDC_UNITS_DIM_KELVIN 3
+/** Index of the bit (data) in drdc_unit_t::dimension. */
 #define DRDC_UNITS_DIM_BIT 4
 
 /** Largest fraction-bit count of a fixed-point value (int64_t raw). */

@@ -6,9 +6,11 @@
 #ifndef DRDC_VERSION_H
 #define DRDC_VERSION_H
 
-/** Major, minor and patch version numbers. */
+/** Major version: incompatible API changes. */
 #define DRDC_VERSION_MAJOR 0
+/** Minor version: compatible additions. */
 #define DRDC_VERSION_MINOR 1
+/** Patch version: fixes. */
 #define DRDC_VERSION_PATCH 0
 /** The same as text, "major.minor.patch". */
 #define DRDC_VERSION_STRING "0.1.0"

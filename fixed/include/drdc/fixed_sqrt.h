@@ -123,6 +123,8 @@ uint64_t drdc_fx_hypot_s64(int64_t x, int64_t y);
 /**
  * hypot of two Q15.16 values as a Q15.16 value, correctly rounded.
  *
+ * @param x first leg, Q15.16 (any value)
+ * @param y second leg, Q15.16 (any value)
  * @param[out] out hypot in Q15.16; unchanged on error
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL `out` is NULL
