@@ -46,7 +46,7 @@ static drdc_status_t affine(const drdc_dcm_t *r, const int32_t v[3],
     }
     rv = drdc_fx_rshift_round_s64(s, 30u);
     if (((t[i] > 0) && (rv > (INT64_MAX - t[i])))
-        || ((t[i] < 0) && (rv < (INT64_MIN - t[i])))) {
+        || ((t[i] < 0) && (rv < (ORIENT_INT64_MIN - t[i])))) {
       return DRDC_E_OVERFLOW;
     }
     out[i] = rv + t[i];
@@ -252,7 +252,7 @@ drdc_status_t drdc_transform_global_to_local(const drdc_transform_global_t *g,
     for (i = 0u; i < 3u; i++) {
       /* the difference must be a local length: rule out overflow first */
       if (((t[i] < 0) && (diff[i] > (INT64_MAX + t[i])))
-          || ((t[i] > 0) && (diff[i] < (INT64_MIN + t[i])))) {
+          || ((t[i] > 0) && (diff[i] < (ORIENT_INT64_MIN + t[i])))) {
         return DRDC_E_OVERFLOW;
       }
       diff[i] -= t[i];
