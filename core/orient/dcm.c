@@ -229,8 +229,8 @@ drdc_status_t drdc_dcm_apply_q15_16(const drdc_dcm_t *r,
                                     const drdc_vec3_q15_16_t *v,
                                     drdc_vec3_q15_16_t *out)
 {
-  const int32_t in[3] = { v == NULL ? 0 : v->x, v == NULL ? 0 : v->y,
-                          v == NULL ? 0 : v->z };
+  const int32_t in[3] = { (v == NULL) ? 0 : v->x, (v == NULL) ? 0 : v->y,
+                          (v == NULL) ? 0 : v->z };
   int32_t res[3];
   unsigned i;
 
@@ -267,8 +267,8 @@ drdc_status_t drdc_dcm_apply_q47_16(const drdc_dcm_t *r,
                                     const drdc_vec3_q47_16_t *v,
                                     drdc_vec3_q47_16_t *out)
 {
-  const int64_t in[3] = { v == NULL ? 0 : v->x, v == NULL ? 0 : v->y,
-                          v == NULL ? 0 : v->z };
+  const int64_t in[3] = { (v == NULL) ? 0 : v->x, (v == NULL) ? 0 : v->y,
+                          (v == NULL) ? 0 : v->z };
   int64_t res[3];
   unsigned i;
   unsigned j;

@@ -170,7 +170,7 @@ drdc_status_t drdc_dh_forward(drdc_dh_convention_t convention,
   if ((out == NULL) || ((n > 0u) && ((links == NULL) || (q == NULL)))) {
     return DRDC_E_NULL;
   }
-  if (n > DRDC_DH_MAX_LINKS) {
+  if (n > (unsigned)DRDC_DH_MAX_LINKS) {
     return DRDC_E_RANGE;
   }
   if ((convention != DRDC_DH_STANDARD) && (convention != DRDC_DH_MODIFIED)) {

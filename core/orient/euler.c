@@ -186,6 +186,8 @@ drdc_status_t drdc_euler_canonical(const drdc_euler_t *e, drdc_euler_t *out)
   } else if (r.pitch == (3u * quarter)) {
     r.yaw += r.roll;
     r.roll = 0u;
+  } else {
+    /* no gimbal lock: yaw and roll are both defined, kept as they are */
   }
   *out = r;
   return DRDC_OK;

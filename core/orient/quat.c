@@ -180,8 +180,8 @@ drdc_status_t drdc_quat_normalize(const drdc_quat_t *q, drdc_quat_t *out)
 
 drdc_status_t drdc_quat_canonical(const drdc_quat_t *q, drdc_quat_t *out)
 {
-  const int32_t p[4] = { q == NULL ? 0 : q->s, q == NULL ? 0 : q->x,
-                         q == NULL ? 0 : q->y, q == NULL ? 0 : q->z };
+  const int32_t p[4] = { (q == NULL) ? 0 : q->s, (q == NULL) ? 0 : q->x,
+                         (q == NULL) ? 0 : q->y, (q == NULL) ? 0 : q->z };
   unsigned i = 0u;
 
   if ((q == NULL) || (out == NULL)) {

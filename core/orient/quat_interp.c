@@ -67,10 +67,10 @@ static void exp_axis(drdc_bam32_t h, const int32_t v[3], int32_t vn,
 drdc_status_t drdc_quat_nlerp(const drdc_quat_t *a, const drdc_quat_t *b,
                               drdc_q1_30_t t, drdc_quat_t *out)
 {
-  const int32_t pa[4] = { a == NULL ? 0 : a->s, a == NULL ? 0 : a->x,
-                          a == NULL ? 0 : a->y, a == NULL ? 0 : a->z };
-  const int32_t pb[4] = { b == NULL ? 0 : b->s, b == NULL ? 0 : b->x,
-                          b == NULL ? 0 : b->y, b == NULL ? 0 : b->z };
+  const int32_t pa[4] = { (a == NULL) ? 0 : a->s, (a == NULL) ? 0 : a->x,
+                          (a == NULL) ? 0 : a->y, (a == NULL) ? 0 : a->z };
+  const int32_t pb[4] = { (b == NULL) ? 0 : b->s, (b == NULL) ? 0 : b->x,
+                          (b == NULL) ? 0 : b->y, (b == NULL) ? 0 : b->z };
   int64_t dot = 0;
   int64_t u = 0;
   int64_t wa;
