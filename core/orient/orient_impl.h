@@ -4,7 +4,9 @@
  * @ingroup drdc_orient
  * @brief Internal helpers of core/orient/: exact 64-bit sums of Q60
  *        products, power-of-two prescaling of quaternions, half-angle
- *        sines and atan2 of 64-bit coordinates.
+ *        sines and atan2 of 64-bit coordinates; powers of two, squares
+ *        and limits spelled for MISRA C:2012 (no shift of a signed
+ *        value, no cast of a composite expression, no unsigned INT64_MIN).
  *
  * Products of two Q1.30 values are Q60 (2^60 per unit) and are kept exact
  * in int64_t as long as possible; each public result is rounded once, at
