@@ -72,7 +72,7 @@ drdc_status_t drdc_dcm_from_quat(const drdc_quat_t *q, drdc_dcm_t *out)
   for (i = 0u; i < 3u; i++) {
     for (j = 0u; j < 3u; j++) {
       /* |p| <= n2: the quotient is within [-2^30, 2^30]. */
-      (void)drdc_fx_muldiv_s64(p[i][j], (int64_t)1 << 30, n2, &v);
+      (void)drdc_fx_muldiv_s64(p[i][j], orient_pow2_s64(30u), n2, &v);
       out->m[i][j] = (drdc_q1_30_t)v;
     }
   }
@@ -81,7 +81,7 @@ drdc_status_t drdc_dcm_from_quat(const drdc_quat_t *q, drdc_dcm_t *out)
 
 drdc_status_t drdc_quat_from_dcm(const drdc_dcm_t *r, drdc_quat_t *out)
 {
-  const int64_t one = (int64_t)1 << 30;
+  const int64_t one = orient_pow2_s64(30u);
   int64_t d[4];
   int64_t num[4];
   int32_t part[4];
@@ -141,7 +141,8 @@ drdc_status_t drdc_quat_from_dcm(const drdc_dcm_t *r, drdc_quat_t *out)
   for (i = 0u; i < 4u; i++) {
     int64_t v;
 
-    (void)drdc_fx_muldiv_s64(num[i], (int64_t)1 << 29, (int64_t)root, &v);
+    (void)drdc_fx_muldiv_s64(num[i], orient_pow2_s64(29u), (int64_t)root,
+                             &v);
     if ((v > INT32_MAX) || (v < INT32_MIN)) {
       return DRDC_E_DOMAIN;
     }
@@ -159,7 +160,7 @@ drdc_status_t drdc_quat_from_dcm(const drdc_dcm_t *r, drdc_quat_t *out)
     for (i = 0u; i < 4u; i++) {
       n2 += ((int64_t)part[i] * part[i]) / 4; /* each <= 2^60 */
     }
-    if ((n2 < ((int64_t)1 << 57)) || (n2 > ((int64_t)1 << 59))) {
+    if ((n2 < orient_pow2_s64(57u)) || (n2 > orient_pow2_s64(59u))) {
       return DRDC_E_DOMAIN;
     }
   }
@@ -228,8 +229,8 @@ drdc_status_t drdc_dcm_apply_q15_16(const drdc_dcm_t *r,
                                     const drdc_vec3_q15_16_t *v,
                                     drdc_vec3_q15_16_t *out)
 {
-  const int32_t in[3] = { v == NULL ? 0 : v->x, v == NULL ? 0 : v->y,
-                          v == NULL ? 0 : v->z };
+  const int32_t in[3] = { (v == NULL) ? 0 : v->x, (v == NULL) ? 0 : v->y,
+                          (v == NULL) ? 0 : v->z };
   int32_t res[3];
   unsigned i;
 
@@ -266,8 +267,8 @@ drdc_status_t drdc_dcm_apply_q47_16(const drdc_dcm_t *r,
                                     const drdc_vec3_q47_16_t *v,
                                     drdc_vec3_q47_16_t *out)
 {
-  const int64_t in[3] = { v == NULL ? 0 : v->x, v == NULL ? 0 : v->y,
-                          v == NULL ? 0 : v->z };
+  const int64_t in[3] = { (v == NULL) ? 0 : v->x, (v == NULL) ? 0 : v->y,
+                          (v == NULL) ? 0 : v->z };
   int64_t res[3];
   unsigned i;
   unsigned j;
@@ -287,7 +288,7 @@ drdc_status_t drdc_dcm_apply_q47_16(const drdc_dcm_t *r,
     for (j = 0u; j < 3u; j++) {
       /* |m| <= 2^31, |v| <= 2^55: |t| = |m v| / 2^24 <= 2^62. */
       (void)drdc_fx_muldiv_s64(r->m[i][j], in[j],
-                               (int64_t)1 << (30u - GUARD_BITS), &t[j]);
+                               orient_pow2_s64(30u - GUARD_BITS), &t[j]);
     }
     /* For |m| <= 1.0 each |t| <= 2^61 and the sum fits; checked anyway
      * for matrices with elements up to 2.0. */

@@ -24,7 +24,7 @@
 /* v 2^30 without shifting a signed value. */
 static int64_t scale30(int64_t v)
 {
-  return v * ((int64_t)1 << 30);
+  return v * orient_pow2_s64(30u);
 }
 
 /* One link: rotation exact Q60, translation exact Q46. */
@@ -149,7 +149,7 @@ static int64_t mul61(int64_t a, int64_t b)
 {
   int64_t r = 0;
 
-  (void)drdc_fx_muldiv_s64(a, b, (int64_t)1 << 60, &r);
+  (void)drdc_fx_muldiv_s64(a, b, orient_pow2_s64(60u), &r);
   return r;
 }
 
@@ -170,7 +170,7 @@ drdc_status_t drdc_dh_forward(drdc_dh_convention_t convention,
   if ((out == NULL) || ((n > 0u) && ((links == NULL) || (q == NULL)))) {
     return DRDC_E_NULL;
   }
-  if (n > DRDC_DH_MAX_LINKS) {
+  if (n > (unsigned)DRDC_DH_MAX_LINKS) {
     return DRDC_E_RANGE;
   }
   if ((convention != DRDC_DH_STANDARD) && (convention != DRDC_DH_MODIFIED)) {
@@ -178,7 +178,7 @@ drdc_status_t drdc_dh_forward(drdc_dh_convention_t convention,
   }
   for (i = 0u; i < 3u; i++) {
     for (j = 0u; j < 3u; j++) {
-      buf[0][i][j] = (i == j) ? ((int64_t)1 << 61) : 0;
+      buf[0][i][j] = (i == j) ? orient_pow2_s64(61u) : 0;
     }
     t[i] = 0;
   }
@@ -197,7 +197,8 @@ drdc_status_t drdc_dh_forward(drdc_dh_convention_t convention,
       int64_t s;
 
       for (j = 0u; j < 3u; j++) {
-        (void)drdc_fx_muldiv_s64(r[i][j], e.t[j], (int64_t)1 << 61, &add[j]);
+        (void)drdc_fx_muldiv_s64(r[i][j], e.t[j], orient_pow2_s64(61u),
+                                 &add[j]);
       }
       if (drdc_orient_impl_sum4(add[0], add[1], add[2], t[i], &s)
           != DRDC_OK) {

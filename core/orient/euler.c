@@ -117,7 +117,7 @@ drdc_status_t drdc_euler_from_dcm(const drdc_dcm_t *r, drdc_euler_t *out)
       p[i][j] = r->m[i][j];
     }
   }
-  return euler_from_elements(p, (int64_t)1 << 30, out);
+  return euler_from_elements(p, orient_pow2_s64(30u), out);
 }
 
 /* Q1.30 product of three Q1.30 factors a b c plus or minus d e, rounded
@@ -186,6 +186,8 @@ drdc_status_t drdc_euler_canonical(const drdc_euler_t *e, drdc_euler_t *out)
   } else if (r.pitch == (3u * quarter)) {
     r.yaw += r.roll;
     r.roll = 0u;
+  } else {
+    /* no gimbal lock: yaw and roll are both defined, kept as they are */
   }
   *out = r;
   return DRDC_OK;

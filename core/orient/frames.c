@@ -11,6 +11,8 @@
 
 #include <drdc/fixed_arith.h>
 
+#include "orient_impl.h"
+
 /* 1/sqrt(2) in Q2.62, rounded: 2^61.5 = 3260954456333195553.3. With it
  * the products below are correctly rounded to Q1.30 except within 2^-32
  * LSB of a tie. */
@@ -60,7 +62,7 @@ drdc_status_t drdc_frame_frd_flu_q47_16(const drdc_vec3_q47_16_t *v,
   if ((v == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  if ((v->y == INT64_MIN) || (v->z == INT64_MIN)) {
+  if ((v->y == ORIENT_INT64_MIN) || (v->z == ORIENT_INT64_MIN)) {
     return DRDC_E_OVERFLOW;
   }
   r.x = v->x;
@@ -78,7 +80,7 @@ drdc_status_t drdc_frame_ned_enu_q47_16(const drdc_vec3_q47_16_t *v,
   if ((v == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  if (v->z == INT64_MIN) {
+  if (v->z == ORIENT_INT64_MIN) {
     return DRDC_E_OVERFLOW;
   }
   r.x = v->y;
@@ -111,7 +113,7 @@ static drdc_status_t scaled(int64_t sum, drdc_q1_30_t *out)
 {
   int64_t v;
   drdc_status_t st = drdc_fx_muldiv_s64(sum, INV_SQRT2_Q62,
-                                        (int64_t)1 << 62, &v);
+                                        orient_pow2_s64(62u), &v);
 
   if ((st != DRDC_OK) || (v > INT32_MAX) || (v < INT32_MIN)) {
     return DRDC_E_OVERFLOW;

@@ -22,14 +22,17 @@ static uint64_t abs64(int64_t x)
 
 unsigned drdc_orient_impl_headroom(uint64_t v, unsigned limit)
 {
+  uint64_t w = v;
+  unsigned top;
   unsigned s = 0u;
 
   if ((v == 0u) || (limit == 0u) || (limit > 64u)) {
     return 0u;
   }
-  /* v < 2^(limit - 1): one more doubling still stays below 2^limit */
-  while (((v >> (limit - 1u)) == 0u) && (s < limit)) {
-    v <<= 1;
+  top = limit - 1u;
+  /* w < 2^(limit - 1): one more doubling still stays below 2^limit */
+  while (((w >> top) == 0u) && (s < limit)) {
+    w <<= 1u;
     s++;
   }
   return s;
@@ -63,7 +66,7 @@ drdc_status_t drdc_orient_impl_scale(const drdc_quat_t *q,
                 ? 0u
                 : (drdc_orient_impl_headroom(m, 31u) - 1u);
     for (i = 0u; i < 4u; i++) {
-      out->c[i] = (int32_t)((int64_t)in[i] * ((int64_t)1 << shift));
+      out->c[i] = (int32_t)((int64_t)in[i] * orient_pow2_s64(shift));
     }
     out->k = (int32_t)shift;
   }
@@ -77,7 +80,7 @@ drdc_status_t drdc_orient_impl_scale(const drdc_quat_t *q,
 static int add_ok(int64_t a, int64_t b)
 {
   return !(((b > 0) && (a > (INT64_MAX - b)))
-           || ((b < 0) && (a < (INT64_MIN - b))));
+           || ((b < 0) && (a < (ORIENT_INT64_MIN - b))));
 }
 
 drdc_status_t drdc_orient_impl_sum4(int64_t a, int64_t b, int64_t c,
@@ -113,7 +116,7 @@ void drdc_orient_impl_half_sincos(drdc_bam32_t a, int64_t *s2, int64_t *c2)
 {
   /* floor(a / 2) of the signed angle, computed on the unsigned bits: an
    * arithmetic shift by one that keeps the sign bit. */
-  drdc_bam32_t h = (a >> 1) | (a & UINT32_C(0x80000000));
+  drdc_bam32_t h = (a >> 1u) | (a & 0x80000000u);
   drdc_q1_30_t s0;
   drdc_q1_30_t c0;
   drdc_q1_30_t s1;
@@ -145,9 +148,12 @@ drdc_status_t drdc_orient_impl_atan2_s64(int64_t y, int64_t x,
   while ((m >> n) >= (UINT64_C(1) << 31)) {
     n++;
   }
-  if ((n > 0u)
-      && (((m >> n) + ((m >> (n - 1u)) & 1u)) >= (UINT64_C(1) << 31))) {
-    n++;
+  if (n > 0u) {
+    unsigned below = n - 1u; /* the rounding bit, just below the cut */
+
+    if (((m >> n) + ((m >> below) & 1u)) >= (UINT64_C(1) << 31)) {
+      n++;
+    }
   }
   return drdc_fx_atan2_bam32((int32_t)drdc_fx_rshift_round_s64(y, n),
                              (int32_t)drdc_fx_rshift_round_s64(x, n), out);

@@ -4,7 +4,9 @@
  * @ingroup drdc_orient
  * @brief Internal helpers of core/orient/: exact 64-bit sums of Q60
  *        products, power-of-two prescaling of quaternions, half-angle
- *        sines and atan2 of 64-bit coordinates.
+ *        sines and atan2 of 64-bit coordinates; powers of two, squares
+ *        and limits spelled for MISRA C:2012 (no shift of a signed
+ *        value, no cast of a composite expression, no unsigned INT64_MIN).
  *
  * Products of two Q1.30 values are Q60 (2^60 per unit) and are kept exact
  * in int64_t as long as possible; each public result is rounded once, at
@@ -17,6 +19,34 @@
 
 #include <drdc/fixed_arith.h>
 #include <drdc/orient.h>
+
+/** The least int64_t, spelled without the unsigned constant of the
+ *  <stdint.h> macro (MISRA C:2012 rule 7.2), as fixed/fixed_impl.h does
+ *  for FX_INT64_MIN. Same value and type as INT64_MIN. */
+#define ORIENT_INT64_MIN (-INT64_MAX - 1)
+
+/** 1.0 in Q1.30, the value and type of DRDC_Q1_30_ONE, written as a
+ *  constant instead of a left shift of a signed value (rule 10.1). */
+#define ORIENT_Q1_30_ONE ((drdc_q1_30_t)0x40000000)
+
+/** 2^n as int64_t for n <= 62, from an unsigned shift (rule 10.1: no shift
+ *  of a signed value), as fx_scale_pow2_64() in fixed/trig_impl.h; equal
+ *  to ((int64_t)1 << n). A constant n folds to a constant. */
+static inline int64_t orient_pow2_s64(unsigned n)
+{
+  uint64_t p = UINT64_C(1) << n;
+
+  return (int64_t)p;
+}
+
+/** v^2 as uint64_t, exact (<= 2^62), the product computed in int64_t and
+ *  then converted (rule 10.8: no cast of a composite expression). */
+static inline uint64_t orient_square_u64(int32_t v)
+{
+  int64_t sq = (int64_t)v * v;
+
+  return (uint64_t)sq;
+}
 
 /** Components of a quaternion scaled by 2^k so that the largest magnitude
  *  is in [2^29, 2^30]; the sum of squares n2 (raw units squared) is then

@@ -110,6 +110,7 @@ drdc_status_t drdc_quat_inverse(const drdc_quat_t *q, drdc_quat_t *out)
   orient_scaled_quat_t sq;
   int64_t v[4];
   int64_t num;
+  int32_t e;
   drdc_status_t st;
   unsigned i;
 
@@ -125,7 +126,8 @@ drdc_status_t drdc_quat_inverse(const drdc_quat_t *q, drdc_quat_t *out)
   if (sq.k >= 2) {
     return DRDC_E_OVERFLOW;
   }
-  num = (int64_t)1 << (unsigned)(60 + sq.k);
+  e = 60 + sq.k; /* k is -1..1 here: 59..61 */
+  num = orient_pow2_s64((unsigned)e);
   for (i = 0u; i < 4u; i++) {
     int32_t c = (i == 0u) ? sq.c[0] : -sq.c[i]; /* |c| <= 2^30 */
 
@@ -145,6 +147,7 @@ drdc_status_t drdc_quat_normalize(const drdc_quat_t *q, drdc_quat_t *out)
 {
   orient_scaled_quat_t sq;
   unsigned j;
+  unsigned shift;
   uint64_t root;
   int64_t num;
   int64_t v[4];
@@ -161,8 +164,9 @@ drdc_status_t drdc_quat_normalize(const drdc_quat_t *q, drdc_quat_t *out)
   /* n2 in [2^58, 2^62]: shift it by an even 2j into [2^62, 2^64) so the
    * root r = sqrt(n2) 2^j has 31..32 bits; then part = c 2^(30 + j) / r. */
   j = drdc_orient_impl_headroom((uint64_t)sq.n2, 64u) / 2u;
-  root = drdc_fx_sqrt_u64((uint64_t)sq.n2 << (2u * j));
-  num = (int64_t)1 << (30u + j);
+  shift = 2u * j;
+  root = drdc_fx_sqrt_u64((uint64_t)sq.n2 << shift);
+  num = orient_pow2_s64(30u + j);
   for (i = 0u; i < 4u; i++) {
     /* |c| 2^(30 + j) / r <= 2^30: cannot overflow. */
     (void)drdc_fx_muldiv_s64(sq.c[i], num, (int64_t)root, &v[i]);
@@ -176,8 +180,8 @@ drdc_status_t drdc_quat_normalize(const drdc_quat_t *q, drdc_quat_t *out)
 
 drdc_status_t drdc_quat_canonical(const drdc_quat_t *q, drdc_quat_t *out)
 {
-  const int32_t p[4] = { q == NULL ? 0 : q->s, q == NULL ? 0 : q->x,
-                         q == NULL ? 0 : q->y, q == NULL ? 0 : q->z };
+  const int32_t p[4] = { (q == NULL) ? 0 : q->s, (q == NULL) ? 0 : q->x,
+                         (q == NULL) ? 0 : q->y, (q == NULL) ? 0 : q->z };
   unsigned i = 0u;
 
   if ((q == NULL) || (out == NULL)) {
@@ -262,8 +266,8 @@ drdc_status_t drdc_quat_angle_between(const drdc_quat_t *a,
   na.z = -na.z;
   (void)drdc_quat_mul(&na, &nb, &d);
   /* |v| from the exact sum of squares (<= 3 2^60), correctly rounded. */
-  v2 = ((uint64_t)((int64_t)d.x * d.x)) + ((uint64_t)((int64_t)d.y * d.y))
-       + ((uint64_t)((int64_t)d.z * d.z));
+  v2 = orient_square_u64(d.x) + orient_square_u64(d.y)
+       + orient_square_u64(d.z);
   vn = drdc_fx_sqrt_u64(v2);
   s = (d.s < 0) ? -d.s : d.s;
   if ((vn == 0u) && (s == 0)) {

@@ -22,7 +22,7 @@
 
 static int t_ok(drdc_q1_30_t t)
 {
-  return (t >= 0) && (t <= DRDC_Q1_30_ONE);
+  return (t >= 0) && (t <= ORIENT_Q1_30_ONE);
 }
 
 static void negate_unit(drdc_quat_t *q)
@@ -38,9 +38,9 @@ static void negate_unit(drdc_quat_t *q)
  * squares (<= 2^60). */
 static int32_t vec_norm(const drdc_quat_t *q)
 {
-  return (int32_t)drdc_fx_sqrt_u64((uint64_t)((int64_t)q->x * q->x)
-                                   + (uint64_t)((int64_t)q->y * q->y)
-                                   + (uint64_t)((int64_t)q->z * q->z));
+  return (int32_t)drdc_fx_sqrt_u64(orient_square_u64(q->x)
+                                   + orient_square_u64(q->y)
+                                   + orient_square_u64(q->z));
 }
 
 /* [cos(h), sin(h) v / |v|] for a binary angle h and a non-zero vector v
@@ -67,10 +67,10 @@ static void exp_axis(drdc_bam32_t h, const int32_t v[3], int32_t vn,
 drdc_status_t drdc_quat_nlerp(const drdc_quat_t *a, const drdc_quat_t *b,
                               drdc_q1_30_t t, drdc_quat_t *out)
 {
-  const int32_t pa[4] = { a == NULL ? 0 : a->s, a == NULL ? 0 : a->x,
-                          a == NULL ? 0 : a->y, a == NULL ? 0 : a->z };
-  const int32_t pb[4] = { b == NULL ? 0 : b->s, b == NULL ? 0 : b->x,
-                          b == NULL ? 0 : b->y, b == NULL ? 0 : b->z };
+  const int32_t pa[4] = { (a == NULL) ? 0 : a->s, (a == NULL) ? 0 : a->x,
+                          (a == NULL) ? 0 : a->y, (a == NULL) ? 0 : a->z };
+  const int32_t pb[4] = { (b == NULL) ? 0 : b->s, (b == NULL) ? 0 : b->x,
+                          (b == NULL) ? 0 : b->y, (b == NULL) ? 0 : b->z };
   int64_t dot = 0;
   int64_t u = 0;
   int64_t wa;
@@ -90,7 +90,7 @@ drdc_status_t drdc_quat_nlerp(const drdc_quat_t *a, const drdc_quat_t *b,
   for (i = 0u; i < 4u; i++) {
     dot += ((int64_t)pa[i] * pb[i]) / 4;
   }
-  wa = (int64_t)DRDC_Q1_30_ONE - t;
+  wa = (int64_t)ORIENT_Q1_30_ONE - t;
   wb = (dot < 0) ? -(int64_t)t : (int64_t)t;
   /* (1 - t) a + t b in Q60 (<= 2^61 + 2^61), halved to Q1.30 with one
    * extra bit dropped so the sum always fits int32 before normalising. */
@@ -142,7 +142,7 @@ static drdc_status_t slerp(const drdc_quat_t *a, const drdc_quat_t *b,
     if (d.s < 0) {
       flip = 1;
     }
-    r.s = DRDC_Q1_30_ONE;
+    r.s = ORIENT_Q1_30_ONE;
     r.x = 0;
     r.y = 0;
     r.z = 0;
@@ -241,7 +241,7 @@ drdc_status_t drdc_quat_squad_control(const drdc_quat_t *q0,
   /* w = -(w0 + w2) / 4, each part <= 2^29 binary-angle units */
   for (i = 0u; i < 3u; i++) {
     v[i] = (int32_t)-drdc_fx_rshift_round_s64(w0[i] + w2[i], 2u);
-    n2 += (uint64_t)((int64_t)v[i] * v[i]);
+    n2 += orient_square_u64(v[i]);
   }
   if (n2 == 0u) {
     *out = n1;
@@ -281,6 +281,6 @@ drdc_status_t drdc_quat_squad(const drdc_quat_t *q1, const drdc_quat_t *q2,
   }
   /* 2 t (1 - t) in Q1.30: t (2^30 - t) <= 2^58, result <= 2^29 */
   u = (drdc_q1_30_t)drdc_fx_rshift_round_s64(
-      (int64_t)t * ((int64_t)DRDC_Q1_30_ONE - t), 29u);
+      (int64_t)t * ((int64_t)ORIENT_Q1_30_ONE - t), 29u);
   return slerp(&a, &b, u, 0, out);
 }

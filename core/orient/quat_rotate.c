@@ -41,7 +41,7 @@ static drdc_status_t rotate(const drdc_quat_t *q, const int64_t in[3],
     int64_t s;
 
     for (j = 0u; j < 3u; j++) {
-      (void)drdc_fx_muldiv_s64(p[i][j], in[j] * ((int64_t)1 << GUARD_BITS),
+      (void)drdc_fx_muldiv_s64(p[i][j], in[j] * orient_pow2_s64(GUARD_BITS),
                                n2, &t[j]);
     }
     s = t[0] + t[1] + t[2];

@@ -46,7 +46,7 @@ static drdc_status_t affine(const drdc_dcm_t *r, const int32_t v[3],
     }
     rv = drdc_fx_rshift_round_s64(s, 30u);
     if (((t[i] > 0) && (rv > (INT64_MAX - t[i])))
-        || ((t[i] < 0) && (rv < (INT64_MIN - t[i])))) {
+        || ((t[i] < 0) && (rv < (ORIENT_INT64_MIN - t[i])))) {
       return DRDC_E_OVERFLOW;
     }
     out[i] = rv + t[i];
@@ -91,10 +91,10 @@ drdc_status_t drdc_transform_compose(const drdc_transform_t *a,
                                      const drdc_transform_t *b,
                                      drdc_transform_t *out)
 {
-  const int32_t v[3] = { b == NULL ? 0 : b->t.x, b == NULL ? 0 : b->t.y,
-                         b == NULL ? 0 : b->t.z };
-  const int64_t t[3] = { a == NULL ? 0 : a->t.x, a == NULL ? 0 : a->t.y,
-                         a == NULL ? 0 : a->t.z };
+  const int32_t v[3] = { (b == NULL) ? 0 : b->t.x, (b == NULL) ? 0 : b->t.y,
+                         (b == NULL) ? 0 : b->t.z };
+  const int64_t t[3] = { (a == NULL) ? 0 : a->t.x, (a == NULL) ? 0 : a->t.y,
+                         (a == NULL) ? 0 : a->t.z };
   int64_t res[3];
   drdc_vec3_q15_16_t nt;
   drdc_dcm_t r;
@@ -120,8 +120,8 @@ drdc_status_t drdc_transform_compose(const drdc_transform_t *a,
 drdc_status_t drdc_transform_invert(const drdc_transform_t *a,
                                     drdc_transform_t *out)
 {
-  const int32_t v[3] = { a == NULL ? 0 : a->t.x, a == NULL ? 0 : a->t.y,
-                         a == NULL ? 0 : a->t.z };
+  const int32_t v[3] = { (a == NULL) ? 0 : a->t.x, (a == NULL) ? 0 : a->t.y,
+                         (a == NULL) ? 0 : a->t.z };
   const int64_t zero[3] = { 0, 0, 0 };
   int64_t res[3];
   drdc_dcm_t rt;
@@ -150,10 +150,10 @@ drdc_status_t drdc_transform_point(const drdc_transform_t *a,
                                    const drdc_vec3_q15_16_t *p,
                                    drdc_vec3_q15_16_t *out)
 {
-  const int32_t v[3] = { p == NULL ? 0 : p->x, p == NULL ? 0 : p->y,
-                         p == NULL ? 0 : p->z };
-  const int64_t t[3] = { a == NULL ? 0 : a->t.x, a == NULL ? 0 : a->t.y,
-                         a == NULL ? 0 : a->t.z };
+  const int32_t v[3] = { (p == NULL) ? 0 : p->x, (p == NULL) ? 0 : p->y,
+                         (p == NULL) ? 0 : p->z };
+  const int64_t t[3] = { (a == NULL) ? 0 : a->t.x, (a == NULL) ? 0 : a->t.y,
+                         (a == NULL) ? 0 : a->t.z };
   int64_t res[3];
   drdc_status_t st;
 
@@ -181,10 +181,10 @@ drdc_status_t drdc_transform_global_compose(const drdc_transform_global_t *g,
                                             const drdc_transform_t *b,
                                             drdc_transform_global_t *out)
 {
-  const int32_t v[3] = { b == NULL ? 0 : b->t.x, b == NULL ? 0 : b->t.y,
-                         b == NULL ? 0 : b->t.z };
-  const int64_t t[3] = { g == NULL ? 0 : g->t.x, g == NULL ? 0 : g->t.y,
-                         g == NULL ? 0 : g->t.z };
+  const int32_t v[3] = { (b == NULL) ? 0 : b->t.x, (b == NULL) ? 0 : b->t.y,
+                         (b == NULL) ? 0 : b->t.z };
+  const int64_t t[3] = { (g == NULL) ? 0 : g->t.x, (g == NULL) ? 0 : g->t.y,
+                         (g == NULL) ? 0 : g->t.z };
   int64_t res[3];
   drdc_dcm_t r;
   drdc_status_t st;
@@ -209,10 +209,10 @@ drdc_status_t drdc_transform_global_to_world(const drdc_transform_global_t *g,
                                              const drdc_vec3_q15_16_t *p,
                                              drdc_vec3_q47_16_t *out)
 {
-  const int32_t v[3] = { p == NULL ? 0 : p->x, p == NULL ? 0 : p->y,
-                         p == NULL ? 0 : p->z };
-  const int64_t t[3] = { g == NULL ? 0 : g->t.x, g == NULL ? 0 : g->t.y,
-                         g == NULL ? 0 : g->t.z };
+  const int32_t v[3] = { (p == NULL) ? 0 : p->x, (p == NULL) ? 0 : p->y,
+                         (p == NULL) ? 0 : p->z };
+  const int64_t t[3] = { (g == NULL) ? 0 : g->t.x, (g == NULL) ? 0 : g->t.y,
+                         (g == NULL) ? 0 : g->t.z };
   int64_t res[3];
   drdc_status_t st;
 
@@ -252,7 +252,7 @@ drdc_status_t drdc_transform_global_to_local(const drdc_transform_global_t *g,
     for (i = 0u; i < 3u; i++) {
       /* the difference must be a local length: rule out overflow first */
       if (((t[i] < 0) && (diff[i] > (INT64_MAX + t[i])))
-          || ((t[i] > 0) && (diff[i] < (INT64_MIN + t[i])))) {
+          || ((t[i] > 0) && (diff[i] < (ORIENT_INT64_MIN + t[i])))) {
         return DRDC_E_OVERFLOW;
       }
       diff[i] -= t[i];
