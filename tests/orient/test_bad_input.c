@@ -16,11 +16,9 @@
  * The yaw-45 matrix holds c = 759250125 = round(2^30 / sqrt(2))
  * (2^30 / sqrt(2) = 759250124.994), so 0.7 2^30 < c < 2^30.
  *
- * Not tested here: the overflow row of drdc_quat_difference(). Its
- * header says "a part is INT32_MIN", but a = [-2, 0, 0, 0] with b the
- * identity, or a part of b at INT32_MIN, returns DRDC_OK; only a vector
- * part of a at INT32_MIN fails. The row waits for the header to say
- * which parts it means.
+ * drdc_quat_difference() overflows when a vector part of `a` is INT32_MIN
+ * (its conjugate, +2.0, does not fit Q1.30); its header said "a part"
+ * until this suite found that the scalar part and the parts of b do not.
  */
 #include <drdc/orient.h>
 #include <drdc/transform.h>
@@ -807,10 +805,25 @@ static void test_transform_invert_beyond_32768_gives_overflow(void)
   TEST_ASSERT_EQUAL_INT32(0, t.t.z);
 }
 
+static void test_quat_difference_with_int32_min_vector_part_overflows(void)
+{
+  /* a = [0, -2, 0, 0]: conj(a) needs +2.0 in x, beyond Q1.30's [-2, 2) */
+  const drdc_quat_t a = { 0, INT32_MIN, 0, 0 };
+  const drdc_quat_t b = { ONE30, 0, 0, 0 };
+  drdc_quat_t out = { SENTINEL32, SENTINEL32, SENTINEL32, SENTINEL32 };
+
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_quat_difference(&a, &b, &out));
+  TEST_ASSERT_EQUAL_INT32(SENTINEL32, out.s);
+  TEST_ASSERT_EQUAL_INT32(SENTINEL32, out.x);
+  TEST_ASSERT_EQUAL_INT32(SENTINEL32, out.y);
+  TEST_ASSERT_EQUAL_INT32(SENTINEL32, out.z);
+}
+
 void suite_orient_bad_input(void)
 {
   UnitySetTestFile(__FILE__);
   RUN_TEST(test_quat_algebra_null_pointers_give_null);
+  RUN_TEST(test_quat_difference_with_int32_min_vector_part_overflows);
   RUN_TEST(test_rotate_by_zero_quaternion_gives_domain);
   RUN_TEST(test_rotate_q15_16_beyond_32768_gives_overflow);
   RUN_TEST(test_rotate_q47_16_beyond_max_gives_range);

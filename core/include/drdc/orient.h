@@ -209,7 +209,7 @@ drdc_status_t drdc_quat_canonical(const drdc_quat_t *q, drdc_quat_t *out);
  * @retval DRDC_E_NULL a pointer is NULL
  * @retval DRDC_E_DOMAIN q is zero
  * @retval DRDC_E_OVERFLOW a rotated part is outside +-32768 m (possible
- *         when |v| > 32768 m)
+ *         when |v| >= 32768 m)
  * Method: the exact Q60 numerators of R(q) and the exact |q|^2 (the
  * matrix is never rounded to Q1.30), each term p v / |q|^2 rounded with
  * 6 guard bits through a 128-bit intermediate, the sum rounded once.
@@ -250,7 +250,8 @@ drdc_status_t drdc_quat_rotate_q47_16(const drdc_quat_t *q,
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
  * @retval DRDC_E_DOMAIN the product is zero (a or b zero)
- * @retval DRDC_E_OVERFLOW the product overflows (|a| |b| >= 2)
+ * @retval DRDC_E_OVERFLOW the product overflows (only possible when
+ *         |a| |b| >= 2)
  * Accuracy: parts within 1 LSB of the exact normalised product (0.5 LSB
  * of the product plus the normalisation), |out| - 1 within 2 LSB.
  */
@@ -264,7 +265,9 @@ drdc_status_t drdc_quat_compose(const drdc_quat_t *a, const drdc_quat_t *b,
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
  * @retval DRDC_E_DOMAIN the product is zero
- * @retval DRDC_E_OVERFLOW a part is INT32_MIN or the product overflows
+ * @retval DRDC_E_OVERFLOW a vector part of `a` is INT32_MIN (its conjugate
+ *         does not fit Q1.30), or the product overflows (only possible
+ *         when |a| |b| >= 2)
  */
 drdc_status_t drdc_quat_difference(const drdc_quat_t *a,
                                    const drdc_quat_t *b, drdc_quat_t *out);
@@ -413,7 +416,9 @@ drdc_status_t drdc_dcm_from_euler(const drdc_euler_t *e, drdc_dcm_t *out);
  * @param[out] out angles; unchanged on error
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
- * @retval DRDC_E_DOMAIN the first column and the third row are zero
+ * @retval DRDC_E_DOMAIN yaw and pitch are undefined: the first column is
+ *         zero, or the matrix is at gimbal lock with R12 = R22 = 0 (not
+ *         a rotation matrix)
  */
 drdc_status_t drdc_euler_from_dcm(const drdc_dcm_t *r, drdc_euler_t *out);
 
@@ -557,7 +562,8 @@ drdc_status_t drdc_quat_squad_control(const drdc_quat_t *q0,
 /**
  * Spherical quadrangle interpolation between keys q1 and q2 with control
  * points s1 and s2: slerp(slerp(q1, q2, t), slerp(s1, s2, t), 2t(1 - t))
- * (the inner slerps without the shorter-arc flip, as Shoemake defines it).
+ * (the first inner slerp takes the shorter arc; the one between the
+ * control points does not, as Shoemake defines it).
  * @param q1 key at t = 0, unit quaternion
  * @param q2 key at t = 1, unit quaternion
  * @param s1 control point of q1 (drdc_quat_squad_control())
