@@ -14,7 +14,8 @@
  *  can be optimised away. */
 typedef struct bench_case {
   const char *name;     /**< operation, shared by an implementation and its baselines */
-  const char *impl;     /**< "drdc", "double" (soft-float + newlib libm) or "libfixmath" */
+  const char *impl;     /**< "drdc", "double" (soft-float + newlib libm),
+                             "libfixmath" or "hand" (a by-hand floor) */
   const char *symbol;   /**< the function measured, for its code size */
   void (*run)(uint32_t calls);
 } bench_case_t;
@@ -33,6 +34,7 @@ void bench_inputs_init(void);
  *  case whose name is NULL. */
 extern const bench_case_t bench_cases_time[];
 extern const bench_case_t bench_cases_fixed[];
+extern const bench_case_t bench_cases_orient[];
 extern const bench_case_t bench_cases_libfixmath[];
 extern const bench_case_t bench_cases_double[];
 

@@ -100,6 +100,73 @@ static double gps_to_utc(double week, double tow)
   return u;
 }
 
+/* Quaternions and Euler angles as an engineer writes them in double. */
+typedef struct { double s, x, y, z; } dquat;
+
+static dquat dquat_of(uint32_t x)
+{
+  dquat q;
+
+  q.s = (double)(x >> 3) / 1073741824.0;
+  q.x = (double)(int32_t)(((x << 7) >> 3) - (1u << 28)) / 1073741824.0;
+  q.y = (double)(int32_t)(((x << 13) >> 3) - (1u << 28)) / 1073741824.0;
+  q.z = (double)(int32_t)(((x << 21) >> 3) - (1u << 28)) / 1073741824.0;
+  return q;
+}
+
+static double quat_mul(uint32_t x)
+{
+  dquat a = dquat_of(x);
+  dquat b = dquat_of(x * 2654435761u);
+  dquat r;
+
+  r.s = a.s * b.s - a.x * b.x - a.y * b.y - a.z * b.z;
+  r.x = a.s * b.x + a.x * b.s + a.y * b.z - a.z * b.y;
+  r.y = a.s * b.y - a.x * b.z + a.y * b.s + a.z * b.x;
+  r.z = a.s * b.z + a.x * b.y - a.y * b.x + a.z * b.s;
+  return r.s + r.x + r.y + r.z;
+}
+
+static double quat_rotate(uint32_t x)
+{
+  dquat q = dquat_of(x);
+  double n = sqrt(q.s * q.s + q.x * q.x + q.y * q.y + q.z * q.z);
+  double s = q.s / n, a = q.x / n, b = q.y / n, c = q.z / n;
+  double vx = (double)(x & 0xFFFFFu) / 65536.0;
+  double vy = (double)(x >> 12) / 65536.0;
+  double vz = -(double)(x & 0xFFFFu) / 65536.0;
+  double rx = (1 - 2 * (b * b + c * c)) * vx + 2 * (a * b - s * c) * vy + 2 * (a * c + s * b) * vz;
+  double ry = 2 * (a * b + s * c) * vx + (1 - 2 * (a * a + c * c)) * vy + 2 * (b * c - s * a) * vz;
+  double rz = 2 * (a * c - s * b) * vx + 2 * (b * c + s * a) * vy + (1 - 2 * (a * a + b * b)) * vz;
+
+  return rx + ry + rz;
+}
+
+static double euler_to_quat(uint32_t x)
+{
+  double yaw = (double)(int32_t)x * 1.4629180792671596e-9;
+  double pitch = (double)(int32_t)((x * 2654435761u) >> 2) * 1.4629180792671596e-9;
+  double roll = (double)(int32_t)(x * 40503u) * 1.4629180792671596e-9;
+  double cy = cos(yaw / 2), sy = sin(yaw / 2);
+  double cp = cos(pitch / 2), sp = sin(pitch / 2);
+  double cr = cos(roll / 2), sr = sin(roll / 2);
+
+  return (cr * cp * cy + sr * sp * sy) + (cr * cp * sy - sr * sp * cy);
+}
+
+static double quat_to_euler(uint32_t x)
+{
+  dquat q = dquat_of(x);
+  double n = sqrt(q.s * q.s + q.x * q.x + q.y * q.y + q.z * q.z);
+  double s = q.s / n, a = q.x / n, b = q.y / n, c = q.z / n;
+  double yaw = atan2(2 * (s * c + a * b), 1 - 2 * (b * b + c * c));
+  double sp = 2 * (s * b - c * a);
+  double pitch = asin(sp > 1 ? 1 : (sp < -1 ? -1 : sp));
+  double roll = atan2(2 * (s * a + b * c), 1 - 2 * (a * a + b * b));
+
+  return yaw + pitch + roll;
+}
+
 static double angle(uint32_t x)
 {
   return ((double)(x % 1000000u) / 1000000.0 - 0.5) * 6.283185307179586;
@@ -114,6 +181,10 @@ BENCH_LOOP_DOUBLE(run_utc_to_gps,
                              + (double)((x >> 3) % 1000000000u) * 1e-9))
 BENCH_LOOP_DOUBLE(run_gps_to_utc, gps_to_utc(522.0 + (double)(x % 1900u),
                                              (double)((x >> 11) % 604800u)))
+BENCH_LOOP_DOUBLE(run_quat_mul, quat_mul(x))
+BENCH_LOOP_DOUBLE(run_quat_rotate, quat_rotate(x))
+BENCH_LOOP_DOUBLE(run_euler_to_quat, euler_to_quat(x))
+BENCH_LOOP_DOUBLE(run_quat_to_euler, quat_to_euler(x))
 BENCH_LOOP_DOUBLE(run_sin, sin(angle(x)))
 BENCH_LOOP_DOUBLE(run_cos, cos(angle(x)))
 BENCH_LOOP_DOUBLE(run_atan2, atan2((double)(x & 0xFFFFu) - 32768.0,
@@ -126,6 +197,10 @@ const bench_case_t bench_cases_double[] = {
   { "civil_from_days", "double", "run_civil_from_days", run_civil_from_days },
   { "utc_to_gps", "double", "run_utc_to_gps", run_utc_to_gps },
   { "gps_to_utc", "double", "run_gps_to_utc", run_gps_to_utc },
+  { "quat_mul", "double", "run_quat_mul", run_quat_mul },
+  { "quat_rotate", "double", "run_quat_rotate", run_quat_rotate },
+  { "euler_to_quat", "double", "run_euler_to_quat", run_euler_to_quat },
+  { "quat_to_euler", "double", "run_quat_to_euler", run_quat_to_euler },
   { "sin", "double", "run_sin", run_sin },
   { "cos", "double", "run_cos", run_cos },
   { "atan2", "double", "run_atan2", run_atan2 },
