@@ -40,15 +40,14 @@ uint32_t drdc_fx_sqrt_u32(uint32_t n)
  * taking two more bits it is below 2^32; the root stays below 2^29. */
 static uint64_t sqrt_u58(uint64_t n)
 {
-  uint32_t words[2];
+  uint32_t high = (uint32_t)(n >> 32);
+  uint32_t low = (uint32_t)n;
   uint32_t rem = 0;
   uint32_t root = 0;
   unsigned w;
 
-  words[0] = (uint32_t)(n >> 32);
-  words[1] = (uint32_t)n;
   for (w = 0u; w < 2u; w++) {
-    uint32_t word = words[w];
+    uint32_t word = (w == 0u) ? high : low;
     unsigned pairs = 16u;
 
     if ((w == 0u) || (root == 0u)) {
@@ -83,9 +82,6 @@ uint64_t drdc_fx_sqrt_u64(uint64_t n)
 
   if (n <= UINT32_MAX) {
     return drdc_fx_sqrt_u32((uint32_t)n); /* 32-bit steps are cheaper */
-  }
-  if (n < (UINT64_C(1) << 58)) {
-    return sqrt_u58(n);
   }
   while (bit > rem) {
     bit >>= 2;
