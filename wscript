@@ -67,7 +67,8 @@ TARGETS = {
     "host-fuzz": {
         "cross": "", "compiler": "clang-14", "bsp": "host", "qemu": None,
         "ext": "", "images": False,
-        "arch": ["-fsanitize=fuzzer-no-link,address,undefined",
+        "arch": ["-D_POSIX_C_SOURCE=200809L",
+                 "-fsanitize=fuzzer-no-link,address,undefined",
                  "-fno-sanitize-recover=all", "-fno-omit-frame-pointer"],
         "link": ["-fsanitize=fuzzer,address,undefined"], "libs": [],
         "hard_float": None, "intcheck": None, "soft_float_libm": False,
@@ -247,8 +248,13 @@ def build(bld):
     if not t.get("images", True):
         # libFuzzer targets (tools/fuzz.py), one program per file
         for src in _glob(bld, "tests/fuzz/fuzz_*.c"):
-            bld.program(source=[src], target="tests/fuzz/" + src.name[:-2],
-                        use="libdrdc", cflags=ours, install_path=None)
+            # fuzz_tool drives the host tool's own command code
+            tool = (_glob(bld, "tools/drdc/cmd_*.c")
+                    if src.name == "fuzz_tool.c" else [])
+            bld.program(source=[src] + tool,
+                        target="tests/fuzz/" + src.name[:-2],
+                        use="libdrdc", cflags=ours, includes=["tools/drdc"],
+                        install_path=None, idx=100)
         return
 
     # Third-party parts, from the pinned sources in .deps/.
