@@ -29,14 +29,11 @@ int32_t drdc_fx_rshift_round_s32(int32_t x, unsigned n)
 
 int64_t drdc_fx_rshift_round_s64(int64_t x, unsigned n)
 {
-  uint64_t mag = fx_abs64(x);
-
   if (n == 0u) {
     return x;
   }
   if (n >= 64u) {
     return ((n == 64u) && (x == FX_INT64_MIN)) ? -1 : 0;
   }
-  mag = (mag + (UINT64_C(1) << (n - 1u))) >> n; /* <= 2^62 */
-  return (x < 0) ? -(int64_t)mag : (int64_t)mag;
+  return drdc_fx_rshift_round_s64_inline(x, n);
 }

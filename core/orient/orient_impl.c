@@ -101,17 +101,6 @@ drdc_status_t drdc_orient_impl_sum4(int64_t a, int64_t b, int64_t c,
   return DRDC_OK;
 }
 
-drdc_status_t drdc_orient_impl_q60_to_q30(int64_t v, drdc_q1_30_t *out)
-{
-  int64_t r = drdc_fx_rshift_round_s64(v, 30u);
-
-  if ((r > INT32_MAX) || (r < INT32_MIN)) {
-    return DRDC_E_OVERFLOW;
-  }
-  *out = (drdc_q1_30_t)r;
-  return DRDC_OK;
-}
-
 void drdc_orient_impl_half_sincos(drdc_bam32_t a, int64_t *s2, int64_t *c2)
 {
   /* floor(a / 2) of the signed angle, computed on the unsigned bits: an

@@ -72,7 +72,19 @@ drdc_status_t drdc_orient_impl_sum4(int64_t a, int64_t b, int64_t c,
 
 /** Round a Q60 value to Q1.30 (ties away from zero); DRDC_E_OVERFLOW
  *  when the result does not fit int32_t. */
-drdc_status_t drdc_orient_impl_q60_to_q30(int64_t v, drdc_q1_30_t *out);
+static inline drdc_status_t drdc_orient_impl_q60_to_q30(int64_t v,
+                                                        drdc_q1_30_t *out)
+{
+  /* inline: a quaternion product calls it four times */
+  int64_t r = drdc_fx_rshift_round_s64_inline(v, 30u);
+  drdc_status_t st = DRDC_E_OVERFLOW;
+
+  if ((r <= INT32_MAX) && (r >= INT32_MIN)) {
+    *out = (drdc_q1_30_t)r;
+    st = DRDC_OK;
+  }
+  return st;
+}
 
 /**
  * sin and cos of half the signed angle a ([-pi, pi) -> [-pi/2, pi/2)),

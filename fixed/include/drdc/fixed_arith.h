@@ -62,6 +62,28 @@ int32_t drdc_fx_rshift_round_s32(int32_t x, unsigned n);
 int64_t drdc_fx_rshift_round_s64(int64_t x, unsigned n);
 
 /**
+ * Inline form of drdc_fx_rshift_round_s64() for hot paths, shift counts
+ * 1..63 only: x / 2^n rounded to nearest, ties away from zero; the same
+ * result as the function (which calls it).
+ *
+ * @param x any int64_t value
+ * @param n shift count, 1..63 (not checked)
+ * @return the rounded quotient
+ */
+static inline int64_t drdc_fx_rshift_round_s64_inline(int64_t x, unsigned n)
+{
+  /* round the magnitude: no shift of a negative value */
+  uint64_t mag = (x < 0) ? (0u - (uint64_t)x) : (uint64_t)x;
+  uint64_t rounded = (mag + (UINT64_C(1) << (n - 1u))) >> n; /* < 2^63 */
+  int64_t result = (int64_t)rounded;
+
+  if (x < 0) {
+    result = -result;
+  }
+  return result;
+}
+
+/**
  * Integer -> Q15.16: `*out` = i * 2^16, exact.
  *
  * @param i integer, -32768..32767
