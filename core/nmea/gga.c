@@ -15,7 +15,6 @@
 drdc_status_t nmea_gga(const nmea_frame_t *fr, drdc_nmea_t *n)
 {
   drdc_status_t st;
-  int64_t v = 0;
 
   if (fr->count < GGA_FIELDS) {
     return DRDC_E_MISSING_FIELD;
@@ -48,30 +47,5 @@ drdc_status_t nmea_gga(const nmea_frame_t *fr, drdc_nmea_t *n)
     }
     n->has |= DRDC_NMEA_HAS_SATELLITES;
   }
-  if (nmea_field(fr, 8u).n != 0u) {
-    st = nmea_fixed(nmea_field(fr, 8u), 1, 1, 16u, &v);
-    if ((st == DRDC_OK) && ((v > INT32_MAX) || (v < INT32_MIN))) {
-      st = DRDC_E_RANGE;
-    }
-    if (st != DRDC_OK) {
-      return st;
-    }
-    n->hdop = (drdc_q15_16_t)v;
-    n->has |= DRDC_NMEA_HAS_HDOP;
-  }
-  if (nmea_field(fr, 9u).n != 0u) {
-    st = nmea_fixed(nmea_field(fr, 9u), 1, 1, 16u, &n->altitude);
-    if (st != DRDC_OK) {
-      return st;
-    }
-    n->has |= DRDC_NMEA_HAS_ALTITUDE;
-  }
-  if (nmea_field(fr, 11u).n != 0u) {
-    st = nmea_fixed(nmea_field(fr, 11u), 1, 1, 16u, &n->separation);
-    if (st != DRDC_OK) {
-      return st;
-    }
-    n->has |= DRDC_NMEA_HAS_SEPARATION;
-  }
-  return DRDC_OK;
+  return nmea_precision(fr, 11u, n);
 }

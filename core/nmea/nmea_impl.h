@@ -57,6 +57,12 @@ drdc_status_t nmea_angle(nmea_field_t value, nmea_field_t hemisphere,
                          int latitude, drdc_nas_t *out);
 
 /** Sentence decoders: `fr` is framed; they fill `*n` (a scratch copy). */
+/* The optional HDOP (field 8), altitude (field 9) and geoid separation
+ * (field `separation`) that GGA and GNS share; each present one is parsed
+ * and flagged in n->has. */
+drdc_status_t nmea_precision(const nmea_frame_t *fr, size_t separation,
+                             drdc_nmea_t *n);
+
 drdc_status_t nmea_gga(const nmea_frame_t *fr, drdc_nmea_t *n);
 drdc_status_t nmea_rmc(const nmea_frame_t *fr, drdc_nmea_t *n);
 drdc_status_t nmea_gns(const nmea_frame_t *fr, drdc_nmea_t *n);

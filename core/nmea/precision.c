@@ -1,0 +1,41 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @ingroup drdc_nmea
+ * @brief HDOP, altitude and geoid separation: the fields GGA and GNS share.
+ */
+#include "nmea_impl.h"
+
+drdc_status_t nmea_precision(const nmea_frame_t *fr, size_t separation,
+                             drdc_nmea_t *n)
+{
+  drdc_status_t st;
+  int64_t v = 0;
+
+  if (nmea_field(fr, 8u).n != 0u) {
+    st = nmea_fixed(nmea_field(fr, 8u), 1, 1, 16u, &v);
+    if ((st == DRDC_OK) && ((v > INT32_MAX) || (v < INT32_MIN))) {
+      st = DRDC_E_RANGE;
+    }
+    if (st != DRDC_OK) {
+      return st;
+    }
+    n->hdop = (drdc_q15_16_t)v;
+    n->has |= DRDC_NMEA_HAS_HDOP;
+  }
+  if (nmea_field(fr, 9u).n != 0u) {
+    st = nmea_fixed(nmea_field(fr, 9u), 1, 1, 16u, &n->altitude);
+    if (st != DRDC_OK) {
+      return st;
+    }
+    n->has |= DRDC_NMEA_HAS_ALTITUDE;
+  }
+  if (nmea_field(fr, separation).n != 0u) {
+    st = nmea_fixed(nmea_field(fr, separation), 1, 1, 16u, &n->separation);
+    if (st != DRDC_OK) {
+      return st;
+    }
+    n->has |= DRDC_NMEA_HAS_SEPARATION;
+  }
+  return DRDC_OK;
+}
