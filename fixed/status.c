@@ -41,6 +41,11 @@ const char *drdc_status_name(drdc_status_t status)
     "DRDC_E_MISSING_FIELD",
     "DRDC_E_NO_FIX",
     "DRDC_E_SENTENCE",
+    "DRDC_E_LATITUDE",
+    "DRDC_E_LONGITUDE",
+    "DRDC_E_ZONE",
+    "DRDC_E_EASTING",
+    "DRDC_E_NORTHING",
   };
   unsigned index = (unsigned)status;
 

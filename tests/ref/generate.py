@@ -33,6 +33,7 @@ GENERATORS = [
     "gen_units",
     "gen_jaus",
     "gen_nmea",
+    "gen_geo",
 ]
 
 

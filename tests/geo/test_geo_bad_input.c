@@ -1,0 +1,186 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @brief Bad-input catalogue of core/geo and drdc_fx_mul_q5_58
+ *        (docs/bad-input.md): each error status of each function, with
+ *        the outputs left unchanged.
+ */
+#include <drdc/fixed_arith.h>
+#include <drdc/geo.h>
+
+#include <stddef.h>
+
+#include "suites.h"
+#include "unity.h"
+
+#define NAS_DEG INT64_C(3600000000000)
+#define SENTINEL64 INT64_C(0x5A5A5A5A5A5A5A5A)
+#define M(v) ((int64_t)(v) * INT64_C(65536))
+
+static drdc_geo_utm_t sentinel_utm(void)
+{
+  drdc_geo_utm_t u = { 77, true, SENTINEL64, SENTINEL64 };
+
+  return u;
+}
+
+static void assert_utm_unchanged(const drdc_geo_utm_t *u)
+{
+  TEST_ASSERT_EQUAL_INT32(77, u->zone);
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, u->easting);
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, u->northing);
+}
+
+static void test_drdc_geo_utm_zone_errors(void)
+{
+  int32_t z = 77;
+
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_geo_utm_zone(0, 0, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE,
+                        drdc_geo_utm_zone((90 * NAS_DEG) + 1, 0, &z));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE,
+                        drdc_geo_utm_zone((-90 * NAS_DEG) - 1, 0, &z));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE,
+                        drdc_geo_utm_zone(0, 540 * NAS_DEG, &z));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE,
+                        drdc_geo_utm_zone(0, (-540 * NAS_DEG) - 1, &z));
+  TEST_ASSERT_EQUAL_INT32(77, z);
+}
+
+static void test_drdc_geo_tm_forward_errors(void)
+{
+  drdc_q47_16_t x = SENTINEL64;
+  drdc_q47_16_t y = SENTINEL64;
+  drdc_nas_t g = SENTINEL64;
+  drdc_q5_58_t k = SENTINEL64;
+
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_geo_tm_forward(0, 0, NULL, &y, &g, &k));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_geo_tm_forward(0, 0, &x, NULL, &g, &k));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE,
+                        drdc_geo_tm_forward((90 * NAS_DEG) + 1, 0, &x, &y,
+                                            &g, &k));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE,
+                        drdc_geo_tm_forward(0, (90 * NAS_DEG) + 1, &x, &y,
+                                            &g, &k));
+  /* 25 degrees from the central meridian on the equator: 2 900 km */
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
+                        drdc_geo_tm_forward(0, 25 * NAS_DEG, &x, &y, &g,
+                                            &k));
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, x);
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, y);
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, g);
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, k);
+}
+
+static void test_drdc_geo_to_utm_errors(void)
+{
+  drdc_geo_utm_t u = sentinel_utm();
+  drdc_nas_t g = SENTINEL64;
+
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_geo_to_utm(0, 0, DRDC_GEO_ZONE_STANDARD, NULL,
+                                        &g, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE,
+                        drdc_geo_to_utm((90 * NAS_DEG) + 1, 0,
+                                        DRDC_GEO_ZONE_STANDARD, &u, &g,
+                                        NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE,
+                        drdc_geo_to_utm(0, 540 * NAS_DEG,
+                                        DRDC_GEO_ZONE_STANDARD, &u, &g,
+                                        NULL));
+  /* zone 0 and 61 */
+  TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE,
+                        drdc_geo_to_utm(0, 0, 0, &u, &g, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE,
+                        drdc_geo_to_utm(0, 0, 61, &u, &g, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE,
+                        drdc_geo_to_utm(0, 0, -2, &u, &g, NULL));
+  /* standard zone is UPS */
+  TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE,
+                        drdc_geo_to_utm(84 * NAS_DEG, 0,
+                                        DRDC_GEO_ZONE_STANDARD, &u, &g,
+                                        NULL));
+  /* GeoConvert -z 31: "Latitude 0, longitude -5 out of legal range" */
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
+                        drdc_geo_to_utm(0, -5 * NAS_DEG, 31, &u, &g, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
+                        drdc_geo_to_utm(10 * NAS_DEG, 10 * NAS_DEG, 28, &u,
+                                        &g, NULL));
+  assert_utm_unchanged(&u);
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, g);
+}
+
+static void test_drdc_geo_from_utm_errors(void)
+{
+  drdc_geo_utm_t in = { 31, true, M(500000), M(0) };
+  drdc_nas_t lat = SENTINEL64;
+  drdc_nas_t lon = SENTINEL64;
+
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_geo_from_utm(NULL, &lat, &lon, NULL, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_geo_from_utm(&in, NULL, &lon, NULL, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_geo_from_utm(&in, &lat, NULL, NULL, NULL));
+  in.zone = 0;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE,
+                        drdc_geo_from_utm(&in, &lat, &lon, NULL, NULL));
+  in.zone = 61;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE,
+                        drdc_geo_from_utm(&in, &lat, &lon, NULL, NULL));
+  in.zone = 31;
+  in.easting = M(1000000) + 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_EASTING,
+                        drdc_geo_from_utm(&in, &lat, &lon, NULL, NULL));
+  in.easting = -1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_EASTING,
+                        drdc_geo_from_utm(&in, &lat, &lon, NULL, NULL));
+  in.easting = M(500000);
+  in.northing = M(9600000) + 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NORTHING,
+                        drdc_geo_from_utm(&in, &lat, &lon, NULL, NULL));
+  in.north = false;
+  in.northing = M(900000) - 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NORTHING,
+                        drdc_geo_from_utm(&in, &lat, &lon, NULL, NULL));
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, lat);
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, lon);
+  /* the limits themselves are accepted (GeoConvert's are inclusive) */
+  in.northing = M(900000);
+  TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                        drdc_geo_from_utm(&in, &lat, &lon, NULL, NULL));
+}
+
+static void test_drdc_fx_mul_q5_58_errors(void)
+{
+  int64_t r = SENTINEL64;
+  int64_t one = INT64_C(288230376151711744);
+
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_fx_mul_q5_58(one, one, NULL));
+  /* 8 x 4 = 32 is just out of range; 8 x -4 = -32 just in */
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        drdc_fx_mul_q5_58(8 * one, 4 * one, &r));
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, r);
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_mul_q5_58(8 * one, -4 * one, &r));
+  TEST_ASSERT_EQUAL_INT64(INT64_MIN, r);
+  /* rounding: ties away from zero */
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_mul_q5_58(1, INT64_C(1) << 57, &r));
+  TEST_ASSERT_EQUAL_INT64(1, r);
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_mul_q5_58(-1, INT64_C(1) << 57, &r));
+  TEST_ASSERT_EQUAL_INT64(-1, r);
+  TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                        drdc_fx_mul_q5_58(3, (INT64_C(1) << 57) - 1, &r));
+  TEST_ASSERT_EQUAL_INT64(1, r);
+}
+
+void suite_geo_bad_input(void)
+{
+  UnitySetTestFile(__FILE__);
+  RUN_TEST(test_drdc_geo_utm_zone_errors);
+  RUN_TEST(test_drdc_geo_tm_forward_errors);
+  RUN_TEST(test_drdc_geo_to_utm_errors);
+  RUN_TEST(test_drdc_geo_from_utm_errors);
+  RUN_TEST(test_drdc_fx_mul_q5_58_errors);
+}
