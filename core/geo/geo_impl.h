@@ -17,8 +17,10 @@
 #ifndef DRDC_GEO_IMPL_H
 #define DRDC_GEO_IMPL_H
 
+#include <stdbool.h>
 #include <stdint.h>
 
+#include <drdc/fixed_arith.h>
 #include <drdc/fixed_types.h>
 #include <drdc/types.h>
 
@@ -115,5 +117,36 @@ int geo_tm_forward(int64_t phi, int64_t lam, geo_tm_t *out);
 
 /** Inverse of geo_tm_forward(): xi, eta (|eta| <= 0.34) -> phi, lam. */
 void geo_tm_reverse(int64_t xi, int64_t eta, int64_t *phi, int64_t *lam);
+
+/** cos(chi) / cos(phi) from s = sin(phi), well conditioned up to the
+ *  poles: 2 E / ((1 + s) + (1 - s) E^2) with E = exp(e atanh(e s)). */
+int64_t geo_cos_ratio(int64_t s);
+
+/** chi - phi of the conformal latitude from sin phi, cos phi. */
+int64_t geo_chi_series(int64_t sphi, int64_t cphi);
+
+/** phi - chi from sin chi, cos chi. */
+int64_t geo_phi_series(int64_t schi, int64_t cchi);
+
+/**
+ * Polar stereographic (UPS, k0 = 0.994) of phi, lam (radians) on the
+ * north or south sheet: x, y as angles of the sphere of radius
+ * 2 k0 a / c (geo_ups_metres() makes metres), convergence gamma
+ * (radians) and scale k. Returns 0 (outputs unchanged) when the point is
+ * too far on the other hemisphere (sin chi < -0.9), else 1.
+ */
+int geo_ups_forward(int64_t phi, int64_t lam, bool north, int64_t *x,
+                    int64_t *y, int64_t *gamma, int64_t *k);
+
+/** Inverse of geo_ups_forward(): x, y from the pole in metres (Q47.16,
+ *  |x|, |y| < 2 000 km) -> phi, lam (radians). */
+void geo_ups_reverse(drdc_q47_16_t x, drdc_q47_16_t y, bool north,
+                     int64_t *phi, int64_t *lam);
+
+/** UPS angle -> metres (Q47.16). */
+drdc_q47_16_t geo_ups_metres(int64_t a);
+
+/** Metres (Q47.16, |v| < 2^43) -> UPS angle. */
+int64_t geo_ups_angle(drdc_q47_16_t v);
 
 #endif /* DRDC_GEO_IMPL_H */

@@ -108,6 +108,35 @@ static void krueger(const int64_t *coef, int64_t xi, int64_t eta,
   }
 }
 
+int64_t geo_cos_ratio(int64_t s)
+{
+  int64_t w = 0;
+  int64_t sh = 0;
+  int64_t ch = 0;
+  int64_t e;
+
+  (void)drdc_fx_atanh_q5_58(geo_mul(GEO_E, s), &w);
+  w = geo_mul(GEO_E, w);
+  (void)drdc_fx_sinh_q5_58(w, &sh);
+  (void)drdc_fx_cosh_q5_58(w, &ch);
+  e = sh + ch;
+  return geo_div(2 * e, (GEO_ONE + s) + geo_mul(GEO_ONE - s, geo_mul(e, e)));
+}
+
+int64_t geo_chi_series(int64_t sphi, int64_t cphi)
+{
+  return sine_series(geo_chi_from_phi, GEO_CHI_TERMS,
+                     2 * geo_mul(sphi, cphi),
+                     geo_mul(cphi, cphi) - geo_mul(sphi, sphi));
+}
+
+int64_t geo_phi_series(int64_t schi, int64_t cchi)
+{
+  return sine_series(geo_phi_from_chi, GEO_CHI_TERMS,
+                     2 * geo_mul(schi, cchi),
+                     geo_mul(cchi, cchi) - geo_mul(schi, schi));
+}
+
 int geo_tm_forward(int64_t phi, int64_t lam, geo_tm_t *out)
 {
   int64_t sphi = 0;
@@ -127,9 +156,7 @@ int geo_tm_forward(int64_t phi, int64_t lam, geo_tm_t *out)
 
   geo_sincos(phi, &sphi, &cphi);
   geo_sincos(lam, &slam, &clam);
-  chi = phi + sine_series(geo_chi_from_phi, GEO_CHI_TERMS,
-                          2 * geo_mul(sphi, cphi),
-                          geo_mul(cphi, cphi) - geo_mul(sphi, sphi));
+  chi = phi + geo_chi_series(sphi, cphi);
   geo_sincos(chi, &schi, &cchi);
   tanh_eta = geo_mul(cchi, slam);
   if ((tanh_eta > GEO_TM_MAX_TANH_ETA) || (tanh_eta < -GEO_TM_MAX_TANH_ETA)) {
@@ -166,8 +193,8 @@ void geo_tm_reverse(int64_t xi, int64_t eta, int64_t *phi, int64_t *lam)
   int64_t sxip = 0;
   int64_t cxip = 0;
   int64_t shetap = 0;
-  int64_t s2 = 0;
-  int64_t c2 = 0;
+  int64_t schi = 0;
+  int64_t cchi = 0;
   int64_t chi;
 
   krueger(geo_beta, xi, eta, &kr);
@@ -178,6 +205,6 @@ void geo_tm_reverse(int64_t xi, int64_t eta, int64_t *phi, int64_t *lam)
   *lam = geo_atan2(shetap, cxip);
   chi = geo_atan2(sxip, geo_sqrt(geo_mul(shetap, shetap)
                                  + geo_mul(cxip, cxip)));
-  geo_sincos(2 * chi, &s2, &c2);
-  *phi = chi + sine_series(geo_phi_from_chi, GEO_CHI_TERMS, s2, c2);
+  geo_sincos(chi, &schi, &cchi);
+  *phi = chi + geo_phi_series(schi, cchi);
 }

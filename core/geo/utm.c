@@ -31,6 +31,14 @@
 #define UTM_FALSE_EASTING M(500000)
 #define UTM_FALSE_NORTHING_SOUTH M(10000000)
 
+/** GeoConvert's UPS limits (100 km slop included), metres; the same for
+ *  easting and northing. */
+#define UPS_NORTH_MIN M(1200000)
+#define UPS_NORTH_MAX M(2800000)
+#define UPS_SOUTH_MIN M(700000)
+#define UPS_SOUTH_MAX M(3300000)
+#define UPS_FALSE_ORIGIN M(2000000)
+
 /* 2^62, the divisor that takes k0 A (Q40) times an angle (Q58) to Q36. */
 #define TWO_POW_62 INT64_C(4611686018427387904)
 
@@ -164,6 +172,82 @@ drdc_status_t drdc_geo_tm_forward(drdc_nas_t lat, drdc_nas_t dlon,
   return DRDC_OK;
 }
 
+static bool ups_in_range(bool north, drdc_q47_16_t v)
+{
+  return north ? ((v >= UPS_NORTH_MIN) && (v <= UPS_NORTH_MAX))
+               : ((v >= UPS_SOUTH_MIN) && (v <= UPS_SOUTH_MAX));
+}
+
+static drdc_status_t ups_forward(drdc_nas_t lat, drdc_nas_t lon,
+                                 drdc_geo_utm_t *out,
+                                 drdc_nas_t *convergence,
+                                 drdc_q5_58_t *scale)
+{
+  bool north = (lat >= 0);
+  int64_t x = 0;
+  int64_t y = 0;
+  int64_t gamma = 0;
+  int64_t k = 0;
+  drdc_q47_16_t e;
+  drdc_q47_16_t n;
+
+  if (geo_ups_forward(geo_rad_from_nas(lat),
+                      geo_rad_from_nas(lon_normalize(lon)), north, &x, &y,
+                      &gamma, &k) == 0) {
+    return DRDC_E_RANGE;
+  }
+  e = UPS_FALSE_ORIGIN + geo_ups_metres(x);
+  n = UPS_FALSE_ORIGIN + geo_ups_metres(y);
+  if (!ups_in_range(north, e) || !ups_in_range(north, n)) {
+    return DRDC_E_RANGE;
+  }
+  out->zone = DRDC_GEO_ZONE_UPS;
+  out->north = north;
+  out->easting = e;
+  out->northing = n;
+  if (convergence != NULL) {
+    *convergence = geo_nas_from_rad(gamma);
+  }
+  if (scale != NULL) {
+    *scale = k;
+  }
+  return DRDC_OK;
+}
+
+static drdc_status_t ups_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat,
+                                 drdc_nas_t *lon, drdc_nas_t *convergence,
+                                 drdc_q5_58_t *scale)
+{
+  int64_t phi = 0;
+  int64_t lam = 0;
+  int64_t x = 0;
+  int64_t y = 0;
+  int64_t gamma = 0;
+  int64_t k = 0;
+
+  if (!ups_in_range(in->north, in->easting)) {
+    return DRDC_E_EASTING;
+  }
+  if (!ups_in_range(in->north, in->northing)) {
+    return DRDC_E_NORTHING;
+  }
+  geo_ups_reverse(in->easting - UPS_FALSE_ORIGIN,
+                  in->northing - UPS_FALSE_ORIGIN, in->north, &phi, &lam);
+  *lat = geo_nas_from_rad(phi);
+  *lon = geo_nas_from_rad(lam);
+  if ((convergence != NULL) || (scale != NULL)) {
+    /* within the UPS ranges sin chi > 0.5: never fails */
+    (void)geo_ups_forward(phi, lam, in->north, &x, &y, &gamma, &k);
+    if (convergence != NULL) {
+      *convergence = geo_nas_from_rad(gamma);
+    }
+    if (scale != NULL) {
+      *scale = k;
+    }
+  }
+  return DRDC_OK;
+}
+
 drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
                               drdc_geo_utm_t *out, drdc_nas_t *convergence,
                               drdc_q5_58_t *scale)
@@ -185,8 +269,11 @@ drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
   if (zone == DRDC_GEO_ZONE_STANDARD) {
     z = standard_zone(lat, lon);
   }
-  if ((z < DRDC_GEO_ZONE_MIN) || (z > DRDC_GEO_ZONE_MAX)) {
+  if ((z < DRDC_GEO_ZONE_UPS) || (z > DRDC_GEO_ZONE_MAX)) {
     return DRDC_E_ZONE;
+  }
+  if (z == DRDC_GEO_ZONE_UPS) {
+    return ups_forward(lat, lon, out, convergence, scale);
   }
   st = tm_forward_nas(lat, lon_normalize(lon - central_meridian(z)), &tm);
   if (st != DRDC_OK) {
@@ -230,8 +317,11 @@ drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
   if ((in == NULL) || (lat == NULL) || (lon == NULL)) {
     return DRDC_E_NULL;
   }
-  if ((in->zone < DRDC_GEO_ZONE_MIN) || (in->zone > DRDC_GEO_ZONE_MAX)) {
+  if ((in->zone < DRDC_GEO_ZONE_UPS) || (in->zone > DRDC_GEO_ZONE_MAX)) {
     return DRDC_E_ZONE;
+  }
+  if (in->zone == DRDC_GEO_ZONE_UPS) {
+    return ups_reverse(in, lat, lon, convergence, scale);
   }
   if ((in->easting < UTM_E_MIN) || (in->easting > UTM_E_MAX)) {
     return DRDC_E_EASTING;

@@ -90,18 +90,18 @@ static void test_drdc_geo_to_utm_errors(void)
                         drdc_geo_to_utm(0, 540 * NAS_DEG,
                                         DRDC_GEO_ZONE_STANDARD, &u, &g,
                                         NULL));
-  /* zone 0 and 61 */
-  TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE,
-                        drdc_geo_to_utm(0, 0, 0, &u, &g, NULL));
+  /* zone 61 */
   TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE,
                         drdc_geo_to_utm(0, 0, 61, &u, &g, NULL));
   TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE,
                         drdc_geo_to_utm(0, 0, -2, &u, &g, NULL));
-  /* standard zone is UPS */
-  TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE,
-                        drdc_geo_to_utm(84 * NAS_DEG, 0,
-                                        DRDC_GEO_ZONE_STANDARD, &u, &g,
-                                        NULL));
+  /* forced UPS (zone 0) at 80 N: "out of legal range for UPS" */
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
+                        drdc_geo_to_utm(80 * NAS_DEG, -30 * NAS_DEG,
+                                        DRDC_GEO_ZONE_UPS, &u, &g, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
+                        drdc_geo_to_utm(-10 * NAS_DEG, 0, DRDC_GEO_ZONE_UPS,
+                                        &u, &g, NULL));
   /* GeoConvert -z 31: "Latitude 0, longitude -5 out of legal range" */
   TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
                         drdc_geo_to_utm(0, -5 * NAS_DEG, 31, &u, &g, NULL));
@@ -124,7 +124,7 @@ static void test_drdc_geo_from_utm_errors(void)
                         drdc_geo_from_utm(&in, NULL, &lon, NULL, NULL));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
                         drdc_geo_from_utm(&in, &lat, NULL, NULL, NULL));
-  in.zone = 0;
+  in.zone = -1;
   TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE,
                         drdc_geo_from_utm(&in, &lat, &lon, NULL, NULL));
   in.zone = 61;
@@ -147,6 +147,26 @@ static void test_drdc_geo_from_utm_errors(void)
                         drdc_geo_from_utm(&in, &lat, &lon, NULL, NULL));
   TEST_ASSERT_EQUAL_INT64(SENTINEL64, lat);
   TEST_ASSERT_EQUAL_INT64(SENTINEL64, lon);
+  /* UPS: [1 200, 2 800] km north, [700, 3 300] km south */
+  in.zone = DRDC_GEO_ZONE_UPS;
+  in.north = true;
+  in.easting = M(1200000) - 1;
+  in.northing = M(2000000);
+  TEST_ASSERT_EQUAL_INT(DRDC_E_EASTING,
+                        drdc_geo_from_utm(&in, &lat, &lon, NULL, NULL));
+  in.easting = M(2000000);
+  in.northing = M(2800000) + 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NORTHING,
+                        drdc_geo_from_utm(&in, &lat, &lon, NULL, NULL));
+  in.north = false;
+  in.northing = M(3300000) + 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NORTHING,
+                        drdc_geo_from_utm(&in, &lat, &lon, NULL, NULL));
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, lat);
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, lon);
+  in.zone = 31;
+  in.north = false;
+  in.easting = M(500000);
   /* the limits themselves are accepted (GeoConvert's are inclusive) */
   in.northing = M(900000);
   TEST_ASSERT_EQUAL_INT(DRDC_OK,

@@ -82,7 +82,7 @@ static void check_rows(const struct geo_fwd_vector *v,
     TEST_ASSERT_EQUAL_INT(v[i].north != 0, u.north);
     keep(&w->en, dist(u.easting, v[i].easting));
     keep(&w->en, dist(u.northing, v[i].northing));
-    keep(&w->conv, dist(conv, v[i].convergence));
+    keep(&w->conv, lon_dist(conv, v[i].convergence));
     keep(&w->scale, dist(k, v[i].scale));
     in.zone = v[i].zone;
     in.north = (v[i].north != 0);
@@ -94,8 +94,12 @@ static void check_rows(const struct geo_fwd_vector *v,
                                             with_scale ? &k : NULL));
     keep(&w->latlon, dist(lat, rv[i].lat));
     keep(&w->latlon, lon_dist(lon, rv[i].lon));
-    if (with_scale) {
-      keep(&w->rev_conv, dist(conv, v[i].convergence));
+    /* in UPS the convergence is the longitude, as ill-conditioned as
+     * 1 / (distance to the pole) for the 15 um rounding of the input:
+     * the reverse longitude is checked instead */
+    if (with_scale && (v[i].zone != 0)) {
+      /* at a pole the convergence is the longitude: +-180 are one */
+      keep(&w->rev_conv, lon_dist(conv, v[i].convergence));
       keep(&w->rev_scale, dist(k, v[i].scale));
     }
   }

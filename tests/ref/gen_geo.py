@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: BSD-2-Clause
-"""Reference vectors of core/geo (UTM, transverse Mercator).
+"""Reference vectors of core/geo (UTM, UPS, transverse Mercator).
 
 Oracle: GeographicLib 2.1.2 (Debian `geographiclib-tools`, pinned in
 tools/deps.py): `GeoConvert -u -p 9` (UTM, 1e-9 m), `GeoConvert -c -p 9`
@@ -10,8 +10,8 @@ most 9 decimals, exact in nano-arcseconds; outputs are converted to exact
 integers (Q47.16 metres, nas, Q5.58 scale) rounded to nearest.
 
 Rows: 20 000 random points over every zone and both hemispheres (-80 <=
-lat < 84), every zone and band edge, the Norway and Svalbard boundaries,
-the equator, -80 and 84 degrees; 600 points forced into a neighbouring
+lat < 84) and 2 000 in the UPS caps, every zone and band edge, the Norway
+and Svalbard boundaries, the equator, -80 and 84 degrees, the poles; 600 points forced into a neighbouring
 zone; 1 000 points up to 500 km outside their zone through the plain
 projection; reverse rows on the forward results."""
 import random
@@ -83,9 +83,12 @@ def edge_points():
         pts.add((0, int(Decimal(str(lon)) * NAS_DEG)))
     pts.add((-80 * NAS_DEG, 0))
     pts.add((84 * NAS_DEG - tiny, 0))
-    return [p for p in sorted(pts)
-            if -80 * NAS_DEG <= p[0] < 84 * NAS_DEG
-            and -90 * NAS_DEG <= p[0] <= 90 * NAS_DEG]
+    # the UPS caps: their edges and the poles
+    for lat in (-90, -89, -80, 84, 89, 90):
+        for lon in (-180, -90, -45, 0, 45, 90, 135, 179.999999999):
+            for d in ((-tiny, 0, tiny) if abs(lat) != 90 else (0,)):
+                pts.add((lat * NAS_DEG + d, int(Decimal(str(lon)) * NAS_DEG)))
+    return [p for p in sorted(pts) if -90 * NAS_DEG <= p[0] <= 90 * NAS_DEG]
 
 
 def forward_rows(points, zone_args=None):
@@ -103,13 +106,14 @@ def forward_rows(points, zone_args=None):
         for (a, b), ul, cl in zip(pts, u, c):
             zn, e, n = ul.split()
             g, k = cl.split()
-            rows.append((a, b, int(zn[:-1]), 1 if zn[-1] == "n" else 0,
+            rows.append((a, b, int(zn[:-1]) if len(zn) > 1 else 0,
+                         1 if zn[-1] == "n" else 0,
                          q16(e), q16(n), nas(g), q58(k)))
     return rows
 
 
 def reverse_rows(fwd):
-    lines = ["%d%s %s %s" % (r[2], "n" if r[3] else "s",
+    lines = ["%s%s %s %s" % ("%d" % r[2] if r[2] else "", "n" if r[3] else "s",
                              "{:f}".format(Decimal(r[4]) / 65536),
                              "{:f}".format(Decimal(r[5]) / 65536))
              for r in fwd]
@@ -126,6 +130,12 @@ def generate():
     pts = [(rng.randrange(-80 * NAS_DEG, 84 * NAS_DEG, 3600),
             rng.randrange(-180 * NAS_DEG, 180 * NAS_DEG, 3600))
            for _ in range(RANDOM_POINTS)]
+    # the UPS caps: 2 000 random points beyond 84 N and 80 S
+    for _ in range(2000):
+        north = rng.random() < 0.5
+        lat = rng.randrange(84 * NAS_DEG, 90 * NAS_DEG, 3600) if north else \
+            -rng.randrange(80 * NAS_DEG + 3600, 90 * NAS_DEG, 3600)
+        pts.append((lat, rng.randrange(-180 * NAS_DEG, 180 * NAS_DEG, 3600)))
     fwd = forward_rows(pts)
     edges = forward_rows(edge_points())
     # forced neighbouring zones (GeoConvert -z)

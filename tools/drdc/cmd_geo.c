@@ -23,17 +23,16 @@ static const char usage[] =
   "Reads one position per line on standard input and writes it like\n"
   "GeographicLib's GeoConvert:\n"
   "  input   'LAT LON' in decimal degrees, or 'ZONE{n|s} EASTING NORTHING'\n"
-  "          (UTM, metres)\n"
+  "          (UTM, metres; UPS with the hemisphere alone, 'n E N')\n"
   "  -g      output 'LAT LON' in decimal degrees (PREC + 5 decimals;\n"
   "          the default)\n"
-  "  -u      output UTM 'ZONE{n|s} EASTING NORTHING' (PREC decimals of a\n"
-  "          metre; the standard zone)\n"
+  "  -u      output UTM/UPS 'ZONE{n|s} EASTING NORTHING' (PREC decimals\n"
+  "          of a metre; the standard zone)\n"
   "  -c      output the meridian convergence in degrees (PREC + 5\n"
   "          decimals) and the point scale (PREC + 7 decimals)\n"
   "  -p PREC precision, -5..9 (default 0)\n"
   "A line that cannot be converted gives 'ERROR: <reason>'; the others go\n"
-  "on and the exit status is 1 at the end. UPS (latitudes >= 84 or < -80)\n"
-  "and MGRS are not supported yet.\n";
+  "on and the exit status is 1 at the end. MGRS is not supported yet.\n";
 
 #define NAS_PER_DEG INT64_C(3600000000000)
 #define Q16_PER_M INT64_C(65536)
@@ -163,13 +162,13 @@ static const char *status_reason(drdc_status_t st)
   case DRDC_E_LONGITUDE:
     return "longitude not in [-540d, 540d)";
   case DRDC_E_ZONE:
-    return "zone not in [1, 60] (UPS is not supported)";
+    return "zone not in [0, 60]";
   case DRDC_E_EASTING:
-    return "easting not in UTM range [0km, 1000km]";
+    return "easting not in the UTM/UPS range";
   case DRDC_E_NORTHING:
-    return "northing not in UTM range";
+    return "northing not in the UTM/UPS range";
   case DRDC_E_RANGE:
-    return "point out of legal range for the UTM zone";
+    return "point out of legal range for the UTM zone or UPS";
   default:
     return drdc_status_name(st);
   }
@@ -206,14 +205,18 @@ static bool convert_line(char *line, enum mode mode, int prec)
       return false;
     }
     w1[n - 1u] = '\0';
-    z = strtol(w1, &end, 10);
-    if ((*w1 == '\0') || (*end != '\0')) {
-      printf("ERROR: illegal zone %s (UPS is not supported)\n", w1);
-      return false;
-    }
-    if ((z < 1) || (z > 60)) {
-      printf("ERROR: zone %ld not in range [1, 60]\n", z);
-      return false;
+    if (*w1 == '\0') {
+      z = 0; /* UPS: the hemisphere alone */
+    } else {
+      z = strtol(w1, &end, 10);
+      if (*end != '\0') {
+        printf("ERROR: illegal zone %s\n", w1);
+        return false;
+      }
+      if ((z < 1) || (z > 60)) {
+        printf("ERROR: zone %ld not in range [1, 60]\n", z);
+        return false;
+      }
     }
     u.zone = (int32_t)z;
     u.north = (h == 'n');
@@ -236,7 +239,8 @@ static bool convert_line(char *line, enum mode mode, int prec)
       st = drdc_geo_utm_zone(lat, lon, &z); /* range checks only */
     } else {
       st = drdc_geo_to_utm(lat, lon, DRDC_GEO_ZONE_STANDARD, &u, &conv, &k);
-      west = (u.easting < (INT64_C(500000) * Q16_PER_M));
+      west = (u.zone != 0) ? (u.easting < (INT64_C(500000) * Q16_PER_M))
+                           : (lon < 0);
     }
   }
   if (st != DRDC_OK) {
@@ -249,7 +253,11 @@ static bool convert_line(char *line, enum mode mode, int prec)
     print_fixed(lon, NAS_PER_DEG, prec + 5);
   } else if (mode == MODE_UTM) {
     /* UTM input comes back in its own zone (as GeoConvert keeps it) */
-    printf("%02d%c ", (int)u.zone, u.north ? 'n' : 's');
+    if (u.zone == DRDC_GEO_ZONE_UPS) {
+      printf("%c ", u.north ? 'n' : 's');
+    } else {
+      printf("%02d%c ", (int)u.zone, u.north ? 'n' : 's');
+    }
     print_fixed(u.easting, Q16_PER_M, prec);
     putchar(' ');
     print_fixed(u.northing, Q16_PER_M, prec);
