@@ -46,6 +46,8 @@ const char *drdc_status_name(drdc_status_t status)
     "DRDC_E_ZONE",
     "DRDC_E_EASTING",
     "DRDC_E_NORTHING",
+    "DRDC_E_BAND",
+    "DRDC_E_MGRS",
   };
   unsigned index = (unsigned)status;
 

@@ -468,6 +468,23 @@ class GeoCommand(unittest.TestCase):
         for args in (["-g"], ["-u", "-p", "3"]):
             self.assertEqual(0, self.compare(args, self.UTM[-204:]))
 
+    def test_mgrs_output(self):
+        # -p 0 (1 m) and coarser; finer cells see the 15 um of Q47.16
+        for p in ("-6", "-5", "-3", "0"):
+            self.assertEqual(0, self.compare(["-m", "-p", p], self.LINES))
+
+    def test_mgrs_input(self):
+        mgrs = geoconvert(["-m", "-p", "-2"], self.LINES)
+        mgrs += ["38S", "A", "Z", "38smb4488", "31XEA"]
+        # (-m of MGRS input re-encodes in the standard zone, GeoConvert in
+        # the input's zone: not compared)
+        for args in (["-u", "-p", "3"], ["-g", "-p", "2"]):
+            self.assertEqual(0, self.compare(args, mgrs))
+        code, out = geo(["-u"], ["38SMT", "61SMB", "38SMB448", "38SMB44"])
+        self.assertEqual(1, code)
+        self.assertEqual("38n 445000 3645000", out[3])
+        self.assertTrue(all(o.startswith("ERROR: ") for o in out[:3]))
+
     def test_errors_and_the_rest_go_on(self):
         lines = ["91 0", "10 20", "0 -541", "61n 500000 0", "31x 500000 0",
                  "31n 1000001 0", "31s 500000 899999", "abc def", "10 20 30 40"]

@@ -1,12 +1,14 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /**
  * @file
- * @brief Bad-input catalogue of core/geo and drdc_fx_mul_q5_58
+ * @brief Bad-input catalogue of core/geo (UTM, UPS, MGRS) and
+ *        drdc_fx_mul_q5_58
  *        (docs/bad-input.md): each error status of each function, with
  *        the outputs left unchanged.
  */
 #include <drdc/fixed_arith.h>
 #include <drdc/geo.h>
+#include <drdc/geo_mgrs.h>
 
 #include <stddef.h>
 
@@ -173,6 +175,67 @@ static void test_drdc_geo_from_utm_errors(void)
                         drdc_geo_from_utm(&in, &lat, &lon, NULL, NULL));
 }
 
+static void test_drdc_geo_mgrs_encode_errors(void)
+{
+  char text[DRDC_GEO_MGRS_SIZE] = "unchanged";
+
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_geo_mgrs_encode(0, 0, 5, NULL, 28u));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE,
+                        drdc_geo_mgrs_encode((90 * NAS_DEG) + 1, 0, 5, text,
+                                             sizeof text));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE,
+                        drdc_geo_mgrs_encode(0, 540 * NAS_DEG, 5, text,
+                                             sizeof text));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
+                        drdc_geo_mgrs_encode(0, 0, 12, text, sizeof text));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
+                        drdc_geo_mgrs_encode(0, 0, -2, text, sizeof text));
+  /* "31NAA6602100000" needs 16 bytes */
+  TEST_ASSERT_EQUAL_INT(DRDC_E_BUFFER,
+                        drdc_geo_mgrs_encode(0, 0, 5, text, 15u));
+  TEST_ASSERT_EQUAL_STRING("unchanged", text);
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_mgrs_encode(0, 0, 5, text, 16u));
+  TEST_ASSERT_EQUAL_STRING("31NAA6602100000", text);
+}
+
+static void test_drdc_geo_mgrs_decode_errors(void)
+{
+  drdc_geo_utm_t u = sentinel_utm();
+  int32_t prec = 77;
+
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_geo_mgrs_decode(NULL, &u, NULL, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_geo_mgrs_decode("38SMB", NULL, NULL, NULL));
+  /* zone 0 and 61 */
+  TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE,
+                        drdc_geo_mgrs_decode("00SMB", &u, &u, &prec));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE,
+                        drdc_geo_mgrs_decode("61SMB", &u, &u, &prec));
+  /* wrong letters, odd digit count, too many digits, too short */
+  TEST_ASSERT_EQUAL_INT(DRDC_E_MGRS,
+                        drdc_geo_mgrs_decode("38IMB", &u, &u, &prec));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_MGRS,
+                        drdc_geo_mgrs_decode("38SAB", &u, &u, &prec));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_MGRS,
+                        drdc_geo_mgrs_decode("38SMB448", &u, &u, &prec));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_MGRS,
+                        drdc_geo_mgrs_decode("38SMB4a", &u, &u, &prec));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_MGRS,
+                        drdc_geo_mgrs_decode("38SM", &u, &u, &prec));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_MGRS,
+                        drdc_geo_mgrs_decode("001SMB", &u, &u, &prec));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_MGRS,
+                        drdc_geo_mgrs_decode(
+                          "38SMB123456789012345678901", &u, &u, &prec));
+  /* an illegal 100 km square: MT is not in band S of zone 38 */
+  TEST_ASSERT_EQUAL_INT(DRDC_E_BAND,
+                        drdc_geo_mgrs_decode("38SMT", &u, &u, &prec));
+  assert_utm_unchanged(&u);
+  TEST_ASSERT_EQUAL_INT32(77, prec);
+}
+
 static void test_drdc_fx_mul_q5_58_errors(void)
 {
   int64_t r = SENTINEL64;
@@ -202,5 +265,7 @@ void suite_geo_bad_input(void)
   RUN_TEST(test_drdc_geo_tm_forward_errors);
   RUN_TEST(test_drdc_geo_to_utm_errors);
   RUN_TEST(test_drdc_geo_from_utm_errors);
+  RUN_TEST(test_drdc_geo_mgrs_encode_errors);
+  RUN_TEST(test_drdc_geo_mgrs_decode_errors);
   RUN_TEST(test_drdc_fx_mul_q5_58_errors);
 }

@@ -34,6 +34,7 @@ GENERATORS = [
     "gen_jaus",
     "gen_nmea",
     "gen_geo",
+    "gen_geo_mgrs",
 ]
 
 

@@ -14,25 +14,28 @@
 
 #include <drdc/fixed_arith.h>
 #include <drdc/geo.h>
+#include <drdc/geo_mgrs.h>
 
 #include "commands.h"
 
 static const char usage[] =
-  "usage: drdc geo [-g | -u | -c] [-p PREC]\n"
+  "usage: drdc geo [-g | -u | -m | -c] [-p PREC]\n"
   "\n"
   "Reads one position per line on standard input and writes it like\n"
   "GeographicLib's GeoConvert:\n"
   "  input   'LAT LON' in decimal degrees, or 'ZONE{n|s} EASTING NORTHING'\n"
-  "          (UTM, metres; UPS with the hemisphere alone, 'n E N')\n"
+  "          (UTM, metres; UPS with the hemisphere alone, 'n E N'), or\n"
+  "          MGRS (the centre of its cell)\n"
   "  -g      output 'LAT LON' in decimal degrees (PREC + 5 decimals;\n"
   "          the default)\n"
   "  -u      output UTM/UPS 'ZONE{n|s} EASTING NORTHING' (PREC decimals\n"
   "          of a metre; the standard zone)\n"
+  "  -m      output MGRS with PREC + 5 digits per coordinate (truncated)\n"
   "  -c      output the meridian convergence in degrees (PREC + 5\n"
   "          decimals) and the point scale (PREC + 7 decimals)\n"
-  "  -p PREC precision, -5..9 (default 0)\n"
+  "  -p PREC precision, -6..9 (default 0)\n"
   "A line that cannot be converted gives 'ERROR: <reason>'; the others go\n"
-  "on and the exit status is 1 at the end. MGRS is not supported yet.\n";
+  "on and the exit status is 1 at the end.\n";
 
 #define NAS_PER_DEG INT64_C(3600000000000)
 #define Q16_PER_M INT64_C(65536)
@@ -132,7 +135,7 @@ static void print_fixed(int64_t value, int64_t unit, int decimals)
   print_fixed_signed(value, unit, decimals, false);
 }
 
-enum mode { MODE_GEO, MODE_UTM, MODE_CONV };
+enum mode { MODE_GEO, MODE_UTM, MODE_CONV, MODE_MGRS };
 
 static char *next_word(char **s)
 {
@@ -167,6 +170,10 @@ static const char *status_reason(drdc_status_t st)
     return "easting not in the UTM/UPS range";
   case DRDC_E_NORTHING:
     return "northing not in the UTM/UPS range";
+  case DRDC_E_MGRS:
+    return "malformed MGRS";
+  case DRDC_E_BAND:
+    return "MGRS 100 km square not in its latitude band";
   case DRDC_E_RANGE:
     return "point out of legal range for the UTM zone or UPS";
   default:
@@ -194,7 +201,17 @@ static bool convert_line(char *line, enum mode mode, int prec)
     printf("ERROR: extra text on the line\n");
     return false;
   }
-  if (*w3 != '\0') {
+  if ((*w2 == '\0') && (*w1 != '\0')) {
+    /* MGRS: the centre of its cell, as GeoConvert reads it */
+    drdc_geo_utm_t corner;
+
+    st = drdc_geo_mgrs_decode(w1, &corner, &u, NULL);
+    if (st == DRDC_OK) {
+      st = drdc_geo_from_utm(&u, &lat, &lon, &conv, &k);
+      west = (u.zone != 0) ? (u.easting < (INT64_C(500000) * Q16_PER_M))
+                           : (lon < 0);
+    }
+  } else if (*w3 != '\0') {
     size_t n = strlen(w1);
     char h = (n > 0u) ? (char)tolower((unsigned char)w1[n - 1u]) : '\0';
     char *end = NULL;
@@ -261,6 +278,18 @@ static bool convert_line(char *line, enum mode mode, int prec)
     print_fixed(u.easting, Q16_PER_M, prec);
     putchar(' ');
     print_fixed(u.northing, Q16_PER_M, prec);
+  } else if (mode == MODE_MGRS) {
+    char text[DRDC_GEO_MGRS_SIZE];
+    int32_t mp = ((prec + 5) > DRDC_GEO_MGRS_PREC_MAX) ? DRDC_GEO_MGRS_PREC_MAX
+                                                        : (prec + 5);
+
+    st = drdc_geo_mgrs_encode(lat, lon, (mp < -1) ? -1 : mp, text,
+                              sizeof text);
+    if (st != DRDC_OK) {
+      printf("ERROR: %s\n", status_reason(st));
+      return false;
+    }
+    fputs(text, stdout);
   } else {
     /* GeoConvert's double convergence is a signed zero on the central
      * meridian and the equator: negative when exactly one of latitude
@@ -289,6 +318,8 @@ int drdc_cmd_geo(int argc, char **argv)
       mode = MODE_GEO;
     } else if (strcmp(argv[i], "-u") == 0) {
       mode = MODE_UTM;
+    } else if (strcmp(argv[i], "-m") == 0) {
+      mode = MODE_MGRS;
     } else if (strcmp(argv[i], "-c") == 0) {
       mode = MODE_CONV;
     } else if ((strcmp(argv[i], "-p") == 0) && ((i + 1) < argc)) {
@@ -299,7 +330,7 @@ int drdc_cmd_geo(int argc, char **argv)
         fprintf(stderr, "drdc geo: -p needs an integer\n");
         return 2;
       }
-      prec = (p < -5) ? -5 : ((p > 9) ? 9 : (int)p);
+      prec = (p < -6) ? -6 : ((p > 9) ? 9 : (int)p);
       i++;
     } else {
       fprintf(stderr, "drdc geo: unknown option '%s'\n%s", argv[i], usage);

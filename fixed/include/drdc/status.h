@@ -75,7 +75,12 @@ typedef enum drdc_status {
   DRDC_E_ZONE = 33,
   DRDC_E_EASTING = 34, /**< an easting outside the zone's range */
   DRDC_E_NORTHING = 35, /**< a northing outside the zone's range */
-  DRDC_STATUS_COUNT = 36 /**< number of status codes (not a status) */
+  /** a 100 km MGRS square that does not lie in its latitude band */
+  DRDC_E_BAND = 36,
+  /** malformed MGRS text: a letter outside its set, an odd or too large
+   *  digit count, missing letters */
+  DRDC_E_MGRS = 37,
+  DRDC_STATUS_COUNT = 38 /**< number of status codes (not a status) */
 } drdc_status_t;
 
 /**
