@@ -48,6 +48,7 @@ const char *drdc_status_name(drdc_status_t status)
     "DRDC_E_NORTHING",
     "DRDC_E_BAND",
     "DRDC_E_MGRS",
+    "DRDC_E_HEIGHT",
   };
   unsigned index = (unsigned)status;
 

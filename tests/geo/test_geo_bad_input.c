@@ -8,6 +8,7 @@
  */
 #include <drdc/fixed_arith.h>
 #include <drdc/geo.h>
+#include <drdc/geo_ecef.h>
 #include <drdc/geo_mgrs.h>
 
 #include <stddef.h>
@@ -236,6 +237,134 @@ static void test_drdc_geo_mgrs_decode_errors(void)
   TEST_ASSERT_EQUAL_INT32(77, prec);
 }
 
+static void test_drdc_geo_to_ecef_errors(void)
+{
+  drdc_geo_point_t p = { 0, 0, 0 };
+  drdc_vec3_q47_16_t e = { SENTINEL64, SENTINEL64, SENTINEL64 };
+
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_geo_to_ecef(NULL, &e));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_geo_to_ecef(&p, NULL));
+  p.lat = (90 * NAS_DEG) + 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE, drdc_geo_to_ecef(&p, &e));
+  p.lat = 0;
+  p.lon = 540 * NAS_DEG;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE, drdc_geo_to_ecef(&p, &e));
+  p.lon = 0;
+  p.height = DRDC_GEO_HEIGHT_MAX + 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT, drdc_geo_to_ecef(&p, &e));
+  p.height = -DRDC_GEO_HEIGHT_MAX - 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT, drdc_geo_to_ecef(&p, &e));
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, e.x);
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, e.z);
+}
+
+static void test_drdc_geo_from_ecef_errors(void)
+{
+  drdc_geo_point_t p = { SENTINEL64, SENTINEL64, SENTINEL64 };
+  drdc_vec3_q47_16_t e = { M(6378137), 0, 0 };
+
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_geo_from_ecef(NULL, &p));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_geo_from_ecef(&e, NULL));
+  /* 16 378 137 m from the centre on the equator: 10 000 km high + 1 */
+  e.x = M(16378138);
+  TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT, drdc_geo_from_ecef(&e, &p));
+  e.x = INT64_MAX;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT, drdc_geo_from_ecef(&e, &p));
+  /* the Earth's core */
+  e.x = M(1000);
+  TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT, drdc_geo_from_ecef(&e, &p));
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, p.lat);
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, p.height);
+  e.x = M(16378137);
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_from_ecef(&e, &p));
+  TEST_ASSERT_EQUAL_INT64(DRDC_GEO_HEIGHT_MAX, p.height);
+}
+
+/* the errors of drdc_geo_to_enu (ned: 0) or drdc_geo_to_ned (ned: 1) */
+static void local_errors(int ned)
+{
+  drdc_geo_point_t ref = { 0, 0, 0 };
+  drdc_geo_point_t p = { 0, 0, 0 };
+  drdc_vec3_q15_16_t v = { 77, 77, 77 };
+  drdc_status_t (*f)(const drdc_geo_point_t *, const drdc_geo_point_t *,
+                     drdc_vec3_q15_16_t *) =
+    (ned != 0) ? drdc_geo_to_ned : drdc_geo_to_enu;
+
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, f(NULL, &p, &v));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, f(&ref, NULL, &v));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, f(&ref, &p, NULL));
+  p.lat = (-90 * NAS_DEG) - 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE, f(&ref, &p, &v));
+  p.lat = 0;
+  ref.lon = -540 * NAS_DEG - 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE, f(&ref, &p, &v));
+  ref.lon = 0;
+  p.height = DRDC_GEO_HEIGHT_MAX + 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT, f(&ref, &p, &v));
+  /* 33 km up does not fit Q15.16 */
+  p.height = M(33000);
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, f(&ref, &p, &v));
+  TEST_ASSERT_EQUAL_INT32(77, v.x);
+  TEST_ASSERT_EQUAL_INT32(77, v.z);
+}
+
+static void test_drdc_geo_to_enu_errors(void)
+{
+  /* drdc_geo_to_enu: DRDC_E_NULL, DRDC_E_LATITUDE, DRDC_E_LONGITUDE,
+   * DRDC_E_HEIGHT, DRDC_E_OVERFLOW */
+  local_errors(0);
+}
+
+static void test_drdc_geo_to_ned_errors(void)
+{
+  /* drdc_geo_to_ned: DRDC_E_NULL, DRDC_E_LATITUDE, DRDC_E_LONGITUDE,
+   * DRDC_E_HEIGHT, DRDC_E_OVERFLOW */
+  local_errors(1);
+}
+
+/* the errors of drdc_geo_from_enu (ned: 0) or drdc_geo_from_ned (1) */
+static void from_local_errors(int ned)
+{
+  drdc_geo_point_t ref = { 0, 0, 0 };
+  drdc_geo_point_t p = { SENTINEL64, SENTINEL64, SENTINEL64 };
+  drdc_vec3_q15_16_t v = { 0, 0, 0 };
+  drdc_status_t (*f)(const drdc_geo_point_t *, const drdc_vec3_q15_16_t *,
+                     drdc_geo_point_t *) =
+    (ned != 0) ? drdc_geo_from_ned : drdc_geo_from_enu;
+
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, f(NULL, &v, &p));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, f(&ref, NULL, &p));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, f(&ref, &v, NULL));
+  ref.lat = (90 * NAS_DEG) + 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE, f(&ref, &v, &p));
+  ref.lat = 0;
+  ref.lon = 540 * NAS_DEG;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE, f(&ref, &v, &p));
+  ref.lon = 0;
+  ref.height = -DRDC_GEO_HEIGHT_MAX - 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT, f(&ref, &v, &p));
+  /* the point (not the ref) beyond 10 000 km: ref at the limit, 1 km up */
+  ref.height = DRDC_GEO_HEIGHT_MAX;
+  v.z = (ned != 0) ? -M(1000) : M(1000);
+  TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT, f(&ref, &v, &p));
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, p.lat);
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, p.height);
+}
+
+static void test_drdc_geo_from_enu_errors(void)
+{
+  /* drdc_geo_from_enu: DRDC_E_NULL, DRDC_E_LATITUDE, DRDC_E_LONGITUDE,
+   * DRDC_E_HEIGHT */
+  from_local_errors(0);
+}
+
+static void test_drdc_geo_from_ned_errors(void)
+{
+  /* drdc_geo_from_ned: DRDC_E_NULL, DRDC_E_LATITUDE, DRDC_E_LONGITUDE,
+   * DRDC_E_HEIGHT */
+  from_local_errors(1);
+}
+
 static void test_drdc_fx_mul_q5_58_errors(void)
 {
   int64_t r = SENTINEL64;
@@ -267,5 +396,11 @@ void suite_geo_bad_input(void)
   RUN_TEST(test_drdc_geo_from_utm_errors);
   RUN_TEST(test_drdc_geo_mgrs_encode_errors);
   RUN_TEST(test_drdc_geo_mgrs_decode_errors);
+  RUN_TEST(test_drdc_geo_to_ecef_errors);
+  RUN_TEST(test_drdc_geo_from_ecef_errors);
+  RUN_TEST(test_drdc_geo_to_enu_errors);
+  RUN_TEST(test_drdc_geo_to_ned_errors);
+  RUN_TEST(test_drdc_geo_from_enu_errors);
+  RUN_TEST(test_drdc_geo_from_ned_errors);
   RUN_TEST(test_drdc_fx_mul_q5_58_errors);
 }

@@ -35,6 +35,7 @@ GENERATORS = [
     "gen_nmea",
     "gen_geo",
     "gen_geo_mgrs",
+    "gen_geo_ecef",
 ]
 
 

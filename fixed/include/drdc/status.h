@@ -80,7 +80,9 @@ typedef enum drdc_status {
   /** malformed MGRS text: a letter outside its set, an odd or too large
    *  digit count, missing letters */
   DRDC_E_MGRS = 37,
-  DRDC_STATUS_COUNT = 38 /**< number of status codes (not a status) */
+  /** a height outside +-10 000 km (ellipsoidal) */
+  DRDC_E_HEIGHT = 38,
+  DRDC_STATUS_COUNT = 39 /**< number of status codes (not a status) */
 } drdc_status_t;
 
 /**
