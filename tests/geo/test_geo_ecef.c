@@ -5,6 +5,7 @@
  *        2 009 points forward and reverse, 1 000 local points, round trips.
  */
 #include <drdc/geo_ecef.h>
+#include <drdc/pose.h>
 
 #include <stddef.h>
 
@@ -114,9 +115,56 @@ static void test_enu_and_ned(void)
   TEST_ASSERT_LESS_OR_EQUAL_INT64(ENU_TOL, w_trip);
 }
 
+#define M(v) ((int64_t)(v) * INT64_C(65536))
+#define LOCAL_TOL 1     /* pose.h: LSB of Q15.16 */
+#define TRIP_TOL 2      /* pose.h: LSB of Q47.16 height */
+
+/* {l} at a reference facing north (q = 1) is NED; facing east (yaw 90)
+ * x is east, y south. */
+static void test_local_pose_against_cartconvert(void)
+{
+  static const drdc_quat_t facing_east = { 759250125, 0, 0, 759250125 };
+  int64_t w_local = 0;
+  int64_t w_trip = 0;
+  size_t i;
+
+  for (i = 0; i < COUNT(enu_vectors); i++) {
+    const struct enu_vector *v = &enu_vectors[i];
+    drdc_WPose_t ref = { v->lon0, v->lat0, v->h0 - M(30),
+                         { 1073741824, 0, 0, 0 } };
+    drdc_WPose_t w = { v->lon, v->lat, v->height - M(30),
+                       { 1073741824, 0, 0, 0 } };
+    drdc_lPose_t l;
+    drdc_WPose_t back;
+    int64_t d;
+
+    /* geoid separation 30 m: MSL heights 30 m below the ellipsoidal */
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_l_from_w(&ref, M(30), &w, &l));
+    d = dist(l.p.x, v->n);
+    d = (dist(l.p.y, v->e) > d) ? dist(l.p.y, v->e) : d;
+    d = (dist(l.p.z, -v->u) > d) ? dist(l.p.z, -v->u) : d;
+    ref.q.s = facing_east.s;
+    ref.q.z = facing_east.z;
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_l_from_w(&ref, M(30), &w, &l));
+    d = (dist(l.p.x, v->e) > d) ? dist(l.p.x, v->e) : d;
+    d = (dist(l.p.y, -v->n) > d) ? dist(l.p.y, -v->n) : d;
+    d = (dist(l.p.z, -v->u) > d) ? dist(l.p.z, -v->u) : d;
+    w_local = (d > w_local) ? d : w_local;
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_w_from_l(&ref, M(30), &l, &back));
+    /* the 15 um of the Q15.16 local position: up to 245 nas */
+    TEST_ASSERT_INT64_WITHIN(250, w.latitude, back.latitude);
+    TEST_ASSERT_INT64_WITHIN(250 * 50, w.longitude, back.longitude);
+    d = dist(back.height, w.height);
+    w_trip = (d > w_trip) ? d : w_trip;
+  }
+  TEST_ASSERT_LESS_OR_EQUAL_INT64(LOCAL_TOL, w_local);
+  TEST_ASSERT_LESS_OR_EQUAL_INT64(TRIP_TOL, w_trip);
+}
+
 void suite_geo_ecef(void)
 {
   UnitySetTestFile(__FILE__);
   RUN_TEST(test_ecef_forward_and_reverse);
   RUN_TEST(test_enu_and_ned);
+  RUN_TEST(test_local_pose_against_cartconvert);
 }

@@ -7,6 +7,7 @@
  *        to 500 km outside a zone, and named zone-rule cases.
  */
 #include <drdc/geo.h>
+#include <drdc/pose.h>
 
 #include <stddef.h>
 
@@ -223,6 +224,85 @@ static void test_utm_header_example(void)
                                           INT64_C(72455198422)));
 }
 
+static int64_t bam_dist(drdc_bam32_t a, drdc_bam32_t b)
+{
+  uint32_t d = a - b;
+
+  return (d > 0x80000000u) ? (int64_t)(0u - d) : (int64_t)d;
+}
+
+#define M(v) ((int64_t)(v) * INT64_C(65536))
+/* pose.h bounds, the maxima measured here */
+#define YAW_TOL 4       /* binary-angle LSB (3.4e-7 degree) */
+#define PR_TOL 3        /* pitch and roll, binary-angle LSB */
+#define POSE_ROWS 2000u /* rows of the 22 000 used (QEMU time) */
+
+static void test_grid_from_true_turns_the_yaw_by_gamma(void)
+{
+  int64_t w_yaw = 0;
+  int64_t w_pr = 0;
+  int64_t w_trip = 0;
+  size_t i;
+
+  for (i = 0; i < POSE_ROWS; i++) {
+    const struct geo_fwd_vector *v = &geo_random_vectors[i];
+    /* a different attitude per row, pitch within +-60 degrees */
+    drdc_euler_t e = { (drdc_bam32_t)(i * 2654435761u),
+                       (drdc_bam32_t)((i * 40503u) % 715827882u)
+                         - 357913941u,
+                       (drdc_bam32_t)(i * 97u * 1000003u) };
+    drdc_quat_t qt;
+    drdc_quat_t qg;
+    drdc_quat_t back;
+    drdc_euler_t eg;
+    drdc_bam32_t gamma = drdc_pose_bam_from_convergence(v->convergence);
+
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_quat_from_euler(&e, &qt));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_pose_grid_from_true(&qt, v->convergence, &qg));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_euler_from_quat(&qg, &eg));
+    w_yaw = (bam_dist(eg.yaw, e.yaw - gamma) > w_yaw)
+              ? bam_dist(eg.yaw, e.yaw - gamma) : w_yaw;
+    w_pr = (bam_dist(eg.pitch, e.pitch) > w_pr) ? bam_dist(eg.pitch, e.pitch)
+                                                : w_pr;
+    w_pr = (bam_dist(eg.roll, e.roll) > w_pr) ? bam_dist(eg.roll, e.roll)
+                                              : w_pr;
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_pose_true_from_grid(&qg, v->convergence, &back));
+    w_trip = (dist(back.s, qt.s) > w_trip) ? dist(back.s, qt.s) : w_trip;
+    w_trip = (dist(back.z, qt.z) > w_trip) ? dist(back.z, qt.z) : w_trip;
+  }
+  TEST_ASSERT_LESS_OR_EQUAL_INT64(YAW_TOL, w_yaw);
+  TEST_ASSERT_LESS_OR_EQUAL_INT64(PR_TOL, w_pr);
+  TEST_ASSERT_LESS_OR_EQUAL_INT64(4, w_trip); /* Q1.30 LSB */
+}
+
+static void test_wutm_round_trip(void)
+{
+  size_t i;
+
+  for (i = 0; i < POSE_ROWS; i += 4u) {
+    const struct geo_fwd_vector *v = &geo_random_vectors[i];
+    drdc_WPose_t w = { v->lon, v->lat, M(123),
+                       { 759250125, 0, 0, 759250125 } };
+    drdc_WUTMPose_t u;
+    drdc_WPose_t back;
+
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_pose_wutm_from_w(&w, DRDC_GEO_ZONE_STANDARD,
+                                                &u));
+    TEST_ASSERT_EQUAL_INT32(v->zone, u.utm.zone);
+    TEST_ASSERT_INT64_WITHIN(1, v->easting, u.utm.easting);
+    TEST_ASSERT_INT64_WITHIN(1, v->northing, u.utm.northing);
+    TEST_ASSERT_EQUAL_INT64(M(123), u.height);
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_w_from_wutm(&u, &back));
+    /* the 7.6 um rounding of the Q47.16 easting and northing */
+    TEST_ASSERT_INT64_WITHIN(400, w.latitude, back.latitude);
+    TEST_ASSERT_INT32_WITHIN(4, w.q.s, back.q.s);
+    TEST_ASSERT_INT32_WITHIN(4, w.q.z, back.q.z);
+  }
+}
+
 void suite_geo_utm(void)
 {
   UnitySetTestFile(__FILE__);
@@ -232,4 +312,6 @@ void suite_geo_utm(void)
   RUN_TEST(test_tm_outside_zone);
   RUN_TEST(test_utm_zone_rules);
   RUN_TEST(test_utm_header_example);
+  RUN_TEST(test_grid_from_true_turns_the_yaw_by_gamma);
+  RUN_TEST(test_wutm_round_trip);
 }
