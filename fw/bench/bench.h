@@ -33,6 +33,8 @@ void bench_inputs_init(void);
  *  case whose name is NULL. */
 extern const bench_case_t bench_cases_time[];
 extern const bench_case_t bench_cases_fixed[];
+/** core/geo cases (cases_geo.c). */
+extern const bench_case_t bench_cases_geo[];
 extern const bench_case_t bench_cases_libfixmath[];
 extern const bench_case_t bench_cases_double[];
 

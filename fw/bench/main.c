@@ -99,6 +99,7 @@ int main(void)
   time_case(&overhead);
   time_table(bench_cases_fixed);
   time_table(bench_cases_time);
+  time_table(bench_cases_geo);
   time_table(bench_cases_libfixmath);
   time_table(bench_cases_double);
   bsp_puts("BENCH-DONE\n");
