@@ -63,8 +63,10 @@ void geo_sincos(int64_t x, int64_t *s, int64_t *c)
     INT64_C(601731552),          INT64_C(-3306217),
     INT64_C(13776),              INT64_C(-45)
   };
-  /* x = k pi/2 + r, |r| <= pi/4 (plus a few LSB) */
-  int64_t k = geo_muldiv(x, 2, GEO_PI);
+  /* x = k pi/2 + r, |r| <= pi/4 (plus a few LSB): k from a product with
+   * 2/pi (no division) */
+  int64_t k = drdc_fx_rshift_round_s64(geo_mul(x, INT64_C(183493156455125077)),
+                                       58u);
   int64_t r = x - (k * GEO_HALF_PI);
   int64_t r2 = geo_mul(r, r);
   int64_t ps = sin_coef[9];
@@ -146,7 +148,8 @@ int64_t geo_atan2(int64_t y, int64_t x)
   } else {
     theta = (int64_t)seed;
   }
-  theta = geo_muldiv(theta, GEO_PI, INT64_C(2147483648));
+  /* binary angle -> radians: theta pi / 2^31 = (theta 2^27) pi / 2^58 */
+  theta = geo_mul(theta * INT64_C(134217728), GEO_PI);
   /* the remaining angle d has tan d = (y cos t - x sin t) / (x cos t +
    * y sin t); |d| < 2e-9 so atan(q) = q - q^3/3 is q to 3e-27 */
   geo_sincos(theta, &sn, &cs);
@@ -176,9 +179,10 @@ int64_t geo_sqrt(int64_t x)
   if (y == 0) {
     y = 1;
   }
-  /* Newton: each step squares the relative error (seed 2^-20 or better
-   * for x >= 2^-18, the smallest the geodesy takes) */
-  for (i = 0u; i < 3u; i++) {
+  /* Newton: each step squares the relative error; the rounded integer
+   * root is within 2^-15 relative for x >= 2^-30 (the geodesy takes
+   * x >= 0.003), so two steps reach 2^-60 */
+  for (i = 0u; i < 2u; i++) {
     y = drdc_fx_rshift_round_s64(y + geo_div(x, y), 1u);
   }
   return y;
@@ -186,7 +190,9 @@ int64_t geo_sqrt(int64_t x)
 
 int64_t geo_rad_from_nas(drdc_nas_t a)
 {
-  return geo_muldiv(a, GEO_PI, GEO_NAS_180);
+  /* a pi 2^58 / 648e12 = 1397 a + a 0.38029... (the fraction in Q5.58):
+   * no division; |a| <= 2^51 keeps 1397 a in range */
+  return (a * 1397) + geo_mul(a, INT64_C(109613060018604784));
 }
 
 drdc_nas_t geo_nas_from_rad(int64_t r)
