@@ -134,6 +134,55 @@ drdc_status_t drdc_pose_w_from_wutm(const drdc_WUTMPose_t *u,
   return DRDC_OK;
 }
 
+drdc_status_t drdc_pose_weutm_from_we(const drdc_WePose_t *w, int32_t zone,
+                                      drdc_WeUTMPose_t *out)
+{
+  drdc_geo_utm_t u;
+  drdc_nas_t gamma = 0;
+  drdc_status_t st;
+
+  if ((w == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  st = drdc_geo_to_utm(w->latitude, w->longitude, zone, &u, &gamma, NULL);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  out->utm.zone = u.zone;
+  out->utm.north = u.north;
+  out->utm.easting = u.easting;
+  out->utm.northing = u.northing;
+  out->height = w->height;
+  out->e.yaw = w->e.yaw - drdc_pose_bam_from_convergence(gamma);
+  out->e.pitch = w->e.pitch;
+  out->e.roll = w->e.roll;
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_pose_we_from_weutm(const drdc_WeUTMPose_t *u,
+                                      drdc_WePose_t *out)
+{
+  drdc_nas_t lat = 0;
+  drdc_nas_t lon = 0;
+  drdc_nas_t gamma = 0;
+  drdc_status_t st;
+
+  if ((u == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  st = drdc_geo_from_utm(&u->utm, &lat, &lon, &gamma, NULL);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  out->latitude = lat;
+  out->longitude = lon;
+  out->height = u->height;
+  out->e.yaw = u->e.yaw + drdc_pose_bam_from_convergence(gamma);
+  out->e.pitch = u->e.pitch;
+  out->e.roll = u->e.roll;
+  return DRDC_OK;
+}
+
 /* the ellipsoidal point of a pose */
 static void ellipsoidal(const drdc_WPose_t *w, drdc_q47_16_t n,
                         drdc_geo_point_t *p)

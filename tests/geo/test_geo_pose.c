@@ -155,6 +155,77 @@ static void test_drdc_pose_l_from_w_errors(void)
   TEST_ASSERT_EQUAL_INT32(77, out.p.x);
 }
 
+static void test_drdc_pose_weutm_from_we_errors(void)
+{
+  drdc_WePose_t w = { 0, 0, 0, { 0u, 0u, 0u } };
+  drdc_WeUTMPose_t u;
+
+  u.height = SENTINEL64;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_weutm_from_we(NULL, -1, &u));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_weutm_from_we(&w, -1, NULL));
+  w.latitude = (90 * NAS_DEG) + 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE,
+                        drdc_pose_weutm_from_we(&w, -1, &u));
+  w.latitude = 0;
+  w.longitude = 540 * NAS_DEG;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE,
+                        drdc_pose_weutm_from_we(&w, -1, &u));
+  w.longitude = 0;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE, drdc_pose_weutm_from_we(&w, 61, &u));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_pose_weutm_from_we(&w, 28, &u));
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, u.height);
+}
+
+static void test_drdc_pose_we_from_weutm_errors(void)
+{
+  drdc_WeUTMPose_t u = { { 31, true, M(500000), M(0) }, 0,
+                         { 0u, 0u, 0u } };
+  drdc_WePose_t w;
+
+  w.height = SENTINEL64;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_we_from_weutm(NULL, &w));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_we_from_weutm(&u, NULL));
+  u.utm.zone = 61;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE, drdc_pose_we_from_weutm(&u, &w));
+  u.utm.zone = 31;
+  u.utm.easting = M(1000000) + 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_EASTING, drdc_pose_we_from_weutm(&u, &w));
+  u.utm.easting = M(500000);
+  u.utm.northing = M(-9100000) - 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NORTHING, drdc_pose_we_from_weutm(&u, &w));
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, w.height);
+}
+
+/* {We} -> {We-UTM} -> {We} at 45 N, 1 degree east of zone 31's meridian:
+ * GeoConvert -c gives gamma 0.70714304552 degree; the yaw turns by it. */
+static void test_we_round_trip_turns_the_yaw(void)
+{
+  drdc_WePose_t w = { 4 * NAS_DEG, 45 * NAS_DEG, M(10),
+                      { 536870912u, 12345u, 4000000000u } };
+  drdc_WeUTMPose_t u;
+  drdc_WePose_t back;
+  drdc_nas_t gamma = 0;
+  drdc_geo_utm_t g;
+
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_to_utm(w.latitude, w.longitude,
+                                                 DRDC_GEO_ZONE_STANDARD, &g,
+                                                 &gamma, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                        drdc_pose_weutm_from_we(&w, DRDC_GEO_ZONE_STANDARD,
+                                                &u));
+  TEST_ASSERT_EQUAL_UINT32(w.e.yaw - drdc_pose_bam_from_convergence(gamma),
+                           u.e.yaw);
+  TEST_ASSERT_EQUAL_UINT32(12345u, u.e.pitch);
+  TEST_ASSERT_EQUAL_UINT32(4000000000u, u.e.roll);
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_we_from_weutm(&u, &back));
+  /* the convergence at the 15 um-rounded point: within 1 LSB */
+  TEST_ASSERT_UINT32_WITHIN(1u, w.e.yaw, back.e.yaw);
+  TEST_ASSERT_INT64_WITHIN(300, w.latitude, back.latitude);
+  /* 0.70714304552 degree is 8 436 545 binary-angle units */
+  TEST_ASSERT_UINT32_WITHIN(1u, 8436545u,
+                            drdc_pose_bam_from_convergence(gamma));
+}
+
 void suite_geo_pose(void)
 {
   UnitySetTestFile(__FILE__);
@@ -163,4 +234,7 @@ void suite_geo_pose(void)
   RUN_TEST(test_drdc_pose_w_from_wutm_errors);
   RUN_TEST(test_drdc_pose_w_from_l_errors);
   RUN_TEST(test_drdc_pose_l_from_w_errors);
+  RUN_TEST(test_drdc_pose_weutm_from_we_errors);
+  RUN_TEST(test_drdc_pose_we_from_weutm_errors);
+  RUN_TEST(test_we_round_trip_turns_the_yaw);
 }

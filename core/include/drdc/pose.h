@@ -151,6 +151,41 @@ drdc_status_t drdc_pose_w_from_wutm(const drdc_WUTMPose_t *u,
                                     drdc_WPose_t *out);
 
 /**
+ * {We} -> {We-UTM}: position by drdc_geo_to_utm(), yaw from grid north
+ * = yaw from true north - convergence (binary angles, modulo a turn);
+ * pitch, roll and height unchanged.
+ *
+ * @param w the global pose with Euler angles.
+ * @param zone as drdc_geo_to_utm(): DRDC_GEO_ZONE_STANDARD, UPS or 1..60.
+ * @param[out] out the grid pose.
+ * @retval DRDC_OK written.
+ * @retval DRDC_E_NULL w or out is NULL.
+ * @retval DRDC_E_LATITUDE w->latitude outside [-90, 90] degrees.
+ * @retval DRDC_E_LONGITUDE w->longitude outside [-540, 540) degrees.
+ * @retval DRDC_E_ZONE zone is not a zone code of drdc_geo_to_utm().
+ * @retval DRDC_E_RANGE the point is outside the forced zone's range.
+ *
+ * Output unchanged on error. Accuracy: the convergence is rounded to a
+ * binary angle (0.5 LSB = 4.2e-8 degree) after its 1 nas error.
+ */
+drdc_status_t drdc_pose_weutm_from_we(const drdc_WePose_t *w, int32_t zone,
+                                      drdc_WeUTMPose_t *out);
+
+/**
+ * {We-UTM} -> {We}: position by drdc_geo_from_utm(), yaw + convergence.
+ *
+ * @param u the grid pose with Euler angles.
+ * @param[out] out the global pose.
+ * @retval DRDC_OK written.
+ * @retval DRDC_E_NULL u or out is NULL.
+ * @retval DRDC_E_ZONE u->utm.zone outside 0..60.
+ * @retval DRDC_E_EASTING easting outside its zone's range.
+ * @retval DRDC_E_NORTHING northing outside its zone's range.
+ */
+drdc_status_t drdc_pose_we_from_weutm(const drdc_WeUTMPose_t *u,
+                                      drdc_WePose_t *out);
+
+/**
  * {l} -> {W}: the local frame is the body frame of the reference pose
  * ref (x forward, y right, z down); the local position is rotated by
  * ref->q into north-east-down at ref and placed on the ellipsoid, the
