@@ -79,14 +79,13 @@ static int64_t pow10_i64(int32_t n)
   return p;
 }
 
-drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
-                                   int32_t prec, char *text, size_t size)
+/* the text of a validated UTM/UPS position; lat picks the UTM band */
+static drdc_status_t format(const drdc_geo_utm_t *u, drdc_nas_t lat,
+                            int32_t prec, char *text, size_t size)
 {
   char *buf = text;
   size_t n = 0u;
   size_t need;
-  drdc_geo_utm_t u;
-  drdc_status_t st;
   int64_t x;
   int64_t y;
   int64_t ix;
@@ -94,59 +93,78 @@ drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
   int32_t d;
   bool eastp;
 
-  if (text == NULL) {
-    return DRDC_E_NULL;
-  }
-  st = drdc_geo_to_utm(lat, lon, DRDC_GEO_ZONE_STANDARD, &u, NULL, NULL);
-  if (st != DRDC_OK) {
-    return st;
-  }
   if ((prec < DRDC_GEO_MGRS_PREC_MIN) || (prec > DRDC_GEO_MGRS_PREC_MAX)) {
     return DRDC_E_RANGE;
   }
+  /* whole micrometres, truncated (the coordinates are positive) */
+  x = (u->easting * 15625) / 1024;
+  y = (u->northing * 15625) / 1024;
+  ix = x / TILE_UM;
+  iy = y / TILE_UM;
+  eastp = (ix >= UPS_POLE_INDEX);
+  /* the MGRS limits: UTM columns 1..8, rows 0..94 (north) or 10..99
+   * (south); UPS 13..26 (north) or 8..31 (south) on both axes */
+  if (u->zone != DRDC_GEO_ZONE_UPS) {
+    if ((ix < 1) || (ix > 8)) {
+      return DRDC_E_EASTING;
+    }
+    if (u->north && (iy > 94)) {
+      return DRDC_E_NORTHING;
+    }
+    if (!u->north && ((iy < 10) || (iy > 99))) {
+      return DRDC_E_NORTHING;
+    }
+  } else {
+    int64_t lo = u->north ? UPS_NORTH_FIRST : UPS_SOUTH_FIRST;
+    int64_t hi = u->north ? INT64_C(26) : INT64_C(31);
+
+    if ((ix < lo) || (ix > hi)) {
+      return DRDC_E_EASTING;
+    }
+    if ((iy < lo) || (iy > hi)) {
+      return DRDC_E_NORTHING;
+    }
+  }
   /* zone digits and band (UTM) or the UPS letter, two square letters,
    * the digits, the NUL */
-  need = ((u.zone != DRDC_GEO_ZONE_UPS) ? 3u : 1u)
+  need = ((u->zone != DRDC_GEO_ZONE_UPS) ? 3u : 1u)
          + ((prec >= 0) ? (2u + (2u * (size_t)prec)) : 0u) + 1u;
   if (size < need) {
     return DRDC_E_BUFFER;
   }
-  /* whole micrometres, truncated (the coordinates are positive) */
-  x = (u.easting * 15625) / 1024;
-  y = (u.northing * 15625) / 1024;
-  ix = x / TILE_UM;
-  iy = y / TILE_UM;
-  eastp = (ix >= UPS_POLE_INDEX);
-  if (u.zone != DRDC_GEO_ZONE_UPS) {
+  if (u->zone != DRDC_GEO_ZONE_UPS) {
     int64_t band = geo_floor_div(lat, 8 * GEO_NAS_DEG);
 
     if (band > 9) {
       band = 9;
     }
-    buf[n] = digits[u.zone / 10];
+    if (band < -10) {
+      band = -10;
+    }
+    buf[n] = digits[u->zone / 10];
     n++;
-    buf[n] = digits[u.zone % 10];
+    buf[n] = digits[u->zone % 10];
     n++;
     buf[n] = latband[band + 10];
     n++;
     if (prec >= 0) {
-      buf[n] = utmcols[(u.zone - 1) % 3][ix - 1];
+      buf[n] = utmcols[(u->zone - 1) % 3][ix - 1];
       n++;
-      buf[n] = utmrow[(iy + (((u.zone % 2) == 0) ? EVEN_ROW_SHIFT : 0))
+      buf[n] = utmrow[(iy + (((u->zone % 2) == 0) ? EVEN_ROW_SHIFT : 0))
                       % ROW_PERIOD];
       n++;
     }
   } else {
-    int32_t half = (u.north ? 2 : 0) + (eastp ? 1 : 0);
-    int64_t first = u.north ? UPS_NORTH_FIRST
-                            : UPS_SOUTH_FIRST;
+    int32_t half = (u->north ? 2 : 0) + (eastp ? 1 : 0);
+    int64_t first = u->north ? UPS_NORTH_FIRST
+                             : UPS_SOUTH_FIRST;
 
     buf[n] = upsband[half];
     n++;
     if (prec >= 0) {
       buf[n] = upscols[half][ix - (eastp ? UPS_POLE_INDEX : first)];
       n++;
-      buf[n] = upsrows[u.north ? 1 : 0][iy - first];
+      buf[n] = upsrows[u->north ? 1 : 0][iy - first];
       n++;
     }
   }
@@ -160,6 +178,42 @@ drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
   }
   buf[n] = '\0';
   return DRDC_OK;
+}
+
+drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
+                                   int32_t prec, char *text, size_t size)
+{
+  drdc_geo_utm_t u;
+  drdc_status_t st;
+
+  if (text == NULL) {
+    return DRDC_E_NULL;
+  }
+  st = drdc_geo_to_utm(lat, lon, DRDC_GEO_ZONE_STANDARD, &u, NULL, NULL);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  /* the standard zone is always inside the MGRS limits */
+  return format(&u, lat, prec, text, size);
+}
+
+drdc_status_t drdc_geo_mgrs_from_utm(const drdc_geo_utm_t *u, int32_t prec,
+                                     char *text, size_t size)
+{
+  drdc_nas_t lat = 0;
+  drdc_nas_t lon = 0;
+  drdc_status_t st;
+
+  if ((u == NULL) || (text == NULL)) {
+    return DRDC_E_NULL;
+  }
+  /* validates the zone and the UTM/UPS ranges, and gives the latitude of
+   * the band letter */
+  st = drdc_geo_from_utm(u, &lat, &lon, NULL, NULL);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  return format(u, lat, prec, text, size);
 }
 
 /* GeographicLib's placement of a UTM row letter (irow 0..19) in latitude

@@ -200,6 +200,40 @@ static void test_drdc_geo_mgrs_encode_errors(void)
   TEST_ASSERT_EQUAL_STRING("31NAA6602100000", text);
 }
 
+static void test_drdc_geo_mgrs_from_utm_errors(void)
+{
+  char text[DRDC_GEO_MGRS_SIZE] = "unchanged";
+  drdc_geo_utm_t u = { 31, true, M(99999), M(0) };
+
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_geo_mgrs_from_utm(NULL, 5, text, sizeof text));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_geo_mgrs_from_utm(&u, 5, NULL, 28u));
+  /* inside the UTM range, outside the MGRS limits */
+  TEST_ASSERT_EQUAL_INT(DRDC_E_EASTING,
+                        drdc_geo_mgrs_from_utm(&u, 5, text, sizeof text));
+  u.easting = M(1000001);
+  TEST_ASSERT_EQUAL_INT(DRDC_E_EASTING,
+                        drdc_geo_mgrs_from_utm(&u, 5, text, sizeof text));
+  u.easting = M(500000);
+  u.northing = M(9500000);
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NORTHING,
+                        drdc_geo_mgrs_from_utm(&u, 5, text, sizeof text));
+  u.zone = 61;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE,
+                        drdc_geo_mgrs_from_utm(&u, 5, text, sizeof text));
+  u.zone = 31;
+  u.northing = M(0);
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
+                        drdc_geo_mgrs_from_utm(&u, 12, text, sizeof text));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_BUFFER,
+                        drdc_geo_mgrs_from_utm(&u, 5, text, 15u));
+  TEST_ASSERT_EQUAL_STRING("unchanged", text);
+  /* zone 31 kept for a point of zone 32 */
+  u.easting = M(900000) - 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_mgrs_from_utm(&u, 0, text, 28u));
+  TEST_ASSERT_EQUAL_STRING("31NHA", text);
+}
+
 static void test_drdc_geo_mgrs_decode_errors(void)
 {
   drdc_geo_utm_t u = sentinel_utm();
@@ -395,6 +429,7 @@ void suite_geo_bad_input(void)
   RUN_TEST(test_drdc_geo_to_utm_errors);
   RUN_TEST(test_drdc_geo_from_utm_errors);
   RUN_TEST(test_drdc_geo_mgrs_encode_errors);
+  RUN_TEST(test_drdc_geo_mgrs_from_utm_errors);
   RUN_TEST(test_drdc_geo_mgrs_decode_errors);
   RUN_TEST(test_drdc_geo_to_ecef_errors);
   RUN_TEST(test_drdc_geo_from_ecef_errors);

@@ -196,6 +196,7 @@ static bool convert_line(char *line, enum mode mode, int prec)
   drdc_nas_t conv = 0;
   drdc_q5_58_t k = 0;
   bool west = false; /* the point is west of its central meridian */
+  bool grid_input = false; /* UTM/UPS or MGRS input: -m keeps its zone */
 
   if (*w4 != '\0') {
     printf("ERROR: extra text on the line\n");
@@ -206,6 +207,7 @@ static bool convert_line(char *line, enum mode mode, int prec)
     drdc_geo_utm_t corner;
 
     st = drdc_geo_mgrs_decode(w1, &corner, &u, NULL);
+    grid_input = true;
     if (st == DRDC_OK) {
       st = drdc_geo_from_utm(&u, &lat, &lon, &conv, &k);
       west = (u.zone != 0) ? (u.easting < (INT64_C(500000) * Q16_PER_M))
@@ -243,6 +245,7 @@ static bool convert_line(char *line, enum mode mode, int prec)
       return false;
     }
     st = drdc_geo_from_utm(&u, &lat, &lon, &conv, &k);
+    grid_input = true;
     west = (u.easting < (INT64_C(500000) * Q16_PER_M));
   } else {
     if ((*w2 == '\0') || !parse_decimal(w1, NAS_PER_DEG, &lat)
@@ -283,8 +286,13 @@ static bool convert_line(char *line, enum mode mode, int prec)
     int32_t mp = ((prec + 5) > DRDC_GEO_MGRS_PREC_MAX) ? DRDC_GEO_MGRS_PREC_MAX
                                                         : (prec + 5);
 
-    st = drdc_geo_mgrs_encode(lat, lon, (mp < -1) ? -1 : mp, text,
-                              sizeof text);
+    if (grid_input) {
+      st = drdc_geo_mgrs_from_utm(&u, (mp < -1) ? -1 : mp, text,
+                                  sizeof text);
+    } else {
+      st = drdc_geo_mgrs_encode(lat, lon, (mp < -1) ? -1 : mp, text,
+                                sizeof text);
+    }
     if (st != DRDC_OK) {
       printf("ERROR: %s\n", status_reason(st));
       return false;

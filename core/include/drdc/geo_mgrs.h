@@ -58,6 +58,32 @@ drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
                                    int32_t prec, char *text, size_t size);
 
 /**
+ * UTM/UPS -> MGRS in the position's own zone (a forced or neighbouring
+ * zone stays), as GeoConvert -m writes UTM input: the band letter from
+ * the latitude of drdc_geo_from_utm().
+ *
+ * @param u zone 0..60, hemisphere, easting, northing.
+ * @param prec digits per coordinate, -1..11.
+ * @param[out] text NUL-terminated MGRS, upper case.
+ * @param size bytes at text (DRDC_GEO_MGRS_SIZE always suffices).
+ * @retval DRDC_OK written.
+ * @retval DRDC_E_NULL u or text is NULL.
+ * @retval DRDC_E_ZONE u->zone outside 0..60.
+ * @retval DRDC_E_EASTING easting outside the zone's range or outside the
+ *         MGRS limits (UTM 100 000 .. 899 999 m; UPS 1 300 000 ..
+ *         2 699 999 m north, 800 000 .. 3 199 999 m south).
+ * @retval DRDC_E_NORTHING northing outside the zone's range or outside
+ *         the MGRS limits (UTM below 9 500 000 m north, 1 000 000 ..
+ *         9 999 999 m south; UPS as the easting).
+ * @retval DRDC_E_RANGE prec outside -1..11.
+ * @retval DRDC_E_BUFFER size is too small for the text; nothing written.
+ *
+ * Text unchanged on error. Exactness as drdc_geo_mgrs_encode().
+ */
+drdc_status_t drdc_geo_mgrs_from_utm(const drdc_geo_utm_t *u, int32_t prec,
+                                     char *text, size_t size);
+
+/**
  * MGRS -> UTM/UPS, as GeographicLib's MGRS::Reverse: letters in either
  * case; the 100 km square's row is placed in the latitude band (with
  * GeographicLib's allowance for the bands' overlap and the 31X/32X,
