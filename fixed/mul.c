@@ -77,3 +77,17 @@ drdc_status_t drdc_fx_mul_q47_16_sat(drdc_q47_16_t a, drdc_q47_16_t b,
 {
   return mul_q47_16(a, b, 1, out);
 }
+
+drdc_status_t drdc_fx_mul_q5_58(drdc_q5_58_t a, drdc_q5_58_t b,
+                                drdc_q5_58_t *out)
+{
+  fx_u128_t p;
+
+  if (out == NULL) {
+    return DRDC_E_NULL;
+  }
+  /* |a b| <= 2^126: adding 2^57 cannot carry out of 128 bits */
+  p = fx_add_u128(fx_mul_u64(fx_abs64(a), fx_abs64(b)), UINT64_C(1) << 57);
+  p = fx_shr_u128(p, 58u);
+  return fx_finish_s64((a < 0) != (b < 0), p.hi != 0u, p.lo, 0, out);
+}

@@ -41,6 +41,14 @@ const char *drdc_status_name(drdc_status_t status)
     "DRDC_E_MISSING_FIELD",
     "DRDC_E_NO_FIX",
     "DRDC_E_SENTENCE",
+    "DRDC_E_LATITUDE",
+    "DRDC_E_LONGITUDE",
+    "DRDC_E_ZONE",
+    "DRDC_E_EASTING",
+    "DRDC_E_NORTHING",
+    "DRDC_E_BAND",
+    "DRDC_E_MGRS",
+    "DRDC_E_HEIGHT",
   };
   unsigned index = (unsigned)status;
 

@@ -39,6 +39,9 @@ APT_PACKAGES = {
     "libclang-rt-14-dev": "1:14.0.6-12",
     # GNU units: oracle of the unit-conversion vectors (tests/ref/gen_units.py)
     "units": "2.22-2",
+    # GeoConvert, TransverseMercatorProj: oracle of the geodesy vectors
+    # (tests/ref/gen_geo.py)
+    "geographiclib-tools": "2.1.2-1",
 }
 
 # Debian source packages whose upstream tarball we unpack. The checksum is

@@ -367,5 +367,143 @@ class UnitsCommand(unittest.TestCase):
         self.assertGreaterEqual(len(r.stdout.splitlines()), 80)
 
 
+def geo(args, lines):
+    r = run("geo", *args, stdin="".join(l + "\n" for l in lines))
+    return r.returncode, r.stdout.splitlines()
+
+
+def geoconvert(args, lines):
+    r = subprocess.run(["GeoConvert"] + list(args), capture_output=True,
+                       text=True, input="".join(l + "\n" for l in lines))
+    return r.stdout.splitlines()
+
+
+def same_but_last_digit(a, b, units=1):
+    """Equal lines, or the same words with numbers that differ by at most
+    one unit of their last printed digit (our value and GeographicLib's
+    differ by up to 15 um, so a value next to a rounding tie may print
+    either way)."""
+    if a == b:
+        return True
+    wa, wb = a.split(), b.split()
+    if len(wa) != len(wb):
+        return False
+    for x, y in zip(wa, wb):
+        if x == y:
+            continue
+        if "." in x and len(x.split(".")[1]) != len(y.split(".")[1] if "." in y else ""):
+            return False
+        try:
+            ix, iy = int(x.replace(".", "")), int(y.replace(".", ""))
+        except ValueError:
+            return False
+        if abs(ix - iy) > units:
+            return False
+    return True
+
+
+class GeoCommand(unittest.TestCase):
+    """drdc geo (issue 6): GeoConvert's -g, -u, -c, -p on the same input,
+    line by line; 'ERROR: <reason>' lines where GeoConvert has errors too."""
+
+    LINES = None
+
+    @classmethod
+    def setUpClass(cls):
+        import random
+        rng = random.Random(66)
+        lines = ["%.9f %.9f" % (rng.uniform(-80, 84), rng.uniform(-180, 180))
+                 for _ in range(2000)]
+        # the UPS caps and the poles (204 lines, last)
+        ups = ["%.9f %.9f" % (rng.choice([-1, 1]) * rng.uniform(84, 90),
+                              rng.uniform(-180, 180)) for _ in range(200)]
+        ups += ["90 0", "-90 0", "84 0", "-80.000000001 10"]
+        # zone and band edges, Norway, Svalbard, the equator, -80
+        for lat in (-80, -8, 0, 8, 56, 63.999999999, 64, 72, 83.999999999):
+            for lon in (-180, -6, 0, 2.999999999, 3, 6, 9, 12, 21, 33, 42, 179.999999999):
+                lines.append("%s %s" % (lat, lon))
+        cls.LINES = lines + ups
+        cls.UTM = geoconvert(["-u", "-p", "9"], lines)
+
+    def setUp(self):
+        import shutil
+        if shutil.which("GeoConvert") is None:
+            self.skipTest("GeoConvert not installed")
+
+    def compare(self, args, lines, units=1):
+        code, out = geo(args, lines)
+        want = geoconvert(args, lines)
+        self.assertEqual(len(want), len(out))
+        exact = 0
+        for line, got, ref in zip(lines, out, want):
+            # the antimeridian: -180 and 180 are one longitude
+            got = re.sub(r"(^| )-180\.", r"\g<1>180.", got)
+            ref = re.sub(r"(^| )-180\.", r"\g<1>180.", ref)
+            self.assertTrue(same_but_last_digit(got, ref, units),
+                            "%s %s: %r != GeoConvert %r" % (" ".join(args), line, got, ref))
+            exact += (got == ref)
+        # last-digit differences only next to a rounding tie: rare at 1 m,
+        # up to 2 x 7.6 um / 0.1 mm = 15 % of the lines at -p 4
+        self.assertGreaterEqual(exact, len(lines) * 80 // 100)
+        return code
+
+    def test_geographic_to_utm(self):
+        # -p 4 (0.1 mm) is the finest: Q47.16 metres resolve 15 um
+        for p in ("0", "3", "-2", "4"):
+            self.assertEqual(0, self.compare(["-u", "-p", p], self.LINES))
+
+    def test_convergence_and_scale(self):
+        for p in ("0", "4"):
+            self.assertEqual(0, self.compare(["-c", "-p", p], self.LINES))
+
+    def test_geographic_output(self):
+        self.assertEqual(0, self.compare(["-g", "-p", "4"], self.LINES))
+        self.assertEqual(0, self.compare([], self.LINES))
+
+    def test_utm_input(self):
+        for args in (["-g", "-p", "3"], ["-u", "-p", "3"], ["-c", "-p", "2"]):
+            self.assertEqual(0, self.compare(args, self.UTM[:-204]))
+        # UPS input: near a pole the 15 um of a Q47.16 easting are a large
+        # angle of longitude (1e-7 degree 3 km from the pole), so 1e-5
+        for args in (["-g"], ["-u", "-p", "3"]):
+            self.assertEqual(0, self.compare(args, self.UTM[-204:]))
+
+    def test_mgrs_output(self):
+        # -p 0 (1 m) and coarser; finer cells see the 15 um of Q47.16
+        for p in ("-6", "-5", "-3", "0"):
+            self.assertEqual(0, self.compare(["-m", "-p", p], self.LINES))
+
+    def test_mgrs_input(self):
+        mgrs = geoconvert(["-m", "-p", "-2"], self.LINES)
+        mgrs += ["38S", "A", "Z", "38smb4488", "31XEA"]
+        for args in (["-u", "-p", "3"], ["-g", "-p", "2"], ["-m", "-p", "-2"]):
+            self.assertEqual(0, self.compare(args, mgrs))
+        # UTM/UPS input keeps its zone in MGRS output (the random lines: a
+        # UTM point exactly on a band edge takes the band of the latitude
+        # computed back, which may differ from GeographicLib's by 1 nas)
+        self.assertEqual(0, self.compare(["-m", "-p", "-3"], self.UTM[:2000]))
+        code, out = geo(["-u"], ["38SMT", "61SMB", "38SMB448", "38SMB44"])
+        self.assertEqual(1, code)
+        self.assertEqual("38n 445000 3645000", out[3])
+        self.assertTrue(all(o.startswith("ERROR: ") for o in out[:3]))
+
+    def test_errors_and_the_rest_go_on(self):
+        lines = ["91 0", "10 20", "0 -541", "61n 500000 0", "31x 500000 0",
+                 "31n 1000001 0", "31s 500000 899999", "abc def", "10 20 30 40"]
+        code, out = geo(["-u"], lines)
+        self.assertEqual(1, code)
+        self.assertEqual(len(lines), len(out))
+        for i, line in enumerate(out):
+            if i == 1:
+                self.assertEqual("34n 390399 1105579", line)
+            else:
+                self.assertTrue(line.startswith("ERROR: "), line)
+
+    def test_help_and_usage(self):
+        self.assertEqual(0, run("geo", "--help").returncode)
+        self.assertEqual(2, run("geo", "-x").returncode)
+        self.assertEqual(2, run("geo", "-p", "x").returncode)
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -35,6 +35,8 @@ void bench_inputs_init(void);
 extern const bench_case_t bench_cases_time[];
 extern const bench_case_t bench_cases_fixed[];
 extern const bench_case_t bench_cases_orient[];
+/** core/geo cases (cases_geo.c). */
+extern const bench_case_t bench_cases_geo[];
 extern const bench_case_t bench_cases_libfixmath[];
 extern const bench_case_t bench_cases_double[];
 

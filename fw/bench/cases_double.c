@@ -172,6 +172,48 @@ static double angle(uint32_t x)
   return ((double)(x % 1000000u) / 1000000.0 - 0.5) * 6.283185307179586;
 }
 
+/* The transverse Mercator of core/geo/tm.c in double: conformal latitude
+ * series, spherical TM, Krueger's 6 terms with their derivative for the
+ * convergence and scale (WGS-84, k0 = 0.9996, standard 6-degree zone). */
+static double utm_forward(double lat, double lon)
+{
+  static const double alpha[6] = {
+    8.3773182062446983e-04, 7.608527773572307e-07, 1.197645503242e-09,
+    2.4291706e-12, 5.711e-15, 1.5e-17 };
+  static const double chic[6] = {
+    -3.3565514856e-03, 4.69462275e-06, -8.1946e-09, 1.558e-11, -3.1e-14,
+    6.0e-17 };
+  const double deg = 0.017453292519943295;
+  const double e2 = 6.69437999014e-3, e = 0.0818191908426215;
+  const double k0a = 6364902.166165086;
+  double zone = floor((lon + 180.0) / 6.0);
+  double lam = (lon - ((6.0 * zone) - 177.0)) * deg;
+  double phi = lat * deg;
+  double chi = phi, xip, etap, xi, eta, p = 1.0, q = 0.0, gamma, k;
+  int j;
+
+  for (j = 0; j < 6; j++) {
+    chi += chic[j] * sin(2.0 * (j + 1) * phi);
+  }
+  xip = atan2(sin(chi), cos(chi) * cos(lam));
+  etap = atanh(cos(chi) * sin(lam));
+  xi = xip;
+  eta = etap;
+  for (j = 0; j < 6; j++) {
+    double m = 2.0 * (j + 1);
+
+    xi += alpha[j] * sin(m * xip) * cosh(m * etap);
+    eta += alpha[j] * cos(m * xip) * sinh(m * etap);
+    p += m * alpha[j] * cos(m * xip) * cosh(m * etap);
+    q += m * alpha[j] * sin(m * xip) * sinh(m * etap);
+  }
+  gamma = atan2(sin(chi) * sin(lam), cos(lam)) + atan2(q, p);
+  k = 0.99852 * sqrt(1.0 - (e2 * sin(phi) * sin(phi))) * cos(chi)
+      / cos(phi) * cosh(etap) * hypot(p, q);
+  (void)e;
+  return (k0a * eta) + (k0a * xi) + gamma + k;
+}
+
 BENCH_LOOP_DOUBLE(run_days_from_civil,
            days_from_civil(1900.0 + (double)(x % 200u), 1.0 + (double)((x >> 8) % 12u),
                            1.0 + (double)((x >> 16) % 28u)))
@@ -191,6 +233,9 @@ BENCH_LOOP_DOUBLE(run_atan2, atan2((double)(x & 0xFFFFu) - 32768.0,
                             (double)(x >> 16) - 32768.0))
 BENCH_LOOP_DOUBLE(run_sqrt, sqrt((double)(x >> 1)))
 BENCH_LOOP_DOUBLE(run_mul, (double)(int32_t)x * (double)(int32_t)(x >> 7) / 65536.0)
+BENCH_LOOP_DOUBLE(run_utm_forward,
+                  utm_forward(((double)(x & 0xFFFFu) - 32768.0) * (8.8e9 / 3.6e12),
+                              ((double)(x >> 16) - 32768.0) * (19.7e9 / 3.6e12)))
 
 const bench_case_t bench_cases_double[] = {
   { "days_from_civil", "double", "run_days_from_civil", run_days_from_civil },
@@ -206,6 +251,7 @@ const bench_case_t bench_cases_double[] = {
   { "atan2", "double", "run_atan2", run_atan2 },
   { "sqrt", "double", "run_sqrt", run_sqrt },
   { "mul_q15_16", "double", "run_mul", run_mul },
+  { "utm_forward", "double", "run_utm_forward", run_utm_forward },
   { 0, 0, 0, 0 },
 };
 #else

@@ -100,6 +100,7 @@ int main(void)
   time_table(bench_cases_fixed);
   time_table(bench_cases_orient);
   time_table(bench_cases_time);
+  time_table(bench_cases_geo);
   time_table(bench_cases_libfixmath);
   time_table(bench_cases_double);
   bsp_puts("BENCH-DONE\n");

@@ -33,6 +33,9 @@ GENERATORS = [
     "gen_units",
     "gen_jaus",
     "gen_nmea",
+    "gen_geo",
+    "gen_geo_mgrs",
+    "gen_geo_ecef",
 ]
 
 

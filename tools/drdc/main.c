@@ -28,6 +28,9 @@ static const char usage[] =
   "  units                  convert 'VALUE FROM TO' lines between units\n"
   "                         named as GNU units names them (drdc units\n"
   "                         --help)\n"
+  "  geo [-g|-u|-c] [-p PREC]\n"
+  "                         convert 'LAT LON' or 'ZONE{n|s} E N' lines\n"
+  "                         like GeoConvert (drdc geo --help)\n"
   "\n"
   "Options:\n"
   "  --help     this text\n"
@@ -51,6 +54,9 @@ int main(int argc, char **argv)
   }
   if ((argc >= 2) && (strcmp(argv[1], "units") == 0)) {
     return drdc_cmd_units(argc - 1, argv + 1);
+  }
+  if ((argc >= 2) && (strcmp(argv[1], "geo") == 0)) {
+    return drdc_cmd_geo(argc - 1, argv + 1);
   }
   if (argc < 2) {
     fputs(usage, stderr);

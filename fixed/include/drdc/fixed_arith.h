@@ -266,6 +266,21 @@ drdc_status_t drdc_fx_mul_q47_16_sat(drdc_q47_16_t a, drdc_q47_16_t b,
                                      drdc_q47_16_t *out);
 
 /**
+ * Q5.58 product: a * b / 2^58, correctly rounded (ties away from zero),
+ * 128-bit intermediate; no division (four 32 x 32 products and a shift),
+ * the workhorse of the geodesy series.
+ *
+ * @param a first factor, Q5.58.
+ * @param b second factor, Q5.58.
+ * @param[out] out the product, Q5.58; unchanged on error.
+ * @retval DRDC_OK written
+ * @retval DRDC_E_NULL `out` is NULL
+ * @retval DRDC_E_OVERFLOW the product does not fit Q5.58 (|a b| >= 32)
+ */
+drdc_status_t drdc_fx_mul_q5_58(drdc_q5_58_t a, drdc_q5_58_t b,
+                                drdc_q5_58_t *out);
+
+/**
  * Q1.30 quotient: a / b in Q1.30 (a * 2^30 / b), correctly rounded.
  *
  * @retval DRDC_OK written

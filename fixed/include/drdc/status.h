@@ -68,7 +68,21 @@ typedef enum drdc_status {
   DRDC_E_NO_FIX = 29, /**< the receiver reports no valid position fix */
   /** a message of a type or from a talker this function does not decode */
   DRDC_E_SENTENCE = 30,
-  DRDC_STATUS_COUNT = 31 /**< number of status codes (not a status) */
+  DRDC_E_LATITUDE = 31, /**< a latitude outside [-90, 90] degrees */
+  /** a longitude outside [-540, 540) degrees */
+  DRDC_E_LONGITUDE = 32,
+  /** a UTM zone outside 1..60 (or a zone code the function does not take) */
+  DRDC_E_ZONE = 33,
+  DRDC_E_EASTING = 34, /**< an easting outside the zone's range */
+  DRDC_E_NORTHING = 35, /**< a northing outside the zone's range */
+  /** a 100 km MGRS square that does not lie in its latitude band */
+  DRDC_E_BAND = 36,
+  /** malformed MGRS text: a letter outside its set, an odd or too large
+   *  digit count, missing letters */
+  DRDC_E_MGRS = 37,
+  /** a height outside +-10 000 km (ellipsoidal) */
+  DRDC_E_HEIGHT = 38,
+  DRDC_STATUS_COUNT = 39 /**< number of status codes (not a status) */
 } drdc_status_t;
 
 /**

@@ -1,0 +1,402 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @ingroup drdc_geo
+ * @brief MGRS encode (truncation) and decode (validation, the row placed
+ *        in its latitude band) over UTM/UPS.
+ *
+ * Letter sets and the row placement follow the MGRS standard as
+ * GeographicLib implements it (NGA.SIG.0012): UTM columns A-H, J-R, S-Z
+ * by zone modulo 3, rows A-V (I and O skipped) shifted by 5 in even zones;
+ * UPS columns and rows from their own sets per polar half. Coordinates
+ * are whole micrometres (Q47.16 metres times 15625 / 1024, truncated).
+ */
+#include <drdc/geo_mgrs.h>
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include <drdc/fixed_arith.h>
+
+#include "geo_impl.h"
+
+/** 100 km in micrometres. */
+#define TILE_UM INT64_C(100000000000)
+/** 100 km in Q47.16 metres. */
+#define TILE_Q16 INT64_C(6553600000)
+/** Rows of 100 km in the UTM letter cycle. */
+#define ROW_PERIOD 20
+/** Row shift of the even zones. */
+#define EVEN_ROW_SHIFT 5
+/** Rows from the equator to the southern false origin (10 000 km). */
+#define SOUTH_ROWS 100
+/** UPS: the 100 km index of the pole's easting and northing (2 000 km). */
+#define UPS_POLE_INDEX 20
+/** UPS: first 100 km index of each cap (north 1 300 km, south 800 km). */
+#define UPS_NORTH_FIRST INT64_C(13)
+#define UPS_SOUTH_FIRST INT64_C(8)
+
+static const char digits[] = "0123456789";
+static const char latband[] = "CDEFGHJKLMNPQRSTUVWX";
+static const char upsband[] = "ABYZ";
+static const char utmrow[] = "ABCDEFGHJKLMNPQRSTUV";
+static const char *const utmcols[3] = { "ABCDEFGH", "JKLMNPQR", "STUVWXYZ" };
+/* south-west (A), south-east (B), north-west (Y), north-east (Z) */
+static const char *const upscols[4] = { "JKLPQRSTUXYZ", "ABCFGHJKLPQR",
+                                        "RSTUXYZ", "ABCFGHJ" };
+static const char *const upsrows[2] = { "ABCDEFGHJKLMNPQRSTUVWXYZ",
+                                        "ABCDEFGHJKLMNP" };
+
+/* index of c in set, letters in either case; -1 when absent */
+static int32_t lookup(const char *set, char c)
+{
+  static const char upper[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZ";
+  static const char lower[] = "abcdefghijklmnopqrstuvwxyz";
+  char u = c;
+  int32_t i;
+
+  for (i = 0; lower[i] != '\0'; i++) {
+    if (lower[i] == c) {
+      u = upper[i];
+    }
+  }
+  for (i = 0; set[i] != '\0'; i++) {
+    if (set[i] == u) {
+      return i;
+    }
+  }
+  return -1;
+}
+
+static int64_t pow10_i64(int32_t n)
+{
+  int64_t p = 1;
+  int32_t i;
+
+  for (i = 0; i < n; i++) {
+    p = p * 10;
+  }
+  return p;
+}
+
+/* the text of a validated UTM/UPS position; lat picks the UTM band */
+static drdc_status_t format(const drdc_geo_utm_t *u, drdc_nas_t lat,
+                            int32_t prec, char *text, size_t size)
+{
+  char *buf = text;
+  size_t n = 0u;
+  size_t need;
+  int64_t x;
+  int64_t y;
+  int64_t ix;
+  int64_t iy;
+  int32_t d;
+  bool eastp;
+
+  if ((prec < DRDC_GEO_MGRS_PREC_MIN) || (prec > DRDC_GEO_MGRS_PREC_MAX)) {
+    return DRDC_E_RANGE;
+  }
+  /* whole micrometres, truncated (the coordinates are positive) */
+  x = (u->easting * 15625) / 1024;
+  y = (u->northing * 15625) / 1024;
+  ix = x / TILE_UM;
+  iy = y / TILE_UM;
+  eastp = (ix >= UPS_POLE_INDEX);
+  /* the MGRS limits: UTM columns 1..8, rows 0..94 (north) or 10..99
+   * (south); UPS 13..26 (north) or 8..31 (south) on both axes */
+  if (u->zone != DRDC_GEO_ZONE_UPS) {
+    if ((ix < 1) || (ix > 8)) {
+      return DRDC_E_EASTING;
+    }
+    if (u->north && (iy > 94)) {
+      return DRDC_E_NORTHING;
+    }
+    if (!u->north && ((iy < 10) || (iy > 99))) {
+      return DRDC_E_NORTHING;
+    }
+  } else {
+    int64_t lo = u->north ? UPS_NORTH_FIRST : UPS_SOUTH_FIRST;
+    int64_t hi = u->north ? INT64_C(26) : INT64_C(31);
+
+    if ((ix < lo) || (ix > hi)) {
+      return DRDC_E_EASTING;
+    }
+    if ((iy < lo) || (iy > hi)) {
+      return DRDC_E_NORTHING;
+    }
+  }
+  /* zone digits and band (UTM) or the UPS letter, two square letters,
+   * the digits, the NUL */
+  need = ((u->zone != DRDC_GEO_ZONE_UPS) ? 3u : 1u)
+         + ((prec >= 0) ? (2u + (2u * (size_t)prec)) : 0u) + 1u;
+  if (size < need) {
+    return DRDC_E_BUFFER;
+  }
+  if (u->zone != DRDC_GEO_ZONE_UPS) {
+    int64_t band = geo_floor_div(lat, 8 * GEO_NAS_DEG);
+
+    if (band > 9) {
+      band = 9;
+    }
+    if (band < -10) {
+      band = -10;
+    }
+    buf[n] = digits[u->zone / 10];
+    n++;
+    buf[n] = digits[u->zone % 10];
+    n++;
+    buf[n] = latband[band + 10];
+    n++;
+    if (prec >= 0) {
+      buf[n] = utmcols[(u->zone - 1) % 3][ix - 1];
+      n++;
+      buf[n] = utmrow[(iy + (((u->zone % 2) == 0) ? EVEN_ROW_SHIFT : 0))
+                      % ROW_PERIOD];
+      n++;
+    }
+  } else {
+    int32_t half = (u->north ? 2 : 0) + (eastp ? 1 : 0);
+    int64_t first = u->north ? UPS_NORTH_FIRST
+                             : UPS_SOUTH_FIRST;
+
+    buf[n] = upsband[half];
+    n++;
+    if (prec >= 0) {
+      buf[n] = upscols[half][ix - (eastp ? UPS_POLE_INDEX : first)];
+      n++;
+      buf[n] = upsrows[u->north ? 1 : 0][iy - first];
+      n++;
+    }
+  }
+  for (d = 0; d < prec; d++) {
+    buf[n] = digits[((x % TILE_UM) / pow10_i64(10 - d)) % 10];
+    n++;
+  }
+  for (d = 0; d < prec; d++) {
+    buf[n] = digits[((y % TILE_UM) / pow10_i64(10 - d)) % 10];
+    n++;
+  }
+  buf[n] = '\0';
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
+                                   int32_t prec, char *text, size_t size)
+{
+  drdc_geo_utm_t u;
+  drdc_status_t st;
+
+  if (text == NULL) {
+    return DRDC_E_NULL;
+  }
+  st = drdc_geo_to_utm(lat, lon, DRDC_GEO_ZONE_STANDARD, &u, NULL, NULL);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  /* the standard zone is always inside the MGRS limits */
+  return format(&u, lat, prec, text, size);
+}
+
+drdc_status_t drdc_geo_mgrs_from_utm(const drdc_geo_utm_t *u, int32_t prec,
+                                     char *text, size_t size)
+{
+  drdc_nas_t lat = 0;
+  drdc_nas_t lon = 0;
+  drdc_status_t st;
+
+  if ((u == NULL) || (text == NULL)) {
+    return DRDC_E_NULL;
+  }
+  /* validates the zone and the UTM/UPS ranges, and gives the latitude of
+   * the band letter */
+  st = drdc_geo_from_utm(u, &lat, &lon, NULL, NULL);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  return format(u, lat, prec, text, size);
+}
+
+/* GeographicLib's placement of a UTM row letter (irow 0..19) in latitude
+ * band iband (-10..9): the multiple of 20 rows nearest the band's centre,
+ * then the band's extent with its overlaps; returns SOUTH_ROWS when the
+ * square is not in the band. Rows count 100 km from the equator. */
+static int64_t utm_row(int64_t iband, int64_t icol, int64_t irow_letter)
+{
+  int64_t north = (iband >= 0) ? INT64_C(1) : INT64_C(0);
+  /* c = 100 (8 iband + 4) / 90 rows; min = floor(c - 4.3 - 0.1 north),
+   * max = floor(c + 4.4 - 0.1 north), in ninetieths (never a tie) */
+  int64_t minrow = (iband > -10)
+                     ? geo_floor_div((800 * iband) + 13 - (9 * north), 90)
+                     : -90;
+  int64_t maxrow = (iband < 9)
+                     ? geo_floor_div((800 * iband) + 796 - (9 * north), 90)
+                     : 94;
+  /* C's division truncates towards zero, as GeographicLib's does */
+  int64_t baserow = ((minrow + maxrow) / 2) - (ROW_PERIOD / 2);
+  int64_t irow = (((irow_letter - baserow) + SOUTH_ROWS) % ROW_PERIOD)
+                 + baserow;
+
+  if ((irow < minrow) || (irow > maxrow)) {
+    int64_t sband = (iband >= 0) ? iband : (-iband - 1);
+    int64_t srow = (irow >= 0) ? irow : (-irow - 1);
+    int64_t scol = (icol < 4) ? icol : (-icol + 7);
+
+    /* the squares of 31X-37X and of band X above 80 degrees */
+    if (!(((srow == 70) && (sband == 8) && (scol >= 2))
+          || ((srow == 71) && (sband == 7) && (scol <= 2))
+          || ((srow == 79) && (sband == 9) && (scol >= 1))
+          || ((srow == 80) && (sband == 8) && (scol <= 1)))) {
+      irow = SOUTH_ROWS;
+    }
+  }
+  return irow;
+}
+
+/* *dst = *src field by field (a struct copy may become a memcpy call) */
+static void copy_utm(drdc_geo_utm_t *dst, const drdc_geo_utm_t *src)
+{
+  dst->zone = src->zone;
+  dst->north = src->north;
+  dst->easting = src->easting;
+  dst->northing = src->northing;
+}
+
+/* metres (Q47.16) of v / 10^prec tiles, rounded */
+static int64_t tiles_q16(int64_t v, int64_t den)
+{
+  int64_t r = 0;
+
+  (void)drdc_fx_muldiv_s64(v, TILE_Q16, den, &r);
+  return r;
+}
+
+drdc_status_t drdc_geo_mgrs_decode(const char *text, drdc_geo_utm_t *corner,
+                                   drdc_geo_utm_t *centre, int32_t *prec)
+{
+  int32_t p = 0;
+  int32_t len = 0;
+  int32_t zone = 0;
+  int32_t iband;
+  int32_t ndig;
+  int32_t k;
+  int64_t icol;
+  int64_t irow;
+  int64_t x1;
+  int64_t y1;
+  int64_t unit;
+  bool utmp;
+  bool north;
+  drdc_geo_utm_t a;
+  drdc_geo_utm_t c;
+
+  if ((text == NULL) || (corner == NULL)) {
+    return DRDC_E_NULL;
+  }
+  while ((len <= (int32_t)DRDC_GEO_MGRS_SIZE) && (text[len] != '\0')) {
+    len++;
+  }
+  while ((p < len) && (lookup(digits, text[p]) >= 0)) {
+    if (zone <= DRDC_GEO_ZONE_MAX) {
+      zone = (zone * 10) + lookup(digits, text[p]);
+    }
+    p++;
+  }
+  /* GeographicLib checks the zone's value before its digit count */
+  if ((p > 0) && ((zone == 0) || (zone > DRDC_GEO_ZONE_MAX))) {
+    return DRDC_E_ZONE;
+  }
+  if (p > 2) {
+    return DRDC_E_MGRS;
+  }
+  if ((len - p) < 1) {
+    return DRDC_E_MGRS;
+  }
+  utmp = (zone != DRDC_GEO_ZONE_UPS);
+  iband = lookup(utmp ? latband : upsband, text[p]);
+  p++;
+  if (iband < 0) {
+    return DRDC_E_MGRS;
+  }
+  north = (iband >= (utmp ? 10 : 2));
+  a.zone = zone;
+  a.north = north;
+  if (p == len) {
+    /* the grid zone alone: GeographicLib's representative point */
+    if (utmp) {
+      a.easting = (((zone == 31) && (iband == 17)) ? 4 : 5) * TILE_Q16;
+      a.northing = (geo_floor_div((160 * (int64_t)iband) - 1511, 18)
+                    + (north ? 0 : SOUTH_ROWS)) * TILE_Q16;
+    } else {
+      a.easting = ((((iband % 2) == 1) ? 4 : -4) + UPS_POLE_INDEX)
+                  * TILE_Q16;
+      a.northing = UPS_POLE_INDEX * TILE_Q16;
+    }
+    copy_utm(corner, &a);
+    if (centre != NULL) {
+      copy_utm(centre, &a);
+    }
+    if (prec != NULL) {
+      *prec = -1;
+    }
+    return DRDC_OK;
+  }
+  if ((len - p) < 2) {
+    return DRDC_E_MGRS;
+  }
+  icol = lookup(utmp ? utmcols[(zone - 1) % 3] : upscols[iband], text[p]);
+  irow = lookup(utmp ? utmrow : upsrows[north ? 1 : 0], text[p + 1]);
+  p += 2;
+  if ((icol < 0) || (irow < 0)) {
+    return DRDC_E_MGRS;
+  }
+  ndig = len - p;
+  for (k = 0; k < ndig; k++) {
+    if (lookup(digits, text[p + k]) < 0) {
+      return DRDC_E_MGRS;
+    }
+  }
+  if (((ndig % 2) != 0) || (ndig > (2 * DRDC_GEO_MGRS_PREC_MAX))) {
+    return DRDC_E_MGRS;
+  }
+  if (utmp) {
+    if ((zone % 2) == 0) {
+      irow = (irow + ROW_PERIOD - EVEN_ROW_SHIFT) % ROW_PERIOD;
+    }
+    irow = utm_row((int64_t)iband - 10, icol, irow);
+    if (irow == SOUTH_ROWS) {
+      return DRDC_E_BAND;
+    }
+    irow = north ? irow : (irow + SOUTH_ROWS);
+    icol = icol + 1;
+  } else {
+    bool eastp = ((iband % 2) == 1);
+    int64_t first = north ? UPS_NORTH_FIRST
+                          : UPS_SOUTH_FIRST;
+
+    icol = icol + (eastp ? UPS_POLE_INDEX : first);
+    irow = irow + first;
+  }
+  ndig = ndig / 2;
+  x1 = icol;
+  y1 = irow;
+  unit = 1;
+  for (k = 0; k < ndig; k++) {
+    x1 = (x1 * 10) + lookup(digits, text[p + k]);
+    y1 = (y1 * 10) + lookup(digits, text[p + ndig + k]);
+    unit = unit * 10;
+  }
+  a.easting = tiles_q16(x1, unit);
+  a.northing = tiles_q16(y1, unit);
+  c.zone = zone;
+  c.north = north;
+  c.easting = tiles_q16((2 * x1) + 1, 2 * unit);
+  c.northing = tiles_q16((2 * y1) + 1, 2 * unit);
+  copy_utm(corner, &a);
+  if (centre != NULL) {
+    copy_utm(centre, &c);
+  }
+  if (prec != NULL) {
+    *prec = ndig;
+  }
+  return DRDC_OK;
+}

@@ -1,0 +1,279 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @ingroup drdc_geo
+ * @brief Pose conversions: true <-> grid north through the meridian
+ *        convergence, {W} <-> {W-UTM}, {l} <-> {W} through NED.
+ */
+#include <drdc/pose.h>
+
+#include <stddef.h>
+
+#include <drdc/fixed_arith.h>
+#include <drdc/fixed_trig.h>
+
+#include "geo_impl.h"
+
+/** Nano-arcseconds in a turn. */
+#define NAS_PER_TURN INT64_C(1296000000000000)
+
+drdc_bam32_t drdc_pose_bam_from_convergence(drdc_nas_t convergence)
+{
+  int64_t b = geo_muldiv(convergence, INT64_C(4294967296), NAS_PER_TURN);
+
+  /* modulo a turn: the conversion to uint64_t then uint32_t wraps */
+  return (drdc_bam32_t)(uint64_t)b;
+}
+
+/* q_z(angle) * q for an angle in nas, |angle| <= 180 degrees */
+static drdc_status_t turn_about_down(const drdc_quat_t *q, drdc_nas_t angle,
+                                     drdc_quat_t *out)
+{
+  /* half the angle as a binary angle (|half| <= 90 degrees) */
+  int64_t half = geo_muldiv(angle, INT64_C(2147483648), NAS_PER_TURN);
+  drdc_q1_30_t s = 0;
+  drdc_q1_30_t c = 0;
+  drdc_quat_t r;
+
+  drdc_fx_sincos_bam32((drdc_bam32_t)(uint64_t)half, &s, &c);
+  r.s = c;
+  r.x = 0;
+  r.y = 0;
+  r.z = s;
+  return drdc_quat_mul(&r, q, out);
+}
+
+static bool convergence_ok(drdc_nas_t convergence)
+{
+  return (convergence <= (180 * GEO_NAS_DEG))
+         && (convergence >= (-180 * GEO_NAS_DEG));
+}
+
+drdc_status_t drdc_pose_grid_from_true(const drdc_quat_t *q_true,
+                                       drdc_nas_t convergence,
+                                       drdc_quat_t *q_grid)
+{
+  if ((q_true == NULL) || (q_grid == NULL)) {
+    return DRDC_E_NULL;
+  }
+  if (!convergence_ok(convergence)) {
+    return DRDC_E_RANGE;
+  }
+  return turn_about_down(q_true, -convergence, q_grid);
+}
+
+drdc_status_t drdc_pose_true_from_grid(const drdc_quat_t *q_grid,
+                                       drdc_nas_t convergence,
+                                       drdc_quat_t *q_true)
+{
+  if ((q_grid == NULL) || (q_true == NULL)) {
+    return DRDC_E_NULL;
+  }
+  if (!convergence_ok(convergence)) {
+    return DRDC_E_RANGE;
+  }
+  return turn_about_down(q_grid, convergence, q_true);
+}
+
+drdc_status_t drdc_pose_wutm_from_w(const drdc_WPose_t *w, int32_t zone,
+                                    drdc_WUTMPose_t *out)
+{
+  drdc_geo_utm_t u;
+  drdc_nas_t gamma = 0;
+  drdc_quat_t q;
+  drdc_status_t st;
+
+  if ((w == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  st = drdc_geo_to_utm(w->latitude, w->longitude, zone, &u, &gamma, NULL);
+  if (st == DRDC_OK) {
+    st = turn_about_down(&w->q, -gamma, &q);
+  }
+  if (st != DRDC_OK) {
+    return st;
+  }
+  out->utm.zone = u.zone;
+  out->utm.north = u.north;
+  out->utm.easting = u.easting;
+  out->utm.northing = u.northing;
+  out->height = w->height;
+  out->q.s = q.s;
+  out->q.x = q.x;
+  out->q.y = q.y;
+  out->q.z = q.z;
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_pose_w_from_wutm(const drdc_WUTMPose_t *u,
+                                    drdc_WPose_t *out)
+{
+  drdc_nas_t lat = 0;
+  drdc_nas_t lon = 0;
+  drdc_nas_t gamma = 0;
+  drdc_quat_t q;
+  drdc_status_t st;
+
+  if ((u == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  st = drdc_geo_from_utm(&u->utm, &lat, &lon, &gamma, NULL);
+  if (st == DRDC_OK) {
+    st = turn_about_down(&u->q, gamma, &q);
+  }
+  if (st != DRDC_OK) {
+    return st;
+  }
+  out->latitude = lat;
+  out->longitude = lon;
+  out->height = u->height;
+  out->q.s = q.s;
+  out->q.x = q.x;
+  out->q.y = q.y;
+  out->q.z = q.z;
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_pose_weutm_from_we(const drdc_WePose_t *w, int32_t zone,
+                                      drdc_WeUTMPose_t *out)
+{
+  drdc_geo_utm_t u;
+  drdc_nas_t gamma = 0;
+  drdc_status_t st;
+
+  if ((w == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  st = drdc_geo_to_utm(w->latitude, w->longitude, zone, &u, &gamma, NULL);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  out->utm.zone = u.zone;
+  out->utm.north = u.north;
+  out->utm.easting = u.easting;
+  out->utm.northing = u.northing;
+  out->height = w->height;
+  out->e.yaw = w->e.yaw - drdc_pose_bam_from_convergence(gamma);
+  out->e.pitch = w->e.pitch;
+  out->e.roll = w->e.roll;
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_pose_we_from_weutm(const drdc_WeUTMPose_t *u,
+                                      drdc_WePose_t *out)
+{
+  drdc_nas_t lat = 0;
+  drdc_nas_t lon = 0;
+  drdc_nas_t gamma = 0;
+  drdc_status_t st;
+
+  if ((u == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  st = drdc_geo_from_utm(&u->utm, &lat, &lon, &gamma, NULL);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  out->latitude = lat;
+  out->longitude = lon;
+  out->height = u->height;
+  out->e.yaw = u->e.yaw + drdc_pose_bam_from_convergence(gamma);
+  out->e.pitch = u->e.pitch;
+  out->e.roll = u->e.roll;
+  return DRDC_OK;
+}
+
+/* the ellipsoidal point of a pose */
+static void ellipsoidal(const drdc_WPose_t *w, drdc_q47_16_t n,
+                        drdc_geo_point_t *p)
+{
+  p->lat = w->latitude;
+  p->lon = w->longitude;
+  p->height = w->height + n;
+}
+
+/* |N| up to 10 000 km keeps every sum in range */
+static bool separation_ok(drdc_q47_16_t n)
+{
+  return (n <= DRDC_GEO_HEIGHT_MAX) && (n >= -DRDC_GEO_HEIGHT_MAX);
+}
+
+drdc_status_t drdc_pose_w_from_l(const drdc_WPose_t *ref,
+                                 drdc_q47_16_t geoid_separation,
+                                 const drdc_lPose_t *l, drdc_WPose_t *out)
+{
+  drdc_geo_point_t r;
+  drdc_geo_point_t p = { 0, 0, 0 };
+  drdc_vec3_q15_16_t ned = { 0, 0, 0 };
+  drdc_quat_t q = { 0, 0, 0, 0 };
+  drdc_status_t st;
+
+  if ((ref == NULL) || (l == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  if (!separation_ok(geoid_separation)) {
+    return DRDC_E_HEIGHT;
+  }
+  ellipsoidal(ref, geoid_separation, &r);
+  st = drdc_quat_rotate_q15_16(&ref->q, &l->p, &ned);
+  if (st == DRDC_OK) {
+    st = drdc_geo_from_ned(&r, &ned, &p);
+  }
+  if (st == DRDC_OK) {
+    st = drdc_quat_compose(&ref->q, &l->q, &q);
+  }
+  if (st != DRDC_OK) {
+    return st;
+  }
+  out->latitude = p.lat;
+  out->longitude = p.lon;
+  out->height = p.height - geoid_separation;
+  out->q.s = q.s;
+  out->q.x = q.x;
+  out->q.y = q.y;
+  out->q.z = q.z;
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_pose_l_from_w(const drdc_WPose_t *ref,
+                                 drdc_q47_16_t geoid_separation,
+                                 const drdc_WPose_t *w, drdc_lPose_t *out)
+{
+  drdc_geo_point_t r;
+  drdc_geo_point_t p;
+  drdc_vec3_q15_16_t ned = { 0, 0, 0 };
+  drdc_vec3_q15_16_t v = { 0, 0, 0 };
+  drdc_quat_t inv = { 0, 0, 0, 0 };
+  drdc_quat_t q = { 0, 0, 0, 0 };
+  drdc_status_t st;
+
+  if ((ref == NULL) || (w == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  if (!separation_ok(geoid_separation)) {
+    return DRDC_E_HEIGHT;
+  }
+  ellipsoidal(ref, geoid_separation, &r);
+  ellipsoidal(w, geoid_separation, &p);
+  st = drdc_geo_to_ned(&r, &p, &ned);
+  if (st == DRDC_OK) {
+    st = drdc_quat_conj(&ref->q, &inv);
+  }
+  if (st == DRDC_OK) {
+    st = drdc_quat_rotate_q15_16(&inv, &ned, &v);
+  }
+  if (st == DRDC_OK) {
+    st = drdc_quat_compose(&inv, &w->q, &q);
+  }
+  if (st != DRDC_OK) {
+    return st;
+  }
+  out->p.x = v.x;
+  out->p.y = v.y;
+  out->p.z = v.z;
+  out->q.s = q.s;
+  out->q.x = q.x;
+  out->q.y = q.y;
+  out->q.z = q.z;
+  return DRDC_OK;
+}

@@ -1,0 +1,97 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @ingroup drdc_geo
+ * @brief Universal Polar Stereographic on WGS-84 (k0 = 0.994, false
+ *        easting and northing 2 000 000 m), through the conformal
+ *        latitude of tm.c.
+ *
+ * The polar distance is rho = (2 k0 a / c) tan(pi/4 - chi/2) with
+ * tan(pi/4 - chi/2) = cos chi / (1 + sin chi) and
+ * c = sqrt(1 - e^2) ((1 + e) / (1 - e))^(e/2); the scale is
+ * (2 k0 / c) (cos chi / cos phi) sqrt(1 - e^2 sin^2 phi) / (1 + sin chi),
+ * k0 at the pole. The inverse takes chi = atan2(1 - t^2, 2 t) from
+ * t = rho c / (2 k0 a), then phi from chi by its series.
+ */
+#include "geo_impl.h"
+
+#include <drdc/fixed_sqrt.h>
+
+/** 2 k0 a / c in metres, Q24.39. */
+#define UPS_K_Q39 INT64_C(6947439316371376541)
+/** 2 k0 / c. */
+#define UPS_2K0_OVER_C INT64_C(571085109068951680)
+/** 2^61: takes (Q5.58 times Q24.39) to Q36. */
+#define TWO_POW_61 INT64_C(2305843009213693952)
+/** sin chi below which the point is beyond the projection's use (t > 4.4;
+ *  the UPS ranges end near chi = 65 degrees). */
+#define UPS_MIN_SIN_CHI (-GEO_ONE + (GEO_ONE / 10))
+
+int geo_ups_forward(int64_t phi, int64_t lam, bool north, int64_t *x,
+                    int64_t *y, int64_t *gamma, int64_t *k)
+{
+  int64_t p = north ? phi : -phi;
+  int64_t sphi = 0;
+  int64_t cphi = 0;
+  int64_t schi = 0;
+  int64_t cchi = 0;
+  int64_t slam = 0;
+  int64_t clam = 0;
+  int64_t chi;
+  int64_t t;
+  int64_t ratio;
+  int64_t kk;
+
+  geo_sincos(p, &sphi, &cphi);
+  chi = p + geo_chi_series(sphi, cphi);
+  geo_sincos(chi, &schi, &cchi);
+  if (schi < UPS_MIN_SIN_CHI) {
+    return 0;
+  }
+  geo_sincos(lam, &slam, &clam);
+  t = geo_div(cchi, GEO_ONE + schi);
+  *x = geo_mul(t, slam);
+  *y = north ? -geo_mul(t, clam) : geo_mul(t, clam);
+  *gamma = north ? lam : -lam;
+  ratio = geo_cos_ratio(sphi);
+  kk = geo_sqrt(GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi)));
+  kk = geo_div(geo_mul(geo_mul(UPS_2K0_OVER_C, ratio), kk), GEO_ONE + schi);
+  *k = kk;
+  return 1;
+}
+
+drdc_q47_16_t geo_ups_metres(int64_t a)
+{
+  return drdc_fx_rshift_round_s64(geo_muldiv(a, UPS_K_Q39, TWO_POW_61),
+                                  20u);
+}
+
+int64_t geo_ups_angle(drdc_q47_16_t v)
+{
+  return geo_muldiv(v * INT64_C(1048576), TWO_POW_61, UPS_K_Q39);
+}
+
+void geo_ups_reverse(drdc_q47_16_t x, drdc_q47_16_t y, bool north,
+                     int64_t *phi, int64_t *lam)
+{
+  /* the polar distance (hypot of the metres in Q36) and the longitude
+   * straight from the exact metres: next to the pole a Q5.58 angle would
+   * keep too few bits, and a Q47.16 hypot would cost 7.6 um */
+  int64_t t = geo_muldiv((int64_t)drdc_fx_hypot_s64(x * INT64_C(1048576),
+                                                     y * INT64_C(1048576)),
+                         TWO_POW_61, UPS_K_Q39);
+  int64_t chi = geo_atan2(GEO_ONE - geo_mul(t, t), 2 * t);
+  int64_t sc = 0;
+  int64_t cc = 0;
+  int64_t p;
+
+  geo_sincos(chi, &sc, &cc);
+  p = chi + geo_phi_series(sc, cc);
+  *phi = north ? p : -p;
+  if ((x == 0) && (y == 0)) {
+    /* GeographicLib's atan2(+0, -0) at the north pole */
+    *lam = north ? GEO_PI : 0;
+  } else {
+    *lam = geo_atan2(x, north ? -y : y);
+  }
+}

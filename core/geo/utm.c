@@ -1,0 +1,353 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @ingroup drdc_geo
+ * @brief UTM zone rules and geographic <-> UTM on the transverse Mercator
+ *        of tm.c (validate in nas, convert in Q5.58).
+ */
+#include <drdc/geo.h>
+
+#include <stddef.h>
+
+#include <drdc/fixed_arith.h>
+
+#include "geo_impl.h"
+
+/* Metres in Q47.16. */
+#define M(v) ((int64_t)(v) * INT64_C(65536))
+
+/** Latitude limits of the UTM zones (UPS beyond): [-80, 84) degrees. */
+#define UTM_LAT_MIN (INT64_C(-80) * GEO_NAS_DEG)
+#define UTM_LAT_MAX (INT64_C(84) * GEO_NAS_DEG)
+
+/** GeoConvert's UTM coordinate limits (UTMUPS::CheckCoords, including its
+ *  100 km slop), metres. */
+#define UTM_E_MIN M(0)
+#define UTM_E_MAX M(1000000)
+#define UTM_N_NORTH_MIN M(-9100000)
+#define UTM_N_NORTH_MAX M(9600000)
+#define UTM_N_SOUTH_MIN M(900000)
+#define UTM_N_SOUTH_MAX M(19600000)
+#define UTM_FALSE_EASTING M(500000)
+#define UTM_FALSE_NORTHING_SOUTH M(10000000)
+
+/** GeoConvert's UPS limits (100 km slop included), metres; the same for
+ *  easting and northing. */
+#define UPS_NORTH_MIN M(1200000)
+#define UPS_NORTH_MAX M(2800000)
+#define UPS_SOUTH_MIN M(700000)
+#define UPS_SOUTH_MAX M(3300000)
+#define UPS_FALSE_ORIGIN M(2000000)
+
+/* 2^62, the divisor that takes k0 A (Q40) times an angle (Q58) to Q36. */
+#define TWO_POW_62 INT64_C(4611686018427387904)
+
+static drdc_status_t check_lat_lon(drdc_nas_t lat, drdc_nas_t lon)
+{
+  if ((lat > (90 * GEO_NAS_DEG)) || (lat < (-90 * GEO_NAS_DEG))) {
+    return DRDC_E_LATITUDE;
+  }
+  if ((lon >= (540 * GEO_NAS_DEG)) || (lon < (-540 * GEO_NAS_DEG))) {
+    return DRDC_E_LONGITUDE;
+  }
+  return DRDC_OK;
+}
+
+/* lon reduced to [-180, 180) degrees */
+static drdc_nas_t lon_normalize(drdc_nas_t lon)
+{
+  drdc_nas_t turn = 360 * GEO_NAS_DEG;
+  drdc_nas_t r = (lon + (180 * GEO_NAS_DEG)) % turn;
+
+  if (r < 0) {
+    r = r + turn;
+  }
+  return r - (180 * GEO_NAS_DEG);
+}
+
+/* standard zone of a validated point (0: UPS) */
+static int32_t standard_zone(drdc_nas_t lat, drdc_nas_t lon)
+{
+  int64_t ilon;
+  int64_t band;
+  int64_t zone;
+
+  if ((lat >= UTM_LAT_MAX) || (lat < UTM_LAT_MIN)) {
+    return 0;
+  }
+  ilon = geo_floor_div(lon_normalize(lon), GEO_NAS_DEG);
+  zone = (ilon + 186) / 6;
+  band = geo_floor_div(lat, 8 * GEO_NAS_DEG);
+  if (band > 9) {
+    band = 9;
+  }
+  if ((band == 7) && (zone == 31) && (ilon >= 3)) {
+    zone = 32; /* Norway: 32V reaches 3 degrees east */
+  } else if ((band == 9) && (ilon >= 0) && (ilon < 42)) {
+    zone = (2 * ((ilon + 183) / 12)) + 1; /* Svalbard: 31X 33X 35X 37X */
+  } else {
+    /* the regular 6-degree zone */
+  }
+  return (int32_t)zone;
+}
+
+drdc_status_t drdc_geo_utm_zone(drdc_nas_t lat, drdc_nas_t lon,
+                                int32_t *zone)
+{
+  drdc_status_t st;
+
+  if (zone == NULL) {
+    return DRDC_E_NULL;
+  }
+  st = check_lat_lon(lat, lon);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  *zone = standard_zone(lat, lon);
+  return DRDC_OK;
+}
+
+/* central meridian of a zone, nas */
+static drdc_nas_t central_meridian(int32_t zone)
+{
+  return ((6 * (int64_t)zone) - 183) * GEO_NAS_DEG;
+}
+
+/* an angle on the sphere of radius k0 A (Q5.58) -> metres (Q47.16) */
+static drdc_q47_16_t metres_from_angle(int64_t a)
+{
+  return drdc_fx_rshift_round_s64(geo_muldiv(a, GEO_K0A_Q40, TWO_POW_62),
+                                  20u);
+}
+
+/* metres (Q47.16, |v| < 2^43) -> angle on the sphere of radius k0 A */
+static int64_t angle_from_metres(drdc_q47_16_t v)
+{
+  return geo_muldiv(v * INT64_C(1048576), TWO_POW_62, GEO_K0A_Q40);
+}
+
+/* forward of validated lat and dlon (|dlon| <= 180 degrees) */
+static drdc_status_t tm_forward_nas(drdc_nas_t lat, drdc_nas_t dlon,
+                                    geo_tm_t *tm)
+{
+  if ((dlon > (90 * GEO_NAS_DEG)) || (dlon < (-90 * GEO_NAS_DEG))) {
+    return DRDC_E_RANGE;
+  }
+  if (geo_tm_forward(geo_rad_from_nas(lat), geo_rad_from_nas(dlon), tm)
+      == 0) {
+    return DRDC_E_RANGE;
+  }
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_geo_tm_forward(drdc_nas_t lat, drdc_nas_t dlon,
+                                  drdc_q47_16_t *x, drdc_q47_16_t *y,
+                                  drdc_nas_t *convergence,
+                                  drdc_q5_58_t *scale)
+{
+  geo_tm_t tm;
+  drdc_status_t st;
+
+  if ((x == NULL) || (y == NULL)) {
+    return DRDC_E_NULL;
+  }
+  if ((lat > (90 * GEO_NAS_DEG)) || (lat < (-90 * GEO_NAS_DEG))) {
+    return DRDC_E_LATITUDE;
+  }
+  if ((dlon > (90 * GEO_NAS_DEG)) || (dlon < (-90 * GEO_NAS_DEG))) {
+    return DRDC_E_LONGITUDE;
+  }
+  st = tm_forward_nas(lat, dlon, &tm);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  *x = metres_from_angle(tm.eta);
+  *y = metres_from_angle(tm.xi);
+  if (convergence != NULL) {
+    *convergence = geo_nas_from_rad(tm.gamma);
+  }
+  if (scale != NULL) {
+    *scale = tm.k;
+  }
+  return DRDC_OK;
+}
+
+static bool ups_in_range(bool north, drdc_q47_16_t v)
+{
+  return north ? ((v >= UPS_NORTH_MIN) && (v <= UPS_NORTH_MAX))
+               : ((v >= UPS_SOUTH_MIN) && (v <= UPS_SOUTH_MAX));
+}
+
+static drdc_status_t ups_forward(drdc_nas_t lat, drdc_nas_t lon,
+                                 drdc_geo_utm_t *out,
+                                 drdc_nas_t *convergence,
+                                 drdc_q5_58_t *scale)
+{
+  bool north = (lat >= 0);
+  int64_t x = 0;
+  int64_t y = 0;
+  int64_t gamma = 0;
+  int64_t k = 0;
+  drdc_q47_16_t e;
+  drdc_q47_16_t n;
+
+  if (geo_ups_forward(geo_rad_from_nas(lat),
+                      geo_rad_from_nas(lon_normalize(lon)), north, &x, &y,
+                      &gamma, &k) == 0) {
+    return DRDC_E_RANGE;
+  }
+  e = UPS_FALSE_ORIGIN + geo_ups_metres(x);
+  n = UPS_FALSE_ORIGIN + geo_ups_metres(y);
+  if (!ups_in_range(north, e) || !ups_in_range(north, n)) {
+    return DRDC_E_RANGE;
+  }
+  out->zone = DRDC_GEO_ZONE_UPS;
+  out->north = north;
+  out->easting = e;
+  out->northing = n;
+  if (convergence != NULL) {
+    *convergence = geo_nas_from_rad(gamma);
+  }
+  if (scale != NULL) {
+    *scale = k;
+  }
+  return DRDC_OK;
+}
+
+static drdc_status_t ups_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat,
+                                 drdc_nas_t *lon, drdc_nas_t *convergence,
+                                 drdc_q5_58_t *scale)
+{
+  int64_t phi = 0;
+  int64_t lam = 0;
+  int64_t x = 0;
+  int64_t y = 0;
+  int64_t gamma = 0;
+  int64_t k = 0;
+
+  if (!ups_in_range(in->north, in->easting)) {
+    return DRDC_E_EASTING;
+  }
+  if (!ups_in_range(in->north, in->northing)) {
+    return DRDC_E_NORTHING;
+  }
+  geo_ups_reverse(in->easting - UPS_FALSE_ORIGIN,
+                  in->northing - UPS_FALSE_ORIGIN, in->north, &phi, &lam);
+  *lat = geo_nas_from_rad(phi);
+  *lon = geo_nas_from_rad(lam);
+  if ((convergence != NULL) || (scale != NULL)) {
+    /* within the UPS ranges sin chi > 0.5: never fails */
+    (void)geo_ups_forward(phi, lam, in->north, &x, &y, &gamma, &k);
+    if (convergence != NULL) {
+      *convergence = geo_nas_from_rad(gamma);
+    }
+    if (scale != NULL) {
+      *scale = k;
+    }
+  }
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
+                              drdc_geo_utm_t *out, drdc_nas_t *convergence,
+                              drdc_q5_58_t *scale)
+{
+  drdc_status_t st;
+  int32_t z = zone;
+  bool north = (lat >= 0);
+  geo_tm_t tm;
+  drdc_q47_16_t e;
+  drdc_q47_16_t n;
+
+  if (out == NULL) {
+    return DRDC_E_NULL;
+  }
+  st = check_lat_lon(lat, lon);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  if (zone == DRDC_GEO_ZONE_STANDARD) {
+    z = standard_zone(lat, lon);
+  }
+  if ((z < DRDC_GEO_ZONE_UPS) || (z > DRDC_GEO_ZONE_MAX)) {
+    return DRDC_E_ZONE;
+  }
+  if (z == DRDC_GEO_ZONE_UPS) {
+    return ups_forward(lat, lon, out, convergence, scale);
+  }
+  st = tm_forward_nas(lat, lon_normalize(lon - central_meridian(z)), &tm);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  e = UTM_FALSE_EASTING + metres_from_angle(tm.eta);
+  n = metres_from_angle(tm.xi);
+  if (!north) {
+    n = n + UTM_FALSE_NORTHING_SOUTH;
+  }
+  if ((e < UTM_E_MIN) || (e > UTM_E_MAX)) {
+    return DRDC_E_RANGE;
+  }
+  if (north ? ((n < UTM_N_NORTH_MIN) || (n > UTM_N_NORTH_MAX))
+            : ((n < UTM_N_SOUTH_MIN) || (n > UTM_N_SOUTH_MAX))) {
+    return DRDC_E_RANGE;
+  }
+  out->zone = z;
+  out->north = north;
+  out->easting = e;
+  out->northing = n;
+  if (convergence != NULL) {
+    *convergence = geo_nas_from_rad(tm.gamma);
+  }
+  if (scale != NULL) {
+    *scale = tm.k;
+  }
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
+                                drdc_nas_t *lon, drdc_nas_t *convergence,
+                                drdc_q5_58_t *scale)
+{
+  drdc_q47_16_t y;
+  int64_t phi = 0;
+  int64_t lam = 0;
+  drdc_nas_t dlon;
+  geo_tm_t tm;
+
+  if ((in == NULL) || (lat == NULL) || (lon == NULL)) {
+    return DRDC_E_NULL;
+  }
+  if ((in->zone < DRDC_GEO_ZONE_UPS) || (in->zone > DRDC_GEO_ZONE_MAX)) {
+    return DRDC_E_ZONE;
+  }
+  if (in->zone == DRDC_GEO_ZONE_UPS) {
+    return ups_reverse(in, lat, lon, convergence, scale);
+  }
+  if ((in->easting < UTM_E_MIN) || (in->easting > UTM_E_MAX)) {
+    return DRDC_E_EASTING;
+  }
+  if (in->north ? ((in->northing < UTM_N_NORTH_MIN)
+                   || (in->northing > UTM_N_NORTH_MAX))
+                : ((in->northing < UTM_N_SOUTH_MIN)
+                   || (in->northing > UTM_N_SOUTH_MAX))) {
+    return DRDC_E_NORTHING;
+  }
+  y = in->north ? in->northing : (in->northing - UTM_FALSE_NORTHING_SOUTH);
+  geo_tm_reverse(angle_from_metres(y),
+                 angle_from_metres(in->easting - UTM_FALSE_EASTING), &phi,
+                 &lam);
+  dlon = geo_nas_from_rad(lam);
+  *lat = geo_nas_from_rad(phi);
+  *lon = lon_normalize(central_meridian(in->zone) + dlon);
+  if ((convergence != NULL) || (scale != NULL)) {
+    /* in the range checked above |dlon| < 30 degrees: never fails */
+    (void)geo_tm_forward(phi, lam, &tm);
+    if (convergence != NULL) {
+      *convergence = geo_nas_from_rad(tm.gamma);
+    }
+    if (scale != NULL) {
+      *scale = tm.k;
+    }
+  }
+  return DRDC_OK;
+}

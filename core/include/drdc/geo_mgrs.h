@@ -1,0 +1,117 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @ingroup drdc_geo
+ * @brief MGRS (Military Grid Reference System) on the UTM/UPS of geo.h:
+ *        encode at every precision (truncation) and decode with
+ *        validation, as GeographicLib's MGRS.
+ */
+#ifndef DRDC_GEO_MGRS_H
+#define DRDC_GEO_MGRS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include <drdc/geo.h>
+
+/**
+ * @addtogroup drdc_geo
+ * @{
+ */
+
+/** Coarsest MGRS precision: the grid zone designator alone ("38S"). */
+#define DRDC_GEO_MGRS_PREC_MIN (-1)
+/** Finest MGRS precision: 11 digits per coordinate (1 um). */
+#define DRDC_GEO_MGRS_PREC_MAX 11
+/** Longest MGRS text with its terminating NUL: 2 + 1 + 2 + 22 + 1. */
+#define DRDC_GEO_MGRS_SIZE 28u
+
+/**
+ * Geographic -> MGRS in the standard UTM zone or UPS, as GeoConvert -m:
+ * zone digits and latitude band letter (UTM) or A/B/Y/Z (UPS), the two
+ * letters of the 100 km square, then prec digits of easting and of
+ * northing, truncated (never rounded) to 10^(5 - prec) m.
+ *
+ * @param lat latitude, nas, [-90, 90] degrees.
+ * @param lon longitude, nas, [-540, 540) degrees.
+ * @param prec digits per coordinate, -1 (grid zone only), 0 (100 km
+ *        square) .. 5 (1 m) .. 11 (1 um); GeoConvert's -p P is P + 5.
+ * @param[out] text NUL-terminated MGRS, upper case.
+ * @param size bytes at text (DRDC_GEO_MGRS_SIZE always suffices).
+ * @retval DRDC_OK written.
+ * @retval DRDC_E_NULL text is NULL.
+ * @retval DRDC_E_LATITUDE lat outside [-90, 90] degrees.
+ * @retval DRDC_E_LONGITUDE lon outside [-540, 540) degrees.
+ * @retval DRDC_E_RANGE prec outside -1..11.
+ * @retval DRDC_E_BUFFER size is too small for the text; nothing written.
+ *
+ * Text unchanged on error. Exactness: the digits are those of the UTM/UPS
+ * easting and northing of drdc_geo_to_utm() (within 15 um of
+ * GeographicLib), so strings equal GeoConvert's except where
+ * GeographicLib's coordinate lies within that distance of a digit
+ * boundary (at 1 m precision about 3 in 100 000 points; at 10 and 1 um
+ * precision most strings differ in their last digits).
+ *
+ * Example: lat 33.3, lon 44.4, prec 5 gives "38SMB4414084706".
+ */
+drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
+                                   int32_t prec, char *text, size_t size);
+
+/**
+ * UTM/UPS -> MGRS in the position's own zone (a forced or neighbouring
+ * zone stays), as GeoConvert -m writes UTM input: the band letter from
+ * the latitude of drdc_geo_from_utm().
+ *
+ * @param u zone 0..60, hemisphere, easting, northing.
+ * @param prec digits per coordinate, -1..11.
+ * @param[out] text NUL-terminated MGRS, upper case.
+ * @param size bytes at text (DRDC_GEO_MGRS_SIZE always suffices).
+ * @retval DRDC_OK written.
+ * @retval DRDC_E_NULL u or text is NULL.
+ * @retval DRDC_E_ZONE u->zone outside 0..60.
+ * @retval DRDC_E_EASTING easting outside the zone's range or outside the
+ *         MGRS limits (UTM 100 000 .. 899 999 m; UPS 1 300 000 ..
+ *         2 699 999 m north, 800 000 .. 3 199 999 m south).
+ * @retval DRDC_E_NORTHING northing outside the zone's range or outside
+ *         the MGRS limits (UTM below 9 500 000 m north, 1 000 000 ..
+ *         9 999 999 m south; UPS as the easting).
+ * @retval DRDC_E_RANGE prec outside -1..11.
+ * @retval DRDC_E_BUFFER size is too small for the text; nothing written.
+ *
+ * Text unchanged on error. Exactness as drdc_geo_mgrs_encode().
+ */
+drdc_status_t drdc_geo_mgrs_from_utm(const drdc_geo_utm_t *u, int32_t prec,
+                                     char *text, size_t size);
+
+/**
+ * MGRS -> UTM/UPS, as GeographicLib's MGRS::Reverse: letters in either
+ * case; the 100 km square's row is placed in the latitude band (with
+ * GeographicLib's allowance for the bands' overlap and the 31X/32X,
+ * 33X/34X, 35X/36X, 37X exceptions).
+ *
+ * @param text NUL-terminated MGRS.
+ * @param[out] corner south-west corner of the cell the digits name; for a
+ *        grid zone alone (prec -1), GeographicLib's representative point
+ *        (band centre on the central meridian; 86 degrees on 90 E/W for
+ *        UPS).
+ * @param[out] centre centre of that cell (for prec -1 the same point);
+ *        may be NULL.
+ * @param[out] prec digits per coordinate, -1..11; may be NULL.
+ * @retval DRDC_OK written.
+ * @retval DRDC_E_NULL text or corner is NULL.
+ * @retval DRDC_E_ZONE zone digits 0 or above 60.
+ * @retval DRDC_E_MGRS malformed text: more than 2 zone digits, a band,
+ *         column or row letter outside its set, a missing letter, a
+ *         non-digit, an odd number of digits or more than 22 digits.
+ * @retval DRDC_E_BAND the 100 km square's row does not lie in the latitude
+ *         band (GeographicLib's "Block ... not in zone/band").
+ *
+ * Outputs unchanged on error. Exact up to the Q47.16 rounding of cells
+ * finer than 1 m (to nearest).
+ */
+drdc_status_t drdc_geo_mgrs_decode(const char *text, drdc_geo_utm_t *corner,
+                                   drdc_geo_utm_t *centre, int32_t *prec);
+
+/** @} */
+
+#endif /* DRDC_GEO_MGRS_H */
