@@ -8,7 +8,11 @@ scripted NMEA sentences and IMU quaternions. Checked here:
 - yaw, pitch, roll equal `drdc attitude --from quat --to euler` for the
   same Q1.30 quaternions;
 - longitude and latitude equal the NMEA text's degrees and minutes,
-  computed with Python's fractions.
+  computed with Python's fractions;
+- UTM zone, easting, northing and the MGRS square equal `drdc geo -u` and
+  `drdc geo -m` (GeoConvert's format, itself diffed against GeoConvert in
+  test_drdc.py), and the convergence equals `drdc geo -c` within the
+  resolution of the Q1.30 attitude it is measured on.
 """
 import fractions
 import os
@@ -87,3 +91,32 @@ class Demo(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class DemoGeodesy(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.host = console("host")
+        cls.points = ["%s %s" % (lat, lon) for lon, lat in
+                      re.findall(r"lon (\S+) lat (\S+) deg", cls.host)]
+
+    def test_utm_matches_drdc_geo(self):
+        got = re.findall(r"UTM   (\d+[ns]) (\S+) (\S+) m", self.host)
+        want = tool("geo", "-u", "-p", "3", stdin="".join(p + "\n" for p in self.points))
+        self.assertEqual(4, len(got))
+        for g, w in zip(got, want):
+            self.assertEqual(" ".join(g), w)
+
+    def test_mgrs_matches_drdc_geo(self):
+        got = re.findall(r"MGRS  (\S+)", self.host)
+        want = tool("geo", "-m", "-p", "0", stdin="".join(p + "\n" for p in self.points))
+        self.assertEqual(4, len(got))
+        self.assertEqual(got, want[:4])
+
+    def test_convergence_matches_drdc_geo(self):
+        got = [float(c) for c in re.findall(r"convergence (\S+) deg", self.host)]
+        want = tool("geo", "-c", "-p", "6", stdin="".join(p + "\n" for p in self.points))
+        self.assertEqual(4, len(got))
+        for g, w in zip(got, want):
+            # the demo measures it between two Q1.30 attitudes: 2e-7 deg
+            self.assertAlmostEqual(g, float(w.split()[0]), delta=2e-7)

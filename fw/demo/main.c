@@ -9,14 +9,20 @@
  * pose {W} (longitude, latitude, height, quaternion), {We} (the same with
  * Z-Y-X Euler angles) and the JAUS scaled integers of the position. All of
  * it integer arithmetic; the same numbers come out of the host tool drdc.
- * UTM/MGRS and the local pose arrive with the geodesy module.
+ * Then the UTM pose with the attitude turned to grid north by the
+ * meridian convergence ({We-UTM}), the MGRS square to 1 m, and the local
+ * pose {l} relative to the first fix (its body frame: x forward, y right,
+ * z down).
  */
 #include <stddef.h>
 
 #include <drdc/fixed.h>
+#include <drdc/geo.h>
+#include <drdc/geo_mgrs.h>
 #include <drdc/jaus_scaled.h>
 #include <drdc/nmea.h>
 #include <drdc/orient.h>
+#include <drdc/pose.h>
 #include <drdc/time.h>
 #include <drdc/time_iso8601.h>
 #include <drdc/time_scales.h>
@@ -29,13 +35,13 @@
  * DRDC Suffield, Alberta), as a u-blox-style receiver sends them. */
 static const char *const gnss[] = {
   "$GNGGA,170000.00,5016.20000,N,11110.20000,W,4,12,0.7,754.3,M,-16.2,M,1.0,0001*66\r\n",
-  "$GNRMC,170000.00,A,5016.20000,N,11110.20000,W,0.97,045.00,221126,,,R*4E\r\n",
-  "$GNGGA,170001.00,5016.20050,N,11110.20080,W,4,12,0.7,754.4,M,-16.2,M,1.0,0001*6D\r\n",
-  "$GNRMC,170001.00,A,5016.20050,N,11110.20080,W,0.97,045.00,221126,,,R*42\r\n",
-  "$GNGGA,170002.00,5016.20100,N,11110.20160,W,4,12,0.7,754.5,M,-16.2,M,1.0,0001*64\r\n",
-  "$GNRMC,170002.00,A,5016.20100,N,11110.20160,W,0.97,045.00,221126,,,R*4A\r\n",
-  "$GNGGA,170003.00,5016.20150,N,11110.20240,W,4,12,0.7,754.6,M,-16.2,M,1.0,0001*62\r\n",
-  "$GNRMC,170003.00,A,5016.20150,N,11110.20240,W,0.97,045.00,221126,,,R*4F\r\n",
+  "$GNRMC,170000.00,A,5016.20000,N,11110.20000,W,2.57,045.00,221126,,,R*40\r\n",
+  "$GNGGA,170001.00,5016.20050,N,11110.19920,W,4,12,0.7,754.4,M,-16.2,M,1.0,0001*64\r\n",
+  "$GNRMC,170001.00,A,5016.20050,N,11110.19920,W,2.57,045.00,221126,,,R*45\r\n",
+  "$GNGGA,170002.00,5016.20100,N,11110.19840,W,4,12,0.7,754.5,M,-16.2,M,1.0,0001*65\r\n",
+  "$GNRMC,170002.00,A,5016.20100,N,11110.19840,W,2.57,045.00,221126,,,R*45\r\n",
+  "$GNGGA,170003.00,5016.20150,N,11110.19760,W,4,12,0.7,754.6,M,-16.2,M,1.0,0001*6F\r\n",
+  "$GNRMC,170003.00,A,5016.20150,N,11110.19760,W,2.57,045.00,221126,,,R*4C\r\n",
 };
 
 /* The IMU's attitude at each epoch, body FRD to world NED, Q1.30. */
@@ -47,6 +53,10 @@ static const drdc_quat_t imu[] = {
 };
 
 #define EPOCHS (sizeof imu / sizeof imu[0])
+
+/* The receiver's geoid separation N (GGA field 11), for ellipsoidal
+ * heights in the local tangent plane. */
+#define GEOID_SEPARATION (INT64_C(-162) * 65536 / 10)
 #define NAS_PER_DEGREE_INT DRDC_NAS_PER_DEGREE
 
 static size_t length_of(const char *s)
@@ -93,8 +103,66 @@ static void put_status(drdc_status_t st)
   bsp_putc('\n');
 }
 
-static void epoch(unsigned k, const drdc_nmea_t *gga, const drdc_nmea_t *rmc)
+/* metres with 3 decimals of a Q47.16 length */
+static void put_metres(drdc_q47_16_t m)
 {
+  console_put_decimal(scaled(m, 1000, 65536), 3u);
+}
+
+/* UTM, grid attitude, MGRS and the local pose of one epoch */
+static drdc_status_t grid_and_local(const drdc_WPose_t *w,
+                                    const drdc_WPose_t *first)
+{
+  drdc_WUTMPose_t u;
+  drdc_euler_t grid = { 0u, 0u, 0u };
+  drdc_euler_t truth = { 0u, 0u, 0u };
+  drdc_lPose_t l;
+  char mgrs[DRDC_GEO_MGRS_SIZE];
+  drdc_status_t st;
+
+  st = drdc_pose_wutm_from_w(w, DRDC_GEO_ZONE_STANDARD, &u);
+  if (st == DRDC_OK) {
+    st = drdc_euler_from_quat(&u.q, &grid);
+  }
+  if (st == DRDC_OK) {
+    st = drdc_euler_from_quat(&w->q, &truth);
+  }
+  if (st == DRDC_OK) {
+    st = drdc_geo_mgrs_from_utm(&u.utm, 5, mgrs, sizeof mgrs);
+  }
+  if (st == DRDC_OK) {
+    st = drdc_pose_l_from_w(first, GEOID_SEPARATION, w, &l);
+  }
+  if (st != DRDC_OK) {
+    return st;
+  }
+  bsp_puts("  UTM   ");
+  console_put_i64(u.utm.zone);
+  bsp_putc(u.utm.north ? 'n' : 's');
+  bsp_putc(' ');
+  put_metres(u.utm.easting);
+  bsp_putc(' ');
+  put_metres(u.utm.northing);
+  bsp_puts(" m  convergence ");
+  put_bam(truth.yaw - grid.yaw);
+  bsp_puts(" deg  grid yaw ");
+  put_bam(grid.yaw);
+  bsp_puts("\n  MGRS  ");
+  bsp_puts(mgrs);
+  bsp_puts("\n  {l}   x ");
+  put_metres(l.p.x);
+  bsp_puts(" y ");
+  put_metres(l.p.y);
+  bsp_puts(" z ");
+  put_metres(l.p.z);
+  bsp_puts(" m from the first fix\n");
+  return DRDC_OK;
+}
+
+static void epoch(unsigned k, const drdc_nmea_t *gga, const drdc_nmea_t *rmc,
+                  drdc_WPose_t *first)
+{
+  drdc_WPose_t w;
   drdc_time_t utc = { 0, 0 };
   drdc_time_gps_t gps = { 0, 0, 0 };
   drdc_euler_t e = { 0u, 0u, 0u };
@@ -164,15 +232,29 @@ static void epoch(unsigned k, const drdc_nmea_t *gga, const drdc_nmea_t *rmc)
   bsp_puts(" longitude ");
   console_put_i64(jaus_lon);
   bsp_puts(" (int32, RA 3.x scaled)\n");
+
+  w.longitude = gga->longitude;
+  w.latitude = gga->latitude;
+  w.height = gga->altitude;
+  w.q = imu[k];
+  if (k == 0u) {
+    *first = w;
+  }
+  st = grid_and_local(&w, first);
+  if (st != DRDC_OK) {
+    put_status(st);
+  }
 }
 
 int main(void)
 {
   unsigned k;
+  drdc_WPose_t first;
 
   bsp_puts("libdrdc-fx " DRDC_VERSION_STRING " pose-node demo on ");
   bsp_puts(bsp_name);
-  bsp_puts(": GNSS (NMEA) + IMU -> UTC, GPS time, {W}, {We}, JAUS\n");
+  bsp_puts(": GNSS (NMEA) + IMU -> UTC, GPS time, {W}, {We}, JAUS,"
+           " {We-UTM}, MGRS, {l}\n");
   for (k = 0u; k < EPOCHS; k++) {
     drdc_nmea_t gga;
     drdc_nmea_t rmc;
@@ -187,7 +269,7 @@ int main(void)
       put_status(st);
       continue;
     }
-    epoch(k, &gga, &rmc);
+    epoch(k, &gga, &rmc, &first);
   }
   return 0;
 }
