@@ -90,10 +90,13 @@ drdc_status_t drdc_geo_mgrs_from_utm(const drdc_geo_utm_t *u, int32_t prec,
  * 33X/34X, 35X/36X, 37X exceptions).
  *
  * @param text NUL-terminated MGRS.
- * @param[out] corner south-west corner of the cell the digits name; for a
- *        grid zone alone (prec -1), GeographicLib's representative point
- *        (band centre on the central meridian; 86 degrees on 90 E/W for
- *        UPS).
+ * @param[out] corner south-west corner of the cell the digits name, the
+ *        nearest Q47.16 value; for a grid zone alone (prec -1),
+ *        GeographicLib's representative point (band centre on the central
+ *        meridian; 86 degrees on 90 E/W for UPS). Cells of 1 m and larger
+ *        (prec <= 5) have exact corners, so the corner re-encodes to the
+ *        same string; finer decimal corners are rounded to the 15.3 um
+ *        step and may re-encode to the neighbouring cell (use the centre).
  * @param[out] centre centre of that cell (for prec -1 the same point);
  *        may be NULL.
  * @param[out] prec digits per coordinate, -1..11; may be NULL.
