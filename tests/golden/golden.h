@@ -33,5 +33,6 @@ void golden_time_scales(golden_t *g);
 void golden_fixed(golden_t *g);
 void golden_orient(golden_t *g);
 void golden_interop(golden_t *g);
+void golden_geo(golden_t *g);
 
 #endif /* DRDC_GOLDEN_H */

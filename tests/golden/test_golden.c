@@ -33,6 +33,7 @@ static void test_golden_digest_is_the_conformance_value(void)
   golden_part(&g, "fixed", golden_fixed);
   golden_part(&g, "orient", golden_orient);
   golden_part(&g, "interop", golden_interop);
+  golden_part(&g, "geo", golden_geo);
   digest = ~g.crc;
   bsp_puts("*** GOLDEN DIGEST: ");
   console_put_hex32(digest);
