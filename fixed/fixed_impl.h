@@ -192,25 +192,67 @@ static inline int fx_le_u128(fx_u128_t a, fx_u128_t b)
  */
 static inline int fx_div_round_u128(fx_u128_t n, uint64_t d, uint64_t *q)
 {
-  uint64_t rem = n.hi;
-  uint64_t lo = n.lo;
-  uint64_t quo = 0;
-  int i;
+  /* Knuth's algorithm D with two 32-bit quotient digits (as Hacker's
+   * Delight's divlu): normalise d so its top bit is set, estimate each
+   * digit from the top 64 bits of the remainder divided by the top 32
+   * bits of d, and correct the estimate (at most twice) with the next
+   * digit of d. Two 64/32 divisions instead of 64 shift-and-subtract
+   * steps on 128 bits. */
+  const uint64_t base = UINT64_C(1) << 32;
+  unsigned s;
+  uint64_t v;
+  uint64_t vn1;
+  uint64_t vn0;
+  uint64_t un32;
+  uint64_t un10;
+  uint64_t un1;
+  uint64_t un0;
+  uint64_t q1;
+  uint64_t q0;
+  uint64_t rhat;
+  uint64_t un21;
+  uint64_t rem;
+  uint64_t quo;
 
-  if (rem >= d) {
+  if (n.hi >= d) {
     return 1; /* quotient >= 2^64 */
   }
-  for (i = 0; i < 64; i++) {
-    uint64_t carry = rem >> 63;
+  s = (unsigned)__builtin_clzll(d); /* d != 0 */
+  v = d << s;
+  vn1 = v >> 32;
+  vn0 = v & 0xFFFFFFFFu;
+  if (s == 0u) {
+    un32 = n.hi;
+  } else {
+    un32 = (n.hi << s) | (n.lo >> (64u - s));
+  }
+  un10 = n.lo << s;
+  un1 = un10 >> 32;
+  un0 = un10 & 0xFFFFFFFFu;
 
-    rem = (rem << 1) | (lo >> 63);
-    lo <<= 1;
-    quo <<= 1;
-    if ((carry != 0u) || (rem >= d)) {
-      rem -= d;
-      quo |= 1u;
+  q1 = un32 / vn1;
+  rhat = un32 - (q1 * vn1);
+  while ((q1 >= base) || ((q1 * vn0) > ((rhat << 32) | un1))) {
+    q1--;
+    rhat += vn1;
+    if (rhat >= base) {
+      break;
     }
   }
+  un21 = ((un32 << 32) | un1) - (q1 * v); /* < v, exact modulo 2^64 */
+
+  q0 = un21 / vn1;
+  rhat = un21 - (q0 * vn1);
+  while ((q0 >= base) || ((q0 * vn0) > ((rhat << 32) | un0))) {
+    q0--;
+    rhat += vn1;
+    if (rhat >= base) {
+      break;
+    }
+  }
+  rem = (((un21 << 32) | un0) - (q0 * v)) >> s;
+  quo = (q1 << 32) | q0;
+
   if (rem >= (d - rem)) {
     if (quo == UINT64_MAX) {
       return 1;
