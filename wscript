@@ -327,6 +327,9 @@ def build(bld):
     if t["qemu"] == "host" and not bld.variant.endswith("asan"):
         bld.program(source=_glob(bld, "tools/drdc/*.c"), target="drdc",
                     use="libdrdc", cflags=ours)
+        # the library's own results for the plots of docs/accuracy.md
+        bld.program(source=["tools/accuracy/sample.c"],
+                    target="accuracy-sample", use="libdrdc", cflags=ours)
 
 
 # build_<target>, clean_<target>, install_<target> for every target.
@@ -391,16 +394,33 @@ class RunDemo(Build.BuildContext):
 
 
 def docs(ctx):
-    """API reference from the headers with Doxygen into build/docs/html"""
-    deps = _tools_module("deps")
-    try:
-        deps.ensure_apt()  # Doxygen is one of the pinned packages
-    except deps.SetupError as e:
-        ctx.fatal(str(e))
-    if subprocess.call(["doxygen", "docs/Doxyfile"],
-                       cwd=ctx.path.abspath()) != 0:
-        ctx.fatal("Doxygen found undocumented or badly documented symbols")
-    Logs.info("API reference: build/docs/html/index.html")
+    """API reference (Doxygen) and the error plots of docs/accuracy.md"""
+    _build_all_then("run_docs", ["host"])
+
+
+class RunDocs(Build.BuildContext):
+    """(internal) Doxygen into build/docs/html, plots into docs/img"""
+    cmd = "run_docs"
+    variant = "host"
+
+    def execute(self):
+        self.restore()
+        if not self.all_envs:
+            self.load_envs()
+        deps = _tools_module("deps")
+        try:
+            deps.ensure_apt()  # Doxygen is one of the pinned packages
+        except deps.SetupError as e:
+            self.fatal(str(e))
+        if subprocess.call(["doxygen", "docs/Doxyfile"],
+                           cwd=self.path.abspath()) != 0:
+            self.fatal("Doxygen found undocumented or badly documented "
+                       "symbols")
+        Logs.info("API reference: build/docs/html/index.html")
+        sampler = os.path.join(out, "host", "accuracy-sample")
+        if _python(self, ["tools/accuracy/plots.py", sampler,
+                          "docs/img"]) != 0:
+            self.fatal("accuracy plots failed")
 
 
 def fuzz(ctx):
