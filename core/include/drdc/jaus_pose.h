@@ -218,9 +218,11 @@ drdc_status_t drdc_jaus_pose_size(uint16_t presence, size_t *size);
  *         1000..1023
  * @retval DRDC_E_BUFFER `capacity` is less than the body's length
  *
- * Accuracy: every integer is correctly rounded (0 LSB against an exact
- * rational model, tests/ref/gen_jaus_pose.py); the bytes are the same on
- * every target (checked on big-endian PowerPC e500).
+ * Checks in this order: pointers, form, reserved bits, the fields present
+ * in bit order, the time stamp, `capacity`. Accuracy: every integer is
+ * correctly rounded (0 LSB against an exact rational model,
+ * tests/ref/gen_jaus_pose.py); the bytes are the same on every target
+ * (checked on big-endian PowerPC e500).
  *
  * @code
  * drdc_jaus_global_pose_t b = { 0 };
@@ -262,8 +264,8 @@ drdc_status_t drdc_jaus_global_pose_pack(const drdc_jaus_global_pose_t *body,
  * @retval DRDC_E_SECOND the time stamp has second 61..63
  * @retval DRDC_E_NANOSECOND the time stamp has milliseconds 1000..1023
  *
- * Checks in this order: pointers, length of the presence vector, reserved
- * bits, length, then the fields in bit order. Accuracy: each raw value is
+ * Checks in this order: pointers, form, length of the presence vector,
+ * reserved bits, length, then the fields in bit order. Accuracy: each raw value is
  * correctly rounded (0 LSB against the exact model). Never reads beyond
  * `buf[length - 1]`.
  */
