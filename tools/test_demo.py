@@ -12,11 +12,19 @@ scripted NMEA sentences and IMU quaternions. Checked here:
 - UTM zone, easting, northing and the MGRS square equal `drdc geo -u` and
   `drdc geo -m` (GeoConvert's format, itself diffed against GeoConvert in
   test_drdc.py), and the convergence equals `drdc geo -c` within the
-  resolution of the Q1.30 attitude it is measured on.
+  resolution of the Q1.30 attitude it is measured on;
+- the JAUS Report Global Pose body (AS6009) equals bytes built here with
+  struct.pack('<...') from the standard's field table: latitude and
+  longitude from the NMEA text (fractions), the height as the text rounded
+  to Q47.16 (as nmea.h documents), roll, pitch and yaw from the image's
+  Q1.30 quaternions with Python's math, the time stamp from the sentence's
+  time and the RMC date.
 """
 import fractions
+import math
 import os
 import re
+import struct
 import subprocess
 import unittest
 
@@ -88,6 +96,59 @@ class Demo(unittest.TestCase):
             self.assertEqual(round(want_lat * 10 ** 9), round(fractions.Fraction(lat) * 10 ** 9))
             self.assertEqual(round(want_lon * 10 ** 9), round(fractions.Fraction(lon) * 10 ** 9))
 
+
+    def test_jaus_body_is_the_standard_bytes(self):
+        """AS6009: ScaleFactor = (max - min) / (2^n - 1), Bias = min,
+        unsigned fields; presence 0x0177 (latitude, longitude, altitude,
+        roll, pitch, yaw, time stamp), little-endian."""
+        f = fractions.Fraction
+
+        def scaled(real, lo, hi, bits):
+            x = (f(real) - lo) / (f(hi) - lo) * ((1 << bits) - 1)
+            return math.floor(x + f(1, 2))  # real >= lo: ties away from zero
+
+        def angle(radians, bits=16):
+            """The integers the library may send: the correct rounding,
+            or either neighbour of a tie closer than the library's
+            documented quaternion -> Euler error (9.4e-8 degree = 1.7e-5
+            of a step) plus double rounding."""
+            x = (radians + math.pi) / (2 * math.pi) * ((1 << bits) - 1)
+            if abs(x - math.floor(x) - 0.5) > 2e-5:
+                return {math.floor(x + 0.5)}
+            return {math.floor(x), math.floor(x) + 1}
+
+        src = demo_source()
+        gga = re.findall(r'"\$GNGGA,(\d\d)(\d\d)(\d\d)\.\d+,(\d\d)(\d\d\.\d+),N,'
+                         r'(\d\d\d)(\d\d\.\d+),W,\d,\d+,[^,]*,([^,]*),M', src)
+        date = re.findall(r'"\$GNRMC,[^,]*,A,[^,]*,N,[^,]*,W,[^,]*,[^,]*,(\d\d)\d{4},', src)
+        quats = re.findall(r"\{ (-?\d+), (-?\d+), (-?\d+), (-?\d+) \}, /\* yaw", src)
+        got = re.findall(r"Report Global Pose body \(AS6009\) ([0-9a-f]+)", self.host)
+        self.assertEqual(4, len(gga))
+        self.assertEqual(4, len(got))
+        ties = 0
+        for (hh, mm, ss, lad, lam, lod, lom, alt), day, q, hexed in zip(gga, date, quats, got):
+            lat = int(lad) + f(lam) / 60
+            lon = -(int(lod) + f(lom) / 60)
+            height = f(math.floor(f(alt) * 65536 + f(1, 2)), 65536)
+            s, x, y, z = (int(v) / 2 ** 30 for v in q)
+            n = math.sqrt(s * s + x * x + y * y + z * z)
+            s, x, y, z = s / n, x / n, y / n, z / n
+            yaw = math.atan2(2 * (s * z + x * y), 1 - 2 * (y * y + z * z))
+            pitch = math.asin(2 * (s * y - z * x))
+            roll = math.atan2(2 * (s * x + y * z), 1 - 2 * (x * x + y * y))
+            stamp = (int(day) << 27) | (int(hh) << 22) | (int(mm) << 16) | (int(ss) << 10)
+            fields = struct.unpack("<HIIIHHHI", bytes.fromhex(hexed))
+            self.assertEqual(24 * 2, len(hexed))
+            self.assertEqual((0x0177, scaled(lat, -90, 90, 32), scaled(lon, -180, 180, 32),
+                              scaled(height, -10000, 35000, 32)), fields[:4])
+            for got_angle, want_angles in zip(fields[4:7], (angle(roll), angle(pitch),
+                                                            angle(yaw))):
+                self.assertIn(got_angle, want_angles)
+                ties += len(want_angles) > 1
+            self.assertEqual(stamp, fields[7])
+        # the scripted attitudes are whole and half degrees; 48 degrees of
+        # yaw is a tie of the 16-bit field (228 x 65535 / 360 = 41505.5)
+        self.assertLessEqual(ties, 1)
 
 if __name__ == "__main__":
     unittest.main()

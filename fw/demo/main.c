@@ -7,8 +7,10 @@
  * sentences; on a board this would be a UART) and from an IMU (attitude
  * quaternions), and for each epoch prints the UTC and GPS time, the global
  * pose {W} (longitude, latitude, height, quaternion), {We} (the same with
- * Z-Y-X Euler angles) and the JAUS scaled integers of the position. All of
- * it integer arithmetic; the same numbers come out of the host tool drdc.
+ * Z-Y-X Euler angles), the JAUS scaled integers of the position and the
+ * body of a JAUS Report Global Pose message (AS6009, little-endian) in
+ * hex. All of it integer arithmetic; the same numbers come out of the host
+ * tool drdc.
  * Then the UTM pose with the attitude turned to grid north by the
  * meridian convergence ({We-UTM}), the MGRS square to 1 m, and the local
  * pose {l} relative to the first fix (its body frame: x forward, y right,
@@ -19,12 +21,14 @@
 #include <drdc/fixed.h>
 #include <drdc/geo.h>
 #include <drdc/geo_mgrs.h>
+#include <drdc/jaus_pose.h>
 #include <drdc/jaus_scaled.h>
 #include <drdc/nmea.h>
 #include <drdc/orient.h>
 #include <drdc/pose.h>
 #include <drdc/time.h>
 #include <drdc/time_iso8601.h>
+#include <drdc/time_jaus.h>
 #include <drdc/time_scales.h>
 #include <drdc/version.h>
 
@@ -94,6 +98,44 @@ static void put_bam(drdc_bam32_t a)
 static void put_q1_30(drdc_q1_30_t v)
 {
   console_put_decimal(scaled(v, 10000000, INT64_C(1) << 30), 7u);
+}
+
+/* bytes as lowercase hex, two digits each */
+static void put_hex(const uint8_t *p, size_t n)
+{
+  static const char digits[] = "0123456789abcdef";
+  size_t k;
+
+  for (k = 0u; k < n; k++) {
+    bsp_putc(digits[p[k] >> 4]);
+    bsp_putc(digits[p[k] & 15u]);
+  }
+}
+
+/* The JAUS Report Global Pose body of an epoch: position (MSL height),
+ * attitude and time stamp; no RMS values (the receiver sends no GST). */
+static drdc_status_t jaus_body(const drdc_nmea_t *gga, const drdc_euler_t *e,
+                               const drdc_time_t *utc, uint8_t *buf,
+                               size_t *length)
+{
+  drdc_jaus_global_pose_t b;
+  drdc_status_t st;
+
+  b.presence = DRDC_JAUS_PV_LATITUDE | DRDC_JAUS_PV_LONGITUDE
+               | DRDC_JAUS_PV_ALTITUDE | DRDC_JAUS_PV_ROLL | DRDC_JAUS_PV_PITCH
+               | DRDC_JAUS_PV_YAW | DRDC_JAUS_PV_TIME_STAMP;
+  b.pose.latitude = gga->latitude;
+  b.pose.longitude = gga->longitude;
+  b.pose.height = gga->altitude;
+  b.pose.e = *e;
+  b.position_rms = 0;
+  b.attitude_rms = 0u;
+  st = drdc_time_jaus_pack(NULL, utc, &b.time_stamp);
+  if (st == DRDC_OK) {
+    st = drdc_jaus_global_pose_pack(&b, DRDC_JAUS_FORM_AS6009, buf,
+                                    DRDC_JAUS_POSE_BODY_MAX, length);
+  }
+  return st;
 }
 
 static void put_status(drdc_status_t st)
@@ -169,6 +211,8 @@ static void epoch(unsigned k, const drdc_nmea_t *gga, const drdc_nmea_t *rmc,
   char iso[DRDC_TIME_ISO8601_SIZE];
   int64_t jaus_lat = 0;
   int64_t jaus_lon = 0;
+  uint8_t body[DRDC_JAUS_POSE_BODY_MAX];
+  size_t body_length = 0u;
   drdc_status_t st;
 
   st = drdc_nmea_utc(NULL, rmc, gga, &utc);
@@ -190,6 +234,9 @@ static void epoch(unsigned k, const drdc_nmea_t *gga, const drdc_nmea_t *rmc,
     st = drdc_jaus_scaled_encode(gga->longitude, -180 * NAS_PER_DEGREE_INT,
                                  180 * NAS_PER_DEGREE_INT, DRDC_JAUS_INT32,
                                  DRDC_JAUS_FORM_RA3, &jaus_lon);
+  }
+  if (st == DRDC_OK) {
+    st = jaus_body(gga, &e, &utc, body, &body_length);
   }
   if (st != DRDC_OK) {
     put_status(st);
@@ -231,7 +278,9 @@ static void epoch(unsigned k, const drdc_nmea_t *gga, const drdc_nmea_t *rmc,
   console_put_i64(jaus_lat);
   bsp_puts(" longitude ");
   console_put_i64(jaus_lon);
-  bsp_puts(" (int32, RA 3.x scaled)\n");
+  bsp_puts(" (int32, RA 3.x scaled)\n  JAUS  Report Global Pose body (AS6009) ");
+  put_hex(body, body_length);
+  bsp_putc('\n');
 
   w.longitude = gga->longitude;
   w.latitude = gga->latitude;

@@ -32,6 +32,7 @@ GENERATORS = [
     "gen_orient_dh",
     "gen_units",
     "gen_jaus",
+    "gen_jaus_pose",
     "gen_nmea",
     "gen_geo",
     "gen_geo_mgrs",
