@@ -42,6 +42,7 @@ def table_text():
     atan_c3 = [rnd(B * (t * t - mpmath.mpf(1) / 3) / (1 + t * t) ** 3 * 4)
                for t in t0]
     assert max(sin_q31) == 2 ** 31 and atan_a[-1] == 2 ** 31
+    assert min(atan_c2) >= 0
     text = """/* SPDX-License-Identifier: BSD-2-Clause */
 /**
  * @file
@@ -57,29 +58,19 @@ const uint32_t fx_sin_q31[FX_TRIG_STEPS + 1] = {
 %s
 };
 
-/* B atan(i / 256) in binary-angle units times 4 (B = 2^32 / (2 pi)). */
-const uint32_t fx_atan_a[FX_TRIG_STEPS + 1] = {
+/* atan on [0, 1] at t = i / 256, i = 0..256, in binary-angle units times
+ * 4 (B = 2^32 / (2 pi) units per radian), one node per row so that one
+ * base address reaches all four:
+ *   a   B atan(t)
+ *   d1  B / (1 + t^2): the first derivative of B atan(t)
+ *   c2  B t / (1 + t^2)^2: minus the second Taylor coefficient (>= 0)
+ *   c3  B (t^2 - 1/3) / (1 + t^2)^3: the third Taylor coefficient */
+const fx_atan_node_t fx_atan_nodes[FX_TRIG_STEPS + 1] = {
 %s
 };
-
-/* B / (1 + t^2) at t = i / 256, binary-angle units per unit t, times 4:
- * the first derivative of B atan(t). */
-const uint32_t fx_atan_d1[FX_TRIG_STEPS + 1] = {
-%s
-};
-
-/* B t / (1 + t^2)^2 times 4: minus the second Taylor coefficient. */
-const int32_t fx_atan_c2[FX_TRIG_STEPS + 1] = {
-%s
-};
-
-/* B (t^2 - 1/3) / (1 + t^2)^3 times 4: the third Taylor coefficient. */
-const int32_t fx_atan_c3[FX_TRIG_STEPS + 1] = {
-%s
-};
-""" % (rows(["%du" % v for v in sin_q31]), rows(["%du" % v for v in atan_a]),
-       rows(["%du" % v for v in atan_d1]), rows(["%d" % v for v in atan_c2]),
-       rows(["%d" % v for v in atan_c3]))
+""" % (rows(["%du" % v for v in sin_q31]),
+       "\n".join("  { %du, %du, %du, %d }," % row
+                  for row in zip(atan_a, atan_d1, atan_c2, atan_c3)))
     return text
 
 
