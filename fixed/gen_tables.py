@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-2-Clause
-"""Generator of fixed/trig_table.c, the constant tables of fixed/ trig.
+"""Generator of fixed/trig_table.c, the constant tables of fixed/ trig,
+and of fixed/sqrt_table.c, the seeds of the Q15.16 square root.
 
 Run from the top of the tree with the project's Python packages:
   PYTHONPATH=.deps/python python3 fixed/gen_tables.py
@@ -8,7 +9,9 @@ Run from the top of the tree with the project's Python packages:
 committed table differs from what this script computes.)
 Values come from mpmath at 100 digits, rounded to nearest (ties away from
 zero, never met by these irrational values) and written as exact integers.
+The square-root seeds are exact integer roots (math.isqrt).
 """
+import math
 import os
 
 import mpmath
@@ -74,10 +77,42 @@ const fx_atan_node_t fx_atan_nodes[FX_TRIG_STEPS + 1] = {
     return text
 
 
+SQRT_SEED_FIRST = 64   # first index: H >> 18 for H >= 2^24
+SQRT_SEED_COUNT = 192  # indices 64..255 cover H in [2^24, 2^26)
+
+
+def sqrt_table_text():
+    """The text of fixed/sqrt_table.c: for each index j, floor(sqrt) of the
+    largest H with H >> 18 == j, an upper bound of floor(sqrt(H)) over the
+    whole bin from which one Newton step lands on floor(sqrt(H)) or one
+    above it (fixed/sqrt.c)."""
+    seeds = [math.isqrt(((j + 1) << 18) - 1)
+             for j in range(SQRT_SEED_FIRST, SQRT_SEED_FIRST + SQRT_SEED_COUNT)]
+    assert max(seeds) < 2 ** 13
+    return """/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @ingroup drdc_fixed_sqrt
+ * @brief Seeds of the Q15.16 square root (generated: do not edit; run
+ *        fixed/gen_tables.py).
+ */
+#include "sqrt_impl.h"
+
+/* floor(sqrt(((j + 1) 2^18) - 1)) for j = 64..255: the root of the
+ * largest 26-bit H whose top 8 bits are j. */
+const uint16_t fx_sqrt_seed[FX_SQRT_SEED_COUNT] = {
+%s
+};
+""" % rows(["%du" % v for v in seeds], per_line=10)
+
+
 def main():
     with open(os.path.join(HERE, "trig_table.c"), "w") as f:
         f.write(table_text())
     print("wrote fixed/trig_table.c")
+    with open(os.path.join(HERE, "sqrt_table.c"), "w") as f:
+        f.write(sqrt_table_text())
+    print("wrote fixed/sqrt_table.c")
 
 
 if __name__ == "__main__":
