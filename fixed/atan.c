@@ -11,6 +11,7 @@
  */
 #include <drdc/fixed_trig.h>
 
+#include <stdbool.h>
 #include <stddef.h>
 
 #include <drdc/fixed_sqrt.h>
@@ -23,10 +24,10 @@
  * atan(y/x) = pi/2 - atan(x/y). */
 static uint32_t first_quadrant(uint32_t ay, uint32_t ax)
 {
-  if (ay <= ax) {
-    return fx_atan_ratio_bam(ay, ax);
-  }
-  return FX_BAM_QUARTER - fx_atan_ratio_bam(ax, ay);
+  bool steep = ay > ax;
+  uint32_t a = fx_atan_ratio_bam(steep ? ax : ay, steep ? ay : ax);
+
+  return steep ? (FX_BAM_QUARTER - a) : a;
 }
 
 drdc_status_t drdc_fx_atan2_bam32(int32_t y, int32_t x, drdc_bam32_t *out)

@@ -29,6 +29,16 @@ static inline uint64_t fx_abs64(int64_t x)
   return (x < 0) ? (UINT64_C(0) - (uint64_t)x) : (uint64_t)x;
 }
 
+/** The int32_t whose two's complement bits are v: v itself below 2^31,
+ *  v - 2^32 above, computed without an out-of-range conversion (GCC
+ *  compiles it to no instruction at all). */
+static inline int32_t fx_s32_from_bits(uint32_t v)
+{
+  uint32_t complement = ~v; /* < 2^31 when v >= 2^31 */
+
+  return (v < (UINT32_C(1) << 31)) ? (int32_t)v : (-(int32_t)complement - 1);
+}
+
 /** n / d rounded to nearest, ties away from zero, for d != 0 and
  *  n <= 2^63 (so n + d / 2 cannot overflow). One division: n / d is a tie
  *  k + 1/2 only for an even d, and then n + d / 2 = (k + 1) d; otherwise

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-2-Clause
-"""Generator of fixed/trig_table.c, the constant tables of fixed/ trig.
+"""Generator of fixed/trig_table.c, the constant tables of fixed/ trig,
+and of fixed/sqrt_table.c, the seeds of the Q15.16 square root.
 
 Run from the top of the tree with the project's Python packages:
   PYTHONPATH=.deps/python python3 fixed/gen_tables.py
@@ -8,7 +9,9 @@ Run from the top of the tree with the project's Python packages:
 committed table differs from what this script computes.)
 Values come from mpmath at 100 digits, rounded to nearest (ties away from
 zero, never met by these irrational values) and written as exact integers.
+The square-root seeds are exact integer roots (math.isqrt).
 """
+import math
 import os
 
 import mpmath
@@ -42,6 +45,7 @@ def table_text():
     atan_c3 = [rnd(B * (t * t - mpmath.mpf(1) / 3) / (1 + t * t) ** 3 * 4)
                for t in t0]
     assert max(sin_q31) == 2 ** 31 and atan_a[-1] == 2 ** 31
+    assert min(atan_c2) >= 0
     text = """/* SPDX-License-Identifier: BSD-2-Clause */
 /**
  * @file
@@ -57,36 +61,58 @@ const uint32_t fx_sin_q31[FX_TRIG_STEPS + 1] = {
 %s
 };
 
-/* B atan(i / 256) in binary-angle units times 4 (B = 2^32 / (2 pi)). */
-const uint32_t fx_atan_a[FX_TRIG_STEPS + 1] = {
+/* atan on [0, 1] at t = i / 256, i = 0..256, in binary-angle units times
+ * 4 (B = 2^32 / (2 pi) units per radian), one node per row so that one
+ * base address reaches all four:
+ *   a   B atan(t)
+ *   d1  B / (1 + t^2): the first derivative of B atan(t)
+ *   c2  B t / (1 + t^2)^2: minus the second Taylor coefficient (>= 0)
+ *   c3  B (t^2 - 1/3) / (1 + t^2)^3: the third Taylor coefficient */
+const fx_atan_node_t fx_atan_nodes[FX_TRIG_STEPS + 1] = {
 %s
 };
-
-/* B / (1 + t^2) at t = i / 256, binary-angle units per unit t, times 4:
- * the first derivative of B atan(t). */
-const uint32_t fx_atan_d1[FX_TRIG_STEPS + 1] = {
-%s
-};
-
-/* B t / (1 + t^2)^2 times 4: minus the second Taylor coefficient. */
-const int32_t fx_atan_c2[FX_TRIG_STEPS + 1] = {
-%s
-};
-
-/* B (t^2 - 1/3) / (1 + t^2)^3 times 4: the third Taylor coefficient. */
-const int32_t fx_atan_c3[FX_TRIG_STEPS + 1] = {
-%s
-};
-""" % (rows(["%du" % v for v in sin_q31]), rows(["%du" % v for v in atan_a]),
-       rows(["%du" % v for v in atan_d1]), rows(["%d" % v for v in atan_c2]),
-       rows(["%d" % v for v in atan_c3]))
+""" % (rows(["%du" % v for v in sin_q31]),
+       "\n".join("  { %du, %du, %du, %d }," % row
+                  for row in zip(atan_a, atan_d1, atan_c2, atan_c3)))
     return text
+
+
+SQRT_SEED_FIRST = 64   # first index: H >> 18 for H >= 2^24
+SQRT_SEED_COUNT = 192  # indices 64..255 cover H in [2^24, 2^26)
+
+
+def sqrt_table_text():
+    """The text of fixed/sqrt_table.c: for each index j, floor(sqrt) of the
+    largest H with H >> 18 == j, an upper bound of floor(sqrt(H)) over the
+    whole bin from which one Newton step lands on floor(sqrt(H)) or one
+    above it (fixed/sqrt.c)."""
+    seeds = [math.isqrt(((j + 1) << 18) - 1)
+             for j in range(SQRT_SEED_FIRST, SQRT_SEED_FIRST + SQRT_SEED_COUNT)]
+    assert max(seeds) < 2 ** 13
+    return """/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @ingroup drdc_fixed_sqrt
+ * @brief Seeds of the Q15.16 square root (generated: do not edit; run
+ *        fixed/gen_tables.py).
+ */
+#include "sqrt_impl.h"
+
+/* floor(sqrt(((j + 1) 2^18) - 1)) for j = 64..255: the root of the
+ * largest 26-bit H whose top 8 bits are j. */
+const uint16_t fx_sqrt_seed[FX_SQRT_SEED_COUNT] = {
+%s
+};
+""" % rows(["%du" % v for v in seeds], per_line=10)
 
 
 def main():
     with open(os.path.join(HERE, "trig_table.c"), "w") as f:
         f.write(table_text())
     print("wrote fixed/trig_table.c")
+    with open(os.path.join(HERE, "sqrt_table.c"), "w") as f:
+        f.write(sqrt_table_text())
+    print("wrote fixed/sqrt_table.c")
 
 
 if __name__ == "__main__":

@@ -15,18 +15,38 @@
 
 #include "fixed_impl.h"
 
-/* Product of two int32 values scaled down by 2^shift, rounded. */
-static drdc_status_t mul_s32(int32_t a, int32_t b, unsigned shift, int sat,
-                             int32_t *out)
+/* Product of two int32 values scaled down by 2^shift, rounded.
+ *
+ * The exact product p = a b (one SMULL / mullw + mulhw) is rounded as
+ * floor((p + 2^(shift-1) - [p < 0]) / 2^shift): adding half rounds ties
+ * up, and one less for a negative p turns that into ties away from zero
+ * (the same as rounding the magnitude). The sum fits: |p| <= 2^62. The
+ * result fits int32_t exactly when the sum lies in [-2^(31+shift),
+ * 2^(31+shift)), which the high word of its two's complement tells with
+ * one add and compare; the floor itself is then the low 32 bits of the
+ * logical shift (the bits a logical shift gets wrong lie above them). */
+static inline drdc_status_t mul_s32(int32_t a, int32_t b, unsigned shift,
+                                    int sat, int32_t *out)
 {
-  uint64_t mag;
+  int64_t p;
+  uint64_t v;
+  uint32_t high;
 
   if (out == NULL) {
     return DRDC_E_NULL;
   }
-  /* <= 2^62 + 2^(shift - 1): no overflow */
-  mag = ((uint64_t)fx_abs32(a) * fx_abs32(b)) + (UINT64_C(1) << (shift - 1u));
-  return fx_finish_s32((a < 0) != (b < 0), mag >> shift, sat, out);
+  p = (int64_t)a * b;
+  v = (uint64_t)p + ((UINT32_C(1) << (shift - 1u)) - (uint32_t)((uint64_t)p >> 63));
+  high = (uint32_t)(v >> 32);
+  if (((high + (UINT32_C(1) << (shift - 1u))) >> shift) == 0u) {
+    *out = fx_s32_from_bits((uint32_t)(v >> shift));
+    return DRDC_OK;
+  }
+  if (sat == 0) {
+    return DRDC_E_OVERFLOW;
+  }
+  *out = (p < 0) ? INT32_MIN : INT32_MAX;
+  return DRDC_W_SATURATED;
 }
 
 drdc_status_t drdc_fx_mul_q1_30(drdc_q1_30_t a, drdc_q1_30_t b,

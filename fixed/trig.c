@@ -15,42 +15,49 @@
 #include "trig_impl.h"
 
 /* S(r) rounded to Q1.30 (kernel value >= 0, <= 2^62). */
-static int32_t quadrant_sin(uint32_t r)
+static inline int32_t quadrant_sin(uint32_t r)
 {
   uint64_t v = (uint64_t)fx_sin_quadrant_q62(r);
 
   return (int32_t)((v + (UINT64_C(1) << 31)) >> 32);
 }
 
+/* sin(a) = +-S(r) or +-S(2^30 - r) by the quadrant q: odd quadrants mirror
+ * the kernel's argument, the lower half plane negates. */
+static inline int32_t sin_of(uint32_t q, uint32_t r)
+{
+  int32_t v = quadrant_sin(((q & 1u) != 0u) ? (FX_BAM_QUARTER - r) : r);
+
+  return (q >= 2u) ? -v : v;
+}
+
+/* cos(a) = sin(a + 2^30): the same with the next quadrant. */
+static inline int32_t cos_of(uint32_t q, uint32_t r)
+{
+  int32_t v = quadrant_sin(((q & 1u) != 0u) ? r : (FX_BAM_QUARTER - r));
+
+  return ((q == 1u) || (q == 2u)) ? -v : v;
+}
+
 void drdc_fx_sincos_bam32(drdc_bam32_t a, drdc_q1_30_t *s, drdc_q1_30_t *c)
 {
   uint32_t q = a >> 30;
   uint32_t r = a & (FX_BAM_QUARTER - 1u);
-  int32_t sr;
-  int32_t cr;
 
   if (s != NULL) {
-    sr = quadrant_sin(((q & 1u) != 0u) ? (FX_BAM_QUARTER - r) : r);
-    *s = (q >= 2u) ? -sr : sr;
+    *s = sin_of(q, r);
   }
   if (c != NULL) {
-    cr = quadrant_sin(((q & 1u) != 0u) ? r : (FX_BAM_QUARTER - r));
-    *c = ((q == 1u) || (q == 2u)) ? -cr : cr;
+    *c = cos_of(q, r);
   }
 }
 
 drdc_q1_30_t drdc_fx_sin_bam32(drdc_bam32_t a)
 {
-  drdc_q1_30_t s = 0;
-
-  drdc_fx_sincos_bam32(a, &s, NULL);
-  return s;
+  return sin_of(a >> 30, a & (FX_BAM_QUARTER - 1u));
 }
 
 drdc_q1_30_t drdc_fx_cos_bam32(drdc_bam32_t a)
 {
-  drdc_q1_30_t c = 0;
-
-  drdc_fx_sincos_bam32(a, NULL, &c);
-  return c;
+  return cos_of(a >> 30, a & (FX_BAM_QUARTER - 1u));
 }

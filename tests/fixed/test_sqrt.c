@@ -154,6 +154,58 @@ static void test_sqrt_q_formats(void)
   TEST_ASSERT_EQUAL_INT32(0, r);
 }
 
+/* drdc_fx_sqrt_q15_16 takes one Zimmermann step after a table-seeded
+ * Newton step (fixed/sqrt.c); its risky inputs are small x, the edges of
+ * the 192 seed bins at every normalising shift, and x on either side of
+ * each rounding boundary (x 2^16 around r^2 + r). Each is judged by the
+ * exact criterion. (On the host every x in [0, 2^31) was compared with
+ * the digit-by-digit root it replaced: identical.) */
+static int q15_16_root_ok(int32_t x)
+{
+  drdc_q15_16_t r = -1;
+
+  return (drdc_fx_sqrt_q15_16(x, &r) == DRDC_OK)
+         && is_rounded_root((uint64_t)x << 16, (uint64_t)r);
+}
+
+static void test_sqrt_q15_16_dense(void)
+{
+  int32_t bad = -1;
+  uint32_t x;
+  uint32_t j;
+  uint32_t z;
+  uint32_t r;
+
+  for (x = 0; x < 65536u; x++) {              /* every small x */
+    if (!q15_16_root_ok((int32_t)x)) {
+      bad = (int32_t)x;
+    }
+  }
+  for (z = 0; z <= 30u; z += 2u) {            /* every shift, every bin */
+    for (j = 64u; j < 256u; j++) {
+      uint32_t first = (j << 24) >> z;        /* m = x 2^z in bin j */
+      uint32_t last = (((j + 1u) << 24) - 1u) >> z;
+
+      if (((first >> 31) == 0u) && !q15_16_root_ok((int32_t)first)) {
+        bad = (int32_t)first;
+      }
+      if (((last >> 31) == 0u) && !q15_16_root_ok((int32_t)last)) {
+        bad = (int32_t)last;
+      }
+    }
+  }
+  /* rounding boundaries: x = floor((r^2 + r) / 2^16) rounds down to r,
+   * x + 1 up to r + 1; r < 2^23.5 */
+  for (r = 1u; r < 11863283u; r += 97u) {
+    uint64_t b = (((uint64_t)r * r) + r) >> 16;
+
+    if (!q15_16_root_ok((int32_t)b) || !q15_16_root_ok((int32_t)(b + 1u))) {
+      bad = (int32_t)b;
+    }
+  }
+  TEST_ASSERT_EQUAL_INT32(-1, bad);
+}
+
 static void test_rsqrt_q15_16(void)
 {
   size_t i;
@@ -258,6 +310,7 @@ void suite_fixed_sqrt(void)
   RUN_TEST(test_sqrt_u32_at_every_boundary);
   RUN_TEST(test_sqrt_u64_structured_and_random);
   RUN_TEST(test_sqrt_q_formats);
+  RUN_TEST(test_sqrt_q15_16_dense);
   RUN_TEST(test_rsqrt_q15_16);
   RUN_TEST(test_rsqrt_q1_30);
   RUN_TEST(test_hypot);

@@ -66,6 +66,16 @@ SPECIAL32 = [
     ("MULDIV_S32", I32[0], 1, -1), ("MULDIV_S32", I32[1], I32[1], I32[1]),
     ("MULDIV_S32", 5, 1, 2), ("MULDIV_S32", -5, 1, 2), ("MULDIV_S32", 5, 1, -2),
     ("MULDIV_S32", 0, I32[0], -1), ("MULDIV_S32", I32[0], I32[0], 1),
+    # products whose rounding decides overflow (the multiplies' fast path
+    # judges the rounded high word): ties at 2^31 - 1/2 (positive:
+    # overflows; negative: INT32_MIN), at -(2^31 + 1/2) (overflows) and at
+    # 2^31 - 3/2 (INT32_MAX); factors of 2^15 (2^32 - 1), 2^15 (2^32 + 1),
+    # 2^15 (2^32 - 3) and, in Q1.30, 2^29 (2^32 -+ 1)
+    ("MUL_Q15_16", 8355840, 16843009, 0), ("MUL_Q15_16", -8355840, 16843009, 0),
+    ("MUL_Q15_16", -21004288, 6700417, 0), ("MUL_Q15_16", 302809088, 464773, 0),
+    ("MUL_Q1_30", 1610612736, 1431655765, 0),
+    ("MUL_Q1_30", -1610612736, 1431655765, 0),
+    ("MUL_Q1_30", -1715306752, 1344274432, 0),
 ]
 SPECIAL64 = [
     ("MUL_Q47_16", 1, 1 << 15, 1), ("MUL_Q47_16", -1, 1 << 15, 1),

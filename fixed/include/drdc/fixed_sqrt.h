@@ -25,7 +25,9 @@
  * n below 2^20; k^2 - 1, k^2, k^2 + 1, k^2 + k (rounds down) and
  * k^2 + k + 1 (rounds up) for every k < 2^16 and for 131 068 k spread up
  * to 2^32; 262 144 pseudo-random uint64; the Q forms and rsqrt by the
- * same criterion scaled to their formats; rsqrt and hypot also against
+ * same criterion scaled to their formats (Q15.16 also on every x < 2^16,
+ * the edges of its seed table's bins and 244 000 inputs beside rounding
+ * boundaries); rsqrt and hypot also against
  * exact roots from Python's math.isqrt (tests/ref/gen_fixed_sqrt.py).
  * @{
  */
