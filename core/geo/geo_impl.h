@@ -18,10 +18,12 @@
 #define DRDC_GEO_IMPL_H
 
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 
 #include <drdc/fixed_arith.h>
 #include <drdc/fixed_types.h>
+#include <drdc/geo.h>
 #include <drdc/types.h>
 
 /** 1.0 in Q5.58. */
@@ -148,5 +150,15 @@ drdc_q47_16_t geo_ups_metres(int64_t a);
 
 /** Metres (Q47.16, |v| < 2^43) -> UPS angle. */
 int64_t geo_ups_angle(drdc_q47_16_t v);
+
+/**
+ * MGRS text of a UTM/UPS position already validated by drdc_geo_to_utm()
+ * or drdc_geo_from_utm(); lat (nas) picks the UTM latitude band. Returns
+ * DRDC_E_RANGE (prec outside -1..11), DRDC_E_EASTING or DRDC_E_NORTHING
+ * (outside the MGRS limits), DRDC_E_BUFFER (size too small); the text is
+ * written only on DRDC_OK.
+ */
+drdc_status_t geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,
+                              int32_t prec, char *text, size_t size);
 
 #endif /* DRDC_GEO_IMPL_H */

@@ -36,6 +36,7 @@ GENERATORS = [
     "gen_geo",
     "gen_geo_mgrs",
     "gen_geo_ecef",
+    "gen_geo_pose",
 ]
 
 
