@@ -2,17 +2,15 @@
 /**
  * @file
  * @ingroup drdc_geo
- * @brief Internal helpers of core/geo: Q5.58 arithmetic, sin/cos, atan2
- *        and sqrt to a few units of 2^-58, WGS-84 constants.
+ * @brief Internal helpers of core/geo: shorthands for the Q5.58
+ *        arithmetic of fixed/ (fixed_q5_58.h), WGS-84 constants.
  *
  * Every value here is Q5.58 (drdc_q5_58_t, real value raw / 2^58) unless
- * its name says otherwise; angles are radians. The binary angles of
- * fixed_trig.h (1.5e-9 rad = 9 mm on the ground) are too coarse for the
- * 0.2 mm the geodesy promises, so these helpers refine them: sin/cos by a
- * Taylor series on [-pi/4, pi/4], atan2 by one exact correction step from
- * the binary-angle seed, sqrt by Newton steps from the integer root. All
- * products go through drdc_fx_muldiv_s64() (128-bit intermediate, one
- * rounding), so no wide arithmetic lives in core/.
+ * its name says otherwise; angles are radians. The arithmetic itself
+ * (products, quotients, sin/cos, atan2, sqrt, with their error bounds)
+ * lives in fixed/; these shorthands return the value and drop the status
+ * where the geodesy keeps every argument inside the function's domain,
+ * so no wide arithmetic lives in core/.
  */
 #ifndef DRDC_GEO_IMPL_H
 #define DRDC_GEO_IMPL_H
@@ -22,6 +20,7 @@
 #include <stdint.h>
 
 #include <drdc/fixed_arith.h>
+#include <drdc/fixed_q5_58.h>
 #include <drdc/fixed_types.h>
 #include <drdc/geo.h>
 #include <drdc/types.h>
@@ -29,11 +28,11 @@
 /** 1.0 in Q5.58. */
 #define GEO_ONE INT64_C(288230376151711744)
 /** pi in Q5.58. */
-#define GEO_PI INT64_C(905502432259640355)
+#define GEO_PI DRDC_Q5_58_PI
 /** pi / 2 in Q5.58. */
-#define GEO_HALF_PI INT64_C(452751216129820178)
+#define GEO_HALF_PI DRDC_Q5_58_HALF_PI
 /** 2 pi in Q5.58. */
-#define GEO_TWO_PI INT64_C(1811004864519280711)
+#define GEO_TWO_PI DRDC_Q5_58_TWO_PI
 /** Nano-arcseconds in 180 degrees (pi radians). */
 #define GEO_NAS_180 INT64_C(648000000000000)
 /** Nano-arcseconds in one degree. */
@@ -74,15 +73,30 @@ int64_t geo_div(int64_t a, int64_t b);
 /** a b / c, rounded; c != 0 and the quotient within int64_t. */
 int64_t geo_muldiv(int64_t a, int64_t b, int64_t c);
 
-/** sin and cos of x radians, |x| <= 8; error <= 4e-18 (a few LSB). */
-void geo_sincos(int64_t x, int64_t *s, int64_t *c);
+/** sin and cos of x radians: drdc_fx_sincos_q5_58() (s, c not NULL). */
+static inline void geo_sincos(int64_t x, int64_t *s, int64_t *c)
+{
+  (void)drdc_fx_sincos_q5_58(x, s, c);
+}
 
-/** atan2(y, x) in radians, in (-pi, pi]; y and x any int64_t of one
- *  scale, not both zero; error <= 1e-17 rad. */
-int64_t geo_atan2(int64_t y, int64_t x);
+/** atan2(y, x) in radians, in (-pi, pi]: drdc_fx_atan2_q5_58(); 0 when
+ *  both are zero. */
+static inline int64_t geo_atan2(int64_t y, int64_t x)
+{
+  int64_t r = 0;
 
-/** sqrt(x) for 0 <= x (Q5.58), relative error <= 2^-57. */
-int64_t geo_sqrt(int64_t x);
+  (void)drdc_fx_atan2_q5_58(y, x, &r);
+  return r;
+}
+
+/** sqrt(x): drdc_fx_sqrt_q5_58(); 0 for x <= 0. */
+static inline int64_t geo_sqrt(int64_t x)
+{
+  int64_t r = 0;
+
+  (void)drdc_fx_sqrt_q5_58(x, &r);
+  return r;
+}
 
 /** Nano-arcseconds -> radians (Q5.58), |a| <= 2^49 nas. */
 int64_t geo_rad_from_nas(drdc_nas_t a);
