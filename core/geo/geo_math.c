@@ -51,7 +51,7 @@ int64_t geo_rad_from_nas(drdc_nas_t a)
 {
   /* a pi 2^58 / 648e12 = 1397 a + a 0.38029... (the fraction in Q5.58):
    * no division; |a| <= 2^51 keeps 1397 a in range */
-  return (a * 1397) + geo_mul(a, INT64_C(109613060018604784));
+  return (a * 1397) + geo_mul(a, GEO_NAS_RAD_FRACTION);
 }
 
 drdc_nas_t geo_nas_from_rad(int64_t r)

@@ -38,6 +38,7 @@ GENERATORS = [
     "gen_geo_mgrs",
     "gen_geo_ecef",
     "gen_geo_pose",
+    "gen_geo_consts",
 ]
 
 
