@@ -115,17 +115,21 @@ static uint64_t mag64(int64_t v)
   return (v < 0) ? (UINT64_C(0) - (uint64_t)v) : (uint64_t)v;
 }
 
-/* Bits of v (0 for 0). */
+/* Bits of v (0 for 0), by halving the search range: 7 steps */
 static unsigned bit_length(uint64_t v)
 {
   unsigned n = 0u;
+  unsigned step = 32u;
   uint64_t t = v;
 
-  while (t != 0u) {
-    n++;
-    t = t >> 1u;
+  while (step > 0u) {
+    if ((t >> step) != 0u) {
+      t = t >> step;
+      n += step;
+    }
+    step = step >> 1u;
   }
-  return n;
+  return (t != 0u) ? (n + 1u) : n;
 }
 
 drdc_status_t drdc_fx_atan2_q5_58(int64_t y, int64_t x, drdc_q5_58_t *out)

@@ -18,15 +18,6 @@ int64_t geo_muldiv(int64_t a, int64_t b, int64_t c)
   return r;
 }
 
-int64_t geo_mul(int64_t a, int64_t b)
-{
-  int64_t r = 0;
-
-  /* callers keep |a b| < 32: never fails */
-  (void)drdc_fx_mul_q5_58(a, b, &r);
-  return r;
-}
-
 int64_t geo_div(int64_t a, int64_t b)
 {
   int64_t r = 0;
