@@ -13,6 +13,8 @@
 #include <drdc/fixed_sqrt.h>
 #include <drdc/fixed_trig.h>
 
+#include "fixed_impl.h"
+
 /** 1.0 in Q5.58 as a literal (DRDC_Q5_58_ONE shifts a signed value). */
 #define Q5_58_ONE INT64_C(288230376151711744)
 /** 2 / pi in Q5.58: the quadrant of sin/cos by a product. */
@@ -25,13 +27,14 @@
  *  relative. */
 #define SQRT_SCALE_BELOW INT64_C(268435456)
 
-/* a b / 2^58, rounded; the callers keep |a b| < 32 */
+/* a b / 2^58 rounded to nearest, ties away from zero (the magnitude is
+ * rounded): drdc_fx_mul_q5_58() inline, without its status. Every use
+ * here keeps |a b| below 21, so the magnitude fits 63 bits. */
 static int64_t mul(int64_t a, int64_t b)
 {
-  int64_t r = 0;
+  uint64_t m = fx_mul_shr_round(fx_abs64(a), fx_abs64(b), 58u);
 
-  (void)drdc_fx_mul_q5_58(a, b, &r);
-  return r;
+  return ((a < 0) != (b < 0)) ? -(int64_t)m : (int64_t)m;
 }
 
 /* a 2^58 / b, rounded; 0 when b == 0 or the quotient overflows */
