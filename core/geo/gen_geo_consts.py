@@ -1,18 +1,27 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-2-Clause
-"""Prints the WGS-84 constants of core/geo/geo_consts.c as exact integers.
+"""Generator of core/geo/geo_consts.h and core/geo/geo_consts.c, the
+WGS-84, UTM and UPS constants of core/geo as exact integers.
 
-mpmath at 60 digits. Krueger's series coefficients alpha_j (forward) and
+Run from the top of the tree with the project's Python packages:
+  PYTHONPATH=.deps/python python3 core/geo/gen_geo_consts.py
+(tests/ref/generate.py runs it too through tests/ref/gen_geo_consts.py,
+and `./waf check` fails when the committed files differ from what this
+script computes.)
+
+mpmath at 60 digits, rounded to nearest (ties away from zero). Krueger's series coefficients alpha_j (forward) and
 beta_j (inverse) to 6th order in the third flattening n (the published
 series, Karney 2011, eqs. 35 and 36); the Fourier coefficients of the
 conformal latitude chi(phi) - phi and phi(chi) - chi are computed
 numerically (a 256-point discrete sine transform of the exact functions,
 exact to working precision), 8 terms each. Q5.58 unless named otherwise."""
+import os
 from fractions import Fraction as F
 
 import mpmath
 
 mpmath.mp.dps = 60
+HERE = os.path.dirname(os.path.abspath(__file__))
 ONE = mpmath.mpf(2) ** 58
 
 A = mpmath.mpf(6378137)
@@ -80,17 +89,101 @@ def fourier(f, terms, m=256):
             for j in range(1, terms + 1)]
 
 
-def main():
+def consts():
+    """(name, value, comment) of every scalar constant"""
     rect = A / (1 + N) * (1 + N ** 2 / 4 + N ** 4 / 64 + N ** 6 / 256)
-    print("e2", rnd(E2 * ONE))
-    print("e", rnd(E * ONE))
-    print("k0a_q40", rnd(K0 * rect * mpmath.mpf(2) ** 40))
-    print("k0_rect_over_a", rnd(K0 * rect / A * ONE))
-    print("pi", rnd(mpmath.pi * ONE))
-    for name, v in (("alpha", series(ALPHA)), ("beta", series(BETA)),
-                    ("chi", fourier(chi_of_phi, 8)),
-                    ("phi", fourier(phi_of_chi, 8))):
-        print(name, " ".join(str(rnd(x * ONE)) for x in v))
+    k0_ups = mpmath.mpf("0.994")
+    c_ups = mpmath.sqrt(1 - E2) * ((1 + E) / (1 - E)) ** (E / 2)
+    eta_max = mpmath.mpf("0.34")
+    nas_rad = mpmath.pi * ONE / 648000000000000
+    assert mpmath.floor(nas_rad) == 1397
+    return [
+        ("GEO_E2", rnd(E2 * ONE),
+         "WGS-84 first eccentricity squared e^2 = f (2 - f),\n"
+         " *  f = 1/298.257223563."),
+        ("GEO_E", rnd(E * ONE), "WGS-84 first eccentricity e."),
+        ("GEO_K0A_Q40", rnd(K0 * rect * mpmath.mpf(2) ** 40),
+         "k0 A in metres, Q23.40: k0 = 0.9996 times the rectifying\n"
+         " *  radius A = a / (1 + n) (1 + n^2/4 + n^4/64 + n^6/256),\n"
+         " *  a = 6 378 137 m."),
+        ("GEO_K0A_OVER_A", rnd(K0 * rect / A * ONE), "k0 A / a."),
+        ("GEO_POLE_RATIO", rnd(((1 + E) / (1 - E)) ** (E / 2) * ONE),
+         "lim cos(chi) / cos(phi) at the poles: ((1 + e) / (1 - e))^(e/2)."),
+        ("GEO_TM_MAX_TANH_ETA", rnd(mpmath.tanh(eta_max) * ONE),
+         "Largest cos(chi) |sin(lambda)| the series accept: tanh(0.34),\n"
+         " *  so that cosh(12 eta') stays below 32 (the Q5.58 range)."),
+        ("GEO_TM_MAX_ETA", rnd(eta_max * ONE),
+         "Largest |eta| of the inverse series (same reason): 0.34."),
+        ("GEO_UPS_K_Q39", rnd(2 * k0_ups * A / c_ups * mpmath.mpf(2) ** 39),
+         "UPS: 2 k0 a / c in metres, Q24.39 (k0 = 0.994,\n"
+         " *  c = sqrt(1 - e^2) ((1 + e) / (1 - e))^(e/2))."),
+        ("GEO_UPS_2K0_OVER_C", rnd(2 * k0_ups / c_ups * ONE), "UPS: 2 k0 / c."),
+        ("GEO_NAS_RAD_FRACTION", rnd((nas_rad - 1397) * ONE),
+         "Radians per nano-arcsecond in Q5.58 is 1397 plus this\n"
+         " *  fraction (pi 2^58 / 648e12 = 1397.38029...)."),
+    ]
+
+
+def tables():
+    return [("geo_chi_from_phi", "GEO_CHI_TERMS", fourier(chi_of_phi, 8)),
+            ("geo_phi_from_chi", "GEO_CHI_TERMS", fourier(phi_of_chi, 8)),
+            ("geo_alpha", "GEO_KRUEGER_TERMS", series(ALPHA)),
+            ("geo_beta", "GEO_KRUEGER_TERMS", series(BETA))]
+
+
+HEAD = """/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @ingroup drdc_geo
+ * @brief %s (generated: do not edit;
+ *        run core/geo/gen_geo_consts.py). mpmath at 60 digits, rounded
+ *        to nearest; Q5.58 unless named otherwise.
+ */
+"""
+
+
+def header_text():
+    out = [HEAD % "WGS-84, UTM and UPS constants of core/geo",
+           "#ifndef DRDC_GEO_CONSTS_H", "#define DRDC_GEO_CONSTS_H", "",
+           "#include <stdint.h>", ""]
+    for name, value, comment in consts():
+        out.append("/** %s */" % comment)
+        out.append("#define %s INT64_C(%d)" % (name, value))
+    out += ["", "#endif /* DRDC_GEO_CONSTS_H */", ""]
+    return "\n".join(out)
+
+
+def source_text():
+    out = [HEAD % "Series coefficients of core/geo: conformal latitude\n"
+           " *        and Krueger's alpha and beta",
+           '#include "geo_impl.h"', ""]
+    for name, size, values in tables():
+        items = ["INT64_C(%d)" % rnd(v * ONE) for v in values]
+        out.append("const int64_t %s[%s] = {" % (name, size))
+        line = " "
+        for item in items:
+            if len(line) + len(item) + 2 > 78:
+                out.append(line.rstrip())
+                line = " "
+            line += " " + item + ","
+        out.append(line.rstrip().rstrip(","))
+        out.append("};")
+    out.append("")
+    return "\n".join(out)
+
+
+def texts():
+    """{path from the top of the tree: text} of the generated files"""
+    return {"core/geo/geo_consts.h": header_text(),
+            "core/geo/geo_consts.c": source_text()}
+
+
+def main():
+    top = os.path.dirname(os.path.dirname(HERE))
+    for rel, text in texts().items():
+        with open(os.path.join(top, rel), "w") as f:
+            f.write(text)
+        print("wrote " + rel)
 
 
 if __name__ == "__main__":

@@ -79,9 +79,8 @@ static int64_t pow10_i64(int32_t n)
   return p;
 }
 
-/* the text of a validated UTM/UPS position; lat picks the UTM band */
-static drdc_status_t format(const drdc_geo_utm_t *u, drdc_nas_t lat,
-                            int32_t prec, char *text, size_t size)
+drdc_status_t geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,
+                              int32_t prec, char *text, size_t size)
 {
   char *buf = text;
   size_t n = 0u;
@@ -194,7 +193,7 @@ drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
     return st;
   }
   /* the standard zone is always inside the MGRS limits */
-  return format(&u, lat, prec, text, size);
+  return geo_mgrs_format(&u, lat, prec, text, size);
 }
 
 drdc_status_t drdc_geo_mgrs_from_utm(const drdc_geo_utm_t *u, int32_t prec,
@@ -213,7 +212,7 @@ drdc_status_t drdc_geo_mgrs_from_utm(const drdc_geo_utm_t *u, int32_t prec,
   if (st != DRDC_OK) {
     return st;
   }
-  return format(u, lat, prec, text, size);
+  return geo_mgrs_format(u, lat, prec, text, size);
 }
 
 /* GeographicLib's placement of a UTM row letter (irow 0..19) in latitude

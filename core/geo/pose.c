@@ -3,7 +3,8 @@
  * @file
  * @ingroup drdc_geo
  * @brief Pose conversions: true <-> grid north through the meridian
- *        convergence, {W} <-> {W-UTM}, {l} <-> {W} through NED.
+ *        convergence, {W} <-> {W-UTM}, {W-MGRS}, {l} <-> {W} through
+ *        NED, and their Euler forms {We}, {We-UTM}, {We-MGRS}, {le}.
  */
 #include <drdc/pose.h>
 
@@ -276,4 +277,266 @@ drdc_status_t drdc_pose_l_from_w(const drdc_WPose_t *ref,
   out->q.y = q.y;
   out->q.z = q.z;
   return DRDC_OK;
+}
+
+/* the MGRS text of w's position at prec and the convergence there; text
+ * (DRDC_GEO_MGRS_SIZE bytes) written only on DRDC_OK */
+static drdc_status_t mgrs_and_gamma(drdc_nas_t lat, drdc_nas_t lon,
+                                    int32_t prec, char *text,
+                                    drdc_nas_t *gamma)
+{
+  drdc_geo_utm_t u;
+  drdc_status_t st;
+
+  /* prec first: DRDC_E_RANGE must not depend on the position */
+  if ((prec < DRDC_GEO_MGRS_PREC_MIN) || (prec > DRDC_GEO_MGRS_PREC_MAX)) {
+    return DRDC_E_RANGE;
+  }
+  st = drdc_geo_to_utm(lat, lon, DRDC_GEO_ZONE_STANDARD, &u, gamma, NULL);
+  if (st == DRDC_OK) {
+    /* the standard zone is always inside the MGRS limits */
+    st = geo_mgrs_format(&u, lat, prec, text, DRDC_GEO_MGRS_SIZE);
+  }
+  return st;
+}
+
+/* the position of an MGRS text (its cell's centre) and the convergence
+ * there */
+static drdc_status_t mgrs_centre(const char *text, drdc_nas_t *lat,
+                                 drdc_nas_t *lon, drdc_nas_t *gamma)
+{
+  drdc_geo_utm_t corner;
+  drdc_geo_utm_t centre;
+  size_t n = 0u;
+  drdc_status_t st;
+
+  /* the decoder must not read beyond the array */
+  while ((n < DRDC_GEO_MGRS_SIZE) && (text[n] != '\0')) {
+    n++;
+  }
+  if (n == DRDC_GEO_MGRS_SIZE) {
+    return DRDC_E_MGRS;
+  }
+  st = drdc_geo_mgrs_decode(text, &corner, &centre, NULL);
+  if (st == DRDC_OK) {
+    st = drdc_geo_from_utm(&centre, lat, lon, gamma, NULL);
+  }
+  return st;
+}
+
+/* a formatted MGRS text with its NUL (always within the array) */
+static void copy_text(char *dst, const char *src)
+{
+  size_t i = 0u;
+
+  while ((i < (DRDC_GEO_MGRS_SIZE - 1u)) && (src[i] != '\0')) {
+    dst[i] = src[i];
+    i++;
+  }
+  dst[i] = '\0';
+}
+
+drdc_status_t drdc_pose_wmgrs_from_w(const drdc_WPose_t *w, int32_t prec,
+                                     drdc_WMGRSPose_t *out)
+{
+  char text[DRDC_GEO_MGRS_SIZE];
+  drdc_nas_t gamma = 0;
+  drdc_quat_t q = { 0, 0, 0, 0 };
+  drdc_status_t st;
+
+  if ((w == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  st = mgrs_and_gamma(w->latitude, w->longitude, prec, text, &gamma);
+  if (st == DRDC_OK) {
+    st = turn_about_down(&w->q, -gamma, &q);
+  }
+  if (st != DRDC_OK) {
+    return st;
+  }
+  copy_text(out->mgrs, text);
+  out->height = w->height;
+  out->q.s = q.s;
+  out->q.x = q.x;
+  out->q.y = q.y;
+  out->q.z = q.z;
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_pose_w_from_wmgrs(const drdc_WMGRSPose_t *m,
+                                     drdc_WPose_t *out)
+{
+  drdc_nas_t lat = 0;
+  drdc_nas_t lon = 0;
+  drdc_nas_t gamma = 0;
+  drdc_quat_t q = { 0, 0, 0, 0 };
+  drdc_status_t st;
+
+  if ((m == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  st = mgrs_centre(m->mgrs, &lat, &lon, &gamma);
+  if (st == DRDC_OK) {
+    st = turn_about_down(&m->q, gamma, &q);
+  }
+  if (st != DRDC_OK) {
+    return st;
+  }
+  out->latitude = lat;
+  out->longitude = lon;
+  out->height = m->height;
+  out->q.s = q.s;
+  out->q.x = q.x;
+  out->q.y = q.y;
+  out->q.z = q.z;
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_pose_wemgrs_from_we(const drdc_WePose_t *w, int32_t prec,
+                                       drdc_WeMGRSPose_t *out)
+{
+  char text[DRDC_GEO_MGRS_SIZE];
+  drdc_nas_t gamma = 0;
+  drdc_status_t st;
+
+  if ((w == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  st = mgrs_and_gamma(w->latitude, w->longitude, prec, text, &gamma);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  copy_text(out->mgrs, text);
+  out->height = w->height;
+  out->e.yaw = w->e.yaw - drdc_pose_bam_from_convergence(gamma);
+  out->e.pitch = w->e.pitch;
+  out->e.roll = w->e.roll;
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_pose_we_from_wemgrs(const drdc_WeMGRSPose_t *m,
+                                       drdc_WePose_t *out)
+{
+  drdc_nas_t lat = 0;
+  drdc_nas_t lon = 0;
+  drdc_nas_t gamma = 0;
+  drdc_status_t st;
+
+  if ((m == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  st = mgrs_centre(m->mgrs, &lat, &lon, &gamma);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  out->latitude = lat;
+  out->longitude = lon;
+  out->height = m->height;
+  out->e.yaw = m->e.yaw + drdc_pose_bam_from_convergence(gamma);
+  out->e.pitch = m->e.pitch;
+  out->e.roll = m->e.roll;
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_pose_l_from_le(const drdc_lePose_t *le, drdc_lPose_t *out)
+{
+  drdc_quat_t q = { 0, 0, 0, 0 };
+
+  if ((le == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  (void)drdc_quat_from_euler(&le->e, &q);
+  out->p.x = le->p.x;
+  out->p.y = le->p.y;
+  out->p.z = le->p.z;
+  out->q.s = q.s;
+  out->q.x = q.x;
+  out->q.y = q.y;
+  out->q.z = q.z;
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_pose_le_from_l(const drdc_lPose_t *l, drdc_lePose_t *out)
+{
+  drdc_euler_t e = { 0u, 0u, 0u };
+  drdc_status_t st;
+
+  if ((l == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  st = drdc_euler_from_quat(&l->q, &e);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  out->p.x = l->p.x;
+  out->p.y = l->p.y;
+  out->p.z = l->p.z;
+  out->e.yaw = e.yaw;
+  out->e.pitch = e.pitch;
+  out->e.roll = e.roll;
+  return DRDC_OK;
+}
+
+/* {We} -> {W}: the same position, the attitude as a quaternion (never
+ * fails: the pointers are checked by the callers) */
+static void w_from_we(const drdc_WePose_t *we, drdc_WPose_t *w)
+{
+  w->longitude = we->longitude;
+  w->latitude = we->latitude;
+  w->height = we->height;
+  (void)drdc_quat_from_euler(&we->e, &w->q);
+}
+
+drdc_status_t drdc_pose_we_from_le(const drdc_WePose_t *ref,
+                                   drdc_q47_16_t geoid_separation,
+                                   const drdc_lePose_t *le,
+                                   drdc_WePose_t *out)
+{
+  drdc_WPose_t r;
+  drdc_WPose_t w;
+  drdc_lPose_t l;
+  drdc_euler_t e = { 0u, 0u, 0u };
+  drdc_status_t st;
+
+  if ((ref == NULL) || (le == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  w_from_we(ref, &r);
+  (void)drdc_pose_l_from_le(le, &l);
+  st = drdc_pose_w_from_l(&r, geoid_separation, &l, &w);
+  if (st == DRDC_OK) {
+    st = drdc_euler_from_quat(&w.q, &e);
+  }
+  if (st != DRDC_OK) {
+    return st;
+  }
+  out->longitude = w.longitude;
+  out->latitude = w.latitude;
+  out->height = w.height;
+  out->e.yaw = e.yaw;
+  out->e.pitch = e.pitch;
+  out->e.roll = e.roll;
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_pose_le_from_we(const drdc_WePose_t *ref,
+                                   drdc_q47_16_t geoid_separation,
+                                   const drdc_WePose_t *we,
+                                   drdc_lePose_t *out)
+{
+  drdc_WPose_t r;
+  drdc_WPose_t w;
+  drdc_lPose_t l = { { 0, 0, 0 }, { 0, 0, 0, 0 } };
+  drdc_status_t st;
+
+  if ((ref == NULL) || (we == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  w_from_we(ref, &r);
+  w_from_we(we, &w);
+  st = drdc_pose_l_from_w(&r, geoid_separation, &w, &l);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  return drdc_pose_le_from_l(&l, out);
 }

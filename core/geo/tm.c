@@ -18,39 +18,30 @@
 
 #include <drdc/fixed_hyper.h>
 
-const int64_t geo_chi_from_phi[GEO_CHI_TERMS] = {
-  INT64_C(-967461000637978), INT64_C(1353118549491), INT64_C(-2361903110),
-  INT64_C(4490620), INT64_C(-8945), INT64_C(18), INT64_C(0), INT64_C(0)
-};
-const int64_t geo_phi_from_chi[GEO_CHI_TERMS] = {
-  INT64_C(967460092520737), INT64_C(1894213484062), INT64_C(5086229695),
-  INT64_C(15529144), INT64_C(50843), INT64_C(174), INT64_C(1), INT64_C(0)
-};
-const int64_t geo_alpha[GEO_KRUEGER_TERMS] = {
-  INT64_C(241459757772849), INT64_C(219300882214), INT64_C(345197814),
-  INT64_C(700161), INT64_C(1646), INT64_C(4)
-};
-const int64_t geo_beta[GEO_KRUEGER_TERMS] = {
-  INT64_C(241459856760810), INT64_C(17022511755), INT64_C(48234854),
-  INT64_C(62396), INT64_C(109), INT64_C(0)
-};
-
-/* sum coef[j] sin(2 (j+1) x) from s2 = sin 2x, c2 = cos 2x */
+/* sum coef[j] sin(2 (j+1) x) from s2 = sin 2x, c2 = cos 2x. Trailing zero
+ * coefficients add exact zeros and are skipped, and so is the recurrence
+ * after the last term: the same sum with fewer products. */
 static int64_t sine_series(const int64_t *coef, unsigned terms, int64_t s2,
                            int64_t c2)
 {
   int64_t sn = s2;
   int64_t cn = c2;
   int64_t acc = 0;
+  unsigned n = terms;
   unsigned j;
 
-  for (j = 0u; j < terms; j++) {
-    int64_t next_s = geo_mul(sn, c2) + geo_mul(cn, s2);
-    int64_t next_c = geo_mul(cn, c2) - geo_mul(sn, s2);
-
+  while ((n > 0u) && (coef[n - 1u] == 0)) {
+    n--;
+  }
+  for (j = 0u; j < n; j++) {
     acc = acc + geo_mul(coef[j], sn);
-    sn = next_s;
-    cn = next_c;
+    if ((j + 1u) < n) {
+      int64_t next_s = geo_mul(sn, c2) + geo_mul(cn, s2);
+      int64_t next_c = geo_mul(cn, c2) - geo_mul(sn, s2);
+
+      sn = next_s;
+      cn = next_c;
+    }
   }
   return acc;
 }
@@ -92,19 +83,24 @@ static void krueger(const int64_t *coef, int64_t xi, int64_t eta,
   for (j = 0u; j < GEO_KRUEGER_TERMS; j++) {
     int64_t c = coef[j];
     int64_t twojc = c * (2 * ((int64_t)j + 1));
-    int64_t next_s = geo_mul(sn, c1) + geo_mul(cn, s1);
-    int64_t next_c = geo_mul(cn, c1) - geo_mul(sn, s1);
-    int64_t next_sh = geo_mul(shn, ch1) + geo_mul(chn, sh1);
-    int64_t next_ch = geo_mul(chn, ch1) + geo_mul(shn, sh1);
 
     out->dxi = out->dxi + geo_mul(c, geo_mul(sn, chn));
     out->deta = out->deta + geo_mul(c, geo_mul(cn, shn));
     out->p = out->p + geo_mul(twojc, geo_mul(cn, chn));
     out->q = out->q + geo_mul(twojc, geo_mul(sn, shn));
-    sn = next_s;
-    cn = next_c;
-    shn = next_sh;
-    chn = next_ch;
+    /* the multiples 2 (j+2) zeta by the addition theorems, not after the
+     * last term */
+    if ((j + 1u) < GEO_KRUEGER_TERMS) {
+      int64_t next_s = geo_mul(sn, c1) + geo_mul(cn, s1);
+      int64_t next_c = geo_mul(cn, c1) - geo_mul(sn, s1);
+      int64_t next_sh = geo_mul(shn, ch1) + geo_mul(chn, sh1);
+      int64_t next_ch = geo_mul(chn, ch1) + geo_mul(shn, sh1);
+
+      sn = next_s;
+      cn = next_c;
+      shn = next_sh;
+      chn = next_ch;
+    }
   }
 }
 

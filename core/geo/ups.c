@@ -17,10 +17,6 @@
 
 #include <drdc/fixed_sqrt.h>
 
-/** 2 k0 a / c in metres, Q24.39. */
-#define UPS_K_Q39 INT64_C(6947439316371376541)
-/** 2 k0 / c. */
-#define UPS_2K0_OVER_C INT64_C(571085109068951680)
 /** 2^61: takes (Q5.58 times Q24.39) to Q36. */
 #define TWO_POW_61 INT64_C(2305843009213693952)
 /** sin chi below which the point is beyond the projection's use (t > 4.4;
@@ -55,20 +51,20 @@ int geo_ups_forward(int64_t phi, int64_t lam, bool north, int64_t *x,
   *gamma = north ? lam : -lam;
   ratio = geo_cos_ratio(sphi);
   kk = geo_sqrt(GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi)));
-  kk = geo_div(geo_mul(geo_mul(UPS_2K0_OVER_C, ratio), kk), GEO_ONE + schi);
+  kk = geo_div(geo_mul(geo_mul(GEO_UPS_2K0_OVER_C, ratio), kk), GEO_ONE + schi);
   *k = kk;
   return 1;
 }
 
 drdc_q47_16_t geo_ups_metres(int64_t a)
 {
-  return drdc_fx_rshift_round_s64(geo_muldiv(a, UPS_K_Q39, TWO_POW_61),
+  return drdc_fx_rshift_round_s64(geo_muldiv(a, GEO_UPS_K_Q39, TWO_POW_61),
                                   20u);
 }
 
 int64_t geo_ups_angle(drdc_q47_16_t v)
 {
-  return geo_muldiv(v * INT64_C(1048576), TWO_POW_61, UPS_K_Q39);
+  return geo_muldiv(v * INT64_C(1048576), TWO_POW_61, GEO_UPS_K_Q39);
 }
 
 void geo_ups_reverse(drdc_q47_16_t x, drdc_q47_16_t y, bool north,
@@ -79,7 +75,7 @@ void geo_ups_reverse(drdc_q47_16_t x, drdc_q47_16_t y, bool north,
    * keep too few bits, and a Q47.16 hypot would cost 7.6 um */
   int64_t t = geo_muldiv((int64_t)drdc_fx_hypot_s64(x * INT64_C(1048576),
                                                      y * INT64_C(1048576)),
-                         TWO_POW_61, UPS_K_Q39);
+                         TWO_POW_61, GEO_UPS_K_Q39);
   int64_t chi = geo_atan2(GEO_ONE - geo_mul(t, t), 2 * t);
   int64_t sc = 0;
   int64_t cc = 0;

@@ -1,10 +1,13 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /**
  * @file
- * @brief Benchmark case of core/geo: geographic -> UTM (standard zone,
+ * @brief Benchmark cases of core/geo: geographic -> UTM (standard zone,
  *        convergence and scale), against the same algorithm in double
- *        (cases_double.c, "utm_forward").
+ *        (cases_double.c, "utm_forward"); and the Q5.58 stages it is made
+ *        of (fixed_q5_58.h, fixed_hyper.h, drdc_fx_mul_q5_58), to show
+ *        where its cycles go.
  */
+#include <drdc/fixed.h>
 #include <drdc/geo.h>
 
 #include "bench.h"
@@ -24,7 +27,84 @@ static uint32_t utm_case(uint32_t x)
 
 BENCH_LOOP(run_utm_forward, utm_case(x))
 
+/* Q5.58 arguments from the 32-bit input: |a| < 2^(27 + shift - 58) */
+#define ARG(v, shift) ((int64_t)(int32_t)(v) * (INT64_C(1) << (shift)))
+#define OTHER(v) ((v) * 2654435761u)
+
+static uint32_t q58_mul(uint32_t x)
+{
+  drdc_q5_58_t r = 0;
+
+  (void)drdc_fx_mul_q5_58(ARG(x, 27), ARG(OTHER(x), 27), &r);
+  return (uint32_t)r;
+}
+
+static uint32_t q58_div(uint32_t x)
+{
+  drdc_q5_58_t r = 0;
+
+  (void)drdc_fx_div_q5_58(ARG(x, 25), ARG(OTHER(x) | 1u, 27), &r);
+  return (uint32_t)r;
+}
+
+static uint32_t q58_sincos(uint32_t x)
+{
+  drdc_q5_58_t s = 0;
+  drdc_q5_58_t c = 0;
+
+  /* |x| < 2 radians */
+  (void)drdc_fx_sincos_q5_58(ARG(x, 28), &s, &c);
+  return (uint32_t)s ^ (uint32_t)c;
+}
+
+static uint32_t q58_atan2(uint32_t x)
+{
+  drdc_q5_58_t r = 0;
+
+  (void)drdc_fx_atan2_q5_58(ARG(x, 26), ARG(OTHER(x) | 1u, 26), &r);
+  return (uint32_t)r;
+}
+
+static uint32_t q58_sqrt(uint32_t x)
+{
+  drdc_q5_58_t r = 0;
+
+  (void)drdc_fx_sqrt_q5_58((int64_t)x * (INT64_C(1) << 27), &r);
+  return (uint32_t)r;
+}
+
+static uint32_t q58_sinh(uint32_t x)
+{
+  drdc_q5_58_t r = 0;
+
+  (void)drdc_fx_sinh_q5_58(ARG(x, 28), &r);
+  return (uint32_t)r;
+}
+
+static uint32_t q58_atanh(uint32_t x)
+{
+  drdc_q5_58_t r = 0;
+
+  (void)drdc_fx_atanh_q5_58(ARG(x, 26), &r);
+  return (uint32_t)r;
+}
+
+BENCH_LOOP(run_q58_mul, q58_mul(x))
+BENCH_LOOP(run_q58_div, q58_div(x))
+BENCH_LOOP(run_q58_sincos, q58_sincos(x))
+BENCH_LOOP(run_q58_atan2, q58_atan2(x))
+BENCH_LOOP(run_q58_sqrt, q58_sqrt(x))
+BENCH_LOOP(run_q58_sinh, q58_sinh(x))
+BENCH_LOOP(run_q58_atanh, q58_atanh(x))
+
 const bench_case_t bench_cases_geo[] = {
   { "utm_forward", "drdc", "drdc_geo_to_utm", run_utm_forward },
+  { "q58_mul", "drdc", "drdc_fx_mul_q5_58", run_q58_mul },
+  { "q58_div", "drdc", "drdc_fx_div_q5_58", run_q58_div },
+  { "q58_sincos", "drdc", "drdc_fx_sincos_q5_58", run_q58_sincos },
+  { "q58_atan2", "drdc", "drdc_fx_atan2_q5_58", run_q58_atan2 },
+  { "q58_sqrt", "drdc", "drdc_fx_sqrt_q5_58", run_q58_sqrt },
+  { "q58_sinh", "drdc", "drdc_fx_sinh_q5_58", run_q58_sinh },
+  { "q58_atanh", "drdc", "drdc_fx_atanh_q5_58", run_q58_atanh },
   { 0, 0, 0, 0 },
 };

@@ -1,16 +1,19 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /**
  * @file
- * @brief The bad-input rows of pose.h (the conversions are checked
- *        against GeoConvert in test_geo_utm.c and CartConvert in
- *        test_geo_ecef.c, next to their vectors).
+ * @brief The bad-input rows of pose.h, and {W-MGRS}, {We-MGRS} and
+ *        {le} <-> {We} against GeoConvert, CartConvert and SciPy
+ *        (vectors_pose.h; the {W-UTM} and {l} conversions are checked in
+ *        test_geo_utm.c and test_geo_ecef.c, next to their vectors).
  */
 #include <drdc/pose.h>
 
 #include <stddef.h>
+#include <string.h>
 
 #include "suites.h"
 #include "unity.h"
+#include "vectors_pose.h"
 
 #define NAS_DEG INT64_C(3600000000000)
 #define M(v) ((int64_t)(v) * INT64_C(65536))
@@ -226,6 +229,408 @@ static void test_we_round_trip_turns_the_yaw(void)
                             drdc_pose_bam_from_convergence(gamma));
 }
 
+#define COUNT(a) (sizeof(a) / sizeof((a)[0]))
+/* pose.h bounds, the maxima measured on vectors_pose.h */
+#define MGRS_Q_TOL 2     /* LSB of Q1.30 per quaternion part */
+#define MGRS_YAW_TOL 1   /* binary-angle LSB */
+#define MGRS_TEXT_PREC 8 /* texts identical up to 1 mm cells (prec 8) */
+#define CENTRE_TOL 1     /* nas: drdc_geo_from_utm()'s bound */
+#define LE_NAS_TOL 2000  /* nas of arc: 62 um */
+#define LE_H_TOL 2       /* LSB of Q47.16 */
+#define LE_ANG_TOL 8     /* binary-angle LSB */
+#define LE_P_TOL 4       /* LSB of Q15.16 */
+
+static int64_t dist64(int64_t a, int64_t b)
+{
+  return (a > b) ? (a - b) : (b - a);
+}
+
+static int64_t bam_dist(drdc_bam32_t a, drdc_bam32_t b)
+{
+  uint32_t d = a - b;
+
+  return (d > 0x80000000u) ? (int64_t)(0u - d) : (int64_t)d;
+}
+
+static int64_t quat_dist(const drdc_quat_t *q, const int32_t *v)
+{
+  int64_t d = dist64(q->s, v[0]);
+
+  d = (dist64(q->x, v[1]) > d) ? dist64(q->x, v[1]) : d;
+  d = (dist64(q->y, v[2]) > d) ? dist64(q->y, v[2]) : d;
+  return (dist64(q->z, v[3]) > d) ? dist64(q->z, v[3]) : d;
+}
+
+static int64_t euler_dist(const drdc_euler_t *e, const uint32_t *v)
+{
+  int64_t d = bam_dist(e->yaw, v[0]);
+
+  d = (bam_dist(e->pitch, v[1]) > d) ? bam_dist(e->pitch, v[1]) : d;
+  return (bam_dist(e->roll, v[2]) > d) ? bam_dist(e->roll, v[2]) : d;
+}
+
+/* GeoConvert -m text, GeoConvert -c convergence, SciPy turns */
+static void test_wmgrs_against_geoconvert(void)
+{
+  int64_t w_q = 0;
+  int64_t w_yaw = 0;
+  int64_t w_pos = 0;
+  size_t i;
+
+  for (i = 0; i < COUNT(pose_mgrs_vectors); i++) {
+    const struct pose_mgrs_vector *v = &pose_mgrs_vectors[i];
+    drdc_WPose_t w = { v->lon, v->lat, M(7),
+                       { v->q[0], v->q[1], v->q[2], v->q[3] } };
+    drdc_WePose_t we = { v->lon, v->lat, M(7), { v->yaw, 11u, 22u } };
+    drdc_WMGRSPose_t m;
+    drdc_WeMGRSPose_t me;
+
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_wmgrs_from_w(&w, v->prec, &m));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_pose_wemgrs_from_we(&we, v->prec, &me));
+    TEST_ASSERT_EQUAL_STRING(m.mgrs, me.mgrs);
+    if (v->prec <= MGRS_TEXT_PREC) {
+      TEST_ASSERT_EQUAL_STRING(v->mgrs, m.mgrs);
+    } else {
+      /* finer cells: GeographicLib's coordinate and ours differ by up to
+       * 1 LSB (15 um), so the truncated cells may be neighbours: corners
+       * within one cell (prec 9: 100 um = 6.6 LSB; 10 and 11: below
+       * 1 LSB) plus 1 LSB each of the two and of the corners' rounding */
+      static const uint64_t cell_lsb[3] = { 7u, 1u, 1u };
+      uint64_t tol = cell_lsb[v->prec - 9] + 2u;
+      drdc_geo_utm_t a;
+      drdc_geo_utm_t b;
+
+      TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                            drdc_geo_mgrs_decode(v->mgrs, &a, NULL, NULL));
+      TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                            drdc_geo_mgrs_decode(m.mgrs, &b, NULL, NULL));
+      TEST_ASSERT_EQUAL_INT32(a.zone, b.zone);
+      TEST_ASSERT_INT64_WITHIN(tol, a.easting, b.easting);
+      TEST_ASSERT_INT64_WITHIN(tol, a.northing, b.northing);
+      w_pos++;
+    }
+    TEST_ASSERT_EQUAL_INT64(M(7), m.height);
+    TEST_ASSERT_EQUAL_INT64(M(7), me.height);
+    w_q = (quat_dist(&m.q, v->q_grid) > w_q) ? quat_dist(&m.q, v->q_grid)
+                                               : w_q;
+    w_yaw = (bam_dist(me.e.yaw, v->yaw_grid) > w_yaw)
+              ? bam_dist(me.e.yaw, v->yaw_grid) : w_yaw;
+    TEST_ASSERT_EQUAL_UINT32(11u, me.e.pitch);
+    TEST_ASSERT_EQUAL_UINT32(22u, me.e.roll);
+  }
+  TEST_ASSERT_LESS_OR_EQUAL_INT64(MGRS_Q_TOL, w_q);
+  TEST_ASSERT_LESS_OR_EQUAL_INT64(MGRS_YAW_TOL, w_yaw);
+  /* the vectors hold finer precisions too */
+  TEST_ASSERT_GREATER_THAN_INT64(0, w_pos);
+}
+
+/* GeoConvert's text and the attitude as grid north: the cell's centre,
+ * the convergence there */
+static void test_w_from_wmgrs_against_geoconvert(void)
+{
+  int64_t w_q = 0;
+  int64_t w_yaw = 0;
+  int64_t w_pos = 0;
+  size_t i;
+
+  for (i = 0; i < COUNT(pose_mgrs_vectors); i++) {
+    const struct pose_mgrs_vector *v = &pose_mgrs_vectors[i];
+    drdc_WMGRSPose_t m;
+    drdc_WeMGRSPose_t me;
+    drdc_WPose_t w;
+    drdc_WePose_t we;
+
+    (void)memcpy(m.mgrs, v->mgrs, sizeof m.mgrs);
+    (void)memcpy(me.mgrs, v->mgrs, sizeof me.mgrs);
+    m.height = M(-3);
+    me.height = M(-3);
+    m.q.s = v->q[0];
+    m.q.x = v->q[1];
+    m.q.y = v->q[2];
+    m.q.z = v->q[3];
+    me.e.yaw = v->yaw;
+    me.e.pitch = 33u;
+    me.e.roll = 44u;
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_w_from_wmgrs(&m, &w));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_we_from_wemgrs(&me, &we));
+    w_pos = (dist64(w.latitude, v->centre_lat) > w_pos)
+              ? dist64(w.latitude, v->centre_lat) : w_pos;
+    w_pos = (dist64(w.longitude, v->centre_lon) > w_pos)
+              ? dist64(w.longitude, v->centre_lon) : w_pos;
+    TEST_ASSERT_EQUAL_INT64(w.latitude, we.latitude);
+    TEST_ASSERT_EQUAL_INT64(w.longitude, we.longitude);
+    TEST_ASSERT_EQUAL_INT64(M(-3), w.height);
+    TEST_ASSERT_EQUAL_INT64(M(-3), we.height);
+    w_q = (quat_dist(&w.q, v->q_true) > w_q) ? quat_dist(&w.q, v->q_true)
+                                               : w_q;
+    w_yaw = (bam_dist(we.e.yaw, v->yaw_true) > w_yaw)
+              ? bam_dist(we.e.yaw, v->yaw_true) : w_yaw;
+    TEST_ASSERT_EQUAL_UINT32(33u, we.e.pitch);
+    TEST_ASSERT_EQUAL_UINT32(44u, we.e.roll);
+  }
+  TEST_ASSERT_LESS_OR_EQUAL_INT64(CENTRE_TOL, w_pos);
+  TEST_ASSERT_LESS_OR_EQUAL_INT64(MGRS_Q_TOL, w_q);
+  TEST_ASSERT_LESS_OR_EQUAL_INT64(MGRS_YAW_TOL, w_yaw);
+}
+
+/* CartConvert's local frame and SciPy's rotations, both ways */
+static void test_le_and_we_against_cartconvert(void)
+{
+  int64_t w_lat = 0;
+  int64_t w_lon = 0;
+  int64_t w_h = 0;
+  int64_t w_ang = 0;
+  int64_t w_p = 0;
+  int64_t w_back = 0;
+  size_t i;
+
+  for (i = 0; i < COUNT(pose_local_vectors); i++) {
+    const struct pose_local_vector *v = &pose_local_vectors[i];
+    drdc_WePose_t ref = { v->ref[1], v->ref[0], v->ref[2],
+                          { v->ref_e[0], v->ref_e[1], v->ref_e[2] } };
+    drdc_lePose_t le = { { v->p[0], v->p[1], v->p[2] },
+                         { v->e[0], v->e[1], v->e[2] } };
+    drdc_WePose_t w = { v->lon, v->lat, v->height,
+                        { v->out_e[0], v->out_e[1], v->out_e[2] } };
+    drdc_WePose_t out;
+    drdc_lePose_t back;
+    int64_t d;
+
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_pose_we_from_le(&ref, v->sep, &le, &out));
+    w_lat = (dist64(out.latitude, v->lat) > w_lat)
+              ? dist64(out.latitude, v->lat) : w_lat;
+    /* longitude error as arc length: times cos(latitude) */
+    d = (dist64(out.longitude, v->lon) * v->cos_lat) >> 30;
+    w_lon = (d > w_lon) ? d : w_lon;
+    w_h = (dist64(out.height, v->height) > w_h)
+            ? dist64(out.height, v->height) : w_h;
+    w_ang = (euler_dist(&out.e, v->out_e) > w_ang)
+              ? euler_dist(&out.e, v->out_e) : w_ang;
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_pose_le_from_we(&ref, v->sep, &w, &back));
+    d = dist64(back.p.x, v->p[0]);
+    d = (dist64(back.p.y, v->p[1]) > d) ? dist64(back.p.y, v->p[1]) : d;
+    d = (dist64(back.p.z, v->p[2]) > d) ? dist64(back.p.z, v->p[2]) : d;
+    w_p = (d > w_p) ? d : w_p;
+    w_back = (euler_dist(&back.e, v->e) > w_back)
+               ? euler_dist(&back.e, v->e) : w_back;
+  }
+  TEST_ASSERT_LESS_OR_EQUAL_INT64(LE_NAS_TOL, w_lat);
+  TEST_ASSERT_LESS_OR_EQUAL_INT64(LE_NAS_TOL, w_lon);
+  TEST_ASSERT_LESS_OR_EQUAL_INT64(LE_H_TOL, w_h);
+  TEST_ASSERT_LESS_OR_EQUAL_INT64(LE_ANG_TOL, w_ang);
+  TEST_ASSERT_LESS_OR_EQUAL_INT64(LE_P_TOL, w_p);
+  TEST_ASSERT_LESS_OR_EQUAL_INT64(LE_ANG_TOL, w_back);
+}
+
+/* {le} <-> {l}: the position copied, the angles through the quaternion
+ * (yaw 90 degrees is SciPy's { cos 45, 0, 0, sin 45 }, 759250125) */
+static void test_le_and_l(void)
+{
+  drdc_lePose_t le = { { 1, -2, 3 }, { 1u << 30, 0u, 0u } };
+  drdc_lPose_t l;
+  drdc_lePose_t back;
+
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_l_from_le(&le, &l));
+  TEST_ASSERT_EQUAL_INT32(1, l.p.x);
+  TEST_ASSERT_EQUAL_INT32(-2, l.p.y);
+  TEST_ASSERT_EQUAL_INT32(3, l.p.z);
+  TEST_ASSERT_INT32_WITHIN(2, 759250125, l.q.s);
+  TEST_ASSERT_INT32_WITHIN(2, 759250125, l.q.z);
+  TEST_ASSERT_EQUAL_INT32(0, l.q.x);
+  TEST_ASSERT_EQUAL_INT32(0, l.q.y);
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_le_from_l(&l, &back));
+  TEST_ASSERT_EQUAL_INT32(3, back.p.z);
+  TEST_ASSERT_UINT32_WITHIN(1u, 1u << 30, back.e.yaw);
+  TEST_ASSERT_EQUAL_UINT32(0u, back.e.pitch);
+}
+
+/* the header's example: 33.3 N 44.4 E at 1 m is GeoConvert's
+ * 38SMB4414084706 */
+static void test_wmgrs_header_example(void)
+{
+  drdc_WPose_t w = { INT64_C(159840000000000), INT64_C(119880000000000), 0,
+                     { 1073741824, 0, 0, 0 } };
+  drdc_WMGRSPose_t m;
+
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_wmgrs_from_w(&w, 5, &m));
+  TEST_ASSERT_EQUAL_STRING("38SMB4414084706", m.mgrs);
+}
+
+static void test_drdc_pose_wmgrs_from_w_errors(void)
+{
+  drdc_WPose_t w = { 0, 0, 0, { INT32_MAX, 0, 0, INT32_MAX } };
+  drdc_WMGRSPose_t m;
+
+  m.height = SENTINEL64;
+  m.mgrs[0] = 'x';
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_wmgrs_from_w(NULL, 5, &m));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_wmgrs_from_w(&w, 5, NULL));
+  w.latitude = (90 * NAS_DEG) + 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE, drdc_pose_wmgrs_from_w(&w, 5, &m));
+  w.latitude = 0;
+  w.longitude = 540 * NAS_DEG;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE,
+                        drdc_pose_wmgrs_from_w(&w, 5, &m));
+  w.longitude = 0;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_pose_wmgrs_from_w(&w, 12, &m));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_pose_wmgrs_from_w(&w, -2, &m));
+  /* 45 N 10 E: 1 degree east of zone 32's meridian, a turn that
+   * overflows the oversized quaternion */
+  w.latitude = 45 * NAS_DEG;
+  w.longitude = 10 * NAS_DEG;
+  w.q.z = INT32_MIN;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_pose_wmgrs_from_w(&w, 5, &m));
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, m.height);
+  TEST_ASSERT_EQUAL_INT('x', m.mgrs[0]);
+}
+
+static void test_drdc_pose_w_from_wmgrs_errors(void)
+{
+  drdc_WMGRSPose_t m = { "38SMB4414084706", 0,
+                         { INT32_MAX, 0, 0, INT32_MIN } };
+  drdc_WPose_t w;
+  size_t i;
+
+  w.height = SENTINEL64;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_w_from_wmgrs(NULL, &w));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_w_from_wmgrs(&m, NULL));
+  /* 33 N: convergence about -0.33 degree turns the oversized q out of
+   * Q1.30 */
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_pose_w_from_wmgrs(&m, &w));
+  (void)memcpy(m.mgrs, "61SMB4414084706", 16);
+  TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE, drdc_pose_w_from_wmgrs(&m, &w));
+  (void)memcpy(m.mgrs, "38SMB441408470", 15);
+  TEST_ASSERT_EQUAL_INT(DRDC_E_MGRS, drdc_pose_w_from_wmgrs(&m, &w));
+  /* GeoConvert: "Block MN not in zone/band 38S" */
+  (void)memcpy(m.mgrs, "38SMN4414084706", 16);
+  TEST_ASSERT_EQUAL_INT(DRDC_E_BAND, drdc_pose_w_from_wmgrs(&m, &w));
+  /* no NUL in the array */
+  for (i = 0; i < sizeof m.mgrs; i++) {
+    m.mgrs[i] = '1';
+  }
+  TEST_ASSERT_EQUAL_INT(DRDC_E_MGRS, drdc_pose_w_from_wmgrs(&m, &w));
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, w.height);
+}
+
+static void test_drdc_pose_wemgrs_from_we_errors(void)
+{
+  drdc_WePose_t w = { 0, 0, 0, { 0u, 0u, 0u } };
+  drdc_WeMGRSPose_t m;
+
+  m.height = SENTINEL64;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_wemgrs_from_we(NULL, 5, &m));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_wemgrs_from_we(&w, 5, NULL));
+  w.latitude = (-90 * NAS_DEG) - 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE,
+                        drdc_pose_wemgrs_from_we(&w, 5, &m));
+  w.latitude = 0;
+  w.longitude = (-540 * NAS_DEG) - 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE,
+                        drdc_pose_wemgrs_from_we(&w, 5, &m));
+  w.longitude = 0;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_pose_wemgrs_from_we(&w, 12, &m));
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, m.height);
+}
+
+static void test_drdc_pose_we_from_wemgrs_errors(void)
+{
+  drdc_WeMGRSPose_t m = { "0SMB4414084706", 0, { 0u, 0u, 0u } };
+  drdc_WePose_t w;
+  size_t i;
+
+  w.height = SENTINEL64;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_we_from_wemgrs(NULL, &w));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_we_from_wemgrs(&m, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE, drdc_pose_we_from_wemgrs(&m, &w));
+  (void)memcpy(m.mgrs, "38IMB4414084706", 16);
+  TEST_ASSERT_EQUAL_INT(DRDC_E_MGRS, drdc_pose_we_from_wemgrs(&m, &w));
+  (void)memcpy(m.mgrs, "38SMN4414084706", 16);
+  TEST_ASSERT_EQUAL_INT(DRDC_E_BAND, drdc_pose_we_from_wemgrs(&m, &w));
+  for (i = 0; i < sizeof m.mgrs; i++) {
+    m.mgrs[i] = 'A';
+  }
+  TEST_ASSERT_EQUAL_INT(DRDC_E_MGRS, drdc_pose_we_from_wemgrs(&m, &w));
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, w.height);
+}
+
+static void test_drdc_pose_l_from_le_and_le_from_l_errors(void)
+{
+  drdc_lePose_t le = { { 0, 0, 0 }, { 0u, 0u, 0u } };
+  drdc_lPose_t l = { { 5, 0, 0 }, { 0, 0, 0, 0 } };
+  drdc_lePose_t out;
+
+  out.p.x = 77;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_l_from_le(NULL, &l));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_l_from_le(&le, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_le_from_l(NULL, &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_le_from_l(&l, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN, drdc_pose_le_from_l(&l, &out));
+  TEST_ASSERT_EQUAL_INT32(77, out.p.x);
+}
+
+static void test_drdc_pose_we_from_le_errors(void)
+{
+  drdc_WePose_t ref = { 0, 0, 0, { 0u, 0u, 0u } };
+  drdc_lePose_t le = { { 0, 0, 0 }, { 0u, 0u, 0u } };
+  drdc_WePose_t out;
+
+  out.height = SENTINEL64;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_we_from_le(NULL, 0, &le, &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_pose_we_from_le(&ref, 0, NULL, &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_we_from_le(&ref, 0, &le, NULL));
+  ref.latitude = (90 * NAS_DEG) + 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE,
+                        drdc_pose_we_from_le(&ref, 0, &le, &out));
+  ref.latitude = 0;
+  ref.longitude = 540 * NAS_DEG;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE,
+                        drdc_pose_we_from_le(&ref, 0, &le, &out));
+  ref.longitude = 0;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT,
+                        drdc_pose_we_from_le(&ref, DRDC_GEO_HEIGHT_MAX + 1,
+                                             &le, &out));
+  /* (30, 30, 30) km turned 45 degrees to the right: 42 km north */
+  ref.e.yaw = 1u << 29;
+  le.p.x = M(30000);
+  le.p.y = M(30000);
+  le.p.z = M(30000);
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        drdc_pose_we_from_le(&ref, 0, &le, &out));
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, out.height);
+}
+
+static void test_drdc_pose_le_from_we_errors(void)
+{
+  drdc_WePose_t ref = { 0, 0, 0, { 0u, 0u, 0u } };
+  drdc_WePose_t w = { 0, 0, 0, { 0u, 0u, 0u } };
+  drdc_lePose_t out;
+
+  out.p.x = 77;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_le_from_we(NULL, 0, &w, &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_pose_le_from_we(&ref, 0, NULL, &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_le_from_we(&ref, 0, &w, NULL));
+  w.latitude = (-90 * NAS_DEG) - 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE,
+                        drdc_pose_le_from_we(&ref, 0, &w, &out));
+  w.latitude = 0;
+  w.longitude = (-540 * NAS_DEG) - 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE,
+                        drdc_pose_le_from_we(&ref, 0, &w, &out));
+  w.longitude = 0;
+  w.height = DRDC_GEO_HEIGHT_MAX + 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT,
+                        drdc_pose_le_from_we(&ref, 0, &w, &out));
+  w.height = M(40000);
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        drdc_pose_le_from_we(&ref, 0, &w, &out));
+  TEST_ASSERT_EQUAL_INT32(77, out.p.x);
+}
+
 void suite_geo_pose(void)
 {
   UnitySetTestFile(__FILE__);
@@ -237,4 +642,16 @@ void suite_geo_pose(void)
   RUN_TEST(test_drdc_pose_weutm_from_we_errors);
   RUN_TEST(test_drdc_pose_we_from_weutm_errors);
   RUN_TEST(test_we_round_trip_turns_the_yaw);
+  RUN_TEST(test_wmgrs_against_geoconvert);
+  RUN_TEST(test_w_from_wmgrs_against_geoconvert);
+  RUN_TEST(test_le_and_we_against_cartconvert);
+  RUN_TEST(test_le_and_l);
+  RUN_TEST(test_wmgrs_header_example);
+  RUN_TEST(test_drdc_pose_wmgrs_from_w_errors);
+  RUN_TEST(test_drdc_pose_w_from_wmgrs_errors);
+  RUN_TEST(test_drdc_pose_wemgrs_from_we_errors);
+  RUN_TEST(test_drdc_pose_we_from_wemgrs_errors);
+  RUN_TEST(test_drdc_pose_l_from_le_and_le_from_l_errors);
+  RUN_TEST(test_drdc_pose_we_from_le_errors);
+  RUN_TEST(test_drdc_pose_le_from_we_errors);
 }

@@ -27,6 +27,7 @@ GENERATORS = [
     "gen_fixed_sqrt",
     "gen_fixed_trig",
     "gen_fixed_hyper",
+    "gen_fixed_q5_58",
     "gen_fixed_tables",
     "gen_orient_quat",
     "gen_orient_dh",
@@ -37,6 +38,8 @@ GENERATORS = [
     "gen_geo",
     "gen_geo_mgrs",
     "gen_geo_ecef",
+    "gen_geo_pose",
+    "gen_geo_consts",
 ]
 
 

@@ -17,6 +17,7 @@
 #include <drdc/fixed_sqrt.h>
 #include <drdc/fixed_trig.h>
 #include <drdc/fixed_hyper.h>
+#include <drdc/fixed_q5_58.h>
 #include <drdc/fixed_fix16.h>
 
 #endif /* DRDC_FIXED_H */

@@ -1,0 +1,230 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @ingroup drdc_fixed_q5_58
+ * @brief Q5.58 sin/cos, atan2, sqrt and quotient (see fixed_q5_58.h for
+ *        the method and error of each).
+ */
+#include <drdc/fixed_q5_58.h>
+
+#include <stddef.h>
+
+#include <drdc/fixed_arith.h>
+#include <drdc/fixed_sqrt.h>
+#include <drdc/fixed_trig.h>
+
+#include "fixed_impl.h"
+
+/** 1.0 in Q5.58 as a literal (DRDC_Q5_58_ONE shifts a signed value). */
+#define Q5_58_ONE INT64_C(288230376151711744)
+/** 2 / pi in Q5.58: the quadrant of sin/cos by a product. */
+#define Q5_58_TWO_OVER_PI INT64_C(183493156455125077)
+/** Binary-angle units (2^-31 half turns) to Q5.58 raw units of a half
+ *  turn: 2^27. */
+#define BAM_TO_Q58 INT64_C(134217728)
+/** Raw values below 2^28 (2^-30) get their square root from a scaled
+ *  argument: there the integer root seeds Newton less than 2^-15
+ *  relative. */
+#define SQRT_SCALE_BELOW INT64_C(268435456)
+
+/* a b / 2^58 rounded to nearest, ties away from zero (the magnitude is
+ * rounded): drdc_fx_mul_q5_58() inline, without its status. Every use
+ * here keeps |a b| below 21, so the magnitude fits 63 bits. */
+static int64_t mul(int64_t a, int64_t b)
+{
+  uint64_t m = fx_mul_shr_round(fx_abs64(a), fx_abs64(b), 58u);
+
+  return ((a < 0) != (b < 0)) ? -(int64_t)m : (int64_t)m;
+}
+
+/* a 2^58 / b, rounded; 0 when b == 0 or the quotient overflows */
+static int64_t quotient(int64_t a, int64_t b)
+{
+  int64_t r = 0;
+
+  (void)drdc_fx_muldiv_s64(a, Q5_58_ONE, b, &r);
+  return r;
+}
+
+drdc_status_t drdc_fx_div_q5_58(drdc_q5_58_t a, drdc_q5_58_t b,
+                                drdc_q5_58_t *out)
+{
+  if (out == NULL) {
+    return DRDC_E_NULL;
+  }
+  return drdc_fx_muldiv_s64(a, Q5_58_ONE, b, out);
+}
+
+drdc_status_t drdc_fx_sincos_q5_58(drdc_q5_58_t x, drdc_q5_58_t *s,
+                                   drdc_q5_58_t *c)
+{
+  /* (-1)^i / (2i+1)! and (-1)^i / (2i)! in Q5.58, i = 0..9: on |r| <= pi/4
+   * the first omitted terms are below 1e-19. */
+  static const int64_t sin_coef[10] = {
+    INT64_C(288230376151711744), INT64_C(-48038396025285291),
+    INT64_C(2401919801264265),   INT64_C(-57188566696768),
+    INT64_C(794285648566),       INT64_C(-7220778623),
+    INT64_C(46287042),           INT64_C(-220414),
+    INT64_C(810),                INT64_C(-2)
+  };
+  static const int64_t cos_coef[10] = {
+    INT64_C(288230376151711744), INT64_C(-144115188075855872),
+    INT64_C(12009599006321323),  INT64_C(-400319966877377),
+    INT64_C(7148570837096),      INT64_C(-79428564857),
+    INT64_C(601731552),          INT64_C(-3306217),
+    INT64_C(13776),              INT64_C(-45)
+  };
+  int64_t k;
+  int64_t r;
+  int64_t r2;
+  int64_t ps = sin_coef[9];
+  int64_t pc = cos_coef[9];
+  int64_t quadrant;
+  unsigned i;
+
+  if ((s == NULL) || (c == NULL)) {
+    return DRDC_E_NULL;
+  }
+  /* x = k pi/2 + r, |r| <= pi/4 (plus a few LSB): k from a product with
+   * 2/pi (no division); |k| <= 20, so k pi/2 stays within int64_t */
+  k = drdc_fx_rshift_round_s64(mul(x, Q5_58_TWO_OVER_PI), 58u);
+  r = x - (k * DRDC_Q5_58_HALF_PI);
+  r2 = mul(r, r);
+  quadrant = ((k % 4) + 4) % 4;
+  for (i = 9u; i > 0u; i--) {
+    ps = sin_coef[i - 1u] + mul(ps, r2);
+    pc = cos_coef[i - 1u] + mul(pc, r2);
+  }
+  ps = mul(ps, r);
+  if (quadrant == 0) {
+    *s = ps;
+    *c = pc;
+  } else if (quadrant == 1) {
+    *s = pc;
+    *c = -ps;
+  } else if (quadrant == 2) {
+    *s = -ps;
+    *c = -pc;
+  } else {
+    *s = -pc;
+    *c = ps;
+  }
+  return DRDC_OK;
+}
+
+/* |v| as uint64_t */
+static uint64_t mag64(int64_t v)
+{
+  return (v < 0) ? (UINT64_C(0) - (uint64_t)v) : (uint64_t)v;
+}
+
+/* Bits of v (0 for 0), by halving the search range: 7 steps */
+static unsigned bit_length(uint64_t v)
+{
+  unsigned n = 0u;
+  unsigned step = 32u;
+  uint64_t t = v;
+
+  while (step > 0u) {
+    if ((t >> step) != 0u) {
+      t = t >> step;
+      n += step;
+    }
+    step = step >> 1u;
+  }
+  return (t != 0u) ? (n + 1u) : n;
+}
+
+drdc_status_t drdc_fx_atan2_q5_58(int64_t y, int64_t x, drdc_q5_58_t *out)
+{
+  uint64_t m = (mag64(y) > mag64(x)) ? mag64(y) : mag64(x);
+  unsigned bits = bit_length(m);
+  int64_t yn = y;
+  int64_t xn = x;
+  drdc_bam32_t seed = 0u;
+  int64_t theta;
+  int64_t sn = 0;
+  int64_t cs = 0;
+  int64_t num;
+  int64_t den;
+
+  if (out == NULL) {
+    return DRDC_E_NULL;
+  }
+  if (m == 0u) {
+    return DRDC_E_DOMAIN;
+  }
+  /* one scale with the larger part in [2^57, 2^58]: shift right when
+   * longer (rounding), multiply up (exactly) when shorter */
+  if (bits > 58u) {
+    yn = drdc_fx_rshift_round_s64(y, bits - 58u);
+    xn = drdc_fx_rshift_round_s64(x, bits - 58u);
+  } else if (bits < 58u) {
+    int64_t up = (int64_t)(UINT64_C(1) << (58u - bits));
+
+    yn = y * up;
+    xn = x * up;
+  } else {
+    /* already on the scale */
+  }
+  /* seed: the binary-angle atan2 of the top 31 bits (1 LSB = 1.5e-9) */
+  (void)drdc_fx_atan2_bam32((int32_t)drdc_fx_rshift_round_s64(yn, 28u),
+                            (int32_t)drdc_fx_rshift_round_s64(xn, 28u),
+                            &seed);
+  if (seed >= 0x80000000u) {
+    theta = (int64_t)seed - INT64_C(4294967296);
+  } else {
+    theta = (int64_t)seed;
+  }
+  /* binary angle -> radians: theta pi / 2^31 = (theta 2^27) pi / 2^58 */
+  theta = mul(theta * BAM_TO_Q58, DRDC_Q5_58_PI);
+  /* the remaining angle d has tan d = (y cos t - x sin t) / (x cos t +
+   * y sin t); |d| < 2e-9 so atan(q) = q - q^3/3 is q to 3e-27 */
+  (void)drdc_fx_sincos_q5_58(theta, &sn, &cs);
+  num = mul(yn, cs) - mul(xn, sn);
+  den = mul(xn, cs) + mul(yn, sn);
+  theta = theta + quotient(num, den);
+  if (theta > DRDC_Q5_58_PI) {
+    theta = theta - DRDC_Q5_58_TWO_PI;
+  } else if (theta <= -DRDC_Q5_58_PI) {
+    theta = theta + DRDC_Q5_58_TWO_PI;
+  } else {
+    /* in (-pi, pi] */
+  }
+  *out = theta;
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_fx_sqrt_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
+{
+  int64_t v = x;
+  int64_t y;
+  unsigned k = 0u;
+  unsigned i;
+
+  if (out == NULL) {
+    return DRDC_E_NULL;
+  }
+  if (x < 0) {
+    return DRDC_E_DOMAIN;
+  }
+  if (x == 0) {
+    *out = 0;
+    return DRDC_OK;
+  }
+  /* small arguments: sqrt(x) = sqrt(4^k x) / 2^k, with 4^k x >= 2^-30 */
+  while (v < SQRT_SCALE_BELOW) {
+    v = v * 4;
+    k++;
+  }
+  /* seed: the integer root of v is sqrt of the real value in Q29 */
+  y = (int64_t)drdc_fx_sqrt_u64((uint64_t)v) * INT64_C(536870912);
+  /* Newton: each step squares the relative error; the rounded integer
+   * root is within 2^-15 relative for v >= 2^28, so two steps reach
+   * 2^-60 */
+  for (i = 0u; i < 2u; i++) {
+    y = drdc_fx_rshift_round_s64(y + quotient(v, y), 1u);
+  }
+  *out = (k == 0u) ? y : drdc_fx_rshift_round_s64(y, k);
+  return DRDC_OK;
+}
