@@ -34,5 +34,6 @@ void golden_fixed(golden_t *g);
 void golden_orient(golden_t *g);
 void golden_interop(golden_t *g);
 void golden_geo(golden_t *g);
+void golden_poses(golden_t *g);
 
 #endif /* DRDC_GOLDEN_H */

@@ -34,6 +34,7 @@ static void test_golden_digest_is_the_conformance_value(void)
   golden_part(&g, "orient", golden_orient);
   golden_part(&g, "interop", golden_interop);
   golden_part(&g, "geo", golden_geo);
+  golden_part(&g, "poses and JAUS bodies", golden_poses);
   digest = ~g.crc;
   bsp_puts("*** GOLDEN DIGEST: ");
   console_put_hex32(digest);
