@@ -5,11 +5,11 @@
  * @brief Correctly rounded reciprocal square roots in Q15.16 and Q1.30.
  *
  * The result is r = round(sqrt(2^e / x)) (e = 48 for Q15.16, 90 for
- * Q1.30). An estimate from the integer root of the truncated quotient is
- * within one of r; it is then corrected by the exact criterion
- *   x (2r - 1)^2 < 2^(e+2) < x (2r + 1)^2,
- * evaluated in 128 bits as 4x (r^2 -+ r) + x. Equality is impossible: an
- * odd square times x < 2^31 is never 2^(e+2).
+ * Q1.30). round(sqrt(v)) = floor((floor(2 sqrt(v)) + 1) / 2), and
+ * floor(2 sqrt(v)) = isqrt(floor(2^(e+2) / x)): the floor of the root of a
+ * real equals the integer root of its floor. So one 64-bit quotient and
+ * one integer square root give r exactly, without 128-bit arithmetic (the
+ * worst-case stack stays small).
  */
 #include <drdc/fixed_sqrt.h>
 
@@ -17,36 +17,24 @@
 
 #include "fixed_impl.h"
 
-/* x (2r + 1)^2 when `plus`, x (2r - 1)^2 otherwise (r >= 1), r < 2^32. */
-static fx_u128_t odd_square_times(uint32_t x, uint64_t r, int plus)
+/* floor(sqrt(n)) from the correctly rounded root (which may be 2^32). */
+static uint64_t isqrt_floor(uint64_t n)
 {
-  uint64_t rr = r * r; /* r < 2^32 */
-  uint64_t k = plus ? (rr + r) : (rr - r);
+  uint64_t s = drdc_fx_sqrt_u64(n);
 
-  return fx_add_u128(fx_mul_u64((uint64_t)x << 2, k), x);
+  if (s > UINT32_MAX) {
+    s = UINT32_MAX; /* the root of any uint64 is below 2^32 */
+  }
+  if ((s * s) > n) {
+    s--;
+  }
+  return s;
 }
 
-/* round(sqrt(2^e / x)) for 0 < x < 2^31, given 2^e / x < 2^64. */
-static uint64_t rsqrt_core(uint32_t x, unsigned e)
+/* round(sqrt(2^e / x)) from q = floor(2^(e+2) / x). */
+static uint64_t rsqrt_from_quotient(uint64_t q)
 {
-  fx_u128_t limit; /* 2^(e+2) */
-  fx_u128_t num;   /* 2^e */
-  uint64_t q = 0;
-  uint64_t r;
-
-  num.hi = (e >= 64u) ? (UINT64_C(1) << (e - 64u)) : 0u;
-  num.lo = (e >= 64u) ? 0u : (UINT64_C(1) << e);
-  limit.hi = ((e + 2u) >= 64u) ? (UINT64_C(1) << (e + 2u - 64u)) : 0u;
-  limit.lo = ((e + 2u) >= 64u) ? 0u : (UINT64_C(1) << (e + 2u));
-  (void)fx_div_round_u128(num, x, &q);
-  r = drdc_fx_sqrt_u64(q);
-  while (!fx_le_u128(limit, odd_square_times(x, r, 1))) {
-    r++;
-  }
-  while ((r > 0u) && fx_le_u128(limit, odd_square_times(x, r, 0))) {
-    r--;
-  }
-  return r;
+  return (isqrt_floor(q) + 1u) >> 1;
 }
 
 drdc_status_t drdc_fx_rsqrt_q15_16(drdc_q15_16_t x, drdc_q15_16_t *out)
@@ -57,8 +45,9 @@ drdc_status_t drdc_fx_rsqrt_q15_16(drdc_q15_16_t x, drdc_q15_16_t *out)
   if (x <= 0) {
     return DRDC_E_DOMAIN;
   }
-  /* x >= 1 gives r <= 2^24 */
-  *out = (drdc_q15_16_t)rsqrt_core((uint32_t)x, 48u);
+  /* x >= 1: 2^50 / x < 2^51, r <= 2^24 */
+  *out = (drdc_q15_16_t)rsqrt_from_quotient((UINT64_C(1) << 50) /
+                                            (uint32_t)x);
   return DRDC_OK;
 }
 
@@ -67,6 +56,8 @@ drdc_status_t drdc_fx_rsqrt_q15_16(drdc_q15_16_t x, drdc_q15_16_t *out)
 
 drdc_status_t drdc_fx_rsqrt_q1_30(drdc_q1_30_t x, drdc_q1_30_t *out)
 {
+  uint64_t q_hi;
+  uint64_t rem;
   uint64_t r;
 
   if (out == NULL) {
@@ -78,8 +69,11 @@ drdc_status_t drdc_fx_rsqrt_q1_30(drdc_q1_30_t x, drdc_q1_30_t *out)
   if (x <= RSQRT_Q1_30_OVERFLOW_MAX) {
     return DRDC_E_OVERFLOW;
   }
-  /* x > 2^28: 2^90 / x < 2^62, r <= 2^31 */
-  r = rsqrt_core((uint32_t)x, 90u);
+  /* x > 2^28: floor(2^92 / x) < 2^64 in two long-division steps of 32
+   * bits (the remainder < x < 2^31 leaves room for the shift); r <= 2^31 */
+  q_hi = (UINT64_C(1) << 60) / (uint32_t)x;
+  rem = (UINT64_C(1) << 60) % (uint32_t)x;
+  r = rsqrt_from_quotient((q_hi << 32) + ((rem << 32) / (uint32_t)x));
   if (r > (uint64_t)INT32_MAX) {
     return DRDC_E_OVERFLOW;
   }
