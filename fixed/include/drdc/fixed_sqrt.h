@@ -89,8 +89,9 @@ drdc_status_t drdc_fx_rsqrt_q15_16(drdc_q15_16_t x, drdc_q15_16_t *out);
 
 /**
  * Reciprocal square root in Q1.30: round(sqrt(2^90 / x)), correctly
- * rounded (integer root of the exact 64-bit quotient floor(2^92 / x)). For normalising unit quaternions
- * and vectors, whose squared norm is near 1.
+ * rounded (from the integer root of the exact 64-bit quotient
+ * floor(2^92 / x)). For normalising unit quaternions and vectors, whose
+ * squared norm is near 1.
  *
  * @param x Q1.30 value, > 0.25 (x > 2^28) for a result below 2
  * @param[out] out 1/sqrt(x) in Q1.30; unchanged on error
