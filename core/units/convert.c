@@ -6,7 +6,6 @@
  *        dimension with a single rounding.
  */
 #include <drdc/fixed_arith.h>
-#include <drdc/units.h>
 
 #include "units_impl.h"
 
@@ -30,7 +29,7 @@ drdc_status_t drdc_units_compatible(const drdc_unit_t *a,
     return DRDC_E_NULL;
   }
   for (i = 0u; i < (size_t)DRDC_UNITS_DIMENSIONS; i++) {
-    if (a->dimension[i] != b->dimension[i]) {
+    if (units_dimension(a, i) != units_dimension(b, i)) {
       return DRDC_E_DIMENSION;
     }
   }
@@ -47,15 +46,11 @@ static drdc_status_t offset_lsb(const drdc_unit_t *from, const drdc_unit_t *to,
                                 units_rat_t factor, unsigned from_frac,
                                 units_rat_t *h)
 {
-  units_rat_t o_from;
-  units_rat_t o_to;
+  units_rat_t o_from = units_offset(from);
+  units_rat_t o_to = units_offset(to);
   units_rat_t inverse;
   units_rat_t t;
 
-  o_from.num = from->offset_num;
-  o_from.den = from->offset_den;
-  o_to.num = to->offset_num;
-  o_to.den = to->offset_den;
   if ((units_rat_inv(factor, &inverse) != DRDC_OK)
       || (units_rat_mul(o_to, inverse, &t) != DRDC_OK)
       || (units_rat_sub(o_from, t, &t) != DRDC_OK)
@@ -116,14 +111,14 @@ drdc_status_t drdc_units_convert(int64_t raw, unsigned from_frac,
   if ((from_frac > DRDC_UNITS_FRAC_MAX) || (to_frac > DRDC_UNITS_FRAC_MAX)) {
     return DRDC_E_RANGE;
   }
-  f_from.num = from->factor_num;
-  f_from.den = from->factor_den;
-  f_to_inverse.num = to->factor_den;
-  f_to_inverse.den = to->factor_num;
+  f_from.num = units_number(from->factor_num);
+  f_from.den = units_number(from->factor_den);
+  f_to_inverse.num = units_number(to->factor_den);
+  f_to_inverse.den = units_number(to->factor_num);
   if (units_rat_mul(f_from, f_to_inverse, &factor) != DRDC_OK) {
     return DRDC_E_RANGE;
   }
-  if ((from->offset_num != 0) || (to->offset_num != 0)) {
+  if ((from->offset != 0u) || (to->offset != 0u)) {
     /* affine: a = raw x Hd + Hn, the factor divided by Hd; both exact */
     int64_t scaled;
     units_rat_t over_den;

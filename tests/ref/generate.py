@@ -31,6 +31,7 @@ GENERATORS = [
     "gen_orient_quat",
     "gen_orient_dh",
     "gen_units",
+    "gen_units_table",
     "gen_jaus",
     "gen_nmea",
     "gen_geo",
