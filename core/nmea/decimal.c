@@ -2,16 +2,17 @@
 /**
  * @file
  * @ingroup drdc_nmea
- * @brief [-]digits[.digits] -> an exact int64_t mantissa and its number of
- *        decimals.
+ * @brief [-]digits[.digits] -> an exact int64_t mantissa and 10^decimals.
  */
 #include "nmea_impl.h"
 
 /* Digits of a decimal mantissa that int64_t always holds. */
 #define DECIMAL_DIGITS_MAX 18u
+/* Decimals of a number converted with a scale: 3600 x 10^15 < 2^63. */
+#define DECIMALS_MAX 15u
 
 drdc_status_t nmea_decimal(const char *p, size_t n, int64_t *mantissa,
-                           size_t *decimals)
+                           int64_t *scale)
 {
   size_t i = 0u;
   size_t digits = 0u;
@@ -19,6 +20,7 @@ drdc_status_t nmea_decimal(const char *p, size_t n, int64_t *mantissa,
   int point = 0;
   int negative = 0;
   int64_t m = 0;
+  int64_t p10 = 1;
 
   if (n == 0u) {
     return DRDC_E_MISSING_FIELD;
@@ -40,6 +42,7 @@ drdc_status_t nmea_decimal(const char *p, size_t n, int64_t *mantissa,
       digits++;
       if (point != 0) {
         after++;
+        p10 *= 10; /* at most 10^18: digits <= 18 */
       }
     } else {
       return DRDC_E_SYNTAX;
@@ -48,7 +51,10 @@ drdc_status_t nmea_decimal(const char *p, size_t n, int64_t *mantissa,
   if (digits == 0u) {
     return DRDC_E_SYNTAX;
   }
+  if (after > DECIMALS_MAX) {
+    return DRDC_E_RANGE;
+  }
   *mantissa = (negative != 0) ? -m : m;
-  *decimals = after;
+  *scale = p10;
   return DRDC_OK;
 }

@@ -10,8 +10,6 @@
 
 #include "nmea_impl.h"
 
-/* Decimals of a number converted with a scale: 10^15 x 3600 < 2^63. */
-#define DECIMALS_MAX 15u
 /* Decimals of minutes kept exactly: 1e-10 minute = 6 nas. */
 #define MINUTE_DECIMALS_MAX 10u
 #define NAS_PER_MINUTE INT64_C(60000000000)
@@ -82,8 +80,8 @@ drdc_status_t nmea_fixed(const nmea_frame_t *fr, size_t i, nmea_scale_t scale,
   int narrow = 0;
   nmea_field_t f = nmea_field(fr, i);
   int64_t m = 0;
-  size_t k = 0u;
-  drdc_status_t st = nmea_decimal(f.p, f.n, &m, &k);
+  int64_t p10 = 1;
+  drdc_status_t st = nmea_decimal(f.p, f.n, &m, &p10);
 
   if ((scale == NMEA_METRES_Q15_16) || (scale == NMEA_KNOTS_Q15_16)) {
     narrow = 1;
@@ -91,11 +89,8 @@ drdc_status_t nmea_fixed(const nmea_frame_t *fr, size_t i, nmea_scale_t scale,
   if (st != DRDC_OK) {
     return st;
   }
-  if (k > DECIMALS_MAX) {
-    return DRDC_E_RANGE;
-  }
-  /* den x 10^15 < 2^63 for every scale */
-  st = drdc_fx_muldiv_s64(m, sc[0], sc[1] * pow10_s64(k), &m);
+  /* den x 10^15 < 2^63 for every scale (at most 15 decimals) */
+  st = drdc_fx_muldiv_s64(m, sc[0], sc[1] * p10, &m);
   if ((st != DRDC_OK)
       || ((narrow != 0) && ((m > INT32_MAX) || (m < INT32_MIN)))) {
     return DRDC_E_RANGE;

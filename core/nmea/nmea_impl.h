@@ -69,11 +69,12 @@ drdc_status_t nmea_digits(const char *p, size_t n, size_t min_digits,
 drdc_status_t nmea_uint(const nmea_frame_t *fr, size_t i, size_t min_digits,
                         size_t max_digits, int32_t *out);
 
-/** [-]digits[.digits] of the `n` characters at `p` -> mantissa and number
- *  of decimals (at most 18 digits). In a file of its own so that it is
- *  not inlined into nmea_fixed(), whose frame then stays small. */
+/** [-]digits[.digits] of the `n` characters at `p` -> mantissa and
+ *  10^decimals (at most 18 digits, 15 decimals: DRDC_E_RANGE beyond). In
+ *  a file of its own so that it is not inlined into nmea_fixed(), whose
+ *  frame then stays small. */
 drdc_status_t nmea_decimal(const char *p, size_t n, int64_t *mantissa,
-                           size_t *decimals);
+                           int64_t *scale);
 
 /** Scalings of decimal fields (nmea_fixed()). */
 typedef enum nmea_scale {

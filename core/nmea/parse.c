@@ -88,8 +88,8 @@ static drdc_status_t decode_sentence(const nmea_frame_t *fr, drdc_nmea_t *n)
  * second, run only when the first succeeded, writes the caller's record.
  * The second pass reads the same text with the same code, so it succeeds
  * too. Without the scratch drdc_nmea_t (136 bytes) and with the fields
- * as one-byte offsets, the worst-case stack fell from 856 to 280 bytes on
- * Cortex-M3 (688 to 272 on PowerPC e500; 112 and 96 of them are
+ * as one-byte offsets, the worst-case stack fell from 856 to 256 bytes on
+ * Cortex-M3 (688 to 256 on PowerPC e500; 112 and 96 of them are
  * drdc_fx_muldiv_s64's), for about twice the decoding cycles.
  */
 drdc_status_t drdc_nmea_parse(const char *text, size_t length,
