@@ -22,92 +22,57 @@ static units_rat_t pow2_rat(unsigned n)
 }
 
 /*
+ * Everything below works in two scratch rationals `x`, `y` besides the
+ * factor `f` and the offset `h`, reused from step to step: each 16-byte
+ * rational in this frame adds to the stack of drdc_units_convert().
+ *
  * The offset of the affine map in input LSB: H = (o_from - o_to / F) x
  * 2^from_frac with F = factor_from / factor_to, so that
  *   out = (raw + H) x F x 2^(to_frac - from_frac),
  * since v_to + o_to = (v_from + o_from) x F. Zero for linear units.
+ *
+ * Scaling by 2^shift (shift > 0) puts as many of the powers of two into
+ * the factor as fit and the rest into the input (an exact left shift);
+ * DRDC_E_RANGE when neither can take them.
  */
-static drdc_status_t offset_lsb(const drdc_unit_t *from,
-                                const drdc_unit_t *to,
-                                const units_rat_t *factor,
-                                unsigned from_frac, units_rat_t *h)
-{
-  units_rat_t o_from = units_offset(from);
-  units_rat_t o_to = units_offset(to);
-  units_rat_t t;
-  units_rat_t p = pow2_rat(from_frac);
-
-  if ((units_rat_inv(factor, &t) != DRDC_OK)
-      || (units_rat_mul(&o_to, &t, &t) != DRDC_OK)
-      || (units_rat_sub(&o_from, &t, &t) != DRDC_OK)
-      || (units_rat_mul(&t, &p, h) != DRDC_OK)) {
-    return DRDC_E_RANGE;
-  }
-  return DRDC_OK;
-}
-
-/*
- * Scale `factor` by 2^shift (shift > 0), putting as many of the powers of
- * two into the factor as fit and the rest into the input `*a` (an exact
- * left shift). DRDC_E_RANGE when neither can take them.
- */
-static drdc_status_t scale_up(units_rat_t *factor, int64_t *a,
-                              unsigned shift)
-{
-  unsigned k = shift + 1u;
-
-  while (k > 0u) {
-    units_rat_t f;
-    units_rat_t p;
-    unsigned rest;
-
-    k--;
-    rest = shift - k;
-    p = pow2_rat(k);
-    if (units_rat_mul(factor, &p, &f) == DRDC_OK) {
-      int64_t shifted = *a;
-
-      if ((rest == 0u) || (units_mul_s64(*a, pow2_rat(rest).num, &shifted)
-                           == DRDC_OK)) {
-        *factor = f;
-        *a = shifted;
-        return DRDC_OK;
-      }
-    }
-  }
-  return DRDC_E_RANGE;
-}
-
 drdc_status_t units_prepare(int64_t raw, unsigned from_frac,
                             const drdc_unit_t *from, unsigned to_frac,
                             const drdc_unit_t *to, int64_t *a,
                             units_rat_t *factor)
 {
-  units_rat_t f_from;
   units_rat_t f;
+  units_rat_t x;
+  units_rat_t y;
   int64_t in = raw;
-  drdc_status_t st;
+  drdc_status_t st = DRDC_OK;
 
-  f_from.num = units_number(from->factor_num);
-  f_from.den = units_number(from->factor_den);
+  x.num = units_number(from->factor_num);
+  x.den = units_number(from->factor_den);
   f.num = units_number(to->factor_den);
   f.den = units_number(to->factor_num);
-  if (units_rat_mul(&f_from, &f, &f) != DRDC_OK) {
+  if (units_rat_mul(&x, &f, &f) != DRDC_OK) {
     return DRDC_E_RANGE;
   }
   if ((from->offset != 0u) || (to->offset != 0u)) {
     /* affine: a = raw x Hd + Hn, the factor divided by Hd; both exact */
     int64_t scaled;
     units_rat_t h;
-    units_rat_t over_den;
 
-    if (offset_lsb(from, to, &f, from_frac, &h) != DRDC_OK) {
+    x = units_offset(from);
+    y = units_offset(to);
+    if ((units_rat_inv(&f, &h) != DRDC_OK)
+        || (units_rat_mul(&y, &h, &h) != DRDC_OK)
+        || (units_rat_sub(&x, &h, &h) != DRDC_OK)) {
       return DRDC_E_RANGE;
     }
-    over_den.num = 1;
-    over_den.den = h.den;
+    x = pow2_rat(from_frac);
+    if (units_rat_mul(&h, &x, &h) != DRDC_OK) {
+      return DRDC_E_RANGE;
+    }
+    x.num = 1;
+    x.den = h.den;
     if ((units_mul_s64(raw, h.den, &scaled) != DRDC_OK)
-        || (units_rat_mul(&f, &over_den, &f) != DRDC_OK)) {
+        || (units_rat_mul(&f, &x, &f) != DRDC_OK)) {
       return DRDC_E_RANGE;
     }
     if (((h.num > 0) && (scaled > (INT64_MAX - h.num)))
@@ -117,13 +82,31 @@ drdc_status_t units_prepare(int64_t raw, unsigned from_frac,
     in = scaled + h.num;
   }
   if (to_frac >= from_frac) {
-    st = scale_up(&f, &in, to_frac - from_frac);
-  } else {
-    units_rat_t down;
+    unsigned shift = to_frac - from_frac;
+    unsigned k = shift + 1u;
 
-    down.num = 1;
-    down.den = pow2_rat(from_frac - to_frac).num;
-    st = units_rat_mul(&f, &down, &f);
+    st = DRDC_E_RANGE;
+    while ((k > 0u) && (st != DRDC_OK)) {
+      unsigned rest;
+
+      k--;
+      rest = shift - k;
+      x = pow2_rat(k);
+      if (units_rat_mul(&f, &x, &y) == DRDC_OK) {
+        int64_t shifted = in;
+
+        if ((rest == 0u)
+            || (units_mul_s64(in, pow2_rat(rest).num, &shifted) == DRDC_OK)) {
+          f = y;
+          in = shifted;
+          st = DRDC_OK;
+        }
+      }
+    }
+  } else {
+    x.num = 1;
+    x.den = pow2_rat(from_frac - to_frac).num;
+    st = units_rat_mul(&f, &x, &f);
   }
   if (st != DRDC_OK) {
     return DRDC_E_RANGE;
