@@ -92,8 +92,8 @@ drdc_status_t drdc_time_jaus_to_utc(const drdc_time_leap_t *leap,
   if ((ref == NULL) || (utc == NULL)) {
     return DRDC_E_NULL;
   }
-  /* The stamp's fields and the reference's civil date live in blocks of
-   * their own, so their stack slots are shared (issue 8: stack depth). */
+  /* The stamp's fields live in a block of their own, so that their stack
+   * slots can be reused (issue 8: stack depth). */
   {
     drdc_time_jaus_fields_t f;
 
@@ -107,14 +107,18 @@ drdc_status_t drdc_time_jaus_to_utc(const drdc_time_leap_t *leap,
     c.second = (int32_t)f.second;
     c.nsec = (int32_t)f.msec * NS_PER_MS;
   }
+  /* the reference's year and month: drdc_time_to_civil() without the
+   * fields not needed (the same check, the day of its UTC second), one
+   * call level less */
+  if (drdc_time_check(leap, ref) != DRDC_OK) {
+    return DRDC_E_RANGE;
+  }
   {
-    drdc_time_civil_t r;
+    int32_t ref_day;
 
-    if (drdc_time_to_civil(leap, ref, &r) != DRDC_OK) {
-      return DRDC_E_RANGE;
-    }
-    ref_year = r.year;
-    ref_month = r.month;
+    (void)drdc_time_civil_from_days(
+        (int32_t)drdc_time_floor_div(ref->sec, SECONDS_PER_DAY), &ref_year,
+        &ref_month, &ref_day);
   }
   /* The month before, of and after the reference, earliest first so the
    * earlier candidate wins a tie. */
