@@ -34,6 +34,7 @@ from tools import footprint  # noqa: E402
 
 TARGETS = ("ppc-e500", "arm-cm3")
 GROWTH_LIMIT = 1.05
+STACK_GOAL = 256  # bytes: issue 8's limit for any public function
 
 CASE_RE = re.compile(r"^BENCH (\S+) (\S+) symbol=(\S+) calls=(\d+) ticks=(\d+)$")
 CAL_RE = re.compile(r"^BENCH-CALIBRATE iterations=(\d+) per_iteration=(\d+) ticks=(\d+)$")
@@ -145,14 +146,34 @@ def write_docs(report, docs):
                 "-" if b["cycles"] is None else "%.1f" % b["cycles"],
                 "-" if b["ratio"] is None else "%.1fx" % b["ratio"]))
     lines += ["", "## Footprint of libdrdc.a", "",
-              "| target | module | .text | .rodata | .data | .bss |", "|---|---|---:|---:|---:|---:|"]
+              "Flash = .text + .rodata + .data (issue 8's goal: the whole library",
+              "under 32 KiB = 32 768 bytes on each target).", "",
+              "| target | module | .text | .rodata | .data | .bss | flash |",
+              "|---|---|---:|---:|---:|---:|---:|"]
     for target, fp in sorted(report["footprint"].items()):
         for module, s in sorted(fp["modules"].items()) + [("**library**", fp["library"])]:
-            lines.append("| %s | %s | %d | %d | %d | %d |" % (
-                target, module, s["text"], s["rodata"], s["data"], s["bss"]))
-    lines += ["", "## Worst-case stack of each public function (bytes)", "",
+            lines.append("| %s | %s | %d | %d | %d | %d | %d |" % (
+                target, module, s["text"], s["rodata"], s["data"], s["bss"],
+                flash({"library": s})))
+    lines += ["", "## Largest symbols of libdrdc.a", "",
+              "The 20 largest functions and constant tables of each target (`nm -S`;",
+              "`T`/`t` code, `R`/`r` constant data, lower case: file-local). Code",
+              "sizes include every helper inlined into the function.", ""]
+    for target, fp in sorted(report["footprint"].items()):
+        lines += ["| %s: symbol | object | type | bytes |" % target,
+                  "|---|---|---|---:|"]
+        for r in fp.get("symbols", []):
+            lines.append("| %s | %s | %s | %d |" % (
+                r["symbol"], r["object"], r["type"], r["bytes"]))
+        lines.append("")
+    deep = {t: sorted(f for f, s in fp["stack"].items()
+                      if s.get("bytes") is None or s["bytes"] > STACK_GOAL)
+            for t, fp in report["footprint"].items()}
+    lines += ["## Worst-case stack of each public function (bytes)", "",
               "From GCC's call graphs (`-fcallgraph-info=su`): own frame plus the",
-              "deepest chain of library callees; libgcc helpers listed, not counted.", "",
+              "deepest chain of library callees; libgcc helpers listed, not counted.",
+              "Deeper than the issue's goal of %d bytes: %s." % (STACK_GOAL, "; ".join(
+                  "%d on %s" % (len(v), t) for t, v in sorted(deep.items()))), "",
               "| function | " + " | ".join(sorted(report["footprint"])) + " | calls outside |",
               "|---|" + "---:|" * len(report["footprint"]) + "---|"]
     fns = sorted(set(f for fp in report["footprint"].values() for f in fp["stack"]))

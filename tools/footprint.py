@@ -13,6 +13,7 @@ helpers) are listed with the function; their frames are not counted, and a
 recursive chain is reported as such instead of a number.
 """
 import argparse
+import collections
 import glob
 import json
 import os
@@ -29,22 +30,26 @@ SECTIONS = ("text", "rodata", "data", "bss")
 
 
 def members(build, target):
-    """Library objects by archive member name, with their module folder."""
+    """Library objects by path under the build, with their module folder.
+    Members are matched by name and count: two modules may have a file of
+    the same name (fixed/convert.c, core/units/convert.c), and both are in
+    the archive."""
     lib = os.path.join(build, target, "libdrdc.a")
-    names = subprocess.run([PREFIX[target] + "ar", "t", lib], check=True,
-                           capture_output=True, text=True).stdout.split()
+    names = collections.Counter(subprocess.run(
+        [PREFIX[target] + "ar", "t", lib], check=True, capture_output=True,
+        text=True).stdout.split())
     found = {}
     for top in ("core", "fixed"):
         for path in glob.glob(os.path.join(build, target, top, "**", "*.o"),
                               recursive=True):
-            name = os.path.basename(path)
-            if name in names:
-                module = os.path.relpath(os.path.dirname(path),
-                                         os.path.join(build, target))
-                found[name] = (path, module)
-    missing = sorted(set(names) - set(found))
-    if missing:
-        sys.exit("footprint: objects of %s not found: %s" % (lib, missing))
+            if os.path.basename(path) in names:
+                rel = os.path.relpath(path, os.path.join(build, target))
+                found[rel] = (path, os.path.dirname(rel))
+    seen = collections.Counter(os.path.basename(p) for p in found)
+    if seen != names:
+        sys.exit("footprint: objects of %s not matched: archive %s, found %s"
+                 % (lib, sorted((names - seen).elements()),
+                    sorted((seen - names).elements())))
     return found
 
 
@@ -98,6 +103,23 @@ def worst_stack(fn, frames, edges, chain=()):
     return own + deepest, outside
 
 
+def symbols(target, objs, top=20):
+    """The `top` largest symbols (code and constant data) of the library
+    objects `objs` (from members()): name, object path, nm type letter and
+    size in bytes."""
+    rows = []
+    for rel, (path, _) in sorted(objs.items()):
+        out = subprocess.run([PREFIX[target] + "nm", "-S", "-t", "d", path],
+                             check=True, capture_output=True, text=True).stdout
+        for line in out.splitlines():
+            parts = line.split()
+            if len(parts) == 4 and parts[2] in "TtRrDdBb":
+                rows.append({"symbol": parts[3], "object": rel,
+                             "type": parts[2], "bytes": int(parts[1])})
+    rows.sort(key=lambda r: (-r["bytes"], r["symbol"], r["object"]))
+    return rows[:top]
+
+
 def footprint(build, target):
     objs = members(build, target)
     library = dict.fromkeys(SECTIONS, 0)
@@ -118,7 +140,8 @@ def footprint(build, target):
             stack[fn] = {"bytes": depth, "calls_outside": sorted(outside)}
         except RecursionError as e:
             stack[fn] = {"bytes": None, "recursion": str(e)}
-    return {"library": library, "modules": modules, "stack": stack}
+    return {"library": library, "modules": modules, "stack": stack,
+            "symbols": symbols(target, objs)}
 
 
 def main():

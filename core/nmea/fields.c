@@ -10,10 +10,6 @@
 
 #include "nmea_impl.h"
 
-/* Digits of a decimal mantissa that int64_t always holds. */
-#define DECIMAL_DIGITS_MAX 18u
-/* Decimals of a number converted with a scale: 10^15 x 3600 < 2^63. */
-#define DECIMALS_MAX 15u
 /* Decimals of minutes kept exactly: 1e-10 minute = 6 nas. */
 #define MINUTE_DECIMALS_MAX 10u
 #define NAS_PER_MINUTE INT64_C(60000000000)
@@ -39,95 +35,76 @@ static int64_t pow10_s64(size_t n)
   return p;
 }
 
-drdc_status_t nmea_uint(nmea_field_t f, size_t min_digits, size_t max_digits,
-                        int32_t *out)
+drdc_status_t nmea_digits(const char *p, size_t n, size_t min_digits,
+                          size_t max_digits, int32_t *out)
 {
   int32_t v = 0;
   size_t i;
-  const char *p = f.p;
 
-  if (f.n == 0u) {
+  if (n == 0u) {
     return DRDC_E_MISSING_FIELD;
   }
-  if ((f.n < min_digits) || (f.n > max_digits)) {
+  if ((n < min_digits) || (n > max_digits)) {
     return DRDC_E_SYNTAX;
   }
-  for (i = 0u; i < f.n; i++) {
+  for (i = 0u; i < n; i++) {
     if (is_digit(p[i]) == 0) {
       return DRDC_E_SYNTAX;
     }
     v = (v * 10) + (int32_t)digit(p[i]);
   }
-  *out = v;
+  if (out != NULL) {
+    *out = v;
+  }
   return DRDC_OK;
 }
 
-/* [-]digits[.digits] -> mantissa and number of decimals. */
-static drdc_status_t decimal(nmea_field_t f, int64_t *mantissa,
-                             size_t *decimals)
+drdc_status_t nmea_uint(const nmea_frame_t *fr, size_t i, size_t min_digits,
+                        size_t max_digits, int32_t *out)
 {
-  size_t i = 0u;
-  size_t digits = 0u;
-  size_t after = 0u;
-  int point = 0;
-  int negative = 0;
-  int64_t m = 0;
-  const char *p = f.p;
+  nmea_field_t f = nmea_field(fr, i);
 
-  if (f.n == 0u) {
-    return DRDC_E_MISSING_FIELD;
-  }
-  if (p[0] == '-') {
-    negative = 1;
-    i = 1u;
-  }
-  for (; i < f.n; i++) {
-    char c = p[i];
-
-    if ((c == '.') && (point == 0)) {
-      point = 1;
-    } else if (is_digit(c) != 0) {
-      if (digits == DECIMAL_DIGITS_MAX) {
-        return DRDC_E_RANGE;
-      }
-      m = (m * 10) + digit(c);
-      digits++;
-      if (point != 0) {
-        after++;
-      }
-    } else {
-      return DRDC_E_SYNTAX;
-    }
-  }
-  if (digits == 0u) {
-    return DRDC_E_SYNTAX;
-  }
-  *mantissa = (negative != 0) ? -m : m;
-  *decimals = after;
-  return DRDC_OK;
+  return nmea_digits(f.p, f.n, min_digits, max_digits, out);
 }
 
-drdc_status_t nmea_fixed(nmea_field_t f, int64_t num, int64_t den,
-                         unsigned frac, int64_t *out)
+drdc_status_t nmea_fixed(const nmea_frame_t *fr, size_t i, nmea_scale_t scale,
+                         int64_t *out)
 {
+  /* num x 2^frac and den of each scale: metres x 2^16, knots x 1852 m /
+   * 3600 s x 2^16, degrees x 2^32 / 360 */
+  static const int64_t scales[4][2] = {
+    { INT64_C(65536), 1 }, { INT64_C(65536), 1 },
+    { INT64_C(121372672), 3600 }, { INT64_C(4294967296), 360 }
+  };
+  const int64_t *sc = scales[scale];
+  int narrow = 0;
+  nmea_field_t f = nmea_field(fr, i);
   int64_t m = 0;
-  size_t k = 0u;
-  drdc_status_t st = decimal(f, &m, &k);
+  int64_t p10 = 1;
+  drdc_status_t st = nmea_decimal(f.p, f.n, &m, &p10);
 
+  if ((scale == NMEA_METRES_Q15_16) || (scale == NMEA_KNOTS_Q15_16)) {
+    narrow = 1;
+  }
   if (st != DRDC_OK) {
     return st;
   }
-  if (k > DECIMALS_MAX) {
+  /* den x 10^15 < 2^63 for every scale (at most 15 decimals) */
+  st = drdc_fx_muldiv_s64(m, sc[0], sc[1] * p10, &m);
+  if ((st != DRDC_OK)
+      || ((narrow != 0) && ((m > INT32_MAX) || (m < INT32_MIN)))) {
     return DRDC_E_RANGE;
   }
-  /* num << frac <= 2^43 and den x 10^15 < 2^63 for every caller */
-  st = drdc_fx_muldiv_s64(m, num * (INT64_C(1) << frac), den * pow10_s64(k),
-                          out);
-  return (st == DRDC_OK) ? DRDC_OK : DRDC_E_RANGE;
+  if (out != NULL) {
+    *out = m;
+  }
+  return DRDC_OK;
 }
 
-drdc_status_t nmea_tod(nmea_field_t f, drdc_nmea_tod_t *out)
+drdc_status_t nmea_tod(const nmea_frame_t *fr, size_t i_field,
+                       drdc_nmea_tod_t *out)
 {
+  nmea_field_t f = nmea_field(fr, i_field);
   int32_t v[3] = { 0, 0, 0 };
   int32_t nsec = 0;
   size_t i;
@@ -167,16 +144,20 @@ drdc_status_t nmea_tod(nmea_field_t f, drdc_nmea_tod_t *out)
   if (v[2] > 60) {
     return DRDC_E_SECOND;
   }
-  out->hour = v[0];
-  out->minute = v[1];
-  out->second = v[2];
-  out->nsec = nsec;
+  if (out != NULL) {
+    out->hour = v[0];
+    out->minute = v[1];
+    out->second = v[2];
+    out->nsec = nsec;
+  }
   return DRDC_OK;
 }
 
-drdc_status_t nmea_angle(nmea_field_t value, nmea_field_t hemisphere,
+drdc_status_t nmea_angle(const nmea_frame_t *fr, size_t i_field,
                          int latitude, drdc_nas_t *out)
 {
+  nmea_field_t value = nmea_field(fr, i_field);
+  nmea_field_t hemisphere = nmea_field(fr, i_field + 1u);
   size_t point = value.n;
   size_t i;
   int64_t degrees = 0;
@@ -237,6 +218,8 @@ drdc_status_t nmea_angle(nmea_field_t value, nmea_field_t hemisphere,
   if (nas > (limit * DRDC_NAS_PER_DEGREE)) {
     return DRDC_E_RANGE;
   }
-  *out = (h == negative) ? -nas : nas;
+  if (out != NULL) {
+    *out = (h == negative) ? -nas : nas;
+  }
   return DRDC_OK;
 }

@@ -86,7 +86,6 @@ drdc_status_t nmea_frame(const char *text, size_t length, nmea_frame_t *fr)
   unsigned sum = 0u;
   int hi;
   int lo;
-  size_t start;
   size_t k;
 
   if ((length == 0u) || (text[0] != '$')) {
@@ -135,31 +134,17 @@ drdc_status_t nmea_frame(const char *text, size_t length, nmea_frame_t *fr)
   if (formatter(&text[3], &fr->type) != DRDC_OK) {
     return DRDC_E_SENTENCE;
   }
-  fr->talker[0] = text[1];
-  fr->talker[1] = text[2];
-  fr->talker[2] = '\0';
-  /* fields between the address and '*' */
+  fr->text = text;
+  /* fields between the address and '*'; every offset is at most
+   * star + 1 <= NMEA_BODY_MAX - 2, so it fits uint8_t */
   fr->count = 0u;
-  start = 7u;
+  fr->start[0] = 7u;
   for (k = 7u; k <= star; k++) {
-    if ((k == star) || (text[k] == ',')) {
-      if (fr->count < NMEA_FIELDS_MAX) {
-        fr->f[fr->count].p = &text[start];
-        fr->f[fr->count].n = k - start;
-        fr->count++;
-      }
-      start = k + 1u;
+    if (((k == star) || (text[k] == ','))
+        && (fr->count < NMEA_FIELDS_MAX)) {
+      fr->count++;
+      fr->start[fr->count] = (uint8_t)(k + 1u);
     }
   }
   return DRDC_OK;
-}
-
-nmea_field_t nmea_field(const nmea_frame_t *fr, size_t i)
-{
-  nmea_field_t f = { NULL, 0u };
-
-  if ((i >= 1u) && (i <= fr->count)) {
-    f = fr->f[i - 1u];
-  }
-  return f;
 }

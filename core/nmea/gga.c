@@ -15,37 +15,49 @@
 drdc_status_t nmea_gga(const nmea_frame_t *fr, drdc_nmea_t *n)
 {
   drdc_status_t st;
+  int32_t quality = 0;
+  int32_t satellites = 0;
+  int has_satellites = 0;
 
   if (fr->count < GGA_FIELDS) {
     return DRDC_E_MISSING_FIELD;
   }
-  st = nmea_uint(nmea_field(fr, 6u), 1u, 1u, &n->quality);
+  st = nmea_uint(fr, 6u, 1u, 1u, &quality);
   if (st != DRDC_OK) {
     return st;
   }
-  if (n->quality == 0) {
+  if (quality == 0) {
     return DRDC_E_NO_FIX;
   }
-  if (n->quality > GGA_QUALITY_MAX) {
+  if (quality > GGA_QUALITY_MAX) {
     return DRDC_E_RANGE;
   }
-  st = nmea_tod(nmea_field(fr, 1u), &n->time);
+  st = nmea_tod(fr, 1u, (n != NULL) ? &n->time : NULL);
   if (st == DRDC_OK) {
-    st = nmea_angle(nmea_field(fr, 2u), nmea_field(fr, 3u), 1, &n->latitude);
+    st = nmea_angle(fr, 2u, 1,
+                    (n != NULL) ? &n->latitude : NULL);
   }
   if (st == DRDC_OK) {
-    st = nmea_angle(nmea_field(fr, 4u), nmea_field(fr, 5u), 0, &n->longitude);
+    st = nmea_angle(fr, 4u, 0,
+                    (n != NULL) ? &n->longitude : NULL);
   }
   if (st != DRDC_OK) {
     return st;
   }
-  n->has |= DRDC_NMEA_HAS_POSITION;
   if (nmea_field(fr, 7u).n != 0u) {
-    st = nmea_uint(nmea_field(fr, 7u), 1u, 2u, &n->satellites);
+    st = nmea_uint(fr, 7u, 1u, 2u, &satellites);
     if (st != DRDC_OK) {
       return st;
     }
-    n->has |= DRDC_NMEA_HAS_SATELLITES;
+    has_satellites = 1;
   }
-  return nmea_precision(fr, 11u, n);
+  if (n != NULL) {
+    n->quality = quality;
+    n->has |= DRDC_NMEA_HAS_POSITION;
+    if (has_satellites != 0) {
+      n->satellites = satellites;
+      n->has |= DRDC_NMEA_HAS_SATELLITES;
+    }
+  }
+  return DRDC_OK;
 }

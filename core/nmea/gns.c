@@ -27,6 +27,7 @@ drdc_status_t nmea_gns(const nmea_frame_t *fr, drdc_nmea_t *n)
   drdc_status_t st;
   size_t i;
   int fix = 0;
+  int32_t satellites = 0;
 
   if (fr->count < GNS_FIELDS) {
     return DRDC_E_MISSING_FIELD;
@@ -46,26 +47,32 @@ drdc_status_t nmea_gns(const nmea_frame_t *fr, drdc_nmea_t *n)
     if (c != 'N') {
       fix = 1;
     }
-    n->mode[i] = c;
   }
-  n->mode[mode.n] = '\0';
   if (fix == 0) {
     return DRDC_E_NO_FIX;
   }
-  st = nmea_tod(nmea_field(fr, 1u), &n->time);
+  st = nmea_tod(fr, 1u, (n != NULL) ? &n->time : NULL);
   if (st == DRDC_OK) {
-    st = nmea_angle(nmea_field(fr, 2u), nmea_field(fr, 3u), 1, &n->latitude);
+    st = nmea_angle(fr, 2u, 1,
+                    (n != NULL) ? &n->latitude : NULL);
   }
   if (st == DRDC_OK) {
-    st = nmea_angle(nmea_field(fr, 4u), nmea_field(fr, 5u), 0, &n->longitude);
+    st = nmea_angle(fr, 4u, 0,
+                    (n != NULL) ? &n->longitude : NULL);
   }
   if (st == DRDC_OK) {
-    n->has |= DRDC_NMEA_HAS_POSITION;
-    st = nmea_uint(nmea_field(fr, 7u), 1u, 2u, &n->satellites);
+    st = nmea_uint(fr, 7u, 1u, 2u, &satellites);
   }
   if (st != DRDC_OK) {
     return st;
   }
-  n->has |= DRDC_NMEA_HAS_SATELLITES;
-  return nmea_precision(fr, 10u, n);
+  if (n != NULL) {
+    for (i = 0u; i < mode.n; i++) {
+      n->mode[i] = mode.p[i];
+    }
+    n->mode[mode.n] = '\0';
+    n->satellites = satellites;
+    n->has |= DRDC_NMEA_HAS_POSITION | DRDC_NMEA_HAS_SATELLITES;
+  }
+  return DRDC_OK;
 }

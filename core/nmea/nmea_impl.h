@@ -13,9 +13,10 @@
 
 #include <drdc/nmea.h>
 
-/** Most fields kept; a sentence of at most 80 characters may have more
- *  (all empty), which no decoder reads. */
-#define NMEA_FIELDS_MAX 32u
+/** Most fields kept: the decoders read fields 1..14 at most (GGA's
+ *  station id is field 14); a sentence may have more, which no decoder
+ *  reads (the count saturates here, above every decoder's minimum). */
+#define NMEA_FIELDS_MAX 16u
 
 /** One field: `n` characters at `p` (inside the caller's text). */
 typedef struct nmea_field {
@@ -23,12 +24,17 @@ typedef struct nmea_field {
   size_t n;
 } nmea_field_t;
 
-/** A sentence whose framing, checksum and address are valid. */
+/** A sentence whose framing, checksum and address are valid. Fields are
+ *  kept as one-byte offsets into the text (a sentence has at most 82
+ *  characters): 40 bytes instead of a pointer and a length per field. */
 typedef struct nmea_frame {
+  const char *text;               /**< the sentence, from `$` (talker at
+                                       text[1], text[2]) */
   drdc_nmea_type_t type;
-  char talker[3];
-  size_t count;                      /**< fields after the address */
-  nmea_field_t f[NMEA_FIELDS_MAX];   /**< f[0] is field 1 */
+  uint8_t count;                  /**< fields after the address */
+  /** start[i - 1]: offset of field i; field i ends one character before
+   *  start[i] (at its ',' or the '*') */
+  uint8_t start[NMEA_FIELDS_MAX + 1u];
 } nmea_frame_t;
 
 /** Check framing, characters, length and checksum, decode the address
@@ -36,27 +42,69 @@ typedef struct nmea_frame {
 drdc_status_t nmea_frame(const char *text, size_t length, nmea_frame_t *fr);
 
 /** Field `i` (1-based as in the standard), or an empty field when the
- *  sentence has fewer. */
-nmea_field_t nmea_field(const nmea_frame_t *fr, size_t i);
+ *  sentence has fewer. Inline: a call would return the pair through
+ *  memory on both targets, a stack temporary at every use. */
+static inline nmea_field_t nmea_field(const nmea_frame_t *fr, size_t i)
+{
+  nmea_field_t f = { NULL, 0u };
 
-/** Unsigned decimal of `min_digits`..`max_digits` digits (<= 9). */
-drdc_status_t nmea_uint(nmea_field_t f, size_t min_digits, size_t max_digits,
-                        int32_t *out);
+  if ((i >= 1u) && (i <= (size_t)fr->count)) {
+    f.p = &fr->text[fr->start[i - 1u]];
+    f.n = ((size_t)fr->start[i] - (size_t)fr->start[i - 1u]) - 1u;
+  }
+  return f;
+}
 
-/** [-]digits[.digits] -> value x num x 2^frac / den, rounded once to
- *  nearest, ties away from zero (drdc_fx_muldiv_s64). */
-drdc_status_t nmea_fixed(nmea_field_t f, int64_t num, int64_t den,
-                         unsigned frac, int64_t *out);
+/* The field parsers and sentence decoders below write their outputs only
+ * when the pointer is not NULL: drdc_nmea_parse() runs a decoder once
+ * with NULL to validate the whole sentence, then again into the caller's
+ * record (no scratch record on the stack). */
 
-/** hhmmss[.s..s] (up to 9 decimals) -> time of day, exact. */
-drdc_status_t nmea_tod(nmea_field_t f, drdc_nmea_tod_t *out);
+/** Unsigned decimal of `min_digits`..`max_digits` digits (<= 9): the
+ *  `n` characters at `p`. */
+drdc_status_t nmea_digits(const char *p, size_t n, size_t min_digits,
+                          size_t max_digits, int32_t *out);
 
-/** (d)ddmm[.m..m] with up to 10 decimals and its hemisphere -> nas,
- *  exact. `latitude` selects N/S and 90 degrees, else E/W and 180. */
-drdc_status_t nmea_angle(nmea_field_t value, nmea_field_t hemisphere,
-                         int latitude, drdc_nas_t *out);
+/** nmea_digits() of field `i` (1-based, as nmea_field()). */
+drdc_status_t nmea_uint(const nmea_frame_t *fr, size_t i, size_t min_digits,
+                        size_t max_digits, int32_t *out);
 
-/** Sentence decoders: `fr` is framed; they fill `*n` (a scratch copy). */
+/** [-]digits[.digits] of the `n` characters at `p` -> mantissa and
+ *  10^decimals (at most 18 digits, 15 decimals: DRDC_E_RANGE beyond). In
+ *  a file of its own so that it is not inlined into nmea_fixed(), whose
+ *  frame then stays small. */
+drdc_status_t nmea_decimal(const char *p, size_t n, int64_t *mantissa,
+                           int64_t *scale);
+
+/** Scalings of decimal fields (nmea_fixed()). */
+typedef enum nmea_scale {
+  NMEA_METRES_Q47_16 = 0, /**< metres -> Q47.16 m */
+  NMEA_METRES_Q15_16 = 1, /**< metres -> Q15.16 m (int32_t range) */
+  NMEA_KNOTS_Q15_16 = 2,  /**< knots -> Q15.16 m/s (int32_t range) */
+  NMEA_DEGREES_BAM32 = 3  /**< degrees -> 2^32 per turn (wrap it) */
+} nmea_scale_t;
+
+/** Field `i` as [-]digits[.digits] -> value x num x 2^frac / den of the
+ *  scale, rounded once to nearest, ties away from zero
+ *  (drdc_fx_muldiv_s64); DRDC_E_RANGE also for a Q15.16 result outside
+ *  int32_t. Four register arguments and no wrapper: this call is on the
+ *  deepest stack path of drdc_nmea_parse(). */
+drdc_status_t nmea_fixed(const nmea_frame_t *fr, size_t i, nmea_scale_t scale,
+                         int64_t *out);
+
+/** Field `i` as hhmmss[.s..s] (up to 9 decimals) -> time of day, exact. */
+drdc_status_t nmea_tod(const nmea_frame_t *fr, size_t i,
+                       drdc_nmea_tod_t *out);
+
+/** Field `i` as (d)ddmm[.m..m] with up to 10 decimals and field i + 1 as
+ *  its hemisphere -> nas, exact. `latitude` selects N/S and 90 degrees,
+ *  else E/W and 180. */
+drdc_status_t nmea_angle(const nmea_frame_t *fr, size_t i, int latitude,
+                         drdc_nas_t *out);
+
+/** Sentence decoders: `fr` is framed; they fill `*n` (zeroed by the
+ *  caller) or, with `n` NULL, only check the sentence, returning the
+ *  same status. */
 /* The optional HDOP (field 8), altitude (field 9) and geoid separation
  * (field `separation`) that GGA and GNS share; each present one is parsed
  * and flagged in n->has. */

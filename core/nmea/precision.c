@@ -13,29 +13,34 @@ drdc_status_t nmea_precision(const nmea_frame_t *fr, size_t separation,
   int64_t v = 0;
 
   if (nmea_field(fr, 8u).n != 0u) {
-    st = nmea_fixed(nmea_field(fr, 8u), 1, 1, 16u, &v);
-    if ((st == DRDC_OK) && ((v > INT32_MAX) || (v < INT32_MIN))) {
-      st = DRDC_E_RANGE;
-    }
+    st = nmea_fixed(fr, 8u, NMEA_METRES_Q15_16, &v);
     if (st != DRDC_OK) {
       return st;
     }
-    n->hdop = (drdc_q15_16_t)v;
-    n->has |= DRDC_NMEA_HAS_HDOP;
+    if (n != NULL) {
+      n->hdop = (drdc_q15_16_t)v;
+      n->has |= DRDC_NMEA_HAS_HDOP;
+    }
   }
   if (nmea_field(fr, 9u).n != 0u) {
-    st = nmea_fixed(nmea_field(fr, 9u), 1, 1, 16u, &n->altitude);
+    st = nmea_fixed(fr, 9u, NMEA_METRES_Q47_16,
+                    (n != NULL) ? &n->altitude : NULL);
     if (st != DRDC_OK) {
       return st;
     }
-    n->has |= DRDC_NMEA_HAS_ALTITUDE;
+    if (n != NULL) {
+      n->has |= DRDC_NMEA_HAS_ALTITUDE;
+    }
   }
   if (nmea_field(fr, separation).n != 0u) {
-    st = nmea_fixed(nmea_field(fr, separation), 1, 1, 16u, &n->separation);
+    st = nmea_fixed(fr, separation, NMEA_METRES_Q47_16,
+                    (n != NULL) ? &n->separation : NULL);
     if (st != DRDC_OK) {
       return st;
     }
-    n->has |= DRDC_NMEA_HAS_SEPARATION;
+    if (n != NULL) {
+      n->has |= DRDC_NMEA_HAS_SEPARATION;
+    }
   }
   return DRDC_OK;
 }

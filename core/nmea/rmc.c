@@ -12,29 +12,16 @@
 /* Two-digit years: 80..99 are 1980..1999 (the GPS epoch), 00..79 are
  * 2000..2079. */
 #define RMC_PIVOT 80
-/* knots -> m/s: 1852 m / 3600 s */
-#define KNOT_NUM INT64_C(1852)
-#define KNOT_DEN INT64_C(3600)
-
-/* Course in degrees -> binary angle, 2^32 per turn, wrapping. */
-static drdc_status_t course(nmea_field_t f, drdc_bam32_t *out)
-{
-  int64_t v = 0;
-  drdc_status_t st = nmea_fixed(f, 1, 360, 32u, &v);
-
-  if (st == DRDC_OK) {
-    *out = (drdc_bam32_t)(uint64_t)v;
-  }
-  return st;
-}
 
 drdc_status_t nmea_rmc(const nmea_frame_t *fr, drdc_nmea_t *n)
 {
   nmea_field_t status = nmea_field(fr, 2u);
   nmea_field_t mode = nmea_field(fr, 12u);
-  nmea_field_t date = nmea_field(fr, 9u);
   drdc_status_t st;
   int32_t ddmmyy = 0;
+  int32_t day;
+  int32_t month;
+  int32_t year;
   char s;
   char m = '\0';
   int64_t v = 0;
@@ -55,50 +42,59 @@ drdc_status_t nmea_rmc(const nmea_frame_t *fr, drdc_nmea_t *n)
   if ((s == 'V') || (m == 'N')) {
     return DRDC_E_NO_FIX;
   }
-  n->mode[0] = m;
-  n->mode[1] = '\0';
-  st = nmea_tod(nmea_field(fr, 1u), &n->time);
+  st = nmea_tod(fr, 1u, (n != NULL) ? &n->time : NULL);
   if (st == DRDC_OK) {
-    st = nmea_angle(nmea_field(fr, 3u), nmea_field(fr, 4u), 1, &n->latitude);
+    st = nmea_angle(fr, 3u, 1,
+                    (n != NULL) ? &n->latitude : NULL);
   }
   if (st == DRDC_OK) {
-    st = nmea_angle(nmea_field(fr, 5u), nmea_field(fr, 6u), 0, &n->longitude);
+    st = nmea_angle(fr, 5u, 0,
+                    (n != NULL) ? &n->longitude : NULL);
   }
   if (st == DRDC_OK) {
-    n->has |= DRDC_NMEA_HAS_POSITION;
-    st = nmea_uint(date, 6u, 6u, &ddmmyy);
+    st = nmea_uint(fr, 9u, 6u, 6u, &ddmmyy);
   }
   if (st != DRDC_OK) {
     return st;
   }
-  n->day = ddmmyy / 10000;
-  n->month = (ddmmyy / 100) % 100;
-  n->year = ddmmyy % 100;
-  n->year += (n->year < RMC_PIVOT) ? 2000 : 1900;
-  if ((n->day < 1) || (n->day > 31)) {
+  day = ddmmyy / 10000;
+  month = (ddmmyy / 100) % 100;
+  year = ddmmyy % 100;
+  year += (year < RMC_PIVOT) ? 2000 : 1900;
+  if ((day < 1) || (day > 31)) {
     return DRDC_E_DAY;
   }
-  if ((n->month < 1) || (n->month > 12)) {
+  if ((month < 1) || (month > 12)) {
     return DRDC_E_MONTH;
   }
-  n->has |= DRDC_NMEA_HAS_DATE;
+  if (n != NULL) {
+    n->mode[0] = m;
+    n->mode[1] = '\0';
+    n->day = day;
+    n->month = month;
+    n->year = year;
+    n->has |= DRDC_NMEA_HAS_POSITION | DRDC_NMEA_HAS_DATE;
+  }
   if (nmea_field(fr, 7u).n != 0u) {
-    st = nmea_fixed(nmea_field(fr, 7u), KNOT_NUM, KNOT_DEN, 16u, &v);
-    if ((st == DRDC_OK) && ((v > INT32_MAX) || (v < INT32_MIN))) {
-      st = DRDC_E_RANGE;
-    }
+    st = nmea_fixed(fr, 7u, NMEA_KNOTS_Q15_16, &v);
     if (st != DRDC_OK) {
       return st;
     }
-    n->speed = (drdc_q15_16_t)v;
-    n->has |= DRDC_NMEA_HAS_SPEED;
+    if (n != NULL) {
+      n->speed = (drdc_q15_16_t)v;
+      n->has |= DRDC_NMEA_HAS_SPEED;
+    }
   }
   if (nmea_field(fr, 8u).n != 0u) {
-    st = course(nmea_field(fr, 8u), &n->course);
+    /* course in degrees -> binary angle, 2^32 per turn, wrapping */
+    st = nmea_fixed(fr, 8u, NMEA_DEGREES_BAM32, &v);
     if (st != DRDC_OK) {
       return st;
     }
-    n->has |= DRDC_NMEA_HAS_COURSE;
+    if (n != NULL) {
+      n->course = (drdc_bam32_t)(uint64_t)v;
+      n->has |= DRDC_NMEA_HAS_COURSE;
+    }
   }
   return DRDC_OK;
 }

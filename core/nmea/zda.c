@@ -14,33 +14,43 @@ drdc_status_t nmea_zda(const nmea_frame_t *fr, drdc_nmea_t *n)
 {
   nmea_field_t zone = nmea_field(fr, 5u);
   drdc_status_t st;
+  int32_t day = 0;
+  int32_t month = 0;
+  int32_t year = 0;
+  int32_t zone_hours = 0;
+  int32_t zone_minutes = 0;
 
   if (fr->count < ZDA_FIELDS) {
     return DRDC_E_MISSING_FIELD;
   }
-  st = nmea_tod(nmea_field(fr, 1u), &n->time);
+  st = nmea_tod(fr, 1u, (n != NULL) ? &n->time : NULL);
   if (st == DRDC_OK) {
-    st = nmea_uint(nmea_field(fr, 2u), 2u, 2u, &n->day);
+    st = nmea_uint(fr, 2u, 2u, 2u, &day);
   }
   if (st == DRDC_OK) {
-    st = nmea_uint(nmea_field(fr, 3u), 2u, 2u, &n->month);
+    st = nmea_uint(fr, 3u, 2u, 2u, &month);
   }
   if (st == DRDC_OK) {
-    st = nmea_uint(nmea_field(fr, 4u), 4u, 4u, &n->year);
+    st = nmea_uint(fr, 4u, 4u, 4u, &year);
   }
   if (st != DRDC_OK) {
     return st;
   }
-  if ((n->day < 1) || (n->day > 31)) {
+  if ((day < 1) || (day > 31)) {
     return DRDC_E_DAY;
   }
-  if ((n->month < 1) || (n->month > 12)) {
+  if ((month < 1) || (month > 12)) {
     return DRDC_E_MONTH;
   }
-  if (n->year < DRDC_YEAR_MIN) {
+  if (year < DRDC_YEAR_MIN) {
     return DRDC_E_YEAR;
   }
-  n->has |= DRDC_NMEA_HAS_DATE;
+  if (n != NULL) {
+    n->day = day;
+    n->month = month;
+    n->year = year;
+    n->has |= DRDC_NMEA_HAS_DATE;
+  }
   if (zone.n != 0u) {
     nmea_field_t digits = zone;
     char sign = zone.p[0];
@@ -49,23 +59,24 @@ drdc_status_t nmea_zda(const nmea_frame_t *fr, drdc_nmea_t *n)
       digits.p = &zone.p[1];
       digits.n = zone.n - 1u;
     }
-    st = nmea_uint(digits, 1u, 2u, &n->zone_hours);
+    st = nmea_digits(digits.p, digits.n, 1u, 2u, &zone_hours);
     if (st == DRDC_OK) {
-      st = nmea_uint(nmea_field(fr, 6u), 2u, 2u, &n->zone_minutes);
+      st = nmea_uint(fr, 6u, 2u, 2u, &zone_minutes);
     }
     if (st != DRDC_OK) {
       return st;
     }
-    if (n->zone_hours > ZONE_HOURS_MAX) {
+    if (zone_hours > ZONE_HOURS_MAX) {
       return DRDC_E_RANGE;
     }
-    if (n->zone_minutes > 59) {
+    if (zone_minutes > 59) {
       return DRDC_E_MINUTE;
     }
-    if (sign == '-') {
-      n->zone_hours = -n->zone_hours;
+    if (n != NULL) {
+      n->zone_hours = (sign == '-') ? -zone_hours : zone_hours;
+      n->zone_minutes = zone_minutes;
+      n->has |= DRDC_NMEA_HAS_ZONE;
     }
-    n->has |= DRDC_NMEA_HAS_ZONE;
   }
   return DRDC_OK;
 }

@@ -79,38 +79,55 @@ drdc_status_t drdc_time_jaus_to_utc(const drdc_time_leap_t *leap,
                                     uint32_t stamp, const drdc_time_t *ref,
                                     drdc_time_t *utc)
 {
-  drdc_time_jaus_fields_t f;
   drdc_time_civil_t c;
-  drdc_time_civil_t r;
-  drdc_time_t best = { 0, 0 };
+  int64_t best_sec = 0;
+  int32_t best_nsec = 0;
   int64_t best_dist = -1;
   drdc_status_t st;
   drdc_status_t why = DRDC_E_RANGE;
+  int32_t ref_year;
+  int32_t ref_month;
   int32_t k;
 
   if ((ref == NULL) || (utc == NULL)) {
     return DRDC_E_NULL;
   }
-  st = drdc_time_jaus_unpack(stamp, &f);
-  if (st != DRDC_OK) {
-    return st;
+  /* The stamp's fields live in a block of their own, so that their stack
+   * slots can be reused (issue 8: stack depth). */
+  {
+    drdc_time_jaus_fields_t f;
+
+    st = drdc_time_jaus_unpack(stamp, &f);
+    if (st != DRDC_OK) {
+      return st;
+    }
+    c.day = (int32_t)f.day;
+    c.hour = (int32_t)f.hour;
+    c.minute = (int32_t)f.minute;
+    c.second = (int32_t)f.second;
+    c.nsec = (int32_t)f.msec * NS_PER_MS;
   }
-  if (drdc_time_to_civil(leap, ref, &r) != DRDC_OK) {
+  /* the reference's year and month: drdc_time_to_civil() without the
+   * fields not needed (the same check, the day of its UTC second), one
+   * call level less */
+  if (drdc_time_check(leap, ref) != DRDC_OK) {
     return DRDC_E_RANGE;
   }
-  c.day = (int32_t)f.day;
-  c.hour = (int32_t)f.hour;
-  c.minute = (int32_t)f.minute;
-  c.second = (int32_t)f.second;
-  c.nsec = (int32_t)f.msec * NS_PER_MS;
+  {
+    int32_t ref_day;
+
+    (void)drdc_time_civil_from_days(
+        (int32_t)drdc_time_floor_div(ref->sec, SECONDS_PER_DAY), &ref_year,
+        &ref_month, &ref_day);
+  }
   /* The month before, of and after the reference, earliest first so the
    * earlier candidate wins a tie. */
   for (k = -1; k <= 1; k++) {
     drdc_time_t t;
     int64_t dist;
 
-    c.year = r.year;
-    c.month = r.month + k;
+    c.year = ref_year;
+    c.month = ref_month + k;
     if (c.month < 1) {
       c.month = 12;
       c.year--;
@@ -133,13 +150,15 @@ drdc_status_t drdc_time_jaus_to_utc(const drdc_time_leap_t *leap,
       dist = -dist;
     }
     if ((best_dist < 0) || (dist < best_dist)) {
-      best = t;
+      best_sec = t.sec;
+      best_nsec = t.nsec;
       best_dist = dist;
     }
   }
   if ((best_dist < 0) || (best_dist > DRDC_TIME_JAUS_WINDOW_SECONDS)) {
     return (best_dist < 0) ? why : DRDC_E_RANGE;
   }
-  *utc = best;
+  utc->sec = best_sec;
+  utc->nsec = best_nsec;
   return DRDC_OK;
 }

@@ -2,26 +2,31 @@
 /**
  * @file
  * @ingroup drdc_units
- * @brief Look a unit up by name, reading exactly `length` characters.
+ * @brief Look a unit up by name, reading exactly `length` characters;
+ *        decode a unit's row.
  */
-#include <drdc/units.h>
+#include "units_impl.h"
 
-/* Whether the table name `s` (NUL-terminated) equals the `length`
- * characters of `name`; reads `name` only below `length`. */
-static int name_equals(const char *s, const char *name, size_t length)
+/* Whether the table name at `s` (NUL-terminated) equals the `length`
+ * characters of `name` (read only below `length`); `*next` is set to the
+ * name after it. One pass over the table name, none past `length` in
+ * `name`. */
+static int name_equals(const char *s, const char *name, size_t length,
+                       const char **next)
 {
   size_t i = 0u;
   int equal = 1;
 
-  while ((equal != 0) && (i < length)) {
-    if ((s[i] == '\0') || (s[i] != name[i])) {
+  while (s[i] != '\0') {
+    if ((i >= length) || (s[i] != name[i])) {
       equal = 0;
     }
     i++;
   }
-  if ((equal != 0) && (s[length] != '\0')) {
+  if (i != length) {
     equal = 0;
   }
+  *next = &s[i + 1u];
   return equal;
 }
 
@@ -29,6 +34,7 @@ drdc_status_t drdc_units_find(const char *name, size_t length,
                               const drdc_unit_t **unit)
 {
   size_t count = drdc_units_count();
+  const char *s = units_names_first();
   size_t i;
 
   if ((name == NULL) || (unit == NULL)) {
@@ -38,12 +44,47 @@ drdc_status_t drdc_units_find(const char *name, size_t length,
     return DRDC_E_UNKNOWN_UNIT;
   }
   for (i = 0u; i < count; i++) {
-    const drdc_unit_t *u = drdc_units_at(i);
+    const char *next = s;
 
-    if ((u != NULL) && (name_equals(u->name, name, length) != 0)) {
-      *unit = u;
+    if (name_equals(s, name, length, &next) != 0) {
+      *unit = drdc_units_at(i);
       return DRDC_OK;
     }
+    s = next;
   }
   return DRDC_E_UNKNOWN_UNIT;
+}
+
+drdc_status_t drdc_units_describe(const drdc_unit_t *unit,
+                                  drdc_unit_info_t *info)
+{
+  const char *s = units_names_first();
+  size_t row;
+  size_t i = 0u;
+  units_rat_t offset;
+
+  if ((unit == NULL) || (info == NULL)) {
+    return DRDC_E_NULL;
+  }
+  row = units_index(unit);
+  if (row >= drdc_units_count()) {
+    return DRDC_E_UNKNOWN_UNIT;
+  }
+  /* the row's name follows `row` NULs */
+  while (row > 0u) {
+    if (s[i] == '\0') {
+      row--;
+    }
+    i++;
+  }
+  info->name = &s[i];
+  for (i = 0u; i < (size_t)DRDC_UNITS_DIMENSIONS; i++) {
+    info->dimension[i] = units_dimension(unit, i);
+  }
+  info->factor_num = units_number(unit->factor_num);
+  info->factor_den = units_number(unit->factor_den);
+  offset = units_offset(unit);
+  info->offset_num = offset.num;
+  info->offset_den = offset.den;
+  return DRDC_OK;
 }

@@ -2,8 +2,9 @@
 /**
  * @file
  * @ingroup drdc_units
- * @brief Internal: exact rationals of int64_t with overflow reported, for
- *        combining unit factors before the one rounding.
+ * @brief Internal: the compact table row and its readers, and exact
+ *        rationals of int64_t with overflow reported, for combining unit
+ *        factors before the one rounding.
  */
 #ifndef DRDC_UNITS_IMPL_H
 #define DRDC_UNITS_IMPL_H
@@ -11,6 +12,7 @@
 #include <stdint.h>
 
 #include <drdc/status.h>
+#include <drdc/units.h>
 
 /** An exact rational num / den, den > 0, lowest terms after every
  *  operation. */
@@ -19,19 +21,61 @@ typedef struct units_rat {
   int64_t den;
 } units_rat_t;
 
+/* The rationals are passed by pointer (no 16-byte copies on the stack);
+ * `out` may be `a` or `b`: every part is read before `out` is written. */
+
 /** a x b, exact: cross-cancels before multiplying, so the result is in
  *  lowest terms. DRDC_E_RANGE when a part does not fit int64_t (outputs
  *  unchanged). */
-drdc_status_t units_rat_mul(units_rat_t a, units_rat_t b, units_rat_t *out);
+drdc_status_t units_rat_mul(const units_rat_t *a, const units_rat_t *b,
+                            units_rat_t *out);
 
 /** 1 / a for a != 0 (sign moved to the numerator); DRDC_E_RANGE for
  *  a == 0 or a numerator of INT64_MIN. */
-drdc_status_t units_rat_inv(units_rat_t a, units_rat_t *out);
+drdc_status_t units_rat_inv(const units_rat_t *a, units_rat_t *out);
 
 /** a - b, exact; DRDC_E_RANGE when a part does not fit int64_t. */
-drdc_status_t units_rat_sub(units_rat_t a, units_rat_t b, units_rat_t *out);
+drdc_status_t units_rat_sub(const units_rat_t *a, const units_rat_t *b,
+                            units_rat_t *out);
 
 /** x * y when it fits int64_t; DRDC_E_RANGE otherwise. */
 drdc_status_t units_mul_s64(int64_t x, int64_t y, int64_t *out);
+
+/** Everything of drdc_units_convert() before its one rounding, for
+ *  validated arguments: the exact input `*a` and factor A / B such that
+ *  the result is round(a x A / B) (core/units/scale.c). DRDC_E_RANGE when
+ *  they do not fit 63-bit integers. */
+drdc_status_t units_prepare(int64_t raw, unsigned from_frac,
+                            const drdc_unit_t *from, unsigned to_frac,
+                            const drdc_unit_t *to, int64_t *a,
+                            units_rat_t *factor);
+
+/** One unit: indices into the tables of core/units/table.c (generated
+ *  by core/units/gen_table.py); its name is the row's string in the
+ *  names, in row order. Four bytes a unit instead of a pointer and four
+ *  int64_t. */
+struct drdc_unit {
+  uint8_t dimension;  /**< row of the dimension table */
+  uint8_t factor_num; /**< factor numerator: units_number() index */
+  uint8_t factor_den; /**< factor denominator: units_number() index */
+  uint8_t offset;     /**< row of the offset table, 0: linear */
+};
+
+/** The first name; the names follow each other, NUL-terminated, in the
+ *  order of the rows. */
+const char *units_names_first(void);
+
+/** Row number of a unit of the table; drdc_units_count() for a pointer
+ *  that is no row of the table. */
+size_t units_index(const drdc_unit_t *unit);
+
+/** Exponent `i` (DRDC_UNITS_DIM_*) of the unit's dimension. */
+int8_t units_dimension(const drdc_unit_t *unit, size_t i);
+
+/** Factor number `index` (a drdc_unit field), 1..2^56. */
+int64_t units_number(uint8_t index);
+
+/** The unit's offset num / den (0 / 1 for linear units). */
+units_rat_t units_offset(const drdc_unit_t *unit);
 
 #endif /* DRDC_UNITS_IMPL_H */

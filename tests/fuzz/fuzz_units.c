@@ -19,9 +19,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
   uint8_t in[12] = { 0 };
   size_t count = drdc_units_count();
-  const drdc_unit_t *a;
-  const drdc_unit_t *b;
+  const drdc_unit_t *ua;
+  const drdc_unit_t *ub;
   const drdc_unit_t *found = NULL;
+  drdc_unit_info_t ia;
+  drdc_unit_info_t ib;
+  drdc_unit_info_t ifound;
+  const drdc_unit_info_t *a = &ia;
+  const drdc_unit_info_t *b = &ib;
   int64_t raw;
   int64_t out = 7;
   unsigned ff;
@@ -30,12 +35,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
   char *name;
 
   memcpy(in, data, size < sizeof in ? size : sizeof in);
-  a = drdc_units_at(in[0] % count);
-  b = drdc_units_at(in[1] % count);
+  ua = drdc_units_at(in[0] % count);
+  ub = drdc_units_at(in[1] % count);
+  if (drdc_units_describe(ua, &ia) != DRDC_OK
+      || drdc_units_describe(ub, &ib) != DRDC_OK) {
+    abort();
+  }
   ff = in[2] % 64u;
   tf = in[3] % 64u;
   memcpy(&raw, &in[4], sizeof raw);
-  st = drdc_units_convert(raw, ff, a, tf, b, &out);
+  st = drdc_units_convert(raw, ff, ua, tf, ub, &out);
   if (st == DRDC_OK) {
     long double x = ((long double)raw / ldexpl(1.0L, (int)ff)
                      + (long double)a->offset_num / (long double)a->offset_den)
@@ -47,7 +56,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                       + (long double)b->offset_num / (long double)b->offset_den
                         * ldexpl(1.0L, (int)tf - 60);
 
-    if (drdc_units_compatible(a, b) != DRDC_OK || ff > 62 || tf > 62
+    if (drdc_units_compatible(ua, ub) != DRDC_OK || ff > 62 || tf > 62
         || fabsl((long double)out - want) > tol) {
       abort();
     }
@@ -62,7 +71,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (name != NULL) {
       memcpy(name, data + sizeof in, n);
       if (drdc_units_find(name, n, &found) == DRDC_OK
-          && (strlen(found->name) != n || memcmp(found->name, name, n) != 0)) {
+          && (drdc_units_describe(found, &ifound) != DRDC_OK
+              || strlen(ifound.name) != n
+              || memcmp(ifound.name, name, n) != 0)) {
         abort();
       }
       free(name);

@@ -2,7 +2,7 @@
 """Unit conversion vectors. Oracle: GNU units 2.22 (Debian package `units`,
 pinned in tools/deps.py), run as `units -t -d 15` (15 significant digits),
 never this project's factors: only the unit names and dimensions are read
-from core/units/table.c.
+from core/units/units.txt (the source of the table core/units/table.c).
 
 For every unit: a factor check each way (a power of two of the unit to its
 SI unit and back) at formats chosen so the result has about 2^39 LSB (so
@@ -10,17 +10,15 @@ GNU units' 15 digits resolve the LSB and 1 LSB is a relative error below
 1e-9), and random values both ways. Temperatures go through GNU units'
 tempC(x) / tempF(x) functions, since GNU units' own degC and degF are
 temperature differences."""
+import importlib.util
 import math
 import os
 import random
-import re
 import subprocess
 from fractions import Fraction
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = os.path.dirname(os.path.dirname(HERE))
-ROW = re.compile(r'\{ "([^"]+)", \{ (-?\d+), (-?\d+), (-?\d+), (-?\d+), (-?\d+) \}, '
-                 r'INT64_C\((-?\d+)\), INT64_C\((-?\d+)\), (-?\d+), (\d+) \}')
 RANDOM_PER_DIRECTION = 4
 TARGET_BITS = 39  # result magnitude: 2^39 LSB, well inside [2^32, 2^46]
 FRAC_MAX = 62
@@ -31,13 +29,12 @@ GNU_TEMPERATURE = {"degC": "tempC", "tempC": "tempC", "degF": "tempF",
 
 def table():
     """(name, dimension, has offset) of every unit, in table order."""
-    with open(os.path.join(TOP, "core", "units", "table.c")) as f:
-        text = f.read()
-    rows = []
-    for m in ROW.finditer(text):
-        dim = tuple(int(m.group(i)) for i in range(2, 7))
-        rows.append((m.group(1), dim, int(m.group(9)) != 0))
-    return rows
+    spec = importlib.util.spec_from_file_location(
+        "units_gen_table", os.path.join(TOP, "core", "units", "gen_table.py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return [(name, dims, onum != 0)
+            for _, name, dims, _, _, onum, _ in module.read()]
 
 
 def si_unit(rows, dim):

@@ -32,6 +32,7 @@ GENERATORS = [
     "gen_orient_quat",
     "gen_orient_dh",
     "gen_units",
+    "gen_units_table",
     "gen_jaus",
     "gen_jaus_pose",
     "gen_nmea",

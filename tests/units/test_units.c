@@ -34,6 +34,14 @@ static const drdc_unit_t *unit(const char *name)
   return u;
 }
 
+static drdc_unit_info_t info_of(const drdc_unit_t *u)
+{
+  drdc_unit_info_t info;
+
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_units_describe(u, &info));
+  return info;
+}
+
 static int64_t convert(int64_t raw, unsigned from_frac, const char *from, unsigned to_frac,
                        const char *to)
 {
@@ -96,16 +104,18 @@ static void test_table_rules(void)
     covered[index_of(unit(units_vectors[i].to))] = 1u;
   }
   for (i = 0u; i < n; i++) {
-    const drdc_unit_t *u = drdc_units_at(i);
+    const drdc_unit_t *row = drdc_units_at(i);
+    drdc_unit_info_t info;
 
-    TEST_ASSERT_NOT_NULL(u);
-    TEST_ASSERT_TRUE(u->factor_num > 0);
-    TEST_ASSERT_TRUE(u->factor_den > 0);
-    TEST_ASSERT_TRUE(u->offset_den > 0);
-    TEST_ASSERT_TRUE(u->factor_num < (INT64_C(1) << 56));
-    TEST_ASSERT_TRUE(u->factor_den < (INT64_C(1) << 56));
-    TEST_ASSERT_TRUE_MESSAGE(covered[i] != 0u, u->name);
-    TEST_ASSERT_EQUAL_PTR(u, unit(u->name));
+    TEST_ASSERT_NOT_NULL(row);
+    info = info_of(row);
+    TEST_ASSERT_TRUE(info.factor_num > 0);
+    TEST_ASSERT_TRUE(info.factor_den > 0);
+    TEST_ASSERT_TRUE(info.offset_den > 0);
+    TEST_ASSERT_TRUE(info.factor_num < (INT64_C(1) << 56));
+    TEST_ASSERT_TRUE(info.factor_den < (INT64_C(1) << 56));
+    TEST_ASSERT_TRUE_MESSAGE(covered[i] != 0u, info.name);
+    TEST_ASSERT_EQUAL_PTR(row, unit(info.name));
   }
 }
 
@@ -170,7 +180,7 @@ static void test_no_range_error_to_and_from_si(void)
   for (i = 0u; i < N_VECTORS; i += 1u) {
     const drdc_unit_t *a = unit(units_vectors[i].from);
     const drdc_unit_t *b = unit(units_vectors[i].to);
-    int affine = (a->offset_num != 0) || (b->offset_num != 0);
+    int affine = (info_of(a).offset_num != 0) || (info_of(b).offset_num != 0);
     size_t f;
     int d;
 
@@ -189,9 +199,11 @@ static void test_no_range_error_to_and_from_si(void)
         }
         st = drdc_units_convert(affine ? (INT64_C(1) << 53) : INT64_C(1), fracs[f], a,
                                 (unsigned)to, b, &out);
-        TEST_ASSERT_TRUE_MESSAGE((st == DRDC_OK) || (st == DRDC_E_OVERFLOW), a->name);
+        TEST_ASSERT_TRUE_MESSAGE((st == DRDC_OK) || (st == DRDC_E_OVERFLOW),
+                                 units_vectors[i].from);
         st = drdc_units_convert(-1, fracs[f], a, (unsigned)to, b, &out);
-        TEST_ASSERT_TRUE_MESSAGE((st == DRDC_OK) || (st == DRDC_E_OVERFLOW), a->name);
+        TEST_ASSERT_TRUE_MESSAGE((st == DRDC_OK) || (st == DRDC_E_OVERFLOW),
+                                 units_vectors[i].from);
       }
     }
   }
@@ -211,9 +223,58 @@ static void test_drdc_units_find_bad_input(void)
   TEST_ASSERT_EQUAL_PTR(keep, u);
   /* exactly `length` characters are read: no NUL needed */
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_units_find("ftXYZ", 2, &u));
-  TEST_ASSERT_EQUAL_STRING("ft", u->name);
+  TEST_ASSERT_EQUAL_STRING("ft", info_of(u).name);
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_units_find("m/s^2 rest", 5, &u));
-  TEST_ASSERT_EQUAL_STRING("m/s^2", u->name);
+  TEST_ASSERT_EQUAL_STRING("m/s^2", info_of(u).name);
+}
+
+/* The decoded rows of units with published exact definitions (the
+ * compact table must give back the definitions' numbers), first and
+ * last rows, and the bad input of drdc_units_describe. */
+static void test_drdc_units_describe(void)
+{
+  static const int8_t force[DRDC_UNITS_DIMENSIONS] = { 1, 1, -2, 0, 0 };
+  drdc_unit_info_t info = info_of(unit("ft"));
+  drdc_unit_info_t keep;
+  size_t i;
+
+  /* 0.3048 m = 381 / 1250 */
+  TEST_ASSERT_EQUAL_STRING("ft", info.name);
+  TEST_ASSERT_EQUAL_INT64(381, info.factor_num);
+  TEST_ASSERT_EQUAL_INT64(1250, info.factor_den);
+  TEST_ASSERT_EQUAL_INT64(0, info.offset_num);
+  TEST_ASSERT_EQUAL_INT64(1, info.offset_den);
+  TEST_ASSERT_EQUAL_INT(1, info.dimension[DRDC_UNITS_DIM_METRE]);
+  /* lbf = 0.45359237 kg x 9.80665 m/s^2 = 8896443230521 / 2 10^12 N */
+  info = info_of(unit("lbf"));
+  TEST_ASSERT_EQUAL_INT64(INT64_C(8896443230521), info.factor_num);
+  TEST_ASSERT_EQUAL_INT64(INT64_C(2000000000000), info.factor_den);
+  for (i = 0u; i < (size_t)DRDC_UNITS_DIMENSIONS; i++) {
+    TEST_ASSERT_EQUAL_INT(force[i], info.dimension[i]);
+  }
+  /* degF: factor 5/9, zero at -459.67 degF (offset 45967 / 100) */
+  info = info_of(unit("degF"));
+  TEST_ASSERT_EQUAL_INT64(5, info.factor_num);
+  TEST_ASSERT_EQUAL_INT64(9, info.factor_den);
+  TEST_ASSERT_EQUAL_INT64(45967, info.offset_num);
+  TEST_ASSERT_EQUAL_INT64(100, info.offset_den);
+  TEST_ASSERT_EQUAL_INT(1, info.dimension[DRDC_UNITS_DIM_KELVIN]);
+  /* lightyear: c x 365.25 d = 9460730472580800 m */
+  TEST_ASSERT_EQUAL_INT64(INT64_C(9460730472580800), info_of(unit("lightyear")).factor_num);
+  /* first and last rows */
+  TEST_ASSERT_EQUAL_STRING("m", info_of(drdc_units_at(0)).name);
+  info = info_of(drdc_units_at(drdc_units_count() - 1u));
+  TEST_ASSERT_EQUAL_INT64(8000, info.factor_num);
+  TEST_ASSERT_EQUAL_INT(1, info.dimension[DRDC_UNITS_DIM_BIT]);
+  /* bad input: outputs unchanged */
+  keep = info;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_units_describe(NULL, &info));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_units_describe(unit("m"), NULL));
+  /* a pointer that is no row of the table (compared, never read) */
+  TEST_ASSERT_EQUAL_INT(DRDC_E_UNKNOWN_UNIT,
+                        drdc_units_describe((const drdc_unit_t *)(const void *)&keep, &info));
+  TEST_ASSERT_EQUAL_PTR(keep.name, info.name);
+  TEST_ASSERT_EQUAL_INT64(keep.factor_num, info.factor_num);
 }
 
 static void test_drdc_units_convert_bad_input(void)
@@ -259,6 +320,7 @@ void suite_units(void)
   RUN_TEST(test_rounding_is_symmetric);
   RUN_TEST(test_no_range_error_to_and_from_si);
   RUN_TEST(test_drdc_units_find_bad_input);
+  RUN_TEST(test_drdc_units_describe);
   RUN_TEST(test_drdc_units_convert_bad_input);
   RUN_TEST(test_drdc_units_compatible_bad_input);
 }

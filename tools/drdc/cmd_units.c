@@ -49,9 +49,16 @@ static const char *next_word(char **s, size_t *length)
 /* value in `from` -> value in `to`, through SI in long double (64-bit
  * mantissa: 3 more digits than printed). A result that is only the
  * rounding noise of two cancelling offsets (32 degF to degC) is 0. */
-static long double convert(long double v, const drdc_unit_t *from,
-                           const drdc_unit_t *to)
+static long double convert(long double v, const drdc_unit_t *from_unit,
+                           const drdc_unit_t *to_unit)
 {
+  drdc_unit_info_t from_info;
+  drdc_unit_info_t to_info;
+  const drdc_unit_info_t *from = &from_info;
+  const drdc_unit_info_t *to = &to_info;
+
+  (void)drdc_units_describe(from_unit, &from_info);
+  (void)drdc_units_describe(to_unit, &to_info);
   long double si = (v + (long double)from->offset_num
                           / (long double)from->offset_den)
                    * (long double)from->factor_num
@@ -71,8 +78,10 @@ static int list_units(void)
   size_t i;
 
   for (i = 0; i < drdc_units_count(); i++) {
-    const drdc_unit_t *u = drdc_units_at(i);
+    drdc_unit_info_t info;
+    const drdc_unit_info_t *u = &info;
 
+    (void)drdc_units_describe(drdc_units_at(i), &info);
     printf("%-18s %lld/%lld", u->name, (long long)u->factor_num,
            (long long)u->factor_den);
     if (u->offset_num != 0) {
@@ -128,8 +137,13 @@ static int convert_line(char *line, char *out, size_t size)
   }
   st = drdc_units_compatible(from, to);
   if (st != DRDC_OK) {
+    drdc_unit_info_t a;
+    drdc_unit_info_t b;
+
+    (void)drdc_units_describe(from, &a);
+    (void)drdc_units_describe(to, &b);
     snprintf(out, size, "ERROR: %s and %s measure different quantities "
-             "(%s)", from->name, to->name, drdc_status_name(st));
+             "(%s)", a.name, b.name, drdc_status_name(st));
     return 1;
   }
   snprintf(out, size, "%.15Lg", convert(v, from, to));

@@ -33,7 +33,7 @@
  *
  * **Factor**: every unit has its SI value as an exact rational
  * `factor_num / factor_den` (lowest terms, both positive), with the
- * definition it comes from cited in the table (core/units/table.c). It is
+ * definition it comes from cited in the table (core/units/units.txt). It is
  * exact wherever the definition is (ft = 0.3048 m, lb = 0.45359237 kg,
  * nmi = 1852 m, lbf = lb x 9.80665 m/s^2 = 4.4482216152605 N, cal =
  * 4.184 J, the thermochemical calorie that GNU units' `cal` means, ...).
@@ -87,9 +87,15 @@
 /** Largest fraction-bit count of a fixed-point value (int64_t raw). */
 #define DRDC_UNITS_FRAC_MAX 62u
 
-/** A unit of measure: one row of the const unit table. */
-typedef struct drdc_unit {
-  const char *name; /**< GNU units spelling, NUL-terminated */
+/** A unit of measure: a row of the const unit table, obtained from
+ *  drdc_units_find() or drdc_units_at(). The table is stored compactly
+ *  (about 4 bytes a unit plus its name), so the type is opaque: read a
+ *  unit's name, dimension, factor and offset with drdc_units_describe(). */
+typedef struct drdc_unit drdc_unit_t;
+
+/** What a unit is: its row of the table, decoded by drdc_units_describe(). */
+typedef struct drdc_unit_info {
+  const char *name; /**< GNU units spelling, NUL-terminated (in the table) */
   /** exponents of m, kg, s, K, bit (DRDC_UNITS_DIM_*) */
   int8_t dimension[DRDC_UNITS_DIMENSIONS];
   int64_t factor_num; /**< SI value of one unit: factor_num / factor_den */
@@ -98,7 +104,7 @@ typedef struct drdc_unit {
    *  linear units: SI = (value + offset_num / offset_den) x factor */
   int64_t offset_num;
   int64_t offset_den; /**< > 0 */
-} drdc_unit_t;
+} drdc_unit_info_t;
 
 /**
  * Number of units in the table.
@@ -116,6 +122,31 @@ size_t drdc_units_count(void);
 const drdc_unit_t *drdc_units_at(size_t index);
 
 /**
+ * Name, dimension, SI factor and offset of a unit.
+ *
+ * @param unit a unit of the table (from drdc_units_find() or
+ *             drdc_units_at())
+ * @param[out] info the unit decoded; `info->name` points into the const
+ *             table; unchanged on error
+ * @retval DRDC_OK written
+ * @retval DRDC_E_NULL `unit` or `info` is NULL
+ * @retval DRDC_E_UNKNOWN_UNIT `unit` is not a row of the table
+ *
+ * Cost: a walk over the names before the unit's (at most about 1 KiB of
+ * characters); the other fields are table reads.
+ *
+ * @code
+ * const drdc_unit_t *ft;
+ * drdc_unit_info_t info;
+ * drdc_units_find("ft", 2, &ft);
+ * drdc_units_describe(ft, &info);  // info.factor_num / info.factor_den
+ *                                  //   = 381 / 1250 (0.3048 m)
+ * @endcode
+ */
+drdc_status_t drdc_units_describe(const drdc_unit_t *unit,
+                                  drdc_unit_info_t *info);
+
+/**
  * Find a unit by its name.
  *
  * @param name   the name's characters, not necessarily NUL-terminated;
@@ -129,8 +160,8 @@ const drdc_unit_t *drdc_units_at(size_t index);
  *
  * @code
  * const drdc_unit_t *ft;
- * drdc_units_find("ft", 2, &ft);   // ft->factor_num / ft->factor_den
- *                                  //   = 381 / 1250 (0.3048 m)
+ * drdc_units_find("ft", 2, &ft);   // drdc_units_describe(ft, ...) gives
+ *                                  //   381 / 1250 (0.3048 m)
  * @endcode
  */
 drdc_status_t drdc_units_find(const char *name, size_t length,
