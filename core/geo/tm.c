@@ -58,19 +58,14 @@ static int64_t sine_series(const int64_t *coef, unsigned terms, int64_t s2,
  * b_j = c_j + A b_(j+1) - b_(j+2), sum c_j sin(2 j zeta) = sin(2 zeta) b_1
  * = dxi + i deta; with d_j = 2 j c_j the same recurrence gives the
  * derivative 1 + sum d_j cos(2 j zeta) = 1 + cos(2 zeta) b_1 - b_2
- * = p - i q (only when deriv). Inputs: sin, cos of 2 xi and sinh, cosh of
+ * = p - i q (only when deriv). The sum is added to out->xi, out->eta;
+ * p and q go to out->gamma and out->k (scratch of the caller's result,
+ * so no second struct is on the stack). Inputs: sin, cos of 2 xi and sinh, cosh of
  * 2 eta. |A| <= 2 cosh(0.68) < 2.5 and |b_j| < 2e-3, so every product
  * stays far inside Q5.58 and the roundings add up to a few LSB. */
-typedef struct krueger {
-  int64_t dxi;
-  int64_t deta;
-  int64_t p;
-  int64_t q;
-} krueger_t;
-
 /* one step of the complex Clenshaw recurrence: b_j = c + A b_(j+1) -
  * b_(j+2) with (r1, i1) = b_(j+1), (r2, i2) = b_(j+2), shifted on */
-static void clenshaw_step(int64_t ar, int64_t ai, int64_t c, int64_t *r1,
+static inline void clenshaw_step(int64_t ar, int64_t ai, int64_t c, int64_t *r1,
                           int64_t *i1, int64_t *r2, int64_t *i2)
 {
   int64_t r0 = ((c + tm_mul(ar, *r1)) - tm_mul(ai, *i1)) - *r2;
@@ -83,43 +78,39 @@ static void clenshaw_step(int64_t ar, int64_t ai, int64_t c, int64_t *r1,
 }
 
 static void krueger(const int64_t *coef, int64_t s2, int64_t c2,
-                    int64_t sh2, int64_t ch2, bool deriv, krueger_t *out)
+                    int64_t sh2, int64_t ch2, bool deriv, geo_tm_t *out)
 {
   /* cos 2 zeta = c2 ch2 - i s2 sh2, sin 2 zeta = s2 ch2 + i c2 sh2 */
   int64_t cr = geo_mul(c2, ch2);
   int64_t ci = -geo_mul(s2, sh2);
-  int64_t ar = 2 * cr;
-  int64_t ai = 2 * ci;
-  int64_t sr;
-  int64_t si;
-  int64_t br1 = 0; /* sine series: b_(j+1), b_(j+2) */
-  int64_t bi1 = 0;
-  int64_t br2 = 0;
-  int64_t bi2 = 0;
-  int64_t dr1 = 0; /* derivative series */
-  int64_t di1 = 0;
-  int64_t dr2 = 0;
-  int64_t di2 = 0;
-  unsigned j = GEO_KRUEGER_TERMS;
+  int64_t r1 = 0; /* b_(j+1), b_(j+2): real and imaginary parts */
+  int64_t i1 = 0;
+  int64_t r2 = 0;
+  int64_t i2 = 0;
+  unsigned j;
 
-  while (j > 0u) {
-    int64_t c = coef[j - 1u];
-
-    clenshaw_step(ar, ai, c, &br1, &bi1, &br2, &bi2);
-    if (deriv) {
-      clenshaw_step(ar, ai, c * (2 * (int64_t)j), &dr1, &di1, &dr2, &di2);
-    }
-    j--;
+  /* the sine series, then (when asked) the derivative's: one series at
+   * a time keeps half the state live */
+  for (j = GEO_KRUEGER_TERMS; j > 0u; j--) {
+    clenshaw_step(2 * cr, 2 * ci, coef[j - 1u], &r1, &i1, &r2, &i2);
   }
-  sr = geo_mul(s2, ch2);
-  si = geo_mul(c2, sh2);
-  out->dxi = geo_mul(sr, br1) - geo_mul(si, bi1);
-  out->deta = geo_mul(sr, bi1) + geo_mul(si, br1);
-  out->p = 0;
-  out->q = 0;
+  r2 = geo_mul(s2, ch2); /* sin 2 zeta, real and imaginary part */
+  i2 = geo_mul(c2, sh2);
+  out->xi = out->xi + (geo_mul(r2, r1) - geo_mul(i2, i1));
+  out->eta = out->eta + (geo_mul(r2, i1) + geo_mul(i2, r1));
+  out->gamma = 0;
+  out->k = 0;
   if (deriv) {
-    out->p = (GEO_ONE + (geo_mul(cr, dr1) - geo_mul(ci, di1))) - dr2;
-    out->q = -((geo_mul(cr, di1) + geo_mul(ci, dr1)) - di2);
+    r1 = 0;
+    i1 = 0;
+    r2 = 0;
+    i2 = 0;
+    for (j = GEO_KRUEGER_TERMS; j > 0u; j--) {
+      clenshaw_step(2 * cr, 2 * ci, coef[j - 1u] * (2 * (int64_t)j), &r1,
+                    &i1, &r2, &i2);
+    }
+    out->gamma = (GEO_ONE + (geo_mul(cr, r1) - geo_mul(ci, i1))) - r2;
+    out->k = -((geo_mul(cr, i1) + geo_mul(ci, r1)) - i2);
   }
 }
 
@@ -258,38 +249,45 @@ int64_t geo_phi_series(int64_t schi, int64_t cchi)
 
 int geo_tm_forward(int64_t phi, int64_t lam, geo_tm_t *out)
 {
-  int64_t sphi = 0;
-  int64_t cphi = 0;
   int64_t slam = 0;
   int64_t clam = 0;
   int64_t schi = 0;
   int64_t cchi = 0;
   int64_t chi;
+  int64_t ratio; /* cos chi / cos phi */
+  int64_t kfac;  /* 1 - e^2 sin^2 phi */
   int64_t tanh_eta;
-  int64_t etap;
   int64_t ch;
   int64_t sh;
   int64_t sxi;
   int64_t cxi;
-  int64_t ratio;
-  int64_t kp;
-  krueger_t kr;
+  int64_t p;
+  int64_t q;
 
-  geo_sincos(phi, &sphi, &cphi);
-  geo_sincos(lam, &slam, &clam);
-  chi = geo_chi_series(sphi, cphi);
-  rotate_small(sphi, cphi, chi, &schi, &cchi);
+  {
+    /* sin and cos phi are needed only here (their slots are reused) */
+    int64_t sphi = 0;
+    int64_t cphi = 0;
+
+    geo_sincos(phi, &sphi, &cphi);
+    chi = geo_chi_series(sphi, cphi);
+    rotate_small(sphi, cphi, chi, &schi, &cchi);
+    kfac = GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi));
+    /* the scale's cos chi / cos phi, its limit at the poles */
+    ratio = (cphi > 0) ? geo_div(cchi, cphi) : GEO_POLE_RATIO;
+  }
   chi = phi + chi;
+  geo_sincos(lam, &slam, &clam);
   tanh_eta = geo_mul(cchi, slam);
   if ((tanh_eta > GEO_TM_MAX_TANH_ETA) || (tanh_eta < -GEO_TM_MAX_TANH_ETA)) {
     return 0;
   }
-  etap = tm_atanh(tanh_eta);
+  out->eta = tm_atanh(tanh_eta);
   /* sinh eta' = tanh eta' cosh eta'; and sin^2 chi + cos^2 chi cos^2 lam
    * = 1 - tanh^2 eta' = 1 / cosh^2 eta', so sin xi' = sin chi cosh eta'
    * and cos xi' = cos chi cos lam cosh eta': no exponential and no
    * sin/cos of xi'. */
-  ch = tm_cosh(etap);
+  ch = tm_cosh(out->eta);
   sh = geo_mul(tanh_eta, ch);
   sxi = geo_mul(schi, ch);
   cxi = geo_mul(geo_mul(cchi, clam), ch);
@@ -297,25 +295,25 @@ int geo_tm_forward(int64_t phi, int64_t lam, geo_tm_t *out)
    * lam) / (1 - cos^2 chi (1 - cos lam)) (the denominator >= 0.89 in the
    * domain); far from the central meridian near the poles |q| exceeds
    * tm_atan()'s 0.25 and the full atan2 takes over */
-  kp = GEO_ONE - clam;
-  ratio = geo_div(geo_mul(geo_mul(schi, cchi), kp),
-                  GEO_ONE - geo_mul(geo_mul(cchi, cchi), kp));
-  if ((ratio <= TM_ATAN_MAX) && (ratio >= -TM_ATAN_MAX)) {
-    out->xi = chi + tm_atan(ratio);
+  q = GEO_ONE - clam;
+  q = geo_div(geo_mul(geo_mul(schi, cchi), q),
+              GEO_ONE - geo_mul(geo_mul(cchi, cchi), q));
+  if ((q <= TM_ATAN_MAX) && (q >= -TM_ATAN_MAX)) {
+    out->xi = chi + tm_atan(q);
   } else {
     out->xi = geo_atan2(schi, geo_mul(cchi, clam));
   }
   krueger(geo_alpha, 2 * geo_mul(sxi, cxi),
           geo_mul(cxi, cxi) - geo_mul(sxi, sxi), 2 * geo_mul(sh, ch),
-          geo_mul(ch, ch) + geo_mul(sh, sh), true, &kr);
-  out->xi = out->xi + kr.dxi;
-  out->eta = etap + kr.deta;
+          geo_mul(ch, ch) + geo_mul(sh, sh), true, out);
+  p = out->gamma;
+  q = out->k;
   /* convergence: gamma' = arg(cos lam + i sin chi sin lam) of the sphere
    * plus arg(p + i q) of the series' derivative, as the argument of the
    * product (|gamma| < pi/2 + 0.01: no wrap) */
   sxi = geo_mul(schi, slam);
-  cxi = geo_mul(clam, kr.p) - geo_mul(sxi, kr.q);
-  sxi = geo_mul(clam, kr.q) + geo_mul(sxi, kr.p);
+  cxi = geo_mul(clam, p) - geo_mul(sxi, q);
+  sxi = geo_mul(clam, q) + geo_mul(sxi, p);
   /* within 14 degrees (every standard zone, Svalbard's included) the
    * series of atan of the quotient, |y| <= x / 4 tested before dividing
    * (so the quotient cannot overflow and is at most 0.25); the full atan2
@@ -327,27 +325,19 @@ int geo_tm_forward(int64_t phi, int64_t lam, geo_tm_t *out)
   }
   /* scale: k0 A/a sqrt(1 - e^2 sin^2 phi) (cos chi / cos phi) cosh eta'
    * times |p + i q|, the two roots as one */
-  if (cphi > 0) {
-    ratio = geo_div(cchi, cphi);
+  p = geo_mul(kfac, geo_mul(p, p) + geo_mul(q, q)) - GEO_ONE;
+  if ((p <= TM_SQRT_MAX) && (p >= -TM_SQRT_MAX)) {
+    p = tm_sqrt1p(p);
   } else {
-    ratio = GEO_POLE_RATIO;
+    p = geo_sqrt(GEO_ONE + p);
   }
-  kp = geo_mul(GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi)),
-               geo_mul(kr.p, kr.p) + geo_mul(kr.q, kr.q))
-       - GEO_ONE;
-  if ((kp <= TM_SQRT_MAX) && (kp >= -TM_SQRT_MAX)) {
-    kp = tm_sqrt1p(kp);
-  } else {
-    kp = geo_sqrt(GEO_ONE + kp);
-  }
-  kp = geo_mul(geo_mul(kp, ratio), ch);
-  out->k = geo_mul(GEO_K0A_OVER_A, kp);
+  out->k = geo_mul(GEO_K0A_OVER_A, geo_mul(geo_mul(p, ratio), ch));
   return 1;
 }
 
 void geo_tm_reverse(int64_t xi, int64_t eta, int64_t *phi, int64_t *lam)
 {
-  krueger_t kr;
+  geo_tm_t kr;
   int64_t xip;
   int64_t etap;
   int64_t sxip = 0;
@@ -364,9 +354,11 @@ void geo_tm_reverse(int64_t xi, int64_t eta, int64_t *phi, int64_t *lam)
   geo_sincos(2 * xi, &s2, &c2);
   (void)drdc_fx_sinh_q5_58(2 * eta, &sh2);
   (void)drdc_fx_cosh_q5_58(2 * eta, &ch2);
+  kr.xi = 0;
+  kr.eta = 0;
   krueger(geo_beta, s2, c2, sh2, ch2, false, &kr);
-  xip = xi - kr.dxi;
-  etap = eta - kr.deta;
+  xip = xi - kr.xi;
+  etap = eta - kr.eta;
   geo_sincos(xip, &sxip, &cxip);
   (void)drdc_fx_sinh_q5_58(etap, &shetap);
   *lam = geo_atan2(shetap, cxip);

@@ -127,7 +127,7 @@ static int64_t angle_from_metres(drdc_q47_16_t v)
 }
 
 /* forward of validated lat and dlon (|dlon| <= 180 degrees) */
-static drdc_status_t tm_forward_nas(drdc_nas_t lat, drdc_nas_t dlon,
+static inline drdc_status_t tm_forward_nas(drdc_nas_t lat, drdc_nas_t dlon,
                                     geo_tm_t *tm)
 {
   if ((dlon > (90 * GEO_NAS_DEG)) || (dlon < (-90 * GEO_NAS_DEG))) {
