@@ -116,7 +116,7 @@ drdc_status_t drdc_fx_sincos_q5_58(drdc_q5_58_t x, drdc_q5_58_t *s,
   }
   /* x = k pi/2 + r, |r| <= pi/4 (plus a few LSB): k from a product with
    * 2/pi (no division); |k| <= 20, so k pi/2 stays within int64_t */
-  k = drdc_fx_rshift_round_s64(mul(x, Q5_58_TWO_OVER_PI), 58u);
+  k = drdc_fx_rshift_round_s64_inline(mul(x, Q5_58_TWO_OVER_PI), 58u);
   r = x - (k * DRDC_Q5_58_HALF_PI);
   r2 = mul(r, r);
   quadrant = ((k % 4) + 4) % 4;
@@ -252,8 +252,8 @@ drdc_status_t drdc_fx_sqrt_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
    * root is within 2^-15 relative for v >= 2^28, so two steps reach
    * 2^-60 */
   for (i = 0u; i < 2u; i++) {
-    y = drdc_fx_rshift_round_s64(y + quotient(v, y), 1u);
+    y = drdc_fx_rshift_round_s64_inline(y + quotient(v, y), 1u);
   }
-  *out = (k == 0u) ? y : drdc_fx_rshift_round_s64(y, k);
+  *out = (k == 0u) ? y : drdc_fx_rshift_round_s64_inline(y, k);
   return DRDC_OK;
 }
