@@ -37,22 +37,51 @@ static int64_t mul(int64_t a, int64_t b)
   return ((a < 0) != (b < 0)) ? -(int64_t)m : (int64_t)m;
 }
 
-/* a 2^58 / b, rounded; 0 when b == 0 or the quotient overflows */
+/* a 2^58 / b, rounded (ties away from zero); 0 when b == 0 or the
+ * quotient overflows: the result of drdc_fx_muldiv_s64(a, 2^58, b), bit
+ * for bit, without its two call levels (their frames were the deepest
+ * part of the stack of atan2 and sqrt) */
 static int64_t quotient(int64_t a, int64_t b)
 {
-  int64_t r = 0;
+  uint64_t ma = fx_abs64(a);
+  fx_u128_t n;
+  uint64_t q = 0;
 
-  (void)drdc_fx_muldiv_s64(a, Q5_58_ONE, b, &r);
-  return r;
+  if (b == 0) {
+    return 0;
+  }
+  n.hi = ma >> 6;
+  n.lo = ma << 58;
+  if (fx_div_round_u128(n, fx_abs64(b), &q) != 0) {
+    return 0;
+  }
+  if ((a != 0) && ((a < 0) != (b < 0))) {
+    return (q > (UINT64_C(1) << 63)) ? 0
+           : ((q == (UINT64_C(1) << 63)) ? (-INT64_MAX - 1) : -(int64_t)q);
+  }
+  return (q > (uint64_t)INT64_MAX) ? 0 : (int64_t)q;
 }
 
 drdc_status_t drdc_fx_div_q5_58(drdc_q5_58_t a, drdc_q5_58_t b,
                                 drdc_q5_58_t *out)
 {
+  int64_t r;
+
   if (out == NULL) {
     return DRDC_E_NULL;
   }
-  return drdc_fx_muldiv_s64(a, Q5_58_ONE, b, out);
+  if (b == 0) {
+    return DRDC_E_DIVIDE_BY_ZERO;
+  }
+  /* quotient() gives 0 exactly when the quotient is 0 or overflows: the
+   * overflow is told apart by a non-zero dividend (|a / b| >= 2^-59
+   * rounds to at least 1 LSB unless |a| < |b| / 2^59) */
+  r = quotient(a, b);
+  if ((r == 0) && (fx_abs64(a) > (fx_abs64(b) >> 59))) {
+    return DRDC_E_OVERFLOW;
+  }
+  *out = r;
+  return DRDC_OK;
 }
 
 drdc_status_t drdc_fx_sincos_q5_58(drdc_q5_58_t x, drdc_q5_58_t *s,
@@ -87,7 +116,7 @@ drdc_status_t drdc_fx_sincos_q5_58(drdc_q5_58_t x, drdc_q5_58_t *s,
   }
   /* x = k pi/2 + r, |r| <= pi/4 (plus a few LSB): k from a product with
    * 2/pi (no division); |k| <= 20, so k pi/2 stays within int64_t */
-  k = drdc_fx_rshift_round_s64(mul(x, Q5_58_TWO_OVER_PI), 58u);
+  k = drdc_fx_rshift_round_s64_inline(mul(x, Q5_58_TWO_OVER_PI), 58u);
   r = x - (k * DRDC_Q5_58_HALF_PI);
   r2 = mul(r, r);
   quadrant = ((k % 4) + 4) % 4;
@@ -223,8 +252,8 @@ drdc_status_t drdc_fx_sqrt_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
    * root is within 2^-15 relative for v >= 2^28, so two steps reach
    * 2^-60 */
   for (i = 0u; i < 2u; i++) {
-    y = drdc_fx_rshift_round_s64(y + quotient(v, y), 1u);
+    y = drdc_fx_rshift_round_s64_inline(y + quotient(v, y), 1u);
   }
-  *out = (k == 0u) ? y : drdc_fx_rshift_round_s64(y, k);
+  *out = (k == 0u) ? y : drdc_fx_rshift_round_s64_inline(y, k);
   return DRDC_OK;
 }

@@ -56,15 +56,10 @@ extern const int64_t geo_alpha[GEO_KRUEGER_TERMS];
 extern const int64_t geo_beta[GEO_KRUEGER_TERMS];
 
 /** a b / 2^58, rounded to nearest (ties away from zero): the caller keeps
- *  |a b| / 2^58 within int64_t. Inline: the geodesy makes about 300 of
- *  these per point, so a call layer costs 10 % of a UTM conversion. */
-static inline int64_t geo_mul(int64_t a, int64_t b)
-{
-  int64_t r = 0;
-
-  (void)drdc_fx_mul_q5_58(a, b, &r);
-  return r;
-}
+ *  |a b| / 2^58 within Q5.58. One out-of-line copy of
+ *  drdc_fx_mul_q5_58_unchecked() (the same bits as drdc_fx_mul_q5_58(),
+ *  without its checks and pointer); the hot loops of tm.c inline it. */
+int64_t geo_mul(int64_t a, int64_t b);
 
 /** a 2^58 / b, rounded; b != 0 and the quotient within int64_t. */
 int64_t geo_div(int64_t a, int64_t b);

@@ -9,6 +9,11 @@
 
 #include <drdc/fixed_arith.h>
 
+int64_t geo_mul(int64_t a, int64_t b)
+{
+  return drdc_fx_mul_q5_58_unchecked(a, b);
+}
+
 int64_t geo_muldiv(int64_t a, int64_t b, int64_t c)
 {
   int64_t r = 0;

@@ -324,22 +324,10 @@ static drdc_status_t mgrs_centre(const char *text, drdc_nas_t *lat,
   return st;
 }
 
-/* a formatted MGRS text with its NUL (always within the array) */
-static void copy_text(char *dst, const char *src)
-{
-  size_t i = 0u;
-
-  while ((i < (DRDC_GEO_MGRS_SIZE - 1u)) && (src[i] != '\0')) {
-    dst[i] = src[i];
-    i++;
-  }
-  dst[i] = '\0';
-}
-
 drdc_status_t drdc_pose_wmgrs_from_w(const drdc_WPose_t *w, int32_t prec,
                                      drdc_WMGRSPose_t *out)
 {
-  char text[DRDC_GEO_MGRS_SIZE];
+  drdc_geo_utm_t u;
   drdc_nas_t gamma = 0;
   drdc_quat_t q = { 0, 0, 0, 0 };
   drdc_status_t st;
@@ -347,14 +335,26 @@ drdc_status_t drdc_pose_wmgrs_from_w(const drdc_WPose_t *w, int32_t prec,
   if ((w == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = mgrs_and_gamma(w->latitude, w->longitude, prec, text, &gamma);
+  /* as mgrs_and_gamma(), with the attitude turned before the text is
+   * made: the text then goes straight into out (geo_mgrs_format() writes
+   * it only on DRDC_OK, and it is the last step that can fail), so no
+   * text buffer is on the stack */
+  if ((prec < DRDC_GEO_MGRS_PREC_MIN) || (prec > DRDC_GEO_MGRS_PREC_MAX)) {
+    return DRDC_E_RANGE;
+  }
+  st = drdc_geo_to_utm(w->latitude, w->longitude, DRDC_GEO_ZONE_STANDARD,
+                       &u, &gamma, NULL);
   if (st == DRDC_OK) {
     st = turn_about_down(&w->q, -gamma, &q);
+  }
+  if (st == DRDC_OK) {
+    /* the standard zone is always inside the MGRS limits */
+    st = geo_mgrs_format(&u, w->latitude, prec, out->mgrs,
+                         DRDC_GEO_MGRS_SIZE);
   }
   if (st != DRDC_OK) {
     return st;
   }
-  copy_text(out->mgrs, text);
   out->height = w->height;
   out->q.s = q.s;
   out->q.x = q.x;
@@ -395,18 +395,19 @@ drdc_status_t drdc_pose_w_from_wmgrs(const drdc_WMGRSPose_t *m,
 drdc_status_t drdc_pose_wemgrs_from_we(const drdc_WePose_t *w, int32_t prec,
                                        drdc_WeMGRSPose_t *out)
 {
-  char text[DRDC_GEO_MGRS_SIZE];
   drdc_nas_t gamma = 0;
   drdc_status_t st;
 
   if ((w == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = mgrs_and_gamma(w->latitude, w->longitude, prec, text, &gamma);
+  /* the text straight into out: mgrs_and_gamma() writes it only on
+   * DRDC_OK, and nothing after it can fail (no text buffer on the
+   * stack) */
+  st = mgrs_and_gamma(w->latitude, w->longitude, prec, out->mgrs, &gamma);
   if (st != DRDC_OK) {
     return st;
   }
-  copy_text(out->mgrs, text);
   out->height = w->height;
   out->e.yaw = w->e.yaw - drdc_pose_bam_from_convergence(gamma);
   out->e.pitch = w->e.pitch;

@@ -8,114 +8,240 @@
  * Forward: the conformal latitude chi from phi by its Fourier series,
  * then the spherical transverse Mercator xi' = atan2(tan chi, cos lam),
  * eta' = atanh(cos chi sin lam), then zeta = zeta' + sum alpha_j
- * sin(2 j zeta') with zeta = xi + i eta. The multiples 2 j zeta' come from
- * one sin/cos and one sinh/cosh by the addition theorems. Inverse: the
- * beta series, then chi and lam from xi', eta', then phi from chi by its
+ * sin(2 j zeta') with zeta = xi + i eta, summed by Clenshaw's recurrence
+ * in complex arithmetic. The sin, cos, sinh and cosh of 2 xi' and 2 eta'
+ * come from products (cosh eta' = 1 / sqrt(1 - tanh^2 eta') makes sin xi'
+ * = sin chi cosh eta'), the small-argument functions (atanh, sinh, cosh,
+ * atan, sqrt(1 + u)) from their Taylor series in Q5.58 on the domains the
+ * projection needs, each truncated below 0.001 LSB. Inverse: the beta
+ * series, then chi and lam from xi', eta', then phi from chi by its
  * series. Every term is Q5.58; the series' own truncation (n^7 = 4e-20)
  * is far below the 2^-58 resolution of the arithmetic.
  */
 #include "geo_impl.h"
 
-#include <drdc/fixed_hyper.h>
+/* the product of the inner loops, inlined (one copy per loop); the rest
+ * call geo_mul(), the same bits */
+static inline int64_t tm_mul(int64_t a, int64_t b)
+{
+  return drdc_fx_mul_q5_58_unchecked(a, b);
+}
 
-/* sum coef[j] sin(2 (j+1) x) from s2 = sin 2x, c2 = cos 2x. Trailing zero
- * coefficients add exact zeros and are skipped, and so is the recurrence
- * after the last term: the same sum with fewer products. */
+/* sum coef[j] sin(2 (j+1) x) from s2 = sin 2x, c2 = cos 2x by Clenshaw's
+ * recurrence b_j = coef_j + 2 cos(2x) b_(j+1) - b_(j+2), sum = sin(2x) b_1:
+ * one product per term. The coefficients are below 3.4e-3 and |2 cos 2x|
+ * <= 2, so |b_j| < 0.01: every rounding adds at most 0.5 LSB, and the
+ * recurrence (the Chebyshev polynomials of the second kind, |U_n| <= n+1)
+ * amplifies them to a few LSB at most. Trailing zero coefficients are
+ * skipped (exact zeros). */
 static int64_t sine_series(const int64_t *coef, unsigned terms, int64_t s2,
                            int64_t c2)
 {
-  int64_t sn = s2;
-  int64_t cn = c2;
-  int64_t acc = 0;
+  int64_t a = 2 * c2;
+  int64_t b1 = 0;
+  int64_t b2 = 0;
   unsigned n = terms;
-  unsigned j;
 
   while ((n > 0u) && (coef[n - 1u] == 0)) {
     n--;
   }
-  for (j = 0u; j < n; j++) {
-    acc = acc + geo_mul(coef[j], sn);
-    if ((j + 1u) < n) {
-      int64_t next_s = geo_mul(sn, c2) + geo_mul(cn, s2);
-      int64_t next_c = geo_mul(cn, c2) - geo_mul(sn, s2);
+  while (n > 0u) {
+    int64_t b0 = (coef[n - 1u] + tm_mul(a, b1)) - b2;
 
-      sn = next_s;
-      cn = next_c;
+    b2 = b1;
+    b1 = b0;
+    n--;
+  }
+  return tm_mul(s2, b1);
+}
+
+/* Krueger's series at zeta = xi + i eta by Clenshaw's recurrence in
+ * complex arithmetic (as GeographicLib does): with A = 2 cos 2 zeta,
+ * b_j = c_j + A b_(j+1) - b_(j+2), sum c_j sin(2 j zeta) = sin(2 zeta) b_1
+ * = dxi + i deta; with d_j = 2 j c_j the same recurrence gives the
+ * derivative 1 + sum d_j cos(2 j zeta) = 1 + cos(2 zeta) b_1 - b_2
+ * = p - i q (only when deriv). The sum is added to out->xi, out->eta;
+ * p and q go to out->gamma and out->k (scratch of the caller's result,
+ * so no second struct is on the stack). Inputs: sin, cos of 2 xi and sinh, cosh of
+ * 2 eta. |A| <= 2 cosh(0.68) < 2.5 and |b_j| < 2e-3, so every product
+ * stays far inside Q5.58 and the roundings add up to a few LSB. */
+/* one step of the complex Clenshaw recurrence: b_j = c + A b_(j+1) -
+ * b_(j+2) with (r1, i1) = b_(j+1), (r2, i2) = b_(j+2), shifted on */
+static inline void clenshaw_step(int64_t ar, int64_t ai, int64_t c, int64_t *r1,
+                          int64_t *i1, int64_t *r2, int64_t *i2)
+{
+  int64_t r0 = ((c + tm_mul(ar, *r1)) - tm_mul(ai, *i1)) - *r2;
+  int64_t i0 = (tm_mul(ar, *i1) + tm_mul(ai, *r1)) - *i2;
+
+  *r2 = *r1;
+  *i2 = *i1;
+  *r1 = r0;
+  *i1 = i0;
+}
+
+static void krueger(const int64_t *coef, int64_t s2, int64_t c2,
+                    int64_t sh2, int64_t ch2, bool deriv, geo_tm_t *out)
+{
+  /* cos 2 zeta = c2 ch2 - i s2 sh2, sin 2 zeta = s2 ch2 + i c2 sh2 */
+  int64_t cr = geo_mul(c2, ch2);
+  int64_t ci = -geo_mul(s2, sh2);
+  int64_t r1 = 0; /* b_(j+1), b_(j+2): real and imaginary parts */
+  int64_t i1 = 0;
+  int64_t r2 = 0;
+  int64_t i2 = 0;
+  unsigned j;
+
+  /* the sine series, then (when asked) the derivative's: one series at
+   * a time keeps half the state live */
+  for (j = GEO_KRUEGER_TERMS; j > 0u; j--) {
+    clenshaw_step(2 * cr, 2 * ci, coef[j - 1u], &r1, &i1, &r2, &i2);
+  }
+  r2 = geo_mul(s2, ch2); /* sin 2 zeta, real and imaginary part */
+  i2 = geo_mul(c2, sh2);
+  out->xi = out->xi + (geo_mul(r2, r1) - geo_mul(i2, i1));
+  out->eta = out->eta + (geo_mul(r2, i1) + geo_mul(i2, r1));
+  out->gamma = 0;
+  out->k = 0;
+  if (deriv) {
+    r1 = 0;
+    i1 = 0;
+    r2 = 0;
+    i2 = 0;
+    for (j = GEO_KRUEGER_TERMS; j > 0u; j--) {
+      clenshaw_step(2 * cr, 2 * ci, coef[j - 1u] * (2 * (int64_t)j), &r1,
+                    &i1, &r2, &i2);
     }
+    out->gamma = (GEO_ONE + (geo_mul(cr, r1) - geo_mul(ci, i1))) - r2;
+    out->k = -((geo_mul(cr, i1) + geo_mul(ci, r1)) - i2);
+  }
+}
+
+/* coef[0] + x (coef[1] + x (... + x coef[n-1])) by Horner, n >= 1: the
+ * one loop of the series below (one inlined product) */
+static int64_t horner(const int64_t *coef, unsigned n, int64_t x)
+{
+  int64_t acc = coef[n - 1u];
+  unsigned k;
+
+  for (k = n - 1u; k > 0u; k--) {
+    acc = coef[k - 1u] + tm_mul(acc, x);
   }
   return acc;
 }
 
-/* Krueger's series at zeta = xi + i eta: dxi = sum c_j sin 2j xi cosh 2j eta,
- * deta = sum c_j cos 2j xi sinh 2j eta; and the derivative
- * 1 + sum 2j c_j cos(2 j zeta) = p - i q. */
-typedef struct krueger {
-  int64_t dxi;
-  int64_t deta;
-  int64_t p;
-  int64_t q;
-} krueger_t;
+/* 2^58 / n rounded (n odd or a factorial: no ties in these uses) */
+#define Q58_RECIP(n) ((GEO_ONE + ((n) / 2)) / (n))
 
-static void krueger(const int64_t *coef, int64_t xi, int64_t eta,
-                    krueger_t *out)
+/* atanh(t) for |t| <= tanh(0.34) = 0.3275 (GEO_TM_MAX_TANH_ETA): its
+ * Taylor series t sum t^(2k) / (2k+1) to k = 18, by Horner in t^2. The
+ * first omitted term is t^39 / 39 < 3e-21 (0.001 LSB); each of the 20
+ * rounded products adds 0.5 LSB damped by t^2 < 0.108, the coefficients
+ * 0.5 LSB each: about 1.5 LSB in all, against the 1 LSB of the general
+ * drdc_fx_atanh_q5_58() for one third of its cycles. */
+static int64_t tm_atanh(int64_t t)
 {
-  int64_t s1 = 0;
-  int64_t c1 = 0;
-  int64_t sh1 = 0;
-  int64_t ch1 = 0;
-  int64_t sn;
-  int64_t cn;
-  int64_t shn;
-  int64_t chn;
-  unsigned j;
+  static const int64_t coef[19] = {
+    Q58_RECIP(1),  Q58_RECIP(3),  Q58_RECIP(5),  Q58_RECIP(7),
+    Q58_RECIP(9),  Q58_RECIP(11), Q58_RECIP(13), Q58_RECIP(15),
+    Q58_RECIP(17), Q58_RECIP(19), Q58_RECIP(21), Q58_RECIP(23),
+    Q58_RECIP(25), Q58_RECIP(27), Q58_RECIP(29), Q58_RECIP(31),
+    Q58_RECIP(33), Q58_RECIP(35), Q58_RECIP(37)
+  };
+  return geo_mul(horner(coef, 19u, geo_mul(t, t)), t);
+}
 
-  geo_sincos(2 * xi, &s1, &c1);
-  (void)drdc_fx_sinh_q5_58(2 * eta, &sh1);
-  (void)drdc_fx_cosh_q5_58(2 * eta, &ch1);
-  sn = s1;
-  cn = c1;
-  shn = sh1;
-  chn = ch1;
-  out->dxi = 0;
-  out->deta = 0;
-  out->p = GEO_ONE;
-  out->q = 0;
-  for (j = 0u; j < GEO_KRUEGER_TERMS; j++) {
-    int64_t c = coef[j];
-    int64_t twojc = c * (2 * ((int64_t)j + 1));
+/* cosh(x) for |x| <= 0.34: sum x^(2k) / (2k)! to k = 8 by Horner in x^2
+ * (first omitted term x^18 / 18! < 1e-23); about 1 LSB. */
+static int64_t tm_cosh(int64_t x)
+{
+  static const int64_t coef[9] = {
+    Q58_RECIP(INT64_C(1)),           Q58_RECIP(INT64_C(2)),
+    Q58_RECIP(INT64_C(24)),          Q58_RECIP(INT64_C(720)),
+    Q58_RECIP(INT64_C(40320)),       Q58_RECIP(INT64_C(3628800)),
+    Q58_RECIP(INT64_C(479001600)),   Q58_RECIP(INT64_C(87178291200)),
+    Q58_RECIP(INT64_C(20922789888000))
+  };
+  return horner(coef, 9u, geo_mul(x, x));
+}
 
-    out->dxi = out->dxi + geo_mul(c, geo_mul(sn, chn));
-    out->deta = out->deta + geo_mul(c, geo_mul(cn, shn));
-    out->p = out->p + geo_mul(twojc, geo_mul(cn, chn));
-    out->q = out->q + geo_mul(twojc, geo_mul(sn, shn));
-    /* the multiples 2 (j+2) zeta by the addition theorems, not after the
-     * last term */
-    if ((j + 1u) < GEO_KRUEGER_TERMS) {
-      int64_t next_s = geo_mul(sn, c1) + geo_mul(cn, s1);
-      int64_t next_c = geo_mul(cn, c1) - geo_mul(sn, s1);
-      int64_t next_sh = geo_mul(shn, ch1) + geo_mul(chn, sh1);
-      int64_t next_ch = geo_mul(chn, ch1) + geo_mul(shn, sh1);
+/* sinh(x) for |x| <= 0.35: x sum x^(2k) / (2k+1)! to k = 8 by Horner in
+ * x^2 (first omitted term x^19 / 19! < 1e-25); about 1 LSB. The reverse
+ * projection needs it for |eta| <= 0.08 (eastings 0 .. 1 000 km). */
+static int64_t tm_sinh(int64_t x)
+{
+  static const int64_t coef[9] = {
+    Q58_RECIP(INT64_C(1)),             Q58_RECIP(INT64_C(6)),
+    Q58_RECIP(INT64_C(120)),           Q58_RECIP(INT64_C(5040)),
+    Q58_RECIP(INT64_C(362880)),        Q58_RECIP(INT64_C(39916800)),
+    Q58_RECIP(INT64_C(6227020800)),    Q58_RECIP(INT64_C(1307674368000)),
+    Q58_RECIP(INT64_C(355687428096000))
+  };
 
-      sn = next_s;
-      cn = next_c;
-      shn = next_sh;
-      chn = next_ch;
-    }
-  }
+  return geo_mul(horner(coef, 9u, geo_mul(x, x)), x);
+}
+
+/* Largest |tan(xi' - chi)| for tm_atan(): 0.25. */
+#define TM_ATAN_MAX (GEO_ONE / 4)
+
+/* atan(q) for |q| <= 0.25: q sum (-1)^k q^(2k) / (2k+1) to k = 14 by
+ * Horner in q^2; the first omitted term is q^31 / 31 < 2e-21 (0.0005
+ * LSB), the 16 rounded products and the coefficients about 1 LSB. */
+static int64_t tm_atan(int64_t q)
+{
+  static const int64_t coef[15] = {
+    Q58_RECIP(1),   -Q58_RECIP(3),  Q58_RECIP(5),   -Q58_RECIP(7),
+    Q58_RECIP(9),   -Q58_RECIP(11), Q58_RECIP(13),  -Q58_RECIP(15),
+    Q58_RECIP(17),  -Q58_RECIP(19), Q58_RECIP(21),  -Q58_RECIP(23),
+    Q58_RECIP(25),  -Q58_RECIP(27), Q58_RECIP(29)
+  };
+  return geo_mul(horner(coef, 15u, geo_mul(q, q)), q);
+}
+
+/* sin and cos of x + d from s = sin x, c = cos x and a small d
+ * (|d| <= 0.004, the conformal latitude's correction): sin d = d (1 -
+ * d^2/6 + d^4/120) and cos d = 1 - d^2/2 + d^4/24 - d^6/720 (first omitted
+ * terms d^7/5040 and d^8/40320 below 1e-20), then the addition theorems:
+ * 11 products instead of a full sin/cos. */
+static void rotate_small(int64_t s, int64_t c, int64_t d, int64_t *s_out,
+                         int64_t *c_out)
+{
+  int64_t d2 = geo_mul(d, d);
+  int64_t sd = geo_mul(d, GEO_ONE - geo_mul(d2, Q58_RECIP(6)
+                                                - geo_mul(d2, Q58_RECIP(120))));
+  int64_t cd = GEO_ONE
+               - geo_mul(d2, Q58_RECIP(2)
+                             - geo_mul(d2, Q58_RECIP(24)
+                                           - geo_mul(d2, Q58_RECIP(720))));
+
+  *s_out = geo_mul(s, cd) + geo_mul(c, sd);
+  *c_out = geo_mul(c, cd) - geo_mul(s, sd);
+}
+
+/* Largest |u| for tm_sqrt1p(): 1/80 = 0.0125. */
+#define TM_SQRT_MAX (GEO_ONE / 80)
+
+/* sqrt(1 + u) for |u| <= 0.0125 by its binomial series to u^9 (the
+ * coefficients C(1/2, n) are dyadic: exact in Q5.58); the first omitted
+ * term is below 2e-21 and the 10 rounded products add about 1 LSB. The
+ * point scale needs sqrt((1 - e^2 sin^2 phi) (p^2 + q^2)), whose argument
+ * lies within 1 - 0.0113 .. 1 + 0.0046 in the whole domain. */
+static int64_t tm_sqrt1p(int64_t u)
+{
+  static const int64_t coef[10] = {
+    INT64_C(1) << 58,          INT64_C(1) << 57,         -(INT64_C(1) << 55),
+    INT64_C(1) << 54,          -(INT64_C(5) << 51),      INT64_C(7) << 50,
+    -(INT64_C(21) << 48),      INT64_C(33) << 47,        -(INT64_C(429) << 43),
+    INT64_C(715) << 42
+  };
+  return horner(coef, 10u, u);
 }
 
 int64_t geo_cos_ratio(int64_t s)
 {
-  int64_t w = 0;
-  int64_t sh = 0;
-  int64_t ch = 0;
-  int64_t e;
+  /* |e s| <= 0.082 and |w| <= 0.0068: inside the series' domains */
+  int64_t w = geo_mul(GEO_E, tm_atanh(geo_mul(GEO_E, s)));
+  int64_t e = tm_sinh(w) + tm_cosh(w);
 
-  (void)drdc_fx_atanh_q5_58(geo_mul(GEO_E, s), &w);
-  w = geo_mul(GEO_E, w);
-  (void)drdc_fx_sinh_q5_58(w, &sh);
-  (void)drdc_fx_cosh_q5_58(w, &ch);
-  e = sh + ch;
   return geo_div(2 * e, (GEO_ONE + s) + geo_mul(GEO_ONE - s, geo_mul(e, e)));
 }
 
@@ -135,69 +261,124 @@ int64_t geo_phi_series(int64_t schi, int64_t cchi)
 
 int geo_tm_forward(int64_t phi, int64_t lam, geo_tm_t *out)
 {
-  int64_t sphi = 0;
-  int64_t cphi = 0;
   int64_t slam = 0;
   int64_t clam = 0;
   int64_t schi = 0;
   int64_t cchi = 0;
   int64_t chi;
+  int64_t ratio; /* cos chi / cos phi */
+  int64_t kfac;  /* 1 - e^2 sin^2 phi */
   int64_t tanh_eta;
-  int64_t xip;
-  int64_t etap = 0;
-  int64_t cosh_etap = 0;
-  int64_t ratio;
-  int64_t kp;
-  krueger_t kr;
+  int64_t ch;
+  int64_t sh;
+  int64_t sxi;
+  int64_t cxi;
+  int64_t p;
+  int64_t q;
 
-  geo_sincos(phi, &sphi, &cphi);
+  {
+    /* sin and cos phi are needed only here (their slots are reused) */
+    int64_t sphi = 0;
+    int64_t cphi = 0;
+
+    geo_sincos(phi, &sphi, &cphi);
+    chi = geo_chi_series(sphi, cphi);
+    rotate_small(sphi, cphi, chi, &schi, &cchi);
+    kfac = GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi));
+    /* the scale's cos chi / cos phi, its limit at the poles */
+    ratio = (cphi > 0) ? geo_div(cchi, cphi) : GEO_POLE_RATIO;
+  }
+  chi = phi + chi;
   geo_sincos(lam, &slam, &clam);
-  chi = phi + geo_chi_series(sphi, cphi);
-  geo_sincos(chi, &schi, &cchi);
   tanh_eta = geo_mul(cchi, slam);
   if ((tanh_eta > GEO_TM_MAX_TANH_ETA) || (tanh_eta < -GEO_TM_MAX_TANH_ETA)) {
     return 0;
   }
-  xip = geo_atan2(schi, geo_mul(cchi, clam));
-  (void)drdc_fx_atanh_q5_58(tanh_eta, &etap);
-  krueger(geo_alpha, xip, etap, &kr);
-  out->xi = xip + kr.dxi;
-  out->eta = etap + kr.deta;
-  /* convergence: gamma' = atan2(sin chi sin lam, cos lam) of the sphere,
-   * plus the argument of the series' derivative */
-  out->gamma = geo_atan2(geo_mul(schi, slam), clam) + geo_atan2(kr.q, kr.p);
-  /* scale: k0 A/a sqrt(1 - e^2 sin^2 phi) (cos chi / cos phi) cosh eta'
-   * times |derivative| */
-  (void)drdc_fx_cosh_q5_58(etap, &cosh_etap);
-  if (cphi > 0) {
-    ratio = geo_div(cchi, cphi);
+  out->eta = tm_atanh(tanh_eta);
+  /* sinh eta' = tanh eta' cosh eta'; and sin^2 chi + cos^2 chi cos^2 lam
+   * = 1 - tanh^2 eta' = 1 / cosh^2 eta', so sin xi' = sin chi cosh eta'
+   * and cos xi' = cos chi cos lam cosh eta': no exponential and no
+   * sin/cos of xi'. */
+  ch = tm_cosh(out->eta);
+  sh = geo_mul(tanh_eta, ch);
+  sxi = geo_mul(schi, ch);
+  cxi = geo_mul(geo_mul(cchi, clam), ch);
+  /* xi' = chi + atan(q), q = tan(xi' - chi) = sin chi cos chi (1 - cos
+   * lam) / (1 - cos^2 chi (1 - cos lam)) (the denominator >= 0.89 in the
+   * domain); far from the central meridian near the poles |q| exceeds
+   * tm_atan()'s 0.25 and the full atan2 takes over */
+  q = GEO_ONE - clam;
+  q = geo_div(geo_mul(geo_mul(schi, cchi), q),
+              GEO_ONE - geo_mul(geo_mul(cchi, cchi), q));
+  if ((q <= TM_ATAN_MAX) && (q >= -TM_ATAN_MAX)) {
+    out->xi = chi + tm_atan(q);
   } else {
-    ratio = GEO_POLE_RATIO;
+    out->xi = geo_atan2(schi, geo_mul(cchi, clam));
   }
-  kp = geo_sqrt(GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi)));
-  kp = geo_mul(geo_mul(kp, ratio), cosh_etap);
-  kp = geo_mul(kp, geo_sqrt(geo_mul(kr.p, kr.p) + geo_mul(kr.q, kr.q)));
-  out->k = geo_mul(GEO_K0A_OVER_A, kp);
+  krueger(geo_alpha, 2 * geo_mul(sxi, cxi),
+          geo_mul(cxi, cxi) - geo_mul(sxi, sxi), 2 * geo_mul(sh, ch),
+          geo_mul(ch, ch) + geo_mul(sh, sh), true, out);
+  p = out->gamma;
+  q = out->k;
+  /* convergence: gamma' = arg(cos lam + i sin chi sin lam) of the sphere
+   * plus arg(p + i q) of the series' derivative, as the argument of the
+   * product (|gamma| < pi/2 + 0.01: no wrap) */
+  sxi = geo_mul(schi, slam);
+  cxi = geo_mul(clam, p) - geo_mul(sxi, q);
+  sxi = geo_mul(clam, q) + geo_mul(sxi, p);
+  /* within 14 degrees (every standard zone, Svalbard's included) the
+   * series of atan of the quotient, |y| <= x / 4 tested before dividing
+   * (so the quotient cannot overflow and is at most 0.25); the full atan2
+   * beyond */
+  if ((cxi > 0) && (sxi <= (cxi / 4)) && (sxi >= -(cxi / 4))) {
+    out->gamma = tm_atan(geo_div(sxi, cxi));
+  } else {
+    out->gamma = geo_atan2(sxi, cxi);
+  }
+  /* scale: k0 A/a sqrt(1 - e^2 sin^2 phi) (cos chi / cos phi) cosh eta'
+   * times |p + i q|, the two roots as one */
+  p = geo_mul(kfac, geo_mul(p, p) + geo_mul(q, q)) - GEO_ONE;
+  if ((p <= TM_SQRT_MAX) && (p >= -TM_SQRT_MAX)) {
+    p = tm_sqrt1p(p);
+  } else {
+    p = geo_sqrt(GEO_ONE + p);
+  }
+  out->k = geo_mul(GEO_K0A_OVER_A, geo_mul(geo_mul(p, ratio), ch));
   return 1;
 }
 
 void geo_tm_reverse(int64_t xi, int64_t eta, int64_t *phi, int64_t *lam)
 {
-  krueger_t kr;
+  geo_tm_t kr;
   int64_t xip;
   int64_t etap;
   int64_t sxip = 0;
   int64_t cxip = 0;
-  int64_t shetap = 0;
+  int64_t shetap;
+  int64_t sh1;
   int64_t schi = 0;
   int64_t cchi = 0;
   int64_t chi;
+  int64_t s2 = 0;
+  int64_t c2 = 0;
+  int64_t sh2 = 0;
+  int64_t ch2 = 0;
 
-  krueger(geo_beta, xi, eta, &kr);
-  xip = xi - kr.dxi;
-  etap = eta - kr.deta;
+  geo_sincos(2 * xi, &s2, &c2);
+  /* sinh and cosh of 2 eta from the series of sinh and cosh of eta
+   * (|eta| <= 0.08 from the eastings' range): no exponential */
+  sh2 = tm_sinh(eta);
+  ch2 = tm_cosh(eta);
+  sh1 = 2 * geo_mul(sh2, ch2);
+  ch2 = geo_mul(ch2, ch2) + geo_mul(sh2, sh2);
+  sh2 = sh1;
+  kr.xi = 0;
+  kr.eta = 0;
+  krueger(geo_beta, s2, c2, sh2, ch2, false, &kr);
+  xip = xi - kr.xi;
+  etap = eta - kr.eta;
   geo_sincos(xip, &sxip, &cxip);
-  (void)drdc_fx_sinh_q5_58(etap, &shetap);
+  shetap = tm_sinh(etap);
   *lam = geo_atan2(shetap, cxip);
   chi = geo_atan2(sxip, geo_sqrt(geo_mul(shetap, shetap)
                                  + geo_mul(cxip, cxip)));

@@ -127,7 +127,7 @@ static int64_t angle_from_metres(drdc_q47_16_t v)
 }
 
 /* forward of validated lat and dlon (|dlon| <= 180 degrees) */
-static drdc_status_t tm_forward_nas(drdc_nas_t lat, drdc_nas_t dlon,
+static inline drdc_status_t tm_forward_nas(drdc_nas_t lat, drdc_nas_t dlon,
                                     geo_tm_t *tm)
 {
   if ((dlon > (90 * GEO_NAS_DEG)) || (dlon < (-90 * GEO_NAS_DEG))) {
@@ -178,26 +178,25 @@ static bool ups_in_range(bool north, drdc_q47_16_t v)
                : ((v >= UPS_SOUTH_MIN) && (v <= UPS_SOUTH_MAX));
 }
 
+/* UPS forward; tm is the caller's scratch (x, y, gamma, k in its xi,
+ * eta, gamma, k), so the UTM and UPS branches of drdc_geo_to_utm() share
+ * one struct on the stack */
 static drdc_status_t ups_forward(drdc_nas_t lat, drdc_nas_t lon,
                                  drdc_geo_utm_t *out,
                                  drdc_nas_t *convergence,
-                                 drdc_q5_58_t *scale)
+                                 drdc_q5_58_t *scale, geo_tm_t *tm)
 {
   bool north = (lat >= 0);
-  int64_t x = 0;
-  int64_t y = 0;
-  int64_t gamma = 0;
-  int64_t k = 0;
   drdc_q47_16_t e;
   drdc_q47_16_t n;
 
   if (geo_ups_forward(geo_rad_from_nas(lat),
-                      geo_rad_from_nas(lon_normalize(lon)), north, &x, &y,
-                      &gamma, &k) == 0) {
+                      geo_rad_from_nas(lon_normalize(lon)), north, &tm->xi,
+                      &tm->eta, &tm->gamma, &tm->k) == 0) {
     return DRDC_E_RANGE;
   }
-  e = UPS_FALSE_ORIGIN + geo_ups_metres(x);
-  n = UPS_FALSE_ORIGIN + geo_ups_metres(y);
+  e = UPS_FALSE_ORIGIN + geo_ups_metres(tm->xi);
+  n = UPS_FALSE_ORIGIN + geo_ups_metres(tm->eta);
   if (!ups_in_range(north, e) || !ups_in_range(north, n)) {
     return DRDC_E_RANGE;
   }
@@ -206,43 +205,45 @@ static drdc_status_t ups_forward(drdc_nas_t lat, drdc_nas_t lon,
   out->easting = e;
   out->northing = n;
   if (convergence != NULL) {
-    *convergence = geo_nas_from_rad(gamma);
+    *convergence = geo_nas_from_rad(tm->gamma);
   }
   if (scale != NULL) {
-    *scale = k;
+    *scale = tm->k;
   }
   return DRDC_OK;
 }
 
+/* UPS reverse; tm is the caller's scratch as in ups_forward() */
 static drdc_status_t ups_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat,
                                  drdc_nas_t *lon, drdc_nas_t *convergence,
-                                 drdc_q5_58_t *scale)
+                                 drdc_q5_58_t *scale, geo_tm_t *tm)
 {
-  int64_t phi = 0;
-  int64_t lam = 0;
-  int64_t x = 0;
-  int64_t y = 0;
-  int64_t gamma = 0;
-  int64_t k = 0;
-
   if (!ups_in_range(in->north, in->easting)) {
     return DRDC_E_EASTING;
   }
   if (!ups_in_range(in->north, in->northing)) {
     return DRDC_E_NORTHING;
   }
+  /* phi and lam in tm->gamma and tm->k until the forward below */
+  tm->gamma = 0;
+  tm->k = 0;
   geo_ups_reverse(in->easting - UPS_FALSE_ORIGIN,
-                  in->northing - UPS_FALSE_ORIGIN, in->north, &phi, &lam);
-  *lat = geo_nas_from_rad(phi);
-  *lon = geo_nas_from_rad(lam);
+                  in->northing - UPS_FALSE_ORIGIN, in->north, &tm->gamma,
+                  &tm->k);
+  *lat = geo_nas_from_rad(tm->gamma);
+  *lon = geo_nas_from_rad(tm->k);
   if ((convergence != NULL) || (scale != NULL)) {
+    int64_t phi = tm->gamma;
+    int64_t lam = tm->k;
+
     /* within the UPS ranges sin chi > 0.5: never fails */
-    (void)geo_ups_forward(phi, lam, in->north, &x, &y, &gamma, &k);
+    (void)geo_ups_forward(phi, lam, in->north, &tm->xi, &tm->eta,
+                          &tm->gamma, &tm->k);
     if (convergence != NULL) {
-      *convergence = geo_nas_from_rad(gamma);
+      *convergence = geo_nas_from_rad(tm->gamma);
     }
     if (scale != NULL) {
-      *scale = k;
+      *scale = tm->k;
     }
   }
   return DRDC_OK;
@@ -273,7 +274,7 @@ drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
     return DRDC_E_ZONE;
   }
   if (z == DRDC_GEO_ZONE_UPS) {
-    return ups_forward(lat, lon, out, convergence, scale);
+    return ups_forward(lat, lon, out, convergence, scale, &tm);
   }
   st = tm_forward_nas(lat, lon_normalize(lon - central_meridian(z)), &tm);
   if (st != DRDC_OK) {
@@ -321,7 +322,7 @@ drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
     return DRDC_E_ZONE;
   }
   if (in->zone == DRDC_GEO_ZONE_UPS) {
-    return ups_reverse(in, lat, lon, convergence, scale);
+    return ups_reverse(in, lat, lon, convergence, scale, &tm);
   }
   if ((in->easting < UTM_E_MIN) || (in->easting > UTM_E_MAX)) {
     return DRDC_E_EASTING;

@@ -27,6 +27,27 @@ static uint32_t utm_case(uint32_t x)
 
 BENCH_LOOP(run_utm_forward, utm_case(x))
 
+/* UTM -> geographic with convergence and scale: zones 1..60, both
+ * hemispheres, eastings 180..820 km, northings 0..8 000 km */
+static uint32_t utm_reverse_case(uint32_t x)
+{
+  drdc_geo_utm_t u;
+  drdc_nas_t lat = 0;
+  drdc_nas_t lon = 0;
+  drdc_nas_t g = 0;
+  drdc_q5_58_t k = 0;
+
+  u.zone = (int32_t)(x % 60u) + 1;
+  u.north = ((x >> 6) & 1u) != 0u;
+  u.easting = ((int64_t)180000 + (int64_t)((x >> 7) & 0x3FFu) * 625)
+              * INT64_C(65536);
+  u.northing = ((int64_t)((x >> 17) & 0x7FFFu) * 244) * INT64_C(65536);
+  (void)drdc_geo_from_utm(&u, &lat, &lon, &g, &k);
+  return (uint32_t)lat ^ (uint32_t)lon ^ (uint32_t)g ^ (uint32_t)k;
+}
+
+BENCH_LOOP(run_utm_reverse, utm_reverse_case(x))
+
 /* Q5.58 arguments from the 32-bit input: |a| < 2^(27 + shift - 58) */
 #define ARG(v, shift) ((int64_t)(int32_t)(v) * (INT64_C(1) << (shift)))
 #define OTHER(v) ((v) * 2654435761u)
@@ -99,6 +120,7 @@ BENCH_LOOP(run_q58_atanh, q58_atanh(x))
 
 const bench_case_t bench_cases_geo[] = {
   { "utm_forward", "drdc", "drdc_geo_to_utm", run_utm_forward },
+  { "utm_reverse", "drdc", "drdc_geo_from_utm", run_utm_reverse },
   { "q58_mul", "drdc", "drdc_fx_mul_q5_58", run_q58_mul },
   { "q58_div", "drdc", "drdc_fx_div_q5_58", run_q58_div },
   { "q58_sincos", "drdc", "drdc_fx_sincos_q5_58", run_q58_sincos },

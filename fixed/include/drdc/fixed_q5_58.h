@@ -123,6 +123,54 @@ drdc_status_t drdc_fx_sqrt_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out);
 drdc_status_t drdc_fx_div_q5_58(drdc_q5_58_t a, drdc_q5_58_t b,
                                 drdc_q5_58_t *out);
 
+/**
+ * Q5.58 product a b / 2^58 rounded to nearest (ties away from zero),
+ * inline and without a status, for inner loops whose bounds are proven:
+ * the same bits as drdc_fx_mul_q5_58() whenever that returns DRDC_OK.
+ *
+ * @param a Q5.58 factor.
+ * @param b Q5.58 factor; the caller guarantees |a b| < 32 (the product
+ *        fits Q5.58). Beyond that the result is the low 64 bits of the
+ *        rounded magnitude with the sign applied: wrong, but defined
+ *        (no undefined behaviour, no trap).
+ * @return the rounded product, Q5.58.
+ *
+ * Method: the magnitudes' 128-bit product from four 32 x 32 -> 64
+ * products, plus 2^57, bits 58..121; then the sign. Its inlined body is
+ * about a third of the cycles of the call to drdc_fx_mul_q5_58() with its
+ * checks and pointer (Cortex-M3). Accuracy: correctly rounded, error
+ * <= 0.5 LSB; checked bit for bit against drdc_fx_mul_q5_58() on the
+ * stored product vectors (tests/fixed/test_q5_58.c).
+ */
+static inline drdc_q5_58_t drdc_fx_mul_q5_58_unchecked(drdc_q5_58_t a,
+                                                       drdc_q5_58_t b)
+{
+  const uint64_t low32 = 0xFFFFFFFFu;
+  const uint64_t half = UINT64_C(1) << 57;
+  uint64_t ma = (a < 0) ? (UINT64_C(0) - (uint64_t)a) : (uint64_t)a;
+  uint64_t mb = (b < 0) ? (UINT64_C(0) - (uint64_t)b) : (uint64_t)b;
+  uint64_t a0 = ma & low32;
+  uint64_t a1 = ma >> 32;
+  uint64_t b0 = mb & low32;
+  uint64_t b1 = mb >> 32;
+  uint64_t p00 = a0 * b0;
+  uint64_t p01 = a0 * b1;
+  uint64_t p10 = a1 * b0;
+  /* middle column: at most 3 (2^32 - 1) < 2^34, no overflow */
+  uint64_t mid = (p00 >> 32) + (p01 & low32) + (p10 & low32);
+  uint64_t lo = (mid << 32) | (p00 & low32);
+  uint64_t hi = (a1 * b1) + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+  uint64_t m;
+
+  lo = lo + half;
+  if (lo < half) {
+    hi = hi + 1u;
+  }
+  m = (hi << 6) | (lo >> 58);
+  return ((a < 0) != (b < 0)) ? (drdc_q5_58_t)(UINT64_C(0) - m)
+                              : (drdc_q5_58_t)m;
+}
+
 /** @} */
 
 #endif /* DRDC_FIXED_Q5_58_H */
