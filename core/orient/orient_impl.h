@@ -87,6 +87,132 @@ static inline drdc_status_t drdc_orient_impl_q60_to_q30(int64_t v,
 }
 
 /**
+ * Round a Q60 value to Q1.30 bits (ties away from zero) without a branch,
+ * for hot paths whose callers know v cannot reach 2^63: the sign bias
+ * 2^29 - [v < 0] turns the floor of the shift into the rounding of
+ * drdc_fx_rshift_round_s64() (ceil((v - 2^29) / 2^30) equals
+ * floor((v + 2^29 - 1) / 2^30)). The high word of the biased value plus
+ * 2^29 is ORed into *ovf: the result fits int32_t exactly when that word
+ * is below 2^30, so bits 30..31 of *ovf flag an overflow of any of the
+ * parts rounded with the same *ovf.
+ * @return the low 32 bits of the rounded value (the Q1.30 part when
+ *         *ovf stays below 2^30)
+ */
+static inline uint32_t orient_q60_round_bits(int64_t v, uint32_t *ovf)
+{
+  uint64_t u = (uint64_t)v;
+  uint32_t neg = (uint32_t)(u >> 63u);
+  uint32_t hi;
+
+  u += UINT64_C(0x20000000) - neg;
+  hi = (uint32_t)(u >> 32u);
+  *ovf |= hi + UINT32_C(0x20000000);
+  return (uint32_t)(u >> 30u);
+}
+
+/** One 16-bit digit of Knuth's algorithm D (TAOCP vol. 2, 4.3.1): the
+ *  quotient digit of (r 2^16 + u) / d for r < d, d >= 2^31 normalised,
+ *  with the 32/32 hardware division on the top half dh of d and at most
+ *  two corrections; *r becomes the remainder. */
+static inline uint32_t orient_div_digit16(uint32_t *r, uint32_t u, uint32_t d)
+{
+  const uint32_t dh = d >> 16u;
+  const uint32_t dl = d & 0xFFFFu;
+  uint32_t qh = *r / dh;
+  uint32_t rh = *r - (qh * dh);
+
+  while ((qh > 0xFFFFu) || ((qh * dl) > ((rh << 16u) | u))) {
+    qh--;
+    rh += dh;
+    if (rh > 0xFFFFu) {
+      break;
+    }
+  }
+  *r = ((*r << 16u) | u) - (qh * d); /* < d: exact modulo 2^32 */
+  return qh;
+}
+
+/** floor((2^64 - 1) / d) - 2^32 for d >= 2^31 (the 2/1 reciprocal of
+ *  Moeller and Granlund), from two 16-bit digits of (~d 2^32 + 2^32 - 1)
+ *  / d: 32/32 divisions only, no 64-bit division helper. */
+static inline uint32_t orient_reciprocal_word(uint32_t d)
+{
+  uint32_t r = ~d; /* < d */
+  uint32_t q1 = orient_div_digit16(&r, 0xFFFFu, d);
+  uint32_t q0 = orient_div_digit16(&r, 0xFFFFu, d);
+
+  return (q1 << 16u) | q0;
+}
+
+/**
+ * Reciprocal of a normalised two-word divisor d = d1 2^32 + d0 (d1 >=
+ * 2^31), after Moeller and Granlund, "Improved division by invariant
+ * integers" (IEEE Trans. Computers 60(2), 2011), algorithm 6 with 32-bit
+ * words: floor((2^96 - 1) / d) - 2^32. Two 32/32 divisions; every
+ * division by d then costs two 32x32->64 products and a few adds
+ * (orient_div_3by2()). A fixed-point primitive: it belongs in fixed/.
+ */
+static inline uint32_t orient_reciprocal_3by2(uint32_t d1, uint32_t d0)
+{
+  uint32_t v = orient_reciprocal_word(d1);
+  uint32_t p = d1 * v;
+  uint64_t t;
+  uint32_t t1;
+  uint32_t t0;
+
+  p += d0;
+  if (p < d0) {
+    v--;
+    if (p >= d1) {
+      v--;
+      p -= d1;
+    }
+    p -= d1;
+  }
+  t = (uint64_t)v * d0;
+  t1 = (uint32_t)(t >> 32u);
+  t0 = (uint32_t)t;
+  p += t1;
+  if (p < t1) {
+    v--;
+    if ((p > d1) || ((p == d1) && (t0 >= d0))) {
+      v--;
+    }
+  }
+  return v;
+}
+
+/**
+ * One 32-bit quotient word of u2 2^64 + u1 2^32 + u0 by the normalised
+ * d = d1 2^32 + d0 with v = orient_reciprocal_3by2(d1, d0), for
+ * u2 2^32 + u1 < d (Moeller and Granlund, algorithm 5). *r receives the
+ * remainder (< d).
+ */
+static inline uint32_t orient_div_3by2(uint32_t u2, uint32_t u1, uint32_t u0,
+                                       uint64_t d, uint32_t v, uint64_t *r)
+{
+  const uint32_t d1 = (uint32_t)(d >> 32u);
+  const uint32_t d0 = (uint32_t)d;
+  uint64_t q = ((uint64_t)v * u2) + (((uint64_t)u2 << 32u) | u1);
+  uint32_t q1 = (uint32_t)(q >> 32u);
+  uint32_t q0 = (uint32_t)q;
+  uint32_t r1 = u1 - (q1 * d1);
+  uint64_t rr = ((((uint64_t)r1 << 32u) | u0) - ((uint64_t)q1 * d0)) - d;
+
+  q1++;
+  if ((uint32_t)(rr >> 32u) >= q0) {
+    q1--;
+    rr += d;
+  }
+  if (rr >= d) { /* rare */
+    q1++;
+    rr -= d;
+  }
+  *r = rr;
+  return q1;
+}
+
+/**
  * sin and cos of half the signed angle a ([-pi, pi) -> [-pi/2, pi/2)),
  * both doubled: Q1.31 scale (2^31 = 1.0) in int64_t. For an odd a the
  * half angle falls between two binary angles; the mean of the two table

@@ -15,15 +15,67 @@
 
 #include "orient_impl.h"
 
-/* |part| <= 1.0 for all four parts: every product is <= 2^60 and every
- * sum of four is <= 2^62, so the sums need no overflow test. */
-static int unit_range(const drdc_quat_t *q)
+/* Every part of a and b in (-1.0, 1.0], raw (-2^30, 2^30]: then
+ * 2^30 - part is in [0, 2^31) as uint32_t, so one OR of the eight
+ * differences tests them all (bit 31 clear). A part of exactly -1.0
+ * takes the checked path, with the same result. */
+static int unit_range(const drdc_quat_t *a, const drdc_quat_t *b)
 {
-  const uint32_t lim = UINT32_C(1) << 31;
-  const uint32_t off = UINT32_C(1) << 30;
+  const uint32_t one = UINT32_C(1) << 30;
+  uint32_t m = (one - (uint32_t)a->s) | (one - (uint32_t)a->x)
+               | (one - (uint32_t)a->y) | (one - (uint32_t)a->z)
+               | (one - (uint32_t)b->s) | (one - (uint32_t)b->x)
+               | (one - (uint32_t)b->y) | (one - (uint32_t)b->z);
 
-  return (((uint32_t)q->s + off) <= lim) && (((uint32_t)q->x + off) <= lim)
-         && (((uint32_t)q->y + off) <= lim) && (((uint32_t)q->z + off) <= lim);
+  return (m >> 31u) == 0u;
+}
+
+/* The product of two quaternions whose parts are all in (-1.0, 1.0]
+ * (Q1.30 raw (-2^30, 2^30]): every product is <= 2^60 and every sum of
+ * four <= 2^62, so the sums are exact without checks, and the negated
+ * parts of b cannot overflow. Each part is rounded as
+ * drdc_orient_impl_q60_to_q30() does; DRDC_E_OVERFLOW when a part is
+ * outside [-2, 2) (possible for |a| |b| > 2). */
+static drdc_status_t quat_mul_unit(const drdc_quat_t *a, const drdc_quat_t *b,
+                                   drdc_quat_t *out)
+{
+  const int32_t as = a->s;
+  const int32_t ax = a->x;
+  const int32_t ay = a->y;
+  const int32_t az = a->z;
+  const int32_t bs = b->s;
+  const int32_t bx = b->x;
+  const int32_t by = b->y;
+  const int32_t bz = b->z;
+  const int32_t nbx = -bx;
+  const int32_t nby = -by;
+  const int32_t nbz = -bz;
+  uint32_t ovf = 0u;
+  uint32_t rs;
+  uint32_t rx;
+  uint32_t ry;
+  uint32_t rz;
+
+  rs = orient_q60_round_bits(((int64_t)as * bs) + ((int64_t)ax * nbx)
+                                 + ((int64_t)ay * nby) + ((int64_t)az * nbz),
+                             &ovf);
+  rx = orient_q60_round_bits(((int64_t)as * bx) + ((int64_t)ax * bs)
+                                 + ((int64_t)ay * bz) + ((int64_t)az * nby),
+                             &ovf);
+  ry = orient_q60_round_bits(((int64_t)as * by) + ((int64_t)ax * nbz)
+                                 + ((int64_t)ay * bs) + ((int64_t)az * bx),
+                             &ovf);
+  rz = orient_q60_round_bits(((int64_t)as * bz) + ((int64_t)ax * by)
+                                 + ((int64_t)ay * nbx) + ((int64_t)az * bs),
+                             &ovf);
+  if ((ovf >> 30u) != 0u) {
+    return DRDC_E_OVERFLOW;
+  }
+  out->s = (drdc_q1_30_t)rs;
+  out->x = (drdc_q1_30_t)rx;
+  out->y = (drdc_q1_30_t)ry;
+  out->z = (drdc_q1_30_t)rz;
+  return DRDC_OK;
 }
 
 drdc_status_t drdc_quat_mul(const drdc_quat_t *a, const drdc_quat_t *b,
@@ -31,47 +83,37 @@ drdc_status_t drdc_quat_mul(const drdc_quat_t *a, const drdc_quat_t *b,
 {
   int64_t p[4];
   drdc_quat_t r;
-  drdc_status_t st = DRDC_OK;
+  drdc_status_t st;
 
   if ((a == NULL) || (b == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  if (unit_range(a) && unit_range(b)) {
-    p[0] = ((int64_t)a->s * b->s) - ((int64_t)a->x * b->x)
-           - ((int64_t)a->y * b->y) - ((int64_t)a->z * b->z);
-    p[1] = ((int64_t)a->s * b->x) + ((int64_t)a->x * b->s)
-           + ((int64_t)a->y * b->z) - ((int64_t)a->z * b->y);
-    p[2] = ((int64_t)a->s * b->y) - ((int64_t)a->x * b->z)
-           + ((int64_t)a->y * b->s) + ((int64_t)a->z * b->x);
-    p[3] = ((int64_t)a->s * b->z) + ((int64_t)a->x * b->y)
-           - ((int64_t)a->y * b->x) + ((int64_t)a->z * b->s);
-  } else {
-    /* Parts up to 2.0: products up to 2^62, sums checked. Negating a
-     * product of int32 values cannot overflow (|p| <= 2^62). */
-    st = drdc_orient_impl_sum4((int64_t)a->s * b->s, -((int64_t)a->x * b->x),
-                               -((int64_t)a->y * b->y),
-                               -((int64_t)a->z * b->z), &p[0]);
-    if (st == DRDC_OK) {
-      st = drdc_orient_impl_sum4((int64_t)a->s * b->x, (int64_t)a->x * b->s,
-                                 (int64_t)a->y * b->z,
-                                 -((int64_t)a->z * b->y), &p[1]);
-    }
-    if (st == DRDC_OK) {
-      st = drdc_orient_impl_sum4((int64_t)a->s * b->y,
-                                 -((int64_t)a->x * b->z),
-                                 (int64_t)a->y * b->s, (int64_t)a->z * b->x,
-                                 &p[2]);
-    }
-    if (st == DRDC_OK) {
-      st = drdc_orient_impl_sum4((int64_t)a->s * b->z, (int64_t)a->x * b->y,
-                                 -((int64_t)a->y * b->x),
-                                 (int64_t)a->z * b->s, &p[3]);
-    }
-    if (st != DRDC_OK) {
-      return st;
-    }
+  if (unit_range(a, b) != 0) {
+    return quat_mul_unit(a, b, out);
   }
-  st = drdc_orient_impl_q60_to_q30(p[0], &r.s);
+  /* Parts up to 2.0: products up to 2^62, sums checked. Negating a
+   * product of int32 values cannot overflow (|p| <= 2^62). */
+  st = drdc_orient_impl_sum4((int64_t)a->s * b->s, -((int64_t)a->x * b->x),
+                             -((int64_t)a->y * b->y),
+                             -((int64_t)a->z * b->z), &p[0]);
+  if (st == DRDC_OK) {
+    st = drdc_orient_impl_sum4((int64_t)a->s * b->x, (int64_t)a->x * b->s,
+                               (int64_t)a->y * b->z, -((int64_t)a->z * b->y),
+                               &p[1]);
+  }
+  if (st == DRDC_OK) {
+    st = drdc_orient_impl_sum4((int64_t)a->s * b->y, -((int64_t)a->x * b->z),
+                               (int64_t)a->y * b->s, (int64_t)a->z * b->x,
+                               &p[2]);
+  }
+  if (st == DRDC_OK) {
+    st = drdc_orient_impl_sum4((int64_t)a->s * b->z, (int64_t)a->x * b->y,
+                               -((int64_t)a->y * b->x), (int64_t)a->z * b->s,
+                               &p[3]);
+  }
+  if (st == DRDC_OK) {
+    st = drdc_orient_impl_q60_to_q30(p[0], &r.s);
+  }
   if (st == DRDC_OK) {
     st = drdc_orient_impl_q60_to_q30(p[1], &r.x);
   }
