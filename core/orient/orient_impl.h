@@ -227,6 +227,13 @@ void drdc_orient_impl_half_sincos(drdc_bam32_t a, int64_t *s2, int64_t *c2);
 drdc_status_t drdc_orient_impl_atan2_s64(int64_t y, int64_t x,
                                          drdc_bam32_t *out);
 
+/** sqrt(x^2 + y^2) for |x|, |y| <= 2^62, rounded exactly as
+ *  drdc_fx_hypot_s64() rounds (the floor root, plus one when the
+ *  remainder exceeds it), with two Newton steps on 128 bits from a 16-bit
+ *  start instead of 64 bit-by-bit steps. A fixed-point primitive: it
+ *  belongs in fixed/. */
+uint64_t drdc_orient_impl_hypot62(int64_t x, int64_t y);
+
 /** Exact Q60 numerators p of the rotation matrix of q (prescaled) and
  *  their common denominator n2: R = p / n2, |p| <= n2 <= 2^62.
  *  DRDC_E_DOMAIN for the zero quaternion. */
