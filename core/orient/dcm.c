@@ -15,29 +15,37 @@
 #include "orient_impl.h"
 
 /** Exact Q60 numerators of the matrix of the scaled quaternion c; the
- *  matrix of c / |c| is p / n2. |p| <= n2 <= 2^62. */
+ *  matrix of c / |c| is p / n2. |p| <= n2 <= 2^62. Each pair of products
+ *  is formed next to the two elements that use it, so that few 64-bit
+ *  values are live at once (a small stack frame). */
 static void numerators(const int32_t c[4], int64_t p[3][3])
 {
-  const int64_t ss = (int64_t)c[0] * c[0];
-  const int64_t xx = (int64_t)c[1] * c[1];
-  const int64_t yy = (int64_t)c[2] * c[2];
-  const int64_t zz = (int64_t)c[3] * c[3];
-  const int64_t xy = (int64_t)c[1] * c[2];
-  const int64_t xz = (int64_t)c[1] * c[3];
-  const int64_t yz = (int64_t)c[2] * c[3];
-  const int64_t sx = (int64_t)c[0] * c[1];
-  const int64_t sy = (int64_t)c[0] * c[2];
-  const int64_t sz = (int64_t)c[0] * c[3];
+  const int32_t s = c[0];
+  const int32_t x = c[1];
+  const int32_t y = c[2];
+  const int32_t z = c[3];
+  int64_t a;
+  int64_t b;
 
-  p[0][0] = (ss + xx) - (yy + zz);
-  p[0][1] = 2 * (xy - sz);
-  p[0][2] = 2 * (xz + sy);
-  p[1][0] = 2 * (xy + sz);
-  p[1][1] = (ss + yy) - (xx + zz);
-  p[1][2] = 2 * (yz - sx);
-  p[2][0] = 2 * (xz - sy);
-  p[2][1] = 2 * (yz + sx);
-  p[2][2] = (ss + zz) - (xx + yy);
+  a = ((int64_t)s * s) - ((int64_t)y * y); /* ss - yy */
+  b = ((int64_t)x * x) - ((int64_t)z * z); /* xx - zz */
+  p[0][0] = a + b;                         /* (ss + xx) - (yy + zz) */
+  p[2][2] = a - b;                         /* (ss + zz) - (xx + yy) */
+  a = ((int64_t)s * s) - ((int64_t)x * x); /* ss - xx */
+  b = ((int64_t)y * y) - ((int64_t)z * z); /* yy - zz */
+  p[1][1] = a + b;                         /* (ss + yy) - (xx + zz) */
+  a = (int64_t)x * y;
+  b = (int64_t)s * z;
+  p[0][1] = 2 * (a - b);
+  p[1][0] = 2 * (a + b);
+  a = (int64_t)x * z;
+  b = (int64_t)s * y;
+  p[0][2] = 2 * (a + b);
+  p[2][0] = 2 * (a - b);
+  a = (int64_t)y * z;
+  b = (int64_t)s * x;
+  p[1][2] = 2 * (a - b);
+  p[2][1] = 2 * (a + b);
 }
 
 drdc_status_t drdc_orient_impl_numerators(const drdc_quat_t *q,

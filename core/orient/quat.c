@@ -185,15 +185,43 @@ drdc_status_t drdc_quat_inverse(const drdc_quat_t *q, drdc_quat_t *out)
   return DRDC_OK;
 }
 
+/* round(|c| 2^e / root) with the sign of c, to nearest, ties away from
+ * zero, for |c| 2^e <= 2^62 and a root in [2^31, 2^32] (quotient <=
+ * 2^30): an exact 64/32 division in two 16-bit digits of Knuth's
+ * algorithm D (the 32/32 hardware division), its remainder rounding; for
+ * root = 2^32 a shift. The value of drdc_fx_muldiv_s64(c, 2^e, root). */
+static int32_t div_root(int32_t c, unsigned e, uint64_t root)
+{
+  uint32_t mag = (c < 0) ? (0u - (uint32_t)c) : (uint32_t)c;
+  uint64_t num = (uint64_t)mag << e;
+  uint32_t lo = (uint32_t)num;
+  uint32_t r = (uint32_t)(num >> 32u);
+  uint32_t d = (uint32_t)root;
+  uint32_t quo;
+
+  if (root > UINT32_MAX) {
+    quo = r; /* num / 2^32, remainder lo: up when lo >= 2^32 / 2 */
+    quo += lo >> 31u;
+  } else {
+    /* num < 2^62 and quotient <= 2^30: the high word is below d */
+    uint32_t q1 = orient_div_digit16(&r, lo >> 16u, d);
+    uint32_t q0 = orient_div_digit16(&r, lo & 0xFFFFu, d);
+
+    quo = (q1 << 16u) | q0;
+    quo += (r >= (d - r)) ? 1u : 0u;
+  }
+  if (c < 0) {
+    quo = 0u - quo;
+  }
+  return (int32_t)quo;
+}
+
 drdc_status_t drdc_quat_normalize(const drdc_quat_t *q, drdc_quat_t *out)
 {
   orient_scaled_quat_t sq;
   unsigned j;
-  unsigned shift;
+  unsigned e;
   uint64_t root;
-  int64_t num;
-  int64_t v[4];
-  unsigned i;
   drdc_status_t st;
 
   if ((q == NULL) || (out == NULL)) {
@@ -204,19 +232,16 @@ drdc_status_t drdc_quat_normalize(const drdc_quat_t *q, drdc_quat_t *out)
     return st;
   }
   /* n2 in [2^58, 2^62]: shift it by an even 2j into [2^62, 2^64) so the
-   * root r = sqrt(n2) 2^j has 31..32 bits; then part = c 2^(30 + j) / r. */
-  j = drdc_orient_impl_headroom((uint64_t)sq.n2, 64u) / 2u;
-  shift = 2u * j;
-  root = drdc_fx_sqrt_u64((uint64_t)sq.n2 << shift);
-  num = orient_pow2_s64(30u + j);
-  for (i = 0u; i < 4u; i++) {
-    /* |c| 2^(30 + j) / r <= 2^30: cannot overflow. */
-    (void)drdc_fx_muldiv_s64(sq.c[i], num, (int64_t)root, &v[i]);
-  }
-  out->s = (drdc_q1_30_t)v[0];
-  out->x = (drdc_q1_30_t)v[1];
-  out->y = (drdc_q1_30_t)v[2];
-  out->z = (drdc_q1_30_t)v[3];
+   * root r = sqrt(n2) 2^j is in [2^31, 2^32]; then part = c 2^(30 + j) / r,
+   * |c| 2^(30 + j) <= 2^62, |part| <= 2^30: cannot overflow. */
+  j = (unsigned)__builtin_clzll((uint64_t)sq.n2) / 2u;
+  e = 2u * j;
+  root = drdc_fx_sqrt_u64((uint64_t)sq.n2 << e);
+  e = 30u + j;
+  out->s = div_root(sq.c[0], e, root);
+  out->x = div_root(sq.c[1], e, root);
+  out->y = div_root(sq.c[2], e, root);
+  out->z = div_root(sq.c[3], e, root);
   return DRDC_OK;
 }
 
