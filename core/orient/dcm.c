@@ -63,9 +63,11 @@ drdc_status_t drdc_orient_impl_numerators(const drdc_quat_t *q,
 
 drdc_status_t drdc_dcm_from_quat(const drdc_quat_t *q, drdc_dcm_t *out)
 {
-  int64_t p[3][3];
-  int64_t n2;
-  int64_t v;
+  orient_scaled_quat_t sq;
+  int64_t row[3];
+  uint64_t dn;
+  unsigned z;
+  uint32_t rcp;
   unsigned i;
   unsigned j;
   drdc_status_t st;
@@ -73,15 +75,21 @@ drdc_status_t drdc_dcm_from_quat(const drdc_quat_t *q, drdc_dcm_t *out)
   if ((q == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = drdc_orient_impl_numerators(q, p, &n2);
+  st = drdc_orient_impl_scale(q, &sq);
   if (st != DRDC_OK) {
     return st;
   }
+  /* n2 in [2^58, 2^62]: normalised by z = 1..5; one reciprocal for the
+   * nine divisions p 2^30 / n2 (|p| <= n2: quotients within 2^30) */
+  z = (unsigned)__builtin_clzll((uint64_t)sq.n2);
+  dn = (uint64_t)sq.n2 << z;
+  rcp = orient_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
   for (i = 0u; i < 3u; i++) {
+    orient_numerator_row(sq.c, i, row);
     for (j = 0u; j < 3u; j++) {
-      /* |p| <= n2: the quotient is within [-2^30, 2^30]. */
-      (void)drdc_fx_muldiv_s64(p[i][j], orient_pow2_s64(30u), n2, &v);
-      out->m[i][j] = (drdc_q1_30_t)v;
+      uint32_t e = orient_round_div_shifted(row[j], 30u + z, dn, rcp);
+
+      out->m[i][j] = (drdc_q1_30_t)e;
     }
   }
   return DRDC_OK;

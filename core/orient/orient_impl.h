@@ -212,6 +212,58 @@ static inline uint32_t orient_div_3by2(uint32_t u2, uint32_t u1, uint32_t u0,
   return q1;
 }
 
+/** Row i of the exact Q60 numerators of R(c) (the values of
+ * drdc_orient_impl_numerators()), one row at a time so that the whole
+ * matrix never sits on the stack. */
+static inline void orient_numerator_row(const int32_t c[4], unsigned i, int64_t row[3])
+{
+  const int64_t s = c[0];
+  const int64_t x = c[1];
+  const int64_t y = c[2];
+  const int64_t z = c[3];
+
+  if (i == 0u) {
+    row[0] = ((s * s) + (x * x)) - ((y * y) + (z * z));
+    row[1] = 2 * ((x * y) - (s * z));
+    row[2] = 2 * ((x * z) + (s * y));
+  } else if (i == 1u) {
+    row[0] = 2 * ((x * y) + (s * z));
+    row[1] = ((s * s) + (y * y)) - ((x * x) + (z * z));
+    row[2] = 2 * ((y * z) - (s * x));
+  } else {
+    row[0] = 2 * ((x * z) - (s * y));
+    row[1] = 2 * ((y * z) + (s * x));
+    row[2] = ((s * s) + (z * z)) - ((x * x) + (y * y));
+  }
+}
+
+/**
+ * round(p 2^t / d) to nearest, ties away from zero (the value of
+ * drdc_fx_muldiv_s64(p, 2^t, d)), with dn = d 2^z normalised (bit 63
+ * set), rcp = orient_reciprocal_3by2() of dn, and t including z: for
+ * |p| 2^t < dn 2^32 (a quotient below 2^32) and 31 <= t <= 63. The
+ * magnitude times 2^t is three words; one orient_div_3by2() step.
+ * @return the low 32 bits of the rounded quotient with its sign
+ */
+static inline uint32_t orient_round_div_shifted(int64_t p, unsigned t,
+                                                uint64_t dn, uint32_t rcp)
+{
+  uint64_t mag = (p < 0) ? (0u - (uint64_t)p) : (uint64_t)p;
+  unsigned tr = 64u - t;
+  uint64_t lo = mag << t;
+  uint64_t r;
+  uint32_t quo = orient_div_3by2((uint32_t)(mag >> tr), (uint32_t)(lo >> 32u),
+                                 (uint32_t)lo, dn, rcp, &r);
+
+  if (r >= (dn - r)) {
+    quo++;
+  }
+  if (p < 0) {
+    quo = 0u - quo;
+  }
+  return quo;
+}
+
 /**
  * sin and cos of half the signed angle a ([-pi, pi) -> [-pi/2, pi/2)),
  * both doubled: Q1.31 scale (2^31 = 1.0) in int64_t. For an odd a the

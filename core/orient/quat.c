@@ -78,55 +78,75 @@ static drdc_status_t quat_mul_unit(const drdc_quat_t *a, const drdc_quat_t *b,
   return DRDC_OK;
 }
 
+/* The high word (signed) of a product of two int32 values. */
+static int32_t high_word(int64_t v)
+{
+  uint64_t u = (uint64_t)v;
+  uint32_t h = (uint32_t)(u >> 32u);
+
+  return (int32_t)h;
+}
+
+/* One part of the product for any int32 parts: p = w + x + y + z, each
+ * term a product (|.| <= 2^62, so also its negation), summed modulo 2^64.
+ * With each term = h 2^32 + l (h its signed high word, 0 <= l < 2^32),
+ * |p - (sum of h) 2^32| < 2^34: when that sum of high words is within
+ * 2^30, |p| < 2^63 and the modular sum is p itself; beyond, |p| > 2^62
+ * and the part cannot fit [-2, 2) (bit 31 of *ovf is set). */
+static uint32_t wide_part(int64_t w, int64_t x, int64_t y, int64_t z,
+                          uint32_t *ovf)
+{
+  int64_t hs = (int64_t)high_word(w) + high_word(x) + high_word(y)
+               + high_word(z);
+  uint64_t sum = (uint64_t)w + (uint64_t)x + (uint64_t)y + (uint64_t)z;
+
+  if ((hs > (INT64_C(1) << 30)) || (hs < -(INT64_C(1) << 30))) {
+    *ovf |= (UINT32_C(1) << 31);
+    sum = 0u;
+  }
+  return orient_q60_round_bits((int64_t)sum, ovf);
+}
+
+/* The product for parts beyond (-1, 1]: kept out of line (noinline) so
+ * that the common unit case keeps a light frame. */
+static __attribute__((noinline)) drdc_status_t
+quat_mul_wide(const drdc_quat_t *a, const drdc_quat_t *b, drdc_quat_t *out)
+{
+  uint32_t ovf = 0u;
+  uint32_t rs;
+  uint32_t rx;
+  uint32_t ry;
+  uint32_t rz;
+
+  rs = wide_part((int64_t)a->s * b->s, -((int64_t)a->x * b->x),
+                 -((int64_t)a->y * b->y), -((int64_t)a->z * b->z), &ovf);
+  rx = wide_part((int64_t)a->s * b->x, (int64_t)a->x * b->s,
+                 (int64_t)a->y * b->z, -((int64_t)a->z * b->y), &ovf);
+  ry = wide_part((int64_t)a->s * b->y, -((int64_t)a->x * b->z),
+                 (int64_t)a->y * b->s, (int64_t)a->z * b->x, &ovf);
+  rz = wide_part((int64_t)a->s * b->z, (int64_t)a->x * b->y,
+                 -((int64_t)a->y * b->x), (int64_t)a->z * b->s, &ovf);
+  if ((ovf >> 30u) != 0u) {
+    return DRDC_E_OVERFLOW;
+  }
+  out->s = (drdc_q1_30_t)rs;
+  out->x = (drdc_q1_30_t)rx;
+  out->y = (drdc_q1_30_t)ry;
+  out->z = (drdc_q1_30_t)rz;
+  return DRDC_OK;
+}
+
 drdc_status_t drdc_quat_mul(const drdc_quat_t *a, const drdc_quat_t *b,
                             drdc_quat_t *out)
 {
-  int64_t p[4];
-  drdc_quat_t r;
-  drdc_status_t st;
-
   if ((a == NULL) || (b == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
   if (unit_range(a, b) != 0) {
     return quat_mul_unit(a, b, out);
   }
-  /* Parts up to 2.0: products up to 2^62, sums checked. Negating a
-   * product of int32 values cannot overflow (|p| <= 2^62). */
-  st = drdc_orient_impl_sum4((int64_t)a->s * b->s, -((int64_t)a->x * b->x),
-                             -((int64_t)a->y * b->y),
-                             -((int64_t)a->z * b->z), &p[0]);
-  if (st == DRDC_OK) {
-    st = drdc_orient_impl_sum4((int64_t)a->s * b->x, (int64_t)a->x * b->s,
-                               (int64_t)a->y * b->z, -((int64_t)a->z * b->y),
-                               &p[1]);
-  }
-  if (st == DRDC_OK) {
-    st = drdc_orient_impl_sum4((int64_t)a->s * b->y, -((int64_t)a->x * b->z),
-                               (int64_t)a->y * b->s, (int64_t)a->z * b->x,
-                               &p[2]);
-  }
-  if (st == DRDC_OK) {
-    st = drdc_orient_impl_sum4((int64_t)a->s * b->z, (int64_t)a->x * b->y,
-                               -((int64_t)a->y * b->x), (int64_t)a->z * b->s,
-                               &p[3]);
-  }
-  if (st == DRDC_OK) {
-    st = drdc_orient_impl_q60_to_q30(p[0], &r.s);
-  }
-  if (st == DRDC_OK) {
-    st = drdc_orient_impl_q60_to_q30(p[1], &r.x);
-  }
-  if (st == DRDC_OK) {
-    st = drdc_orient_impl_q60_to_q30(p[2], &r.y);
-  }
-  if (st == DRDC_OK) {
-    st = drdc_orient_impl_q60_to_q30(p[3], &r.z);
-  }
-  if (st == DRDC_OK) {
-    *out = r;
-  }
-  return st;
+  /* Parts up to 2.0 in magnitude: the same exact sums, checked. */
+  return quat_mul_wide(a, b, out);
 }
 
 drdc_status_t drdc_quat_conj(const drdc_quat_t *q, drdc_quat_t *out)

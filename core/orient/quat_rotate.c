@@ -137,8 +137,8 @@ drdc_status_t drdc_quat_rotate_q15_16(const drdc_quat_t *q,
                                       const drdc_vec3_q15_16_t *v,
                                       drdc_vec3_q15_16_t *out)
 {
-  int64_t p[3][3];
-  int64_t n2;
+  orient_scaled_quat_t sq;
+  int64_t row[3];
   int32_t in[3];
   int32_t res[3];
   uint64_t dn;
@@ -150,7 +150,7 @@ drdc_status_t drdc_quat_rotate_q15_16(const drdc_quat_t *q,
   if ((q == NULL) || (v == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = drdc_orient_impl_numerators(q, p, &n2);
+  st = drdc_orient_impl_scale(q, &sq);
   if (st != DRDC_OK) {
     return st;
   }
@@ -158,11 +158,12 @@ drdc_status_t drdc_quat_rotate_q15_16(const drdc_quat_t *q,
   in[1] = v->y;
   in[2] = v->z;
   /* n2 in [2^58, 2^62]: normalised by z = 1..5 so that bit 63 is set */
-  z = (unsigned)__builtin_clzll((uint64_t)n2);
-  dn = (uint64_t)n2 << z;
+  z = (unsigned)__builtin_clzll((uint64_t)sq.n2);
+  dn = (uint64_t)sq.n2 << z;
   rcp = orient_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
   for (i = 0u; i < 3u; i++) {
-    if (rotate_part_q15_16(p[i], in, dn, z, rcp, &res[i]) != 0) {
+    orient_numerator_row(sq.c, i, row);
+    if (rotate_part_q15_16(row, in, dn, z, rcp, &res[i]) != 0) {
       return DRDC_E_OVERFLOW;
     }
   }

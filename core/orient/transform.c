@@ -73,16 +73,16 @@ drdc_status_t drdc_transform_from_quat(const drdc_quat_t *q,
                                        const drdc_vec3_q15_16_t *t,
                                        drdc_transform_t *out)
 {
-  drdc_dcm_t r;
   drdc_status_t st;
 
   if ((q == NULL) || (t == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = drdc_dcm_from_quat(q, &r);
+  /* Straight into out: drdc_dcm_from_quat() writes nothing on error, and
+   * t (which may be &out->t) is read after the matrix is written. */
+  st = drdc_dcm_from_quat(q, &out->r);
   if (st == DRDC_OK) {
     out->t = *t;
-    copy_dcm(&r, &out->r);
   }
   return st;
 }
