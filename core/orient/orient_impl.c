@@ -190,7 +190,7 @@ static uint64_t div_128_64(uint64_t nh, uint64_t nl, uint64_t x)
 {
   unsigned z = (unsigned)__builtin_clzll(x);
   uint64_t dn = x << z;
-  uint32_t rcp = orient_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
+  uint32_t rcp = drdc_orient_impl_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
   uint64_t uh = nh;
   uint64_t ul = nl;
   uint64_t r;
@@ -225,23 +225,6 @@ static uint32_t isqrt32_big(uint32_t t)
   return g;
 }
 
-/* x y as 128 bits: four 32x32 products */
-static void mul_u64(uint64_t x, uint64_t y, uint64_t *hi, uint64_t *lo)
-{
-  const uint32_t x0 = (uint32_t)x;
-  const uint32_t x1 = (uint32_t)(x >> 32u);
-  const uint32_t y0 = (uint32_t)y;
-  const uint32_t y1 = (uint32_t)(y >> 32u);
-  uint64_t ll = (uint64_t)x0 * y0;
-  uint64_t lh = (uint64_t)x0 * y1;
-  uint64_t hl = (uint64_t)x1 * y0;
-  uint64_t hh = (uint64_t)x1 * y1;
-  uint64_t mid = (ll >> 32u) + (uint32_t)lh + (uint32_t)hl;
-
-  *lo = (mid << 32u) | (uint32_t)ll;
-  *hi = hh + (lh >> 32u) + (hl >> 32u) + (mid >> 32u);
-}
-
 uint64_t drdc_orient_impl_hypot62(int64_t x, int64_t y)
 {
   uint64_t ax = abs64(x);
@@ -260,8 +243,8 @@ uint64_t drdc_orient_impl_hypot62(int64_t x, int64_t y)
   unsigned i;
   uint32_t t;
 
-  mul_u64(ax, ax, &xh, &xl);
-  mul_u64(ay, ay, &yh, &yl);
+  orient_mul_u64(ax, ax, &xh, &xl);
+  orient_mul_u64(ay, ay, &yh, &yl);
   nl = xl + yl;
   nh = xh + yh + ((nl < xl) ? 1u : 0u); /* N = x^2 + y^2 <= 2^125 */
   if (nh == 0u) {
@@ -290,13 +273,65 @@ uint64_t drdc_orient_impl_hypot62(int64_t x, int64_t y)
   for (i = 0u; i < 2u; i++) {
     root = (root + div_128_64(nh, nl, root)) >> 1u;
   }
-  mul_u64(root, root, &sh, &sl);
+  orient_mul_u64(root, root, &sh, &sl);
   while ((sh > nh) || ((sh == nh) && (sl > nl))) {
     root--;
-    mul_u64(root, root, &sh, &sl);
+    orient_mul_u64(root, root, &sh, &sl);
   }
   /* remainder N - root^2 (< 2^65): up when it exceeds root */
   sh = (nh - sh) - ((nl < sl) ? 1u : 0u);
   sl = nl - sl;
   return ((sh != 0u) || (sl > root)) ? (root + 1u) : root;
+}
+
+uint32_t drdc_orient_impl_reciprocal_3by2(uint32_t d1, uint32_t d0)
+{
+  uint32_t v = orient_reciprocal_word(d1);
+  uint32_t p = d1 * v;
+  uint64_t t;
+  uint32_t t1;
+  uint32_t t0;
+
+  p += d0;
+  if (p < d0) {
+    v--;
+    if (p >= d1) {
+      v--;
+      p -= d1;
+    }
+    p -= d1;
+  }
+  t = (uint64_t)v * d0;
+  t1 = (uint32_t)(t >> 32u);
+  t0 = (uint32_t)t;
+  p += t1;
+  if (p < t1) {
+    v--;
+    if ((p > d1) || ((p == d1) && (t0 >= d0))) {
+      v--;
+    }
+  }
+  return v;
+}
+
+void drdc_orient_impl_numerator_row(const int32_t c[4], unsigned i, int64_t row[3])
+{
+  const int64_t s = c[0];
+  const int64_t x = c[1];
+  const int64_t y = c[2];
+  const int64_t z = c[3];
+
+  if (i == 0u) {
+    row[0] = ((s * s) + (x * x)) - ((y * y) + (z * z));
+    row[1] = 2 * ((x * y) - (s * z));
+    row[2] = 2 * ((x * z) + (s * y));
+  } else if (i == 1u) {
+    row[0] = 2 * ((x * y) + (s * z));
+    row[1] = ((s * s) + (y * y)) - ((x * x) + (z * z));
+    row[2] = 2 * ((y * z) - (s * x));
+  } else {
+    row[0] = 2 * ((x * z) - (s * y));
+    row[1] = 2 * ((y * z) + (s * x));
+    row[2] = ((s * s) + (z * z)) - ((x * x) + (y * y));
+  }
 }

@@ -152,39 +152,11 @@ static inline uint32_t orient_reciprocal_word(uint32_t d)
  * division by d then costs two 32x32->64 products and a few adds
  * (orient_div_3by2()). A fixed-point primitive: it belongs in fixed/.
  */
-static inline uint32_t orient_reciprocal_3by2(uint32_t d1, uint32_t d0)
-{
-  uint32_t v = orient_reciprocal_word(d1);
-  uint32_t p = d1 * v;
-  uint64_t t;
-  uint32_t t1;
-  uint32_t t0;
-
-  p += d0;
-  if (p < d0) {
-    v--;
-    if (p >= d1) {
-      v--;
-      p -= d1;
-    }
-    p -= d1;
-  }
-  t = (uint64_t)v * d0;
-  t1 = (uint32_t)(t >> 32u);
-  t0 = (uint32_t)t;
-  p += t1;
-  if (p < t1) {
-    v--;
-    if ((p > d1) || ((p == d1) && (t0 >= d0))) {
-      v--;
-    }
-  }
-  return v;
-}
+uint32_t drdc_orient_impl_reciprocal_3by2(uint32_t d1, uint32_t d0);
 
 /**
  * One 32-bit quotient word of u2 2^64 + u1 2^32 + u0 by the normalised
- * d = d1 2^32 + d0 with v = orient_reciprocal_3by2(d1, d0), for
+ * d = d1 2^32 + d0 with v = drdc_orient_impl_reciprocal_3by2(d1, d0), for
  * u2 2^32 + u1 < d (Moeller and Granlund, algorithm 5). *r receives the
  * remainder (< d).
  */
@@ -215,32 +187,12 @@ static inline uint32_t orient_div_3by2(uint32_t u2, uint32_t u1, uint32_t u0,
 /** Row i of the exact Q60 numerators of R(c) (the values of
  * drdc_orient_impl_numerators()), one row at a time so that the whole
  * matrix never sits on the stack. */
-static inline void orient_numerator_row(const int32_t c[4], unsigned i, int64_t row[3])
-{
-  const int64_t s = c[0];
-  const int64_t x = c[1];
-  const int64_t y = c[2];
-  const int64_t z = c[3];
-
-  if (i == 0u) {
-    row[0] = ((s * s) + (x * x)) - ((y * y) + (z * z));
-    row[1] = 2 * ((x * y) - (s * z));
-    row[2] = 2 * ((x * z) + (s * y));
-  } else if (i == 1u) {
-    row[0] = 2 * ((x * y) + (s * z));
-    row[1] = ((s * s) + (y * y)) - ((x * x) + (z * z));
-    row[2] = 2 * ((y * z) - (s * x));
-  } else {
-    row[0] = 2 * ((x * z) - (s * y));
-    row[1] = 2 * ((y * z) + (s * x));
-    row[2] = ((s * s) + (z * z)) - ((x * x) + (y * y));
-  }
-}
+void drdc_orient_impl_numerator_row(const int32_t c[4], unsigned i, int64_t row[3]);
 
 /**
  * round(p 2^t / d) to nearest, ties away from zero (the value of
  * drdc_fx_muldiv_s64(p, 2^t, d)), with dn = d 2^z normalised (bit 63
- * set), rcp = orient_reciprocal_3by2() of dn, and t including z: for
+ * set), rcp = drdc_orient_impl_reciprocal_3by2() of dn, and t including z: for
  * |p| 2^t < dn 2^32 (a quotient below 2^32) and 31 <= t <= 63. The
  * magnitude times 2^t is three words; one orient_div_3by2() step.
  * @return the low 32 bits of the rounded quotient with its sign
@@ -262,6 +214,87 @@ static inline uint32_t orient_round_div_shifted(int64_t p, unsigned t,
     quo = 0u - quo;
   }
   return quo;
+}
+
+/** x y as 128 bits (*hi, *lo): four 32x32 products */
+static inline void orient_mul_u64(uint64_t x, uint64_t y, uint64_t *hi, uint64_t *lo)
+{
+  const uint32_t x0 = (uint32_t)x;
+  const uint32_t x1 = (uint32_t)(x >> 32u);
+  const uint32_t y0 = (uint32_t)y;
+  const uint32_t y1 = (uint32_t)(y >> 32u);
+  uint64_t ll = (uint64_t)x0 * y0;
+  uint64_t lh = (uint64_t)x0 * y1;
+  uint64_t hl = (uint64_t)x1 * y0;
+  uint64_t hh = (uint64_t)x1 * y1;
+  uint64_t mid = (ll >> 32u) + (uint32_t)lh + (uint32_t)hl;
+
+  *lo = (mid << 32u) | (uint32_t)ll;
+  *hi = hh + (lh >> 32u) + (hl >> 32u) + (mid >> 32u);
+}
+
+/**
+ * round(p w / d) to nearest, ties away from zero (the value of
+ * drdc_fx_muldiv_s64(p, w, d)) for |p| <= d and |w| < 2^63, with
+ * dn = d 2^z normalised (bit 63 set) and rcp its
+ * drdc_orient_impl_reciprocal_3by2(): |p w| 2^z < dn 2^63 is four words, the
+ * quotient (< 2^63) two orient_div_3by2() steps.
+ */
+static inline int64_t orient_round_div_128(int64_t p, int64_t w, uint64_t dn,
+                                           unsigned z, uint32_t rcp)
+{
+  uint64_t mp = (p < 0) ? (0u - (uint64_t)p) : (uint64_t)p;
+  uint64_t mw = (w < 0) ? (0u - (uint64_t)w) : (uint64_t)w;
+  uint64_t hi;
+  uint64_t lo;
+  uint64_t r;
+  uint64_t quo;
+  uint32_t q1;
+  uint32_t q0;
+
+  orient_mul_u64(mp, mw, &hi, &lo);
+  if (z != 0u) {
+    unsigned zr = 64u - z;
+
+    hi = (hi << z) | (lo >> zr);
+    lo <<= z;
+  }
+  q1 = orient_div_3by2((uint32_t)(hi >> 32u), (uint32_t)hi,
+                       (uint32_t)(lo >> 32u), dn, rcp, &r);
+  q0 = orient_div_3by2((uint32_t)(r >> 32u), (uint32_t)r, (uint32_t)lo, dn,
+                       rcp, &r);
+  quo = ((uint64_t)q1 << 32u) | q0;
+  if (r >= (dn - r)) {
+    quo++;
+  }
+  if ((p < 0) != (w < 0)) {
+    quo = 0u - quo;
+  }
+  return (int64_t)quo;
+}
+
+/**
+ * round(a b / c) to nearest, ties away from zero (the value of
+ * drdc_fx_muldiv_s64(a, b, c)) for c > 0 and |a b| < 2^64: the 64-bit
+ * product, its quotient and remainder (libgcc's 64-bit division: no
+ * 128-bit intermediate and no deep frame).
+ */
+static inline int64_t orient_muldiv_round64(int64_t a, int32_t b, int32_t c)
+{
+  uint64_t ma = (a < 0) ? (0u - (uint64_t)a) : (uint64_t)a;
+  uint32_t mb = (b < 0) ? (0u - (uint32_t)b) : (uint32_t)b;
+  uint64_t d = (uint64_t)(uint32_t)c;
+  uint64_t n = ma * mb;
+  uint64_t q = n / d;
+  uint64_t r = n - (q * d);
+
+  if (r >= (d - r)) {
+    q++;
+  }
+  if ((a < 0) != (b < 0)) {
+    q = 0u - q;
+  }
+  return (int64_t)q;
 }
 
 /**

@@ -19,32 +19,39 @@
 
 /*
  * out_i = sum_j p_ij v_j / n2 with the exact Q60 numerators p of the
- * rotation (|p| <= n2): each term p v 2^6 / n2 is correctly rounded by
- * drdc_fx_muldiv_s64() (128-bit intermediate), |term| <= 2^61, the sum of
- * three fits int64 and is rounded once more. Error <= 0.5 + 3 / 128 LSB
- * against the exact rotation of q / |q|: the matrix is never rounded.
+ * rotation (|p| <= n2): each term p v 2^6 / n2 is correctly rounded
+ * (orient_round_div_128(): 128-bit product, one reciprocal of n2 for the
+ * nine divisions), |term| <= 2^61, the sum of three fits int64 and is
+ * rounded once more. Error <= 0.5 + 3 / 128 LSB against the exact
+ * rotation of q / |q|: the matrix is never rounded. One row of p at a
+ * time: the whole matrix never sits on the stack.
  */
 static drdc_status_t rotate(const drdc_quat_t *q, const int64_t in[3],
                             int64_t res[3])
 {
-  int64_t p[3][3];
-  int64_t n2;
+  orient_scaled_quat_t sq;
+  int64_t row[3];
+  uint64_t dn;
+  unsigned z;
+  uint32_t rcp;
   unsigned i;
   unsigned j;
-  drdc_status_t st = drdc_orient_impl_numerators(q, p, &n2);
+  drdc_status_t st = drdc_orient_impl_scale(q, &sq);
 
   if (st != DRDC_OK) {
     return st;
   }
+  z = (unsigned)__builtin_clzll((uint64_t)sq.n2);
+  dn = (uint64_t)sq.n2 << z;
+  rcp = drdc_orient_impl_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
   for (i = 0u; i < 3u; i++) {
-    int64_t t[3];
-    int64_t s;
+    int64_t s = 0;
 
+    drdc_orient_impl_numerator_row(sq.c, i, row);
     for (j = 0u; j < 3u; j++) {
-      (void)drdc_fx_muldiv_s64(p[i][j], in[j] * orient_pow2_s64(GUARD_BITS),
-                               n2, &t[j]);
+      s += orient_round_div_128(row[j], in[j] * orient_pow2_s64(GUARD_BITS),
+                                dn, z, rcp);
     }
-    s = t[0] + t[1] + t[2];
     res[i] = drdc_fx_rshift_round_s64(s, GUARD_BITS);
   }
   return DRDC_OK;
@@ -160,9 +167,9 @@ drdc_status_t drdc_quat_rotate_q15_16(const drdc_quat_t *q,
   /* n2 in [2^58, 2^62]: normalised by z = 1..5 so that bit 63 is set */
   z = (unsigned)__builtin_clzll((uint64_t)sq.n2);
   dn = (uint64_t)sq.n2 << z;
-  rcp = orient_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
+  rcp = drdc_orient_impl_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
   for (i = 0u; i < 3u; i++) {
-    orient_numerator_row(sq.c, i, row);
+    drdc_orient_impl_numerator_row(sq.c, i, row);
     if (rotate_part_q15_16(row, in, dn, z, rcp, &res[i]) != 0) {
       return DRDC_E_OVERFLOW;
     }
