@@ -189,24 +189,24 @@ drdc_status_t drdc_dcm_mul(const drdc_dcm_t *a, const drdc_dcm_t *b,
   drdc_dcm_t r;
   unsigned i;
   unsigned j;
-  int64_t s;
-  drdc_status_t st;
+  uint32_t ovf = 0u;
 
   if ((a == NULL) || (b == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
   for (i = 0u; i < 3u; i++) {
     for (j = 0u; j < 3u; j++) {
-      st = drdc_orient_impl_sum4((int64_t)a->m[i][0] * b->m[0][j],
-                                 (int64_t)a->m[i][1] * b->m[1][j],
-                                 (int64_t)a->m[i][2] * b->m[2][j], 0, &s);
-      if (st == DRDC_OK) {
-        st = drdc_orient_impl_q60_to_q30(s, &r.m[i][j]);
-      }
-      if (st != DRDC_OK) {
-        return st;
-      }
+      /* the exact sum of three products, rounded once (bit 30 or 31 of
+       * ovf: it does not fit int64 or the element is outside [-2, 2)) */
+      uint32_t e = orient_sum4_round_bits(
+          (int64_t)a->m[i][0] * b->m[0][j], (int64_t)a->m[i][1] * b->m[1][j],
+          (int64_t)a->m[i][2] * b->m[2][j], 0, &ovf);
+
+      r.m[i][j] = (drdc_q1_30_t)e;
     }
+  }
+  if ((ovf >> 30u) != 0u) {
+    return DRDC_E_OVERFLOW;
   }
   /* element by element: a struct copy becomes a memcpy call on the
    * freestanding PowerPC build */

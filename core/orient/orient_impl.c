@@ -190,7 +190,8 @@ static uint64_t div_128_64(uint64_t nh, uint64_t nl, uint64_t x)
 {
   unsigned z = (unsigned)__builtin_clzll(x);
   uint64_t dn = x << z;
-  uint32_t rcp = drdc_orient_impl_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
+  uint32_t rcp =
+      drdc_orient_impl_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
   uint64_t uh = nh;
   uint64_t ul = nl;
   uint64_t r;
@@ -314,7 +315,8 @@ uint32_t drdc_orient_impl_reciprocal_3by2(uint32_t d1, uint32_t d0)
   return v;
 }
 
-void drdc_orient_impl_numerator_row(const int32_t c[4], unsigned i, int64_t row[3])
+void drdc_orient_impl_numerator_row(const int32_t c[4], unsigned i,
+                                    int64_t row[3])
 {
   const int64_t s = c[0];
   const int64_t x = c[1];

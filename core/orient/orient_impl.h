@@ -187,7 +187,8 @@ static inline uint32_t orient_div_3by2(uint32_t u2, uint32_t u1, uint32_t u0,
 /** Row i of the exact Q60 numerators of R(c) (the values of
  * drdc_orient_impl_numerators()), one row at a time so that the whole
  * matrix never sits on the stack. */
-void drdc_orient_impl_numerator_row(const int32_t c[4], unsigned i, int64_t row[3]);
+void drdc_orient_impl_numerator_row(const int32_t c[4], unsigned i,
+                                    int64_t row[3]);
 
 /**
  * round(p 2^t / d) to nearest, ties away from zero (the value of
@@ -217,7 +218,8 @@ static inline uint32_t orient_round_div_shifted(int64_t p, unsigned t,
 }
 
 /** x y as 128 bits (*hi, *lo): four 32x32 products */
-static inline void orient_mul_u64(uint64_t x, uint64_t y, uint64_t *hi, uint64_t *lo)
+static inline void orient_mul_u64(uint64_t x, uint64_t y, uint64_t *hi,
+                                  uint64_t *lo)
 {
   const uint32_t x0 = (uint32_t)x;
   const uint32_t x1 = (uint32_t)(x >> 32u);
@@ -295,6 +297,37 @@ static inline int64_t orient_muldiv_round64(int64_t a, int32_t b, int32_t c)
     q = 0u - q;
   }
   return (int64_t)q;
+}
+
+/** The high word (signed) of a 64-bit value. */
+static inline int32_t orient_high_word(int64_t v)
+{
+  uint64_t u = (uint64_t)v;
+  uint32_t h = (uint32_t)(u >> 32u);
+
+  return (int32_t)h;
+}
+
+/** Q60 -> Q1.30 bits of p = w + x + y + z for any four products of two
+ * int32 values (the parts of a quaternion product, the elements of a
+ * matrix product), each term (|.| <= 2^62, so also its negation), summed
+ * modulo 2^64.
+ * With each term = h 2^32 + l (h its signed high word, 0 <= l < 2^32),
+ * |p - (sum of h) 2^32| < 2^34: when that sum of high words is within
+ * 2^30, |p| < 2^63 and the modular sum is p itself; beyond, |p| > 2^62
+ * and the part cannot fit [-2, 2) (bit 31 of *ovf is set). */
+static inline uint32_t orient_sum4_round_bits(int64_t w, int64_t x, int64_t y,
+                                              int64_t z, uint32_t *ovf)
+{
+  int64_t hs = (int64_t)orient_high_word(w) + orient_high_word(x)
+               + orient_high_word(y) + orient_high_word(z);
+  uint64_t sum = (uint64_t)w + (uint64_t)x + (uint64_t)y + (uint64_t)z;
+
+  if ((hs > (INT64_C(1) << 30)) || (hs < -(INT64_C(1) << 30))) {
+    *ovf |= (UINT32_C(1) << 31);
+    sum = 0u;
+  }
+  return orient_q60_round_bits((int64_t)sum, ovf);
 }
 
 /**

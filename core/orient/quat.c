@@ -78,35 +78,6 @@ static drdc_status_t quat_mul_unit(const drdc_quat_t *a, const drdc_quat_t *b,
   return DRDC_OK;
 }
 
-/* The high word (signed) of a product of two int32 values. */
-static int32_t high_word(int64_t v)
-{
-  uint64_t u = (uint64_t)v;
-  uint32_t h = (uint32_t)(u >> 32u);
-
-  return (int32_t)h;
-}
-
-/* One part of the product for any int32 parts: p = w + x + y + z, each
- * term a product (|.| <= 2^62, so also its negation), summed modulo 2^64.
- * With each term = h 2^32 + l (h its signed high word, 0 <= l < 2^32),
- * |p - (sum of h) 2^32| < 2^34: when that sum of high words is within
- * 2^30, |p| < 2^63 and the modular sum is p itself; beyond, |p| > 2^62
- * and the part cannot fit [-2, 2) (bit 31 of *ovf is set). */
-static uint32_t wide_part(int64_t w, int64_t x, int64_t y, int64_t z,
-                          uint32_t *ovf)
-{
-  int64_t hs = (int64_t)high_word(w) + high_word(x) + high_word(y)
-               + high_word(z);
-  uint64_t sum = (uint64_t)w + (uint64_t)x + (uint64_t)y + (uint64_t)z;
-
-  if ((hs > (INT64_C(1) << 30)) || (hs < -(INT64_C(1) << 30))) {
-    *ovf |= (UINT32_C(1) << 31);
-    sum = 0u;
-  }
-  return orient_q60_round_bits((int64_t)sum, ovf);
-}
-
 /* The product for parts beyond (-1, 1]: kept out of line (noinline) so
  * that the common unit case keeps a light frame. */
 static __attribute__((noinline)) drdc_status_t
@@ -118,13 +89,13 @@ quat_mul_wide(const drdc_quat_t *a, const drdc_quat_t *b, drdc_quat_t *out)
   uint32_t ry;
   uint32_t rz;
 
-  rs = wide_part((int64_t)a->s * b->s, -((int64_t)a->x * b->x),
+  rs = orient_sum4_round_bits((int64_t)a->s * b->s, -((int64_t)a->x * b->x),
                  -((int64_t)a->y * b->y), -((int64_t)a->z * b->z), &ovf);
-  rx = wide_part((int64_t)a->s * b->x, (int64_t)a->x * b->s,
+  rx = orient_sum4_round_bits((int64_t)a->s * b->x, (int64_t)a->x * b->s,
                  (int64_t)a->y * b->z, -((int64_t)a->z * b->y), &ovf);
-  ry = wide_part((int64_t)a->s * b->y, -((int64_t)a->x * b->z),
+  ry = orient_sum4_round_bits((int64_t)a->s * b->y, -((int64_t)a->x * b->z),
                  (int64_t)a->y * b->s, (int64_t)a->z * b->x, &ovf);
-  rz = wide_part((int64_t)a->s * b->z, (int64_t)a->x * b->y,
+  rz = orient_sum4_round_bits((int64_t)a->s * b->z, (int64_t)a->x * b->y,
                  -((int64_t)a->y * b->x), (int64_t)a->z * b->s, &ovf);
   if ((ovf >> 30u) != 0u) {
     return DRDC_E_OVERFLOW;
