@@ -276,29 +276,6 @@ drdc_status_t drdc_dcm_apply_q15_16(const drdc_dcm_t *r,
   return DRDC_OK;
 }
 
-/* round(m v / 2^n), to nearest, ties away from zero (the value of
- * drdc_fx_muldiv_s64(m, v, 2^n)), for |m v| / 2^n < 2^63 and 1 <= n < 64:
- * the 128-bit product of the magnitudes shifted, no division. */
-static int64_t mul_rshift_round(int32_t m, int64_t v, unsigned n)
-{
-  uint64_t mm = (m < 0) ? (0u - (uint64_t)(int64_t)m) : (uint64_t)(int64_t)m;
-  uint64_t mv = (v < 0) ? (0u - (uint64_t)v) : (uint64_t)v;
-  uint64_t hi;
-  uint64_t lo;
-  uint64_t q;
-  unsigned nr = 64u - n;
-
-  orient_mul_u64(mm, mv, &hi, &lo);
-  /* add half a unit of 2^n, then shift: the carry reaches hi */
-  lo += UINT64_C(1) << (n - 1u);
-  hi += (lo < (UINT64_C(1) << (n - 1u))) ? 1u : 0u;
-  q = (hi << nr) | (lo >> n);
-  if ((m < 0) != (v < 0)) {
-    q = 0u - q;
-  }
-  return (int64_t)q;
-}
-
 /* Guard bits of the global product: 2^55 2^6 fits with room for 3 terms. */
 #define GUARD_BITS 6u
 
@@ -326,7 +303,7 @@ drdc_status_t drdc_dcm_apply_q47_16(const drdc_dcm_t *r,
 
     for (j = 0u; j < 3u; j++) {
       /* |m| <= 2^31, |v| <= 2^55: |t| = |m v| / 2^24 <= 2^62. */
-      t[j] = mul_rshift_round(r->m[i][j], in[j], 30u - GUARD_BITS);
+      t[j] = orient_mul_rshift_round(r->m[i][j], in[j], 30u - GUARD_BITS);
     }
     /* For |m| <= 1.0 each |t| <= 2^61 and the sum fits; checked anyway
      * for matrices with elements up to 2.0. */

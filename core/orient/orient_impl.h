@@ -331,6 +331,33 @@ static inline uint32_t orient_sum4_round_bits(int64_t w, int64_t x, int64_t y,
 }
 
 /**
+ * round(a b / 2^n) to nearest, ties away from zero (the value of
+ * drdc_fx_muldiv_s64(a, b, 2^n)) for 1 <= n <= 63 and |a b| / 2^n < 2^63:
+ * the 128-bit product of the magnitudes, half a unit added, shifted; no
+ * division and no 128-bit helper frame.
+ */
+static inline int64_t orient_mul_rshift_round(int64_t a, int64_t b,
+                                              unsigned n)
+{
+  uint64_t ma = (a < 0) ? (0u - (uint64_t)a) : (uint64_t)a;
+  uint64_t mb = (b < 0) ? (0u - (uint64_t)b) : (uint64_t)b;
+  uint64_t half = UINT64_C(1) << (n - 1u);
+  uint64_t hi;
+  uint64_t lo;
+  uint64_t q;
+  unsigned nr = 64u - n;
+
+  orient_mul_u64(ma, mb, &hi, &lo);
+  lo += half;
+  hi += (lo < half) ? 1u : 0u;
+  q = (hi << nr) | (lo >> n);
+  if ((a < 0) != (b < 0)) {
+    q = 0u - q;
+  }
+  return (int64_t)q;
+}
+
+/**
  * sin and cos of half the signed angle a ([-pi, pi) -> [-pi/2, pi/2)),
  * both doubled: Q1.31 scale (2^31 = 1.0) in int64_t. For an odd a the
  * half angle falls between two binary angles; the mean of the two table
