@@ -35,9 +35,11 @@ static int unit_range(const drdc_quat_t *a, const drdc_quat_t *b)
  * four <= 2^62, so the sums are exact without checks, and the negated
  * parts of b cannot overflow. Each part is rounded as
  * drdc_orient_impl_q60_to_q30() does; DRDC_E_OVERFLOW when a part is
- * outside [-2, 2) (possible for |a| |b| > 2). */
-static drdc_status_t quat_mul_unit(const drdc_quat_t *a, const drdc_quat_t *b,
-                                   drdc_quat_t *out)
+ * outside [-2, 2) (possible for |a| |b| > 2). Out of line (noinline), as
+ * quat_mul_wide(): drdc_quat_mul() tail-calls one or the other, so the
+ * worst-case stack is the larger frame, not their sum. */
+static __attribute__((noinline)) drdc_status_t
+quat_mul_unit(const drdc_quat_t *a, const drdc_quat_t *b, drdc_quat_t *out)
 {
   const int32_t as = a->s;
   const int32_t ax = a->x;
