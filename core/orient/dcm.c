@@ -15,29 +15,37 @@
 #include "orient_impl.h"
 
 /** Exact Q60 numerators of the matrix of the scaled quaternion c; the
- *  matrix of c / |c| is p / n2. |p| <= n2 <= 2^62. */
+ *  matrix of c / |c| is p / n2. |p| <= n2 <= 2^62. Each pair of products
+ *  is formed next to the two elements that use it, so that few 64-bit
+ *  values are live at once (a small stack frame). */
 static void numerators(const int32_t c[4], int64_t p[3][3])
 {
-  const int64_t ss = (int64_t)c[0] * c[0];
-  const int64_t xx = (int64_t)c[1] * c[1];
-  const int64_t yy = (int64_t)c[2] * c[2];
-  const int64_t zz = (int64_t)c[3] * c[3];
-  const int64_t xy = (int64_t)c[1] * c[2];
-  const int64_t xz = (int64_t)c[1] * c[3];
-  const int64_t yz = (int64_t)c[2] * c[3];
-  const int64_t sx = (int64_t)c[0] * c[1];
-  const int64_t sy = (int64_t)c[0] * c[2];
-  const int64_t sz = (int64_t)c[0] * c[3];
+  const int32_t s = c[0];
+  const int32_t x = c[1];
+  const int32_t y = c[2];
+  const int32_t z = c[3];
+  int64_t a;
+  int64_t b;
 
-  p[0][0] = (ss + xx) - (yy + zz);
-  p[0][1] = 2 * (xy - sz);
-  p[0][2] = 2 * (xz + sy);
-  p[1][0] = 2 * (xy + sz);
-  p[1][1] = (ss + yy) - (xx + zz);
-  p[1][2] = 2 * (yz - sx);
-  p[2][0] = 2 * (xz - sy);
-  p[2][1] = 2 * (yz + sx);
-  p[2][2] = (ss + zz) - (xx + yy);
+  a = ((int64_t)s * s) - ((int64_t)y * y); /* ss - yy */
+  b = ((int64_t)x * x) - ((int64_t)z * z); /* xx - zz */
+  p[0][0] = a + b;                         /* (ss + xx) - (yy + zz) */
+  p[2][2] = a - b;                         /* (ss + zz) - (xx + yy) */
+  a = ((int64_t)s * s) - ((int64_t)x * x); /* ss - xx */
+  b = ((int64_t)y * y) - ((int64_t)z * z); /* yy - zz */
+  p[1][1] = a + b;                         /* (ss + yy) - (xx + zz) */
+  a = (int64_t)x * y;
+  b = (int64_t)s * z;
+  p[0][1] = 2 * (a - b);
+  p[1][0] = 2 * (a + b);
+  a = (int64_t)x * z;
+  b = (int64_t)s * y;
+  p[0][2] = 2 * (a + b);
+  p[2][0] = 2 * (a - b);
+  a = (int64_t)y * z;
+  b = (int64_t)s * x;
+  p[1][2] = 2 * (a - b);
+  p[2][1] = 2 * (a + b);
 }
 
 drdc_status_t drdc_orient_impl_numerators(const drdc_quat_t *q,
@@ -55,9 +63,11 @@ drdc_status_t drdc_orient_impl_numerators(const drdc_quat_t *q,
 
 drdc_status_t drdc_dcm_from_quat(const drdc_quat_t *q, drdc_dcm_t *out)
 {
-  int64_t p[3][3];
-  int64_t n2;
-  int64_t v;
+  orient_scaled_quat_t sq;
+  int64_t row[3];
+  uint64_t dn;
+  unsigned z;
+  uint32_t rcp;
   unsigned i;
   unsigned j;
   drdc_status_t st;
@@ -65,15 +75,21 @@ drdc_status_t drdc_dcm_from_quat(const drdc_quat_t *q, drdc_dcm_t *out)
   if ((q == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = drdc_orient_impl_numerators(q, p, &n2);
+  st = drdc_orient_impl_scale(q, &sq);
   if (st != DRDC_OK) {
     return st;
   }
+  /* n2 in [2^58, 2^62]: normalised by z = 1..5; one reciprocal for the
+   * nine divisions p 2^30 / n2 (|p| <= n2: quotients within 2^30) */
+  z = (unsigned)__builtin_clzll((uint64_t)sq.n2);
+  dn = (uint64_t)sq.n2 << z;
+  rcp = drdc_orient_impl_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
   for (i = 0u; i < 3u; i++) {
+    drdc_orient_impl_numerator_row(sq.c, i, row);
     for (j = 0u; j < 3u; j++) {
-      /* |p| <= n2: the quotient is within [-2^30, 2^30]. */
-      (void)drdc_fx_muldiv_s64(p[i][j], orient_pow2_s64(30u), n2, &v);
-      out->m[i][j] = (drdc_q1_30_t)v;
+      uint32_t e = orient_round_div_shifted(row[j], 30u + z, dn, rcp);
+
+      out->m[i][j] = (drdc_q1_30_t)e;
     }
   }
   return DRDC_OK;
@@ -173,24 +189,24 @@ drdc_status_t drdc_dcm_mul(const drdc_dcm_t *a, const drdc_dcm_t *b,
   drdc_dcm_t r;
   unsigned i;
   unsigned j;
-  int64_t s;
-  drdc_status_t st;
+  uint32_t ovf = 0u;
 
   if ((a == NULL) || (b == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
   for (i = 0u; i < 3u; i++) {
     for (j = 0u; j < 3u; j++) {
-      st = drdc_orient_impl_sum4((int64_t)a->m[i][0] * b->m[0][j],
-                                 (int64_t)a->m[i][1] * b->m[1][j],
-                                 (int64_t)a->m[i][2] * b->m[2][j], 0, &s);
-      if (st == DRDC_OK) {
-        st = drdc_orient_impl_q60_to_q30(s, &r.m[i][j]);
-      }
-      if (st != DRDC_OK) {
-        return st;
-      }
+      /* the exact sum of three products, rounded once (bit 30 or 31 of
+       * ovf: it does not fit int64 or the element is outside [-2, 2)) */
+      uint32_t e = orient_sum4_round_bits(
+          (int64_t)a->m[i][0] * b->m[0][j], (int64_t)a->m[i][1] * b->m[1][j],
+          (int64_t)a->m[i][2] * b->m[2][j], 0, &ovf);
+
+      r.m[i][j] = (drdc_q1_30_t)e;
     }
+  }
+  if ((ovf >> 30u) != 0u) {
+    return DRDC_E_OVERFLOW;
   }
   /* element by element: a struct copy becomes a memcpy call on the
    * freestanding PowerPC build */
@@ -287,8 +303,7 @@ drdc_status_t drdc_dcm_apply_q47_16(const drdc_dcm_t *r,
 
     for (j = 0u; j < 3u; j++) {
       /* |m| <= 2^31, |v| <= 2^55: |t| = |m v| / 2^24 <= 2^62. */
-      (void)drdc_fx_muldiv_s64(r->m[i][j], in[j],
-                               orient_pow2_s64(30u - GUARD_BITS), &t[j]);
+      t[j] = orient_mul_rshift_round(r->m[i][j], in[j], 30u - GUARD_BITS);
     }
     /* For |m| <= 1.0 each |t| <= 2^61 and the sum fits; checked anyway
      * for matrices with elements up to 2.0. */

@@ -27,23 +27,25 @@ static int64_t scale30(int64_t v)
   return v * orient_pow2_s64(30u);
 }
 
-/* One link: rotation exact Q60, translation exact Q46. */
-typedef struct link_exact {
-  int64_t r[3][3];
-  int64_t t[3];
-} link_exact_t;
+/* One link reduced to its sines and cosines and lengths; its rotation
+ * (exact Q60) and translation (exact Q46) elements are formed on demand
+ * by link_r() and link_t(), so that no 3x3 int64 matrix of the link sits
+ * on the stack. */
+typedef struct link_trig {
+  drdc_q1_30_t st; /**< sin(theta + q) (or of theta) */
+  drdc_q1_30_t ct; /**< cos(theta + q) */
+  drdc_q1_30_t sa; /**< sin(alpha) */
+  drdc_q1_30_t ca; /**< cos(alpha) */
+  int64_t a;       /**< link length, Q15.16 */
+  int64_t d;       /**< link offset (plus q if prismatic), Q15.16 */
+} link_trig_t;
 
-static drdc_status_t link_exact(drdc_dh_convention_t convention,
-                                const drdc_dh_link_t *link, int32_t q,
-                                link_exact_t *out)
+static drdc_status_t link_trig(drdc_dh_convention_t convention,
+                               const drdc_dh_link_t *link, int32_t q,
+                               link_trig_t *out)
 {
   drdc_bam32_t theta = link->theta;
   int64_t d = link->d;
-  drdc_q1_30_t st;
-  drdc_q1_30_t ct;
-  drdc_q1_30_t sa;
-  drdc_q1_30_t ca;
-  const int64_t a = link->a;
 
   if (link->type == DRDC_JOINT_REVOLUTE) {
     theta += (drdc_bam32_t)q; /* modulo a turn */
@@ -55,38 +57,111 @@ static drdc_status_t link_exact(drdc_dh_convention_t convention,
   } else {
     return DRDC_E_RANGE;
   }
-  drdc_fx_sincos_bam32(theta, &st, &ct);
-  drdc_fx_sincos_bam32(link->alpha, &sa, &ca);
-  if (convention == DRDC_DH_STANDARD) {
-    out->r[0][0] = scale30(ct);
-    out->r[0][1] = -((int64_t)st * ca);
-    out->r[0][2] = (int64_t)st * sa;
-    out->r[1][0] = scale30(st);
-    out->r[1][1] = (int64_t)ct * ca;
-    out->r[1][2] = -((int64_t)ct * sa);
-    out->r[2][0] = 0;
-    out->r[2][1] = scale30(sa);
-    out->r[2][2] = scale30(ca);
-    out->t[0] = a * ct;
-    out->t[1] = a * st;
-    out->t[2] = scale30(d);
-  } else if (convention == DRDC_DH_MODIFIED) {
-    out->r[0][0] = scale30(ct);
-    out->r[0][1] = -(scale30(st));
-    out->r[0][2] = 0;
-    out->r[1][0] = (int64_t)st * ca;
-    out->r[1][1] = (int64_t)ct * ca;
-    out->r[1][2] = -(scale30(sa));
-    out->r[2][0] = (int64_t)st * sa;
-    out->r[2][1] = (int64_t)ct * sa;
-    out->r[2][2] = scale30(ca);
-    out->t[0] = scale30(a);
-    out->t[1] = -(d * sa);
-    out->t[2] = d * ca;
-  } else {
+  if ((convention != DRDC_DH_STANDARD) && (convention != DRDC_DH_MODIFIED)) {
     return DRDC_E_RANGE;
   }
+  drdc_fx_sincos_bam32(theta, &out->st, &out->ct);
+  drdc_fx_sincos_bam32(link->alpha, &out->sa, &out->ca);
+  out->a = link->a;
+  out->d = d;
   return DRDC_OK;
+}
+
+/* Element (i, j) of the link rotation, exact Q60. */
+static int64_t link_r(drdc_dh_convention_t convention, const link_trig_t *g,
+                      unsigned i, unsigned j)
+{
+  const unsigned k = (3u * i) + j;
+  int64_t v;
+
+  if (convention == DRDC_DH_STANDARD) {
+    switch (k) {
+    case 0u:
+      v = scale30(g->ct);
+      break;
+    case 1u:
+      v = -((int64_t)g->st * g->ca);
+      break;
+    case 2u:
+      v = (int64_t)g->st * g->sa;
+      break;
+    case 3u:
+      v = scale30(g->st);
+      break;
+    case 4u:
+      v = (int64_t)g->ct * g->ca;
+      break;
+    case 5u:
+      v = -((int64_t)g->ct * g->sa);
+      break;
+    case 6u:
+      v = 0;
+      break;
+    case 7u:
+      v = scale30(g->sa);
+      break;
+    default:
+      v = scale30(g->ca);
+      break;
+    }
+  } else {
+    switch (k) {
+    case 0u:
+      v = scale30(g->ct);
+      break;
+    case 1u:
+      v = -(scale30(g->st));
+      break;
+    case 2u:
+      v = 0;
+      break;
+    case 3u:
+      v = (int64_t)g->st * g->ca;
+      break;
+    case 4u:
+      v = (int64_t)g->ct * g->ca;
+      break;
+    case 5u:
+      v = -(scale30(g->sa));
+      break;
+    case 6u:
+      v = (int64_t)g->st * g->sa;
+      break;
+    case 7u:
+      v = (int64_t)g->ct * g->sa;
+      break;
+    default:
+      v = scale30(g->ca);
+      break;
+    }
+  }
+  return v;
+}
+
+/* Part i of the link translation, exact Q46. */
+static int64_t link_t(drdc_dh_convention_t convention, const link_trig_t *g,
+                      unsigned i)
+{
+  int64_t v;
+
+  if (convention == DRDC_DH_STANDARD) {
+    if (i == 0u) {
+      v = g->a * g->ct;
+    } else if (i == 1u) {
+      v = g->a * g->st;
+    } else {
+      v = scale30(g->d);
+    }
+  } else {
+    if (i == 0u) {
+      v = scale30(g->a);
+    } else if (i == 1u) {
+      v = -(g->d * g->sa);
+    } else {
+      v = g->d * g->ca;
+    }
+  }
+  return v;
 }
 
 /* Q60 or Q46 -> Q1.30 / Q15.16 with the range check of the result. */
@@ -105,8 +180,8 @@ drdc_status_t drdc_dh_link_transform(drdc_dh_convention_t convention,
                                      const drdc_dh_link_t *link, int32_t q,
                                      drdc_transform_t *out)
 {
-  link_exact_t e;
-  drdc_transform_t r;
+  link_trig_t g;
+  int32_t t[3];
   unsigned i;
   unsigned j;
   drdc_status_t st;
@@ -114,54 +189,49 @@ drdc_status_t drdc_dh_link_transform(drdc_dh_convention_t convention,
   if ((link == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = link_exact(convention, link, q, &e);
+  st = link_trig(convention, link, q, &g);
+  for (i = 0u; (i < 3u) && (st == DRDC_OK); i++) {
+    st = round30(link_t(convention, &g, i), &t[i]);
+  }
   if (st != DRDC_OK) {
-    return st;
+    return st; /* out unchanged: only the translation can overflow */
   }
   for (i = 0u; i < 3u; i++) {
     for (j = 0u; j < 3u; j++) {
-      (void)round30(e.r[i][j], &r.r.m[i][j]); /* |r| <= 2^60 */
+      /* |r| <= 2^60: cannot overflow */
+      (void)round30(link_r(convention, &g, i, j), &out->r.m[i][j]);
     }
   }
-  if (st == DRDC_OK) {
-    st = round30(e.t[0], &r.t.x);
-  }
-  if (st == DRDC_OK) {
-    st = round30(e.t[1], &r.t.y);
-  }
-  if (st == DRDC_OK) {
-    st = round30(e.t[2], &r.t.z);
-  }
-  if (st == DRDC_OK) {
-    for (i = 0u; i < 3u; i++) {
-      out->r.m[i][0] = r.r.m[i][0];
-      out->r.m[i][1] = r.r.m[i][1];
-      out->r.m[i][2] = r.r.m[i][2];
-    }
-    out->t = r.t;
-  }
-  return st;
+  out->t.x = t[0];
+  out->t.y = t[1];
+  out->t.z = t[2];
+  return DRDC_OK;
+}
+
+/* round(a b / 2^n): out of line (noinline), so that the twelve products
+ * of a link do not spill their 128-bit temporaries into the frame of
+ * drdc_dh_forward(). */
+static __attribute__((noinline)) int64_t mul_round(int64_t a, int64_t b,
+                                                   unsigned n)
+{
+  return orient_mul_rshift_round(a, b, n);
 }
 
 /* Q2.61 value times a Q60 one, as Q2.61: one correct rounding (128-bit
- * intermediate); |result| <= |a| when |b| <= 2^60. */
+ * product); |result| <= |a| when |b| <= 2^60. */
 static int64_t mul61(int64_t a, int64_t b)
 {
-  int64_t r = 0;
-
-  (void)drdc_fx_muldiv_s64(a, b, orient_pow2_s64(60u), &r);
-  return r;
+  return mul_round(a, b, 60u);
 }
 
 drdc_status_t drdc_dh_forward(drdc_dh_convention_t convention,
                               const drdc_dh_link_t *links, unsigned n,
                               const int32_t *q, drdc_transform_t *out)
 {
-  int64_t buf[2][3][3]; /* the rotation, alternating: no copy loop */
-  unsigned cur = 0u;
-  int64_t t[3];
-  link_exact_t e;
-  drdc_transform_t res;
+  int64_t r[3][3]; /* the rotation so far, Q2.61 */
+  int64_t t[3];    /* the translation so far, Q46 */
+  link_trig_t g;
+  int32_t tr[3];
   unsigned k;
   unsigned i;
   unsigned j;
@@ -178,60 +248,54 @@ drdc_status_t drdc_dh_forward(drdc_dh_convention_t convention,
   }
   for (i = 0u; i < 3u; i++) {
     for (j = 0u; j < 3u; j++) {
-      buf[0][i][j] = (i == j) ? orient_pow2_s64(61u) : 0;
+      r[i][j] = (i == j) ? orient_pow2_s64(61u) : 0;
     }
     t[i] = 0;
   }
   for (k = 0u; k < n; k++) {
-    int64_t(*r)[3] = buf[cur];
-    int64_t(*nr)[3] = buf[cur ^ 1u];
-
-    st = link_exact(convention, &links[k], q[k], &e);
+    st = link_trig(convention, &links[k], q[k], &g);
     if (st != DRDC_OK) {
       return st;
     }
     for (i = 0u; i < 3u; i++) {
       /* t += R t_link: Q61 x Q46 / 2^61 -> Q46, correctly rounded each;
-       * |R t_link| <= 1.01 |t_link| <= 2^62. */
-      int64_t add[3];
+       * |R t_link| <= 1.01 |t_link| <= 2^62. Row i of the new rotation
+       * needs only row i of the old one: replaced in place after. */
+      int64_t nr[3];
       int64_t s;
 
-      for (j = 0u; j < 3u; j++) {
-        (void)drdc_fx_muldiv_s64(r[i][j], e.t[j], orient_pow2_s64(61u),
-                                 &add[j]);
-      }
-      if (drdc_orient_impl_sum4(add[0], add[1], add[2], t[i], &s)
+      if (drdc_orient_impl_sum4(
+              mul_round(r[i][0], link_t(convention, &g, 0u), 61u),
+              mul_round(r[i][1], link_t(convention, &g, 1u), 61u),
+              mul_round(r[i][2], link_t(convention, &g, 2u), 61u),
+              t[i], &s)
           != DRDC_OK) {
         return DRDC_E_OVERFLOW;
       }
       t[i] = s;
       for (j = 0u; j < 3u; j++) {
-        nr[i][j] = mul61(r[i][0], e.r[0][j]) + mul61(r[i][1], e.r[1][j])
-                   + mul61(r[i][2], e.r[2][j]);
+        nr[j] = mul61(r[i][0], link_r(convention, &g, 0u, j))
+                + mul61(r[i][1], link_r(convention, &g, 1u, j))
+                + mul61(r[i][2], link_r(convention, &g, 2u, j));
       }
+      r[i][0] = nr[0];
+      r[i][1] = nr[1];
+      r[i][2] = nr[2];
     }
-    cur ^= 1u;
+  }
+  for (i = 0u; (i < 3u) && (st == DRDC_OK); i++) {
+    st = round30(t[i], &tr[i]);
+  }
+  if (st != DRDC_OK) {
+    return st;
   }
   for (i = 0u; i < 3u; i++) {
     for (j = 0u; j < 3u; j++) {
-      res.r.m[i][j] =
-          (drdc_q1_30_t)drdc_fx_rshift_round_s64(buf[cur][i][j], 31u);
+      out->r.m[i][j] = (drdc_q1_30_t)drdc_fx_rshift_round_s64(r[i][j], 31u);
     }
   }
-  st = round30(t[0], &res.t.x);
-  if (st == DRDC_OK) {
-    st = round30(t[1], &res.t.y);
-  }
-  if (st == DRDC_OK) {
-    st = round30(t[2], &res.t.z);
-  }
-  if (st == DRDC_OK) {
-    for (i = 0u; i < 3u; i++) {
-      out->r.m[i][0] = res.r.m[i][0];
-      out->r.m[i][1] = res.r.m[i][1];
-      out->r.m[i][2] = res.r.m[i][2];
-    }
-    out->t = res.t;
-  }
-  return st;
+  out->t.x = tr[0];
+  out->t.y = tr[1];
+  out->t.z = tr[2];
+  return DRDC_OK;
 }

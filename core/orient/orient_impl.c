@@ -8,6 +8,7 @@
 
 #include <stddef.h>
 
+#include <drdc/fixed_sqrt.h>
 #include <drdc/fixed_trig.h>
 
 static uint32_t abs32(int32_t x)
@@ -38,42 +39,56 @@ unsigned drdc_orient_impl_headroom(uint64_t v, unsigned limit)
   return s;
 }
 
+/* v 2^n for |v| 2^n <= 2^30, shifted as unsigned (no shift of a signed
+ * value) */
+static int32_t shl32(int32_t v, unsigned n)
+{
+  uint32_t u = (uint32_t)v << n;
+
+  return (int32_t)u;
+}
+
 drdc_status_t drdc_orient_impl_scale(const drdc_quat_t *q,
                                      orient_scaled_quat_t *out)
 {
-  const int32_t in[4] = { q->s, q->x, q->y, q->z };
-  uint32_t m = 0u;
-  unsigned i;
+  const int32_t s = q->s;
+  const int32_t x = q->x;
+  const int32_t y = q->y;
+  const int32_t z = q->z;
+  uint32_t m = abs32(s);
+  uint32_t a = abs32(x);
   unsigned shift;
-  int64_t n2 = 0;
 
-  for (i = 0u; i < 4u; i++) {
-    uint32_t a = abs32(in[i]);
-    m = (a > m) ? a : m;
-  }
+  m = (a > m) ? a : m;
+  a = abs32(y);
+  m = (a > m) ? a : m;
+  a = abs32(z);
+  m = (a > m) ? a : m;
   if (m == 0u) {
     return DRDC_E_DOMAIN;
   }
   if (m > (UINT32_C(1) << 30)) {
     /* Halve, rounded: |c| <= 2^30 afterwards (2^31 -> 2^30). */
-    for (i = 0u; i < 4u; i++) {
-      out->c[i] = drdc_fx_rshift_round_s32(in[i], 1u);
-    }
+    out->c[0] = drdc_fx_rshift_round_s32(s, 1u);
+    out->c[1] = drdc_fx_rshift_round_s32(x, 1u);
+    out->c[2] = drdc_fx_rshift_round_s32(y, 1u);
+    out->c[3] = drdc_fx_rshift_round_s32(z, 1u);
     out->k = -1;
   } else {
-    /* Exact scaling up by 2^shift: largest part into [2^29, 2^30]. */
-    shift = (m > (UINT32_C(1) << 29))
-                ? 0u
-                : (drdc_orient_impl_headroom(m, 31u) - 1u);
-    for (i = 0u; i < 4u; i++) {
-      out->c[i] = (int32_t)((int64_t)in[i] * orient_pow2_s64(shift));
-    }
+    /* Exact scaling up by 2^shift: largest part into [2^29, 2^30]; for
+     * m <= 2^29 the shift that brings bit 29 to the top, clz(m) - 2. */
+    shift = (m > (UINT32_C(1) << 29)) ? 0u
+                                      : ((unsigned)__builtin_clz(m) - 2u);
+    out->c[0] = shl32(s, shift);
+    out->c[1] = shl32(x, shift);
+    out->c[2] = shl32(y, shift);
+    out->c[3] = shl32(z, shift);
     out->k = (int32_t)shift;
   }
-  for (i = 0u; i < 4u; i++) {
-    n2 += (int64_t)out->c[i] * out->c[i]; /* each <= 2^60, sum <= 2^62 */
-  }
-  out->n2 = n2;
+  /* each square <= 2^60, the sum <= 2^62 */
+  out->n2 = ((int64_t)out->c[0] * out->c[0]) + ((int64_t)out->c[1] * out->c[1])
+            + ((int64_t)out->c[2] * out->c[2])
+            + ((int64_t)out->c[3] * out->c[3]);
   return DRDC_OK;
 }
 
@@ -122,28 +137,203 @@ void drdc_orient_impl_half_sincos(drdc_bam32_t a, int64_t *s2, int64_t *c2)
   }
 }
 
+/* round(mag / 2^(k + 1)) for mag / 2^k < 2^32 (to nearest, ties up:
+ * the magnitude rounding of drdc_fx_rshift_round_s64()), from the 32-bit
+ * t = floor(mag / 2^k): floor((t + 1) / 2) without overflow, with the sign
+ * of the value put back. */
+static int32_t halve_round(uint64_t mag, unsigned k, int negative)
+{
+  uint32_t t = (uint32_t)(mag >> k);
+  uint32_t r = (t >> 1u) + (t & 1u);
+
+  if (negative != 0) {
+    r = 0u - r;
+  }
+  return (int32_t)r;
+}
+
 drdc_status_t drdc_orient_impl_atan2_s64(int64_t y, int64_t x,
                                          drdc_bam32_t *out)
 {
-  uint64_t m = abs64(y);
+  uint64_t my = abs64(y);
   uint64_t mx = abs64(x);
-  unsigned n = 0u;
+  uint64_t m = (mx > my) ? mx : my;
+  unsigned len;
+  unsigned k;
+  uint32_t t;
+  int32_t ys = (int32_t)y;
+  int32_t xs = (int32_t)x;
 
-  m = (mx > m) ? mx : m;
   if (m == 0u) {
     return DRDC_E_DOMAIN;
   }
-  /* Smallest n with round(m / 2^n) < 2^31. */
-  while ((m >> n) >= (UINT64_C(1) << 31)) {
-    n++;
+  /* The smallest n with round(m / 2^n) < 2^31: m >> n < 2^31 from the
+   * bit length of m, one more when the rounding carries into bit 31;
+   * k = n - 1. Both parts are then rounded by 2^n alike. */
+  len = 64u - (unsigned)__builtin_clzll(m);
+  if (len > 31u) {
+    k = len - 32u;
+    t = (uint32_t)(m >> k);
+    if (((t >> 1u) + (t & 1u)) >= (UINT32_C(1) << 31)) {
+      k++;
+    }
+    ys = halve_round(my, k, (y < 0) ? 1 : 0);
+    xs = halve_round(mx, k, (x < 0) ? 1 : 0);
   }
-  if (n > 0u) {
-    unsigned below = n - 1u; /* the rounding bit, just below the cut */
+  return drdc_fx_atan2_bam32(ys, xs, out);
+}
 
-    if (((m >> n) + ((m >> below) & 1u)) >= (UINT64_C(1) << 31)) {
-      n++;
+/* floor(N / x) for N = nh 2^64 + nl and a divisor x with N < x 2^64
+ * (so that the quotient fits 64 bits): two quotient words of
+ * orient_div_3by2() with the reciprocal of x normalised. */
+static uint64_t div_128_64(uint64_t nh, uint64_t nl, uint64_t x)
+{
+  unsigned z = (unsigned)__builtin_clzll(x);
+  uint64_t dn = x << z;
+  uint32_t rcp =
+      drdc_orient_impl_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
+  uint64_t uh = nh;
+  uint64_t ul = nl;
+  uint64_t r;
+  uint32_t q1;
+  uint32_t q0;
+
+  if (z != 0u) {
+    unsigned zr = 64u - z;
+
+    uh = (nh << z) | (nl >> zr); /* N 2^z < x 2^z 2^64 < 2^128 */
+    ul = nl << z;
+  }
+  q1 = orient_div_3by2((uint32_t)(uh >> 32u), (uint32_t)uh,
+                       (uint32_t)(ul >> 32u), dn, rcp, &r);
+  q0 = orient_div_3by2((uint32_t)(r >> 32u), (uint32_t)r, (uint32_t)ul, dn,
+                       rcp, &r);
+  return ((uint64_t)q1 << 32u) | q0;
+}
+
+/* floor(sqrt(t)) for t >= 2^30: integer Newton steps from the tangent of
+ * sqrt at 2^30, (t >> 16) + 2^14, which lies above the root; the steps
+ * decrease to the floor of the root and stop there. */
+static uint32_t isqrt32_big(uint32_t t)
+{
+  uint32_t g = (t >> 16u) + 16384u;
+  uint32_t n = (g + (t / g)) >> 1u;
+
+  while (n < g) {
+    g = n;
+    n = (g + (t / g)) >> 1u;
+  }
+  return g;
+}
+
+uint64_t drdc_orient_impl_hypot62(int64_t x, int64_t y)
+{
+  uint64_t ax = abs64(x);
+  uint64_t ay = abs64(y);
+  uint64_t xh;
+  uint64_t xl;
+  uint64_t yh;
+  uint64_t yl;
+  uint64_t nh;
+  uint64_t nl;
+  uint64_t sh;
+  uint64_t sl;
+  uint64_t root;
+  unsigned len;
+  unsigned e;
+  unsigned i;
+  uint32_t t;
+
+  orient_mul_u64(ax, ax, &xh, &xl);
+  orient_mul_u64(ay, ay, &yh, &yl);
+  nl = xl + yl;
+  nh = xh + yh + ((nl < xl) ? 1u : 0u); /* N = x^2 + y^2 <= 2^125 */
+  if (nh == 0u) {
+    return drdc_fx_sqrt_u64(nl); /* the same rounding */
+  }
+  /* t = N / 2^e in [2^30, 2^32) with e even; then (isqrt(t) + 1) 2^(e/2)
+   * is above sqrt(N) by a relative 2^-15 at most */
+  len = 128u - (unsigned)__builtin_clzll(nh); /* 65..126 */
+  e = (len - 31u) & ~1u;
+  if (e >= 64u) {
+    unsigned sr = e - 64u;
+
+    t = (uint32_t)(nh >> sr);
+  } else {
+    unsigned sl64 = 64u - e;
+    uint64_t w = (nh << sl64) | (nl >> e);
+
+    t = (uint32_t)w;
+  }
+  root = (uint64_t)isqrt32_big(t) + 1u;
+  e /= 2u;
+  root <<= e;
+  /* Two Newton steps from above: relative errors 2^-15, 2^-31, 2^-63;
+   * each stays >= floor(sqrt(N)) and the second is at most 2 above it
+   * (sqrt(N) < 2^63). */
+  for (i = 0u; i < 2u; i++) {
+    root = (root + div_128_64(nh, nl, root)) >> 1u;
+  }
+  orient_mul_u64(root, root, &sh, &sl);
+  while ((sh > nh) || ((sh == nh) && (sl > nl))) {
+    root--;
+    orient_mul_u64(root, root, &sh, &sl);
+  }
+  /* remainder N - root^2 (< 2^65): up when it exceeds root */
+  sh = (nh - sh) - ((nl < sl) ? 1u : 0u);
+  sl = nl - sl;
+  return ((sh != 0u) || (sl > root)) ? (root + 1u) : root;
+}
+
+uint32_t drdc_orient_impl_reciprocal_3by2(uint32_t d1, uint32_t d0)
+{
+  uint32_t v = orient_reciprocal_word(d1);
+  uint32_t p = d1 * v;
+  uint64_t t;
+  uint32_t t1;
+  uint32_t t0;
+
+  p += d0;
+  if (p < d0) {
+    v--;
+    if (p >= d1) {
+      v--;
+      p -= d1;
+    }
+    p -= d1;
+  }
+  t = (uint64_t)v * d0;
+  t1 = (uint32_t)(t >> 32u);
+  t0 = (uint32_t)t;
+  p += t1;
+  if (p < t1) {
+    v--;
+    if ((p > d1) || ((p == d1) && (t0 >= d0))) {
+      v--;
     }
   }
-  return drdc_fx_atan2_bam32((int32_t)drdc_fx_rshift_round_s64(y, n),
-                             (int32_t)drdc_fx_rshift_round_s64(x, n), out);
+  return v;
+}
+
+void drdc_orient_impl_numerator_row(const int32_t c[4], unsigned i,
+                                    int64_t row[3])
+{
+  const int64_t s = c[0];
+  const int64_t x = c[1];
+  const int64_t y = c[2];
+  const int64_t z = c[3];
+
+  if (i == 0u) {
+    row[0] = ((s * s) + (x * x)) - ((y * y) + (z * z));
+    row[1] = 2 * ((x * y) - (s * z));
+    row[2] = 2 * ((x * z) + (s * y));
+  } else if (i == 1u) {
+    row[0] = 2 * ((x * y) + (s * z));
+    row[1] = ((s * s) + (y * y)) - ((x * x) + (z * z));
+    row[2] = 2 * ((y * z) - (s * x));
+  } else {
+    row[0] = 2 * ((x * z) - (s * y));
+    row[1] = 2 * ((y * z) + (s * x));
+    row[2] = ((s * s) + (z * z)) - ((x * x) + (y * y));
+  }
 }

@@ -15,76 +15,111 @@
 
 #include "orient_impl.h"
 
-/* |part| <= 1.0 for all four parts: every product is <= 2^60 and every
- * sum of four is <= 2^62, so the sums need no overflow test. */
-static int unit_range(const drdc_quat_t *q)
+/* Every part of a and b in (-1.0, 1.0], raw (-2^30, 2^30]: then
+ * 2^30 - part is in [0, 2^31) as uint32_t, so one OR of the eight
+ * differences tests them all (bit 31 clear). A part of exactly -1.0
+ * takes the checked path, with the same result. */
+static int unit_range(const drdc_quat_t *a, const drdc_quat_t *b)
 {
-  const uint32_t lim = UINT32_C(1) << 31;
-  const uint32_t off = UINT32_C(1) << 30;
+  const uint32_t one = UINT32_C(1) << 30;
+  uint32_t m = (one - (uint32_t)a->s) | (one - (uint32_t)a->x)
+               | (one - (uint32_t)a->y) | (one - (uint32_t)a->z)
+               | (one - (uint32_t)b->s) | (one - (uint32_t)b->x)
+               | (one - (uint32_t)b->y) | (one - (uint32_t)b->z);
 
-  return (((uint32_t)q->s + off) <= lim) && (((uint32_t)q->x + off) <= lim)
-         && (((uint32_t)q->y + off) <= lim) && (((uint32_t)q->z + off) <= lim);
+  return (m >> 31u) == 0u;
+}
+
+/* The product of two quaternions whose parts are all in (-1.0, 1.0]
+ * (Q1.30 raw (-2^30, 2^30]): every product is <= 2^60 and every sum of
+ * four <= 2^62, so the sums are exact without checks, and the negated
+ * parts of b cannot overflow. Each part is rounded as
+ * drdc_orient_impl_q60_to_q30() does; DRDC_E_OVERFLOW when a part is
+ * outside [-2, 2) (possible for |a| |b| > 2). Out of line (noinline), as
+ * quat_mul_wide(): drdc_quat_mul() tail-calls one or the other, so the
+ * worst-case stack is the larger frame, not their sum. */
+static __attribute__((noinline)) drdc_status_t
+quat_mul_unit(const drdc_quat_t *a, const drdc_quat_t *b, drdc_quat_t *out)
+{
+  const int32_t as = a->s;
+  const int32_t ax = a->x;
+  const int32_t ay = a->y;
+  const int32_t az = a->z;
+  const int32_t bs = b->s;
+  const int32_t bx = b->x;
+  const int32_t by = b->y;
+  const int32_t bz = b->z;
+  const int32_t nbx = -bx;
+  const int32_t nby = -by;
+  const int32_t nbz = -bz;
+  uint32_t ovf = 0u;
+  uint32_t rs;
+  uint32_t rx;
+  uint32_t ry;
+  uint32_t rz;
+
+  rs = orient_q60_round_bits(((int64_t)as * bs) + ((int64_t)ax * nbx)
+                                 + ((int64_t)ay * nby) + ((int64_t)az * nbz),
+                             &ovf);
+  rx = orient_q60_round_bits(((int64_t)as * bx) + ((int64_t)ax * bs)
+                                 + ((int64_t)ay * bz) + ((int64_t)az * nby),
+                             &ovf);
+  ry = orient_q60_round_bits(((int64_t)as * by) + ((int64_t)ax * nbz)
+                                 + ((int64_t)ay * bs) + ((int64_t)az * bx),
+                             &ovf);
+  rz = orient_q60_round_bits(((int64_t)as * bz) + ((int64_t)ax * by)
+                                 + ((int64_t)ay * nbx) + ((int64_t)az * bs),
+                             &ovf);
+  if ((ovf >> 30u) != 0u) {
+    return DRDC_E_OVERFLOW;
+  }
+  out->s = (drdc_q1_30_t)rs;
+  out->x = (drdc_q1_30_t)rx;
+  out->y = (drdc_q1_30_t)ry;
+  out->z = (drdc_q1_30_t)rz;
+  return DRDC_OK;
+}
+
+/* The product for parts beyond (-1, 1]: kept out of line (noinline) so
+ * that the common unit case keeps a light frame. */
+static __attribute__((noinline)) drdc_status_t
+quat_mul_wide(const drdc_quat_t *a, const drdc_quat_t *b, drdc_quat_t *out)
+{
+  uint32_t ovf = 0u;
+  uint32_t rs;
+  uint32_t rx;
+  uint32_t ry;
+  uint32_t rz;
+
+  rs = orient_sum4_round_bits((int64_t)a->s * b->s, -((int64_t)a->x * b->x),
+                 -((int64_t)a->y * b->y), -((int64_t)a->z * b->z), &ovf);
+  rx = orient_sum4_round_bits((int64_t)a->s * b->x, (int64_t)a->x * b->s,
+                 (int64_t)a->y * b->z, -((int64_t)a->z * b->y), &ovf);
+  ry = orient_sum4_round_bits((int64_t)a->s * b->y, -((int64_t)a->x * b->z),
+                 (int64_t)a->y * b->s, (int64_t)a->z * b->x, &ovf);
+  rz = orient_sum4_round_bits((int64_t)a->s * b->z, (int64_t)a->x * b->y,
+                 -((int64_t)a->y * b->x), (int64_t)a->z * b->s, &ovf);
+  if ((ovf >> 30u) != 0u) {
+    return DRDC_E_OVERFLOW;
+  }
+  out->s = (drdc_q1_30_t)rs;
+  out->x = (drdc_q1_30_t)rx;
+  out->y = (drdc_q1_30_t)ry;
+  out->z = (drdc_q1_30_t)rz;
+  return DRDC_OK;
 }
 
 drdc_status_t drdc_quat_mul(const drdc_quat_t *a, const drdc_quat_t *b,
                             drdc_quat_t *out)
 {
-  int64_t p[4];
-  drdc_quat_t r;
-  drdc_status_t st = DRDC_OK;
-
   if ((a == NULL) || (b == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  if (unit_range(a) && unit_range(b)) {
-    p[0] = ((int64_t)a->s * b->s) - ((int64_t)a->x * b->x)
-           - ((int64_t)a->y * b->y) - ((int64_t)a->z * b->z);
-    p[1] = ((int64_t)a->s * b->x) + ((int64_t)a->x * b->s)
-           + ((int64_t)a->y * b->z) - ((int64_t)a->z * b->y);
-    p[2] = ((int64_t)a->s * b->y) - ((int64_t)a->x * b->z)
-           + ((int64_t)a->y * b->s) + ((int64_t)a->z * b->x);
-    p[3] = ((int64_t)a->s * b->z) + ((int64_t)a->x * b->y)
-           - ((int64_t)a->y * b->x) + ((int64_t)a->z * b->s);
-  } else {
-    /* Parts up to 2.0: products up to 2^62, sums checked. Negating a
-     * product of int32 values cannot overflow (|p| <= 2^62). */
-    st = drdc_orient_impl_sum4((int64_t)a->s * b->s, -((int64_t)a->x * b->x),
-                               -((int64_t)a->y * b->y),
-                               -((int64_t)a->z * b->z), &p[0]);
-    if (st == DRDC_OK) {
-      st = drdc_orient_impl_sum4((int64_t)a->s * b->x, (int64_t)a->x * b->s,
-                                 (int64_t)a->y * b->z,
-                                 -((int64_t)a->z * b->y), &p[1]);
-    }
-    if (st == DRDC_OK) {
-      st = drdc_orient_impl_sum4((int64_t)a->s * b->y,
-                                 -((int64_t)a->x * b->z),
-                                 (int64_t)a->y * b->s, (int64_t)a->z * b->x,
-                                 &p[2]);
-    }
-    if (st == DRDC_OK) {
-      st = drdc_orient_impl_sum4((int64_t)a->s * b->z, (int64_t)a->x * b->y,
-                                 -((int64_t)a->y * b->x),
-                                 (int64_t)a->z * b->s, &p[3]);
-    }
-    if (st != DRDC_OK) {
-      return st;
-    }
+  if (unit_range(a, b) != 0) {
+    return quat_mul_unit(a, b, out);
   }
-  st = drdc_orient_impl_q60_to_q30(p[0], &r.s);
-  if (st == DRDC_OK) {
-    st = drdc_orient_impl_q60_to_q30(p[1], &r.x);
-  }
-  if (st == DRDC_OK) {
-    st = drdc_orient_impl_q60_to_q30(p[2], &r.y);
-  }
-  if (st == DRDC_OK) {
-    st = drdc_orient_impl_q60_to_q30(p[3], &r.z);
-  }
-  if (st == DRDC_OK) {
-    *out = r;
-  }
-  return st;
+  /* Parts up to 2.0 in magnitude: the same exact sums, checked. */
+  return quat_mul_wide(a, b, out);
 }
 
 drdc_status_t drdc_quat_conj(const drdc_quat_t *q, drdc_quat_t *out)
@@ -143,15 +178,43 @@ drdc_status_t drdc_quat_inverse(const drdc_quat_t *q, drdc_quat_t *out)
   return DRDC_OK;
 }
 
+/* round(|c| 2^e / root) with the sign of c, to nearest, ties away from
+ * zero, for |c| 2^e <= 2^62 and a root in [2^31, 2^32] (quotient <=
+ * 2^30): an exact 64/32 division in two 16-bit digits of Knuth's
+ * algorithm D (the 32/32 hardware division), its remainder rounding; for
+ * root = 2^32 a shift. The value of drdc_fx_muldiv_s64(c, 2^e, root). */
+static int32_t div_root(int32_t c, unsigned e, uint64_t root)
+{
+  uint32_t mag = (c < 0) ? (0u - (uint32_t)c) : (uint32_t)c;
+  uint64_t num = (uint64_t)mag << e;
+  uint32_t lo = (uint32_t)num;
+  uint32_t r = (uint32_t)(num >> 32u);
+  uint32_t d = (uint32_t)root;
+  uint32_t quo;
+
+  if (root > UINT32_MAX) {
+    quo = r; /* num / 2^32, remainder lo: up when lo >= 2^32 / 2 */
+    quo += lo >> 31u;
+  } else {
+    /* num < 2^62 and quotient <= 2^30: the high word is below d */
+    uint32_t q1 = orient_div_digit16(&r, lo >> 16u, d);
+    uint32_t q0 = orient_div_digit16(&r, lo & 0xFFFFu, d);
+
+    quo = (q1 << 16u) | q0;
+    quo += (r >= (d - r)) ? 1u : 0u;
+  }
+  if (c < 0) {
+    quo = 0u - quo;
+  }
+  return (int32_t)quo;
+}
+
 drdc_status_t drdc_quat_normalize(const drdc_quat_t *q, drdc_quat_t *out)
 {
   orient_scaled_quat_t sq;
   unsigned j;
-  unsigned shift;
+  unsigned e;
   uint64_t root;
-  int64_t num;
-  int64_t v[4];
-  unsigned i;
   drdc_status_t st;
 
   if ((q == NULL) || (out == NULL)) {
@@ -162,19 +225,16 @@ drdc_status_t drdc_quat_normalize(const drdc_quat_t *q, drdc_quat_t *out)
     return st;
   }
   /* n2 in [2^58, 2^62]: shift it by an even 2j into [2^62, 2^64) so the
-   * root r = sqrt(n2) 2^j has 31..32 bits; then part = c 2^(30 + j) / r. */
-  j = drdc_orient_impl_headroom((uint64_t)sq.n2, 64u) / 2u;
-  shift = 2u * j;
-  root = drdc_fx_sqrt_u64((uint64_t)sq.n2 << shift);
-  num = orient_pow2_s64(30u + j);
-  for (i = 0u; i < 4u; i++) {
-    /* |c| 2^(30 + j) / r <= 2^30: cannot overflow. */
-    (void)drdc_fx_muldiv_s64(sq.c[i], num, (int64_t)root, &v[i]);
-  }
-  out->s = (drdc_q1_30_t)v[0];
-  out->x = (drdc_q1_30_t)v[1];
-  out->y = (drdc_q1_30_t)v[2];
-  out->z = (drdc_q1_30_t)v[3];
+   * root r = sqrt(n2) 2^j is in [2^31, 2^32]; then part = c 2^(30 + j) / r,
+   * |c| 2^(30 + j) <= 2^62, |part| <= 2^30: cannot overflow. */
+  j = (unsigned)__builtin_clzll((uint64_t)sq.n2) / 2u;
+  e = 2u * j;
+  root = drdc_fx_sqrt_u64((uint64_t)sq.n2 << e);
+  e = 30u + j;
+  out->s = div_root(sq.c[0], e, root);
+  out->x = div_root(sq.c[1], e, root);
+  out->y = div_root(sq.c[2], e, root);
+  out->z = div_root(sq.c[3], e, root);
   return DRDC_OK;
 }
 

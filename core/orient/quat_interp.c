@@ -50,18 +50,13 @@ static void exp_axis(drdc_bam32_t h, const int32_t v[3], int32_t vn,
 {
   drdc_q1_30_t s;
   drdc_q1_30_t c;
-  int64_t r[3];
-  unsigned i;
 
   drdc_fx_sincos_bam32(h, &s, &c);
-  for (i = 0u; i < 3u; i++) {
-    /* |v_i| <= vn: the quotient is within [-|s|, |s|] */
-    (void)drdc_fx_muldiv_s64(s, v[i], vn, &r[i]);
-  }
+  /* |v_i| <= vn: each quotient is within [-|s|, |s|]; |s v| <= 2^61 */
   out->s = c;
-  out->x = (drdc_q1_30_t)r[0];
-  out->y = (drdc_q1_30_t)r[1];
-  out->z = (drdc_q1_30_t)r[2];
+  out->x = (drdc_q1_30_t)orient_muldiv_round64(s, v[0], vn);
+  out->y = (drdc_q1_30_t)orient_muldiv_round64(s, v[1], vn);
+  out->z = (drdc_q1_30_t)orient_muldiv_round64(s, v[2], vn);
 }
 
 drdc_status_t drdc_quat_nlerp(const drdc_quat_t *a, const drdc_quat_t *b,
@@ -204,9 +199,10 @@ static drdc_status_t log_rel(const drdc_quat_t *q1n, const drdc_quat_t *q,
     return DRDC_OK;
   }
   (void)drdc_fx_atan2_bam32(vn, d.s, &half); /* [0, 2^30] */
-  (void)drdc_fx_muldiv_s64((int64_t)half, d.x, vn, &w[0]);
-  (void)drdc_fx_muldiv_s64((int64_t)half, d.y, vn, &w[1]);
-  (void)drdc_fx_muldiv_s64((int64_t)half, d.z, vn, &w[2]);
+  /* half <= 2^30, |d| <= 2^30 + a few: products below 2^61 */
+  w[0] = orient_muldiv_round64((int64_t)half, d.x, vn);
+  w[1] = orient_muldiv_round64((int64_t)half, d.y, vn);
+  w[2] = orient_muldiv_round64((int64_t)half, d.z, vn);
   return DRDC_OK;
 }
 

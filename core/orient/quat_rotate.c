@@ -19,64 +19,164 @@
 
 /*
  * out_i = sum_j p_ij v_j / n2 with the exact Q60 numerators p of the
- * rotation (|p| <= n2): each term p v 2^6 / n2 is correctly rounded by
- * drdc_fx_muldiv_s64() (128-bit intermediate), |term| <= 2^61, the sum of
- * three fits int64 and is rounded once more. Error <= 0.5 + 3 / 128 LSB
- * against the exact rotation of q / |q|: the matrix is never rounded.
+ * rotation (|p| <= n2): each term p v 2^6 / n2 is correctly rounded
+ * (orient_round_div_128(): 128-bit product, one reciprocal of n2 for the
+ * nine divisions), |term| <= 2^61, the sum of three fits int64 and is
+ * rounded once more. Error <= 0.5 + 3 / 128 LSB against the exact
+ * rotation of q / |q|: the matrix is never rounded. One row of p at a
+ * time: the whole matrix never sits on the stack.
  */
 static drdc_status_t rotate(const drdc_quat_t *q, const int64_t in[3],
                             int64_t res[3])
 {
-  int64_t p[3][3];
-  int64_t n2;
+  orient_scaled_quat_t sq;
+  int64_t row[3];
+  uint64_t dn;
+  unsigned z;
+  uint32_t rcp;
   unsigned i;
   unsigned j;
-  drdc_status_t st = drdc_orient_impl_numerators(q, p, &n2);
+  drdc_status_t st = drdc_orient_impl_scale(q, &sq);
 
   if (st != DRDC_OK) {
     return st;
   }
+  z = (unsigned)__builtin_clzll((uint64_t)sq.n2);
+  dn = (uint64_t)sq.n2 << z;
+  rcp = drdc_orient_impl_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
   for (i = 0u; i < 3u; i++) {
-    int64_t t[3];
-    int64_t s;
+    int64_t s = 0;
 
+    drdc_orient_impl_numerator_row(sq.c, i, row);
     for (j = 0u; j < 3u; j++) {
-      (void)drdc_fx_muldiv_s64(p[i][j], in[j] * orient_pow2_s64(GUARD_BITS),
-                               n2, &t[j]);
+      s += orient_round_div_128(row[j], in[j] * orient_pow2_s64(GUARD_BITS),
+                                dn, z, rcp);
     }
-    s = t[0] + t[1] + t[2];
     res[i] = drdc_fx_rshift_round_s64(s, GUARD_BITS);
   }
   return DRDC_OK;
+}
+
+/* p v as the high part ph v + hi(pl v) (int64_t) and the low word of
+ * pl v, with p = ph 2^32 + pl and pl the low word taken as signed (in
+ * [-2^31, 2^31)), so that pl v is one signed 32x32 product. */
+static inline int64_t rotate_term(int64_t p, int32_t v, uint64_t *lo)
+{
+  uint64_t pu = (uint64_t)p;
+  int32_t pl = (int32_t)(uint32_t)pu;
+  /* (p - pl) / 2^32, exact: the high word plus the sign bit of pl */
+  uint32_t hw = (uint32_t)(pu >> 32u);
+  uint32_t phu = hw + ((uint32_t)pu >> 31u);
+  int32_t ph = (int32_t)phu;
+  int64_t t = (int64_t)pl * v;
+  uint64_t tu = (uint64_t)t;
+  uint32_t th = (uint32_t)(tu >> 32u);
+  int32_t high = (int32_t)th; /* the signed high word of pl v */
+
+  *lo += (uint32_t)tu;
+  return ((int64_t)ph * v) + high;
+}
+
+/*
+ * One part of R(q) v for a local vector: round(S / n2) with the exact
+ * S = p0 v0 + p1 v1 + p2 v2, held as a 96-bit two's complement
+ * a 2^32 + lo: |ph v| <= 2^61 and the high words of pl v (<= 2^30) add up
+ * exactly in int64_t, the low words of pl v in a uint64_t (< 3 2^32).
+ * A row of p has the length n2 (R(q) is orthogonal) and |v| <= sqrt(3)
+ * 2^31 < 2^32, so |S| < n2 2^32: |S| 2^z (z = 1..5, the normalisation of
+ * n2) fits three words u2 u1 u0 with u2 2^32 + u1 < dn = n2 2^z, and one
+ * quotient word of orient_div_3by2() is the whole quotient. The remainder
+ * rounds it to nearest, ties away from zero.
+ * Returns 0, or 1 when the part is outside int32_t.
+ */
+static int rotate_part_q15_16(const int64_t p[3], const int32_t v[3],
+                              uint64_t dn, unsigned z, uint32_t rcp,
+                              int32_t *out)
+{
+  uint64_t lo = 0u;
+  int64_t a = rotate_term(p[0], v[0], &lo) + rotate_term(p[1], v[1], &lo)
+              + rotate_term(p[2], v[2], &lo);
+  uint64_t mag_hi;
+  uint32_t mag_lo;
+  uint32_t w1;
+  uint32_t w0;
+  uint32_t u2;
+  uint32_t u1;
+  uint32_t u0;
+  uint64_t r;
+  uint64_t quo;
+  uint64_t carry = lo >> 32u;
+  uint32_t neg = 0u;
+  uint32_t low;
+
+  a += (int64_t)carry;
+  mag_lo = (uint32_t)lo;
+  if (a < 0) {
+    neg = 1u;
+    /* -(a 2^32 + lo) = (-a - [lo != 0]) 2^32 + (2^32 - lo) */
+    mag_hi = (0u - (uint64_t)a) - ((mag_lo != 0u) ? 1u : 0u);
+    mag_lo = 0u - mag_lo;
+  } else {
+    mag_hi = (uint64_t)a;
+  }
+  /* the magnitude times 2^z, 0 < z < 32, word by word */
+  w1 = (uint32_t)(mag_hi >> 32u);
+  w0 = (uint32_t)mag_hi;
+  u2 = (w1 << z) | (w0 >> (32u - z));
+  u1 = (w0 << z) | (mag_lo >> (32u - z));
+  u0 = mag_lo << z;
+  quo = orient_div_3by2(u2, u1, u0, dn, rcp, &r);
+  if (r >= (dn - r)) {
+    quo++; /* remainder >= half of the divisor: away from zero */
+  }
+  if (quo > ((uint64_t)INT32_MAX + neg)) {
+    return 1;
+  }
+  low = (uint32_t)quo;
+  if (neg != 0u) {
+    low = 0u - low;
+  }
+  *out = (int32_t)low;
+  return 0;
 }
 
 drdc_status_t drdc_quat_rotate_q15_16(const drdc_quat_t *q,
                                       const drdc_vec3_q15_16_t *v,
                                       drdc_vec3_q15_16_t *out)
 {
-  int64_t in[3];
-  int64_t res[3];
+  orient_scaled_quat_t sq;
+  int64_t row[3];
+  int32_t in[3];
+  int32_t res[3];
+  uint64_t dn;
+  unsigned z;
+  uint32_t rcp;
   unsigned i;
   drdc_status_t st;
 
   if ((q == NULL) || (v == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  in[0] = v->x;
-  in[1] = v->y;
-  in[2] = v->z;
-  st = rotate(q, in, res);
+  st = drdc_orient_impl_scale(q, &sq);
   if (st != DRDC_OK) {
     return st;
   }
+  in[0] = v->x;
+  in[1] = v->y;
+  in[2] = v->z;
+  /* n2 in [2^58, 2^62]: normalised by z = 1..5 so that bit 63 is set */
+  z = (unsigned)__builtin_clzll((uint64_t)sq.n2);
+  dn = (uint64_t)sq.n2 << z;
+  rcp = drdc_orient_impl_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
   for (i = 0u; i < 3u; i++) {
-    if ((res[i] > INT32_MAX) || (res[i] < INT32_MIN)) {
+    drdc_orient_impl_numerator_row(sq.c, i, row);
+    if (rotate_part_q15_16(row, in, dn, z, rcp, &res[i]) != 0) {
       return DRDC_E_OVERFLOW;
     }
   }
-  out->x = (drdc_q15_16_t)res[0];
-  out->y = (drdc_q15_16_t)res[1];
-  out->z = (drdc_q15_16_t)res[2];
+  out->x = res[0];
+  out->y = res[1];
+  out->z = res[2];
   return DRDC_OK;
 }
 

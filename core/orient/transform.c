@@ -28,30 +28,41 @@ static void copy_dcm(const drdc_dcm_t *r, drdc_dcm_t *out)
 /* t_out = R v + t (all int64, v and t in the same Q.16 scale): each part
  * one rounding of an exact Q46 sum (|R v| <= 2^30 |v| <= 2^61.8 for
  * |v| < 2^31), then an overflow-checked addition. */
-static drdc_status_t affine(const drdc_dcm_t *r, const int32_t v[3],
-                            const int64_t t[3], int64_t out[3])
+static drdc_status_t affine_rows(const drdc_dcm_t *r, int transpose,
+                                 const int32_t v[3], const int64_t t[3],
+                                 int64_t out[3])
 {
   unsigned i;
 
   for (i = 0u; i < 3u; i++) {
     int64_t s;
     int64_t rv;
-    drdc_status_t st = drdc_orient_impl_sum4((int64_t)r->m[i][0] * v[0],
-                                             (int64_t)r->m[i][1] * v[1],
-                                             (int64_t)r->m[i][2] * v[2], 0,
-                                             &s);
+    int64_t ti = (t == NULL) ? 0 : t[i];
+    /* row i of R, or column i for R^T (no transposed copy) */
+    int32_t m0 = (transpose != 0) ? r->m[0][i] : r->m[i][0];
+    int32_t m1 = (transpose != 0) ? r->m[1][i] : r->m[i][1];
+    int32_t m2 = (transpose != 0) ? r->m[2][i] : r->m[i][2];
+    drdc_status_t st = drdc_orient_impl_sum4((int64_t)m0 * v[0],
+                                             (int64_t)m1 * v[1],
+                                             (int64_t)m2 * v[2], 0, &s);
 
     if (st != DRDC_OK) {
       return st;
     }
     rv = drdc_fx_rshift_round_s64(s, 30u);
-    if (((t[i] > 0) && (rv > (INT64_MAX - t[i])))
-        || ((t[i] < 0) && (rv < (ORIENT_INT64_MIN - t[i])))) {
+    if (((ti > 0) && (rv > (INT64_MAX - ti)))
+        || ((ti < 0) && (rv < (ORIENT_INT64_MIN - ti)))) {
       return DRDC_E_OVERFLOW;
     }
-    out[i] = rv + t[i];
+    out[i] = rv + ti;
   }
   return DRDC_OK;
+}
+
+static drdc_status_t affine(const drdc_dcm_t *r, const int32_t v[3],
+                            const int64_t t[3], int64_t out[3])
+{
+  return affine_rows(r, 0, v, t, out);
 }
 
 static drdc_status_t to_local(const int64_t v[3], drdc_vec3_q15_16_t *out)
@@ -73,16 +84,16 @@ drdc_status_t drdc_transform_from_quat(const drdc_quat_t *q,
                                        const drdc_vec3_q15_16_t *t,
                                        drdc_transform_t *out)
 {
-  drdc_dcm_t r;
   drdc_status_t st;
 
   if ((q == NULL) || (t == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = drdc_dcm_from_quat(q, &r);
+  /* Straight into out: drdc_dcm_from_quat() writes nothing on error, and
+   * t (which may be &out->t) is read after the matrix is written. */
+  st = drdc_dcm_from_quat(q, &out->r);
   if (st == DRDC_OK) {
     out->t = *t;
-    copy_dcm(&r, &out->r);
   }
   return st;
 }
@@ -97,7 +108,6 @@ drdc_status_t drdc_transform_compose(const drdc_transform_t *a,
                          (a == NULL) ? 0 : a->t.z };
   int64_t res[3];
   drdc_vec3_q15_16_t nt;
-  drdc_dcm_t r;
   drdc_status_t st;
 
   if ((a == NULL) || (b == NULL) || (out == NULL)) {
@@ -107,11 +117,12 @@ drdc_status_t drdc_transform_compose(const drdc_transform_t *a,
   if (st == DRDC_OK) {
     st = to_local(res, &nt);
   }
+  /* drdc_dcm_mul() writes out->r only on success and reads a->r and
+   * b->r first (out may be a or b); nt is already computed */
   if (st == DRDC_OK) {
-    st = drdc_dcm_mul(&a->r, &b->r, &r);
+    st = drdc_dcm_mul(&a->r, &b->r, &out->r);
   }
   if (st == DRDC_OK) {
-    copy_dcm(&r, &out->r);
     out->t = nt;
   }
   return st;
@@ -186,18 +197,18 @@ drdc_status_t drdc_transform_global_compose(const drdc_transform_global_t *g,
   const int64_t t[3] = { (g == NULL) ? 0 : g->t.x, (g == NULL) ? 0 : g->t.y,
                          (g == NULL) ? 0 : g->t.z };
   int64_t res[3];
-  drdc_dcm_t r;
   drdc_status_t st;
 
   if ((g == NULL) || (b == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
   st = affine(&g->r, v, t, res);
+  /* drdc_dcm_mul() writes out->r only on success and reads g->r and
+   * b->r first (out may be g); res is already computed */
   if (st == DRDC_OK) {
-    st = drdc_dcm_mul(&g->r, &b->r, &r);
+    st = drdc_dcm_mul(&g->r, &b->r, &out->r);
   }
   if (st == DRDC_OK) {
-    copy_dcm(&r, &out->r);
     out->t.x = res[0];
     out->t.y = res[1];
     out->t.z = res[2];
@@ -232,11 +243,9 @@ drdc_status_t drdc_transform_global_to_local(const drdc_transform_global_t *g,
                                              const drdc_vec3_q47_16_t *p,
                                              drdc_vec3_q15_16_t *out)
 {
-  const int64_t zero[3] = { 0, 0, 0 };
   int64_t diff[3];
   int32_t v[3];
   int64_t res[3];
-  drdc_dcm_t rt;
   unsigned i;
   drdc_status_t st;
 
@@ -262,8 +271,7 @@ drdc_status_t drdc_transform_global_to_local(const drdc_transform_global_t *g,
       v[i] = (int32_t)diff[i];
     }
   }
-  (void)drdc_dcm_transpose(&g->r, &rt);
-  st = affine(&rt, v, zero, res);
+  st = affine_rows(&g->r, 1, v, NULL, res); /* R^T (p - t) */
   if (st == DRDC_OK) {
     st = to_local(res, out);
   }

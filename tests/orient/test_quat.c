@@ -198,6 +198,56 @@ static void test_mul_is_correctly_rounded(void)
   }
 }
 
+/* Parts at exactly +-1.0 and one LSB either side: the edge between the
+ * product's unchecked sums (parts in (-1, 1]) and its checked ones. */
+static void test_mul_at_the_unit_edges(void)
+{
+  size_t i;
+
+  for (i = 0; i < COUNT(orient_mul_edge_vectors); i++) {
+    const struct orient_mul_vector *v = &orient_mul_edge_vectors[i];
+    drdc_quat_t a = quat_of(v->a);
+    drdc_quat_t b = quat_of(v->b);
+    drdc_quat_t p = { 7, 7, 7, 7 };
+
+    TEST_ASSERT_EQUAL_INT(v->status, drdc_quat_mul(&a, &b, &p));
+    if (v->status == 0) {
+      TEST_ASSERT_EQUAL_INT32(v->p[0], p.s);
+      TEST_ASSERT_EQUAL_INT32(v->p[1], p.x);
+      TEST_ASSERT_EQUAL_INT32(v->p[2], p.y);
+      TEST_ASSERT_EQUAL_INT32(v->p[3], p.z);
+    } else {
+      TEST_ASSERT_EQUAL_INT32(7, p.s); /* unchanged on error */
+    }
+  }
+}
+
+/* Exact rotation (Python integers), rounded once: the first rows are
+ * cases that the former method (each term rounded with 6 guard bits,
+ * then the sum) put on the wrong side of a half: regression of the
+ * rounding of drdc_quat_rotate_q15_16(). */
+static void test_rotate_q15_16_is_correctly_rounded(void)
+{
+  size_t i;
+
+  for (i = 0; i < COUNT(orient_rotate_exact_vectors); i++) {
+    const struct orient_rotate_exact_vector *v =
+        &orient_rotate_exact_vectors[i];
+    drdc_quat_t q = quat_of(v->q);
+    drdc_vec3_q15_16_t l = { v->v[0], v->v[1], v->v[2] };
+
+    TEST_ASSERT_EQUAL_INT(v->status, drdc_quat_rotate_q15_16(&q, &l, &l));
+    if (v->status == 0) {
+      TEST_ASSERT_EQUAL_INT32(v->out[0], l.x);
+      TEST_ASSERT_EQUAL_INT32(v->out[1], l.y);
+      TEST_ASSERT_EQUAL_INT32(v->out[2], l.z);
+    } else {
+      TEST_ASSERT_EQUAL_INT32(v->v[0], l.x); /* unchanged on error */
+      TEST_ASSERT_EQUAL_INT32(v->v[2], l.z);
+    }
+  }
+}
+
 static void test_rotate_vectors_match_scipy_and_mpmath(void)
 {
   int64_t ml = 0;
@@ -727,7 +777,9 @@ void suite_orient_quat(void)
   RUN_TEST(test_quat_to_euler_and_dcm_match_scipy);
   RUN_TEST(test_dcm_to_quat_matches_scipy_at_every_angle);
   RUN_TEST(test_mul_is_correctly_rounded);
+  RUN_TEST(test_mul_at_the_unit_edges);
   RUN_TEST(test_rotate_vectors_match_scipy_and_mpmath);
+  RUN_TEST(test_rotate_q15_16_is_correctly_rounded);
   RUN_TEST(test_axis_angle_matches_scipy);
   RUN_TEST(test_slerp_matches_scipy);
   RUN_TEST(test_random_euler_round_trip);

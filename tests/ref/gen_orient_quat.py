@@ -260,6 +260,102 @@ def rotate_rows(rng):
     return rows
 
 
+# ------------------------------- correctly rounded rotation, mul edges
+def exact_rotate(q, v):
+    """round(P(q) v / |q|^2) with Python integers: R(q / |q|) = P / |q|^2
+    is rational, so this is the exact rotation, rounded to nearest, ties
+    away from zero; None when a part is outside int32."""
+    s, x, y, z = q
+    n2 = s * s + x * x + y * y + z * z
+    p = [[s*s + x*x - y*y - z*z, 2*(x*y - s*z), 2*(x*z + s*y)],
+         [2*(x*y + s*z), s*s - x*x + y*y - z*z, 2*(y*z - s*x)],
+         [2*(x*z - s*y), 2*(y*z + s*x), s*s - x*x - y*y + z*z]]
+    out = []
+    for row in p:
+        num = sum(a * b for a, b in zip(row, v))
+        r = (2 * abs(num) + n2) // (2 * n2)
+        out.append(r if num >= 0 else -r)
+    return out if all(I32_MIN <= o <= I32_MAX for o in out) else None
+
+
+def guard_bits_rotate(q, v):
+    """The former method (each term p v 2^6 / |q|^2 rounded, the sum
+    rounded): up to 3/128 LSB off, so sometimes on the wrong side."""
+    s, x, y, z = q
+    n2 = s * s + x * x + y * y + z * z
+    p = [[s*s + x*x - y*y - z*z, 2*(x*y - s*z), 2*(x*z + s*y)],
+         [2*(x*y + s*z), s*s - x*x + y*y - z*z, 2*(y*z - s*x)],
+         [2*(x*z - s*y), 2*(y*z + s*x), s*s - x*x - y*y + z*z]]
+
+    def rdiv(a, b):
+        r = (2 * abs(a) + b) // (2 * b)
+        return r if a >= 0 else -r
+    return [rdiv(sum(rdiv(a * b * 64, n2) for a, b in zip(row, v)), 64)
+            for row in p]
+
+
+def scale_up(q):
+    """q 2^k with the largest part in (2^29, 2^30]: the same rotation."""
+    m = max(abs(c) for c in q)
+    k = 0
+    while (m << (k + 1)) <= ONE:
+        k += 1
+    return [c << k for c in q]
+
+
+def rotate_exact_rows(rng):
+    """Quaternions with parts in [-1, 1] (the library's rotation is the
+    exact one there), any length down to 1 LSB, any int32 vector: exact
+    halves (ties, both signs) first, then cases the former guard-bit
+    method rounded the wrong way, overflow, boundaries, random."""
+    rows = []
+    wrong = []
+    while len(wrong) < 8:
+        q = scale_up([rng.randint(-ONE, ONE) for _ in range(4)])
+        v = [rng.randint(I32_MIN, I32_MAX) >> rng.randrange(0, 16)
+             for _ in range(3)]
+        e = exact_rotate(q, v)
+        if e is not None and e != guard_bits_rotate(q, v):
+            wrong.append([q, v])
+    rows += wrong
+    rows += [[[ONE, 0, 0, 0], [I32_MAX, I32_MIN, 1]],
+             [[-ONE, 0, 0, 0], [I32_MIN, I32_MAX, -1]],
+             [[0, ONE, 0, 0], [5, I32_MIN, I32_MIN]],
+             [[1, 0, 0, 1], [I32_MIN, 0, 7]],
+             [[1, 0, 0, 0], [-3, 2, 1]],
+             [[ONE, ONE, ONE, ONE], [I32_MAX, I32_MAX, I32_MAX]],
+             [[ONE, -ONE, 3, 1], [I32_MIN, I32_MIN, I32_MIN]],
+             [[1, 1, 1, 1], [I32_MIN, I32_MIN, 0]]]
+    while len(rows) < 64:
+        e = rng.randrange(0, 31)
+        q = [rng.randint(-(1 << e), 1 << e) for _ in range(4)]
+        if not any(q):
+            continue
+        v = [rng.randint(I32_MIN, I32_MAX) >> rng.randrange(0, 31)
+             for _ in range(3)]
+        rows.append([q, v])
+    out = []
+    for q, v in rows:
+        e = exact_rotate(q, v)
+        out.append([list(q), list(v), e if e is not None else [0, 0, 0],
+                    0 if e is not None else 3])
+    return out
+
+
+def mul_edge_rows():
+    """Products with parts at exactly +-1.0 and one LSB inside or beyond:
+    the edge between the unchecked and the checked sums."""
+    edge = [ONE, -ONE, ONE - 1, -ONE + 1, ONE + 1, -ONE - 1, 0, 1]
+    rows = []
+    for i, a0 in enumerate(edge):
+        for j, b0 in enumerate(edge):
+            a = [a0, edge[(i + 3) % 8], edge[(i + 5) % 8], edge[(i + 6) % 8]]
+            b = [b0, edge[(j + 1) % 8], edge[(j + 2) % 8], edge[(j + 7) % 8]]
+            out, ok = exact_mul(a, b)
+            rows.append([a, b, out if ok else [0, 0, 0, 0], 0 if ok else 3])
+    return rows
+
+
 # ---------------------------------------------------- axis-angle, slerp
 def axis_rows(rng):
     rows = []
@@ -356,6 +452,15 @@ struct orient_rotate_vector {
   int64_t gout[3];
 };
 
+/* Rotation of a Q15.16 vector, exact (Python integers) and rounded to
+ * nearest, ties away from zero; status 3 = DRDC_E_OVERFLOW. */
+struct orient_rotate_exact_vector {
+  int32_t q[4];
+  int32_t v[3];
+  int32_t out[3];
+  int32_t status;
+};
+
 /* Axis (any length) and angle -> quaternion. */
 struct orient_axis_vector {
   int32_t axis[3];
@@ -398,6 +503,10 @@ def generate():
                    axis_rows(rng), 4),
              table("orient_slerp_vector", "orient_slerp_vectors",
                    slerp_rows(rng), 3),
+             table("orient_rotate_exact_vector", "orient_rotate_exact_vectors",
+                   rotate_exact_rows(random.Random(20261123)), 0),
+             table("orient_mul_vector", "orient_mul_edge_vectors",
+                   mul_edge_rows(), 0),
              "\n#endif\n"]
     return {"tests/orient/vectors_orient.h": "\n".join(parts),
             "tests/orient/vectors_orient_random.h": generate_random()}

@@ -81,8 +81,9 @@ drdc_status_t drdc_dh_link_transform(drdc_dh_convention_t convention,
  * @retval DRDC_E_OVERFLOW a translation leaves +-32768 m on the way
  * Method: the product is accumulated with the rotation in Q2.61 and the
  * translation in Q17.46 (int64), each link's elements exact products of
- * its sines and cosines, every step correctly rounded with 128-bit
- * intermediates (drdc_fx_muldiv_s64()); the result is rounded once.
+ * its sines and cosines (formed on demand, never stored as a matrix),
+ * every step correctly rounded from the exact 128-bit product (a rounded
+ * shift: the divisors are 2^60 and 2^61); the result is rounded once.
  * Accuracy: measured against an independent numpy double model (PUMA 560
  * and a 7-link arm with prismatic joints 2 and 5, standard and modified,
  * 160 configurations): rotation max 2 LSB per element, position max
