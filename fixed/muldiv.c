@@ -47,8 +47,12 @@ drdc_status_t drdc_fx_muldiv_s32_sat(int32_t a, int32_t b, int32_t c,
   return muldiv_s32(a, b, c, 1, out);
 }
 
-static drdc_status_t muldiv_s64(int64_t a, int64_t b, int64_t c, int sat,
-                                int64_t *out)
+/* The work is done in drdc_fx_muldiv_s64()'s own frame (no forwarding
+ * wrapper above the 128-bit division), and the saturating form calls it:
+ * the plain form fails with DRDC_E_OVERFLOW exactly when the saturating
+ * one clamps, and leaves `*out` unchanged then. */
+drdc_status_t drdc_fx_muldiv_s64(int64_t a, int64_t b, int64_t c,
+                                 int64_t *out)
 {
   uint64_t q = 0;
   int too_big;
@@ -63,17 +67,20 @@ static drdc_status_t muldiv_s64(int64_t a, int64_t b, int64_t c, int sat,
                               fx_abs64(c), &q);
   /* a zero product is never negative */
   return fx_finish_s64(quotient_negative((a < 0) ? 1 : 0, (b < 0) ? 1 : 0,
-                                             (c < 0) ? 1 : 0), too_big, q, sat, out);
-}
-
-drdc_status_t drdc_fx_muldiv_s64(int64_t a, int64_t b, int64_t c,
-                                 int64_t *out)
-{
-  return muldiv_s64(a, b, c, 0, out);
+                                         (c < 0) ? 1 : 0),
+                       too_big, q, 0, out);
 }
 
 drdc_status_t drdc_fx_muldiv_s64_sat(int64_t a, int64_t b, int64_t c,
                                      int64_t *out)
 {
-  return muldiv_s64(a, b, c, 1, out);
+  int neg = quotient_negative((a < 0) ? 1 : 0, (b < 0) ? 1 : 0,
+                              (c < 0) ? 1 : 0);
+  drdc_status_t st = drdc_fx_muldiv_s64(a, b, c, out);
+
+  if (st == DRDC_E_OVERFLOW) {
+    *out = (neg != 0) ? FX_INT64_MIN : INT64_MAX;
+    st = DRDC_W_SATURATED;
+  }
+  return st;
 }

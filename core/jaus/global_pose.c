@@ -53,7 +53,6 @@ drdc_status_t drdc_jaus_global_pose_pack(const drdc_jaus_global_pose_t *body,
                                          size_t capacity, size_t *length)
 {
   const jaus_field_t *fields = global_fields_of(form);
-  jaus_body_t b;
 
   if ((body == NULL) || (buf == NULL) || (length == NULL)) {
     return DRDC_E_NULL;
@@ -61,17 +60,8 @@ drdc_status_t drdc_jaus_global_pose_pack(const drdc_jaus_global_pose_t *body,
   if (fields == NULL) {
     return DRDC_E_RANGE;
   }
-  b.presence = body->presence;
-  b.value[0] = body->pose.latitude;
-  b.value[1] = body->pose.longitude;
-  b.value[2] = body->pose.height;
-  b.value[3] = body->position_rms;
-  b.value[4] = drdc_jaus_angle_value(body->pose.e.roll);
-  b.value[5] = drdc_jaus_angle_value(body->pose.e.pitch);
-  b.value[6] = drdc_jaus_angle_value(body->pose.e.yaw);
-  b.value[7] = (int64_t)body->attitude_rms;
-  b.stamp = body->time_stamp;
-  return drdc_jaus_body_pack(fields, form, &b, buf, capacity, length);
+  return drdc_jaus_body_pack(fields, form, NULL, body, buf, capacity,
+                             length);
 }
 
 drdc_status_t drdc_jaus_global_pose_unpack(const uint8_t *buf, size_t length,
@@ -79,8 +69,6 @@ drdc_status_t drdc_jaus_global_pose_unpack(const uint8_t *buf, size_t length,
                                            drdc_jaus_global_pose_t *body)
 {
   const jaus_field_t *fields = global_fields_of(form);
-  jaus_body_t b;
-  drdc_status_t st;
 
   if ((buf == NULL) || (body == NULL)) {
     return DRDC_E_NULL;
@@ -88,21 +76,7 @@ drdc_status_t drdc_jaus_global_pose_unpack(const uint8_t *buf, size_t length,
   if (fields == NULL) {
     return DRDC_E_RANGE;
   }
-  st = drdc_jaus_body_unpack(fields, form, buf, length, &b);
-  if (st != DRDC_OK) {
-    return st;
-  }
   /* every decoded value lies within its field's limits, which fit the
-   * pose types: Position RMS <= 100 m in Q15.16, RMS angle <= 2^31 */
-  body->presence = b.presence;
-  body->pose.latitude = b.value[0];
-  body->pose.longitude = b.value[1];
-  body->pose.height = b.value[2];
-  body->position_rms = (drdc_q15_16_t)b.value[3];
-  body->pose.e.roll = drdc_jaus_angle_bam(b.value[4]);
-  body->pose.e.pitch = drdc_jaus_angle_bam(b.value[5]);
-  body->pose.e.yaw = drdc_jaus_angle_bam(b.value[6]);
-  body->attitude_rms = (drdc_bam32_t)b.value[7];
-  body->time_stamp = b.stamp;
-  return DRDC_OK;
+   * pose types */
+  return drdc_jaus_body_unpack(fields, form, buf, length, NULL, body);
 }

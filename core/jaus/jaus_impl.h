@@ -15,6 +15,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include <drdc/jaus_pose.h>
 #include <drdc/jaus_scaled.h>
 #include <drdc/status.h>
 
@@ -38,32 +39,89 @@ typedef struct jaus_field {
   drdc_status_t outside;
 } jaus_field_t;
 
-/** A pose body with its fields as raw real values. */
-typedef struct jaus_body {
-  uint16_t presence;
-  int64_t value[JAUS_POSE_SCALED]; /* raw values of bits 0-7 */
-  uint32_t stamp;                  /* bit 8 */
-} jaus_body_t;
+/** Bytes of the presence vector, before the fields. */
+#define JAUS_PRESENCE_BYTES 2u
+/** Presence bit of the time stamp, the last field (4 bytes). */
+#define JAUS_TIME_STAMP_BIT 8u
+/** Bytes of the time stamp. */
+#define JAUS_TIME_STAMP_BYTES 4u
+
+/** 1 when field `bit` is present. */
+static inline int jaus_present(uint16_t presence, unsigned bit)
+{
+  return ((((uint32_t)presence) >> bit) & 1u) != 0u;
+}
+
+/** Bytes of field `bit` on the wire: bits 0-3 32-bit, 4-7 16-bit, 8 the
+ *  32-bit time stamp, the same in both messages and both forms; the
+ *  field tables' types have these sizes (checked by the suites' bytes).
+ *  Positions come from this alone, so reads stay inside the length
+ *  drdc_jaus_pose_size() gave. */
+static inline size_t jaus_field_size(unsigned bit)
+{
+  return ((bit >= 4u) && (bit < JAUS_TIME_STAMP_BIT)) ? 2u : 4u;
+}
+
+/** Write the n low bytes of u at p, least significant first. */
+static inline void jaus_put_le(uint8_t *p, uint32_t u, size_t n)
+{
+  size_t k;
+
+  for (k = 0u; k < n; k++) {
+    p[k] = (uint8_t)((u >> (8u * (uint32_t)k)) & UINT32_C(0xFF));
+  }
+}
+
+/** n little-endian bytes at p as an unsigned value. */
+static inline uint32_t jaus_get_le(const uint8_t *p, size_t n)
+{
+  uint32_t u = 0u;
+  size_t k;
+
+  for (k = 0u; k < n; k++) {
+    u |= ((uint32_t)p[k]) << (8u * (uint32_t)k);
+  }
+  return u;
+}
+
+/*
+ * The two bodies are read and written in place, field by field, through
+ * a pair of pointers of which exactly one is set (the other NULL): no
+ * copy of the eight raw values on the stack. The time stamp's check is
+ * in a file of its own (pose_stamp.c), so its unpacked fields are not in
+ * the frame that calls the scaling: the worst-case stack of the pose
+ * functions stays well under 256 bytes.
+ */
 
 /**
- * Validate and scale the fields present in `body` by `fields`, then write
- * them little-endian. Outputs unchanged on error.
+ * Validate the fields present in the body (`local` or `global`), check
+ * the time stamp and the capacity, then scale the fields by `fields` and
+ * write them little-endian. Nothing is written before every check has
+ * passed: outputs unchanged on error.
  */
 drdc_status_t drdc_jaus_body_pack(const jaus_field_t *fields,
                                   drdc_jaus_form_t form,
-                                  const jaus_body_t *body, uint8_t *buf,
-                                  size_t capacity, size_t *length);
+                                  const drdc_jaus_local_pose_t *local,
+                                  const drdc_jaus_global_pose_t *global,
+                                  uint8_t *buf, size_t capacity,
+                                  size_t *length);
 
 /**
  * Read a body of exactly `length` bytes and decode its fields by
- * `fields` into `body` (the caller's scratch copy); absent fields are 0.
- * On error `body` holds partial results: the public functions copy it
- * out only on success.
+ * `fields` into `local` or `global`; absent fields are 0. Two passes:
+ * the first decodes and checks everything (a local X, Y or Z must fit
+ * Q15.16: DRDC_E_OVERFLOW after every other check), the second decodes
+ * again into the body, so the body is unchanged on error.
  */
 drdc_status_t drdc_jaus_body_unpack(const jaus_field_t *fields,
                                     drdc_jaus_form_t form,
                                     const uint8_t *buf, size_t length,
-                                    jaus_body_t *body);
+                                    drdc_jaus_local_pose_t *local,
+                                    drdc_jaus_global_pose_t *global);
+
+/** DRDC_OK when the time stamp is absent from `presence` or unpacks
+ *  (drdc_time_jaus_unpack()), else that function's status. */
+drdc_status_t drdc_jaus_stamp_check(uint16_t presence, uint32_t time_stamp);
 
 /** A binary angle as a signed raw value in [-2^31, 2^31). */
 int64_t drdc_jaus_angle_value(uint32_t bam);

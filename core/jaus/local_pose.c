@@ -51,17 +51,11 @@ static const jaus_field_t *local_fields_of(drdc_jaus_form_t form)
   return f;
 }
 
-static int local_fits_q15_16(int64_t v)
-{
-  return (v >= (int64_t)INT32_MIN) && (v <= (int64_t)INT32_MAX);
-}
-
 drdc_status_t drdc_jaus_local_pose_pack(const drdc_jaus_local_pose_t *body,
                                         drdc_jaus_form_t form, uint8_t *buf,
                                         size_t capacity, size_t *length)
 {
   const jaus_field_t *fields = local_fields_of(form);
-  jaus_body_t b;
 
   if ((body == NULL) || (buf == NULL) || (length == NULL)) {
     return DRDC_E_NULL;
@@ -69,17 +63,8 @@ drdc_status_t drdc_jaus_local_pose_pack(const drdc_jaus_local_pose_t *body,
   if (fields == NULL) {
     return DRDC_E_RANGE;
   }
-  b.presence = body->presence;
-  b.value[0] = body->pose.p.x;
-  b.value[1] = body->pose.p.y;
-  b.value[2] = body->pose.p.z;
-  b.value[3] = body->position_rms;
-  b.value[4] = drdc_jaus_angle_value(body->pose.e.roll);
-  b.value[5] = drdc_jaus_angle_value(body->pose.e.pitch);
-  b.value[6] = drdc_jaus_angle_value(body->pose.e.yaw);
-  b.value[7] = (int64_t)body->attitude_rms;
-  b.stamp = body->time_stamp;
-  return drdc_jaus_body_pack(fields, form, &b, buf, capacity, length);
+  return drdc_jaus_body_pack(fields, form, body, NULL, buf, capacity,
+                             length);
 }
 
 drdc_status_t drdc_jaus_local_pose_unpack(const uint8_t *buf, size_t length,
@@ -87,8 +72,6 @@ drdc_status_t drdc_jaus_local_pose_unpack(const uint8_t *buf, size_t length,
                                           drdc_jaus_local_pose_t *body)
 {
   const jaus_field_t *fields = local_fields_of(form);
-  jaus_body_t b;
-  drdc_status_t st;
 
   if ((buf == NULL) || (body == NULL)) {
     return DRDC_E_NULL;
@@ -96,25 +79,7 @@ drdc_status_t drdc_jaus_local_pose_unpack(const uint8_t *buf, size_t length,
   if (fields == NULL) {
     return DRDC_E_RANGE;
   }
-  st = drdc_jaus_body_unpack(fields, form, buf, length, &b);
-  if (st != DRDC_OK) {
-    return st;
-  }
-  /* JAUS allows +-100 km, {le} holds +-32 km */
-  if ((local_fits_q15_16(b.value[0]) == 0)
-      || (local_fits_q15_16(b.value[1]) == 0)
-      || (local_fits_q15_16(b.value[2]) == 0)) {
-    return DRDC_E_OVERFLOW;
-  }
-  body->presence = b.presence;
-  body->pose.p.x = (drdc_q15_16_t)b.value[0];
-  body->pose.p.y = (drdc_q15_16_t)b.value[1];
-  body->pose.p.z = (drdc_q15_16_t)b.value[2];
-  body->position_rms = (drdc_q15_16_t)b.value[3];
-  body->pose.e.roll = drdc_jaus_angle_bam(b.value[4]);
-  body->pose.e.pitch = drdc_jaus_angle_bam(b.value[5]);
-  body->pose.e.yaw = drdc_jaus_angle_bam(b.value[6]);
-  body->attitude_rms = (drdc_bam32_t)b.value[7];
-  body->time_stamp = b.stamp;
-  return DRDC_OK;
+  /* JAUS allows +-100 km, {le} holds +-32 km: the unpacking reports
+   * DRDC_E_OVERFLOW */
+  return drdc_jaus_body_unpack(fields, form, buf, length, body, NULL);
 }

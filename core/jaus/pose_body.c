@@ -3,78 +3,18 @@
  * @file
  * @ingroup drdc_jaus_pose
  * @brief The wire format of the JAUS pose bodies: presence vector,
- *        scaled fields and time stamp, little-endian by shifts.
+ *        sizes, the checks before packing and unpacking, and the time
+ *        stamp, little-endian by shifts.
  */
 #include <stddef.h>
 
 #include <drdc/jaus_pose.h>
-#include <drdc/time_jaus.h>
 
 #include "jaus_impl.h"
 
-/* Bytes of each field in bit order (bits 0-3 32-bit, 4-7 16-bit, 8 the
- * 32-bit time stamp), the same in both messages and both forms; the
- * field tables' types have these sizes (checked by the suites' bytes).
- * Positions come from this table alone, so reads stay inside the length
- * drdc_jaus_pose_size() gave. */
-static const uint8_t field_bytes[JAUS_POSE_SCALED + 1u] = { 4u, 4u, 4u, 4u,
-                                                            2u, 2u, 2u, 2u,
-                                                            4u };
-
-#define PRESENCE_BYTES 2u
-#define TIME_STAMP_BIT 8u
-#define BYTE_MASK UINT32_C(0xFF)
-
-static int present(uint16_t presence, unsigned bit)
-{
-  return ((((uint32_t)presence) >> bit) & 1u) != 0u;
-}
-
-/* n bytes of u, least significant first. */
-static void put_le(uint8_t *p, uint32_t u, size_t n)
-{
-  size_t k;
-
-  for (k = 0u; k < n; k++) {
-    p[k] = (uint8_t)((u >> (8u * (uint32_t)k)) & BYTE_MASK);
-  }
-}
-
-/* n little-endian bytes as an unsigned value. */
-static uint32_t get_le(const uint8_t *p, size_t n)
-{
-  uint32_t u = 0u;
-  size_t k;
-
-  for (k = 0u; k < n; k++) {
-    u |= ((uint32_t)p[k]) << (8u * (uint32_t)k);
-  }
-  return u;
-}
-
-/* The integer of an n-byte field of a signed or unsigned type, from its
- * bits (two's complement for the signed types). */
-static int64_t from_bits(uint32_t u, size_t n, drdc_jaus_type_t type)
-{
-  int64_t v = (int64_t)u;
-  int64_t half = INT64_C(1) << ((8u * (uint32_t)n) - 1u);
-
-  if (((type == DRDC_JAUS_INT16) || (type == DRDC_JAUS_INT32))
-      && (v >= half)) {
-    v -= 2 * half;
-  }
-  return v;
-}
-
-/* The low 32 bits of an integer's two's complement (modulo 2^32). */
-static uint32_t to_bits(int64_t v)
-{
-  return (uint32_t)((uint64_t)v);
-}
-
 drdc_status_t drdc_jaus_pose_size(uint16_t presence, size_t *size)
 {
-  size_t n = PRESENCE_BYTES;
+  size_t n = JAUS_PRESENCE_BYTES;
   unsigned bit;
 
   if (size == NULL) {
@@ -83,13 +23,19 @@ drdc_status_t drdc_jaus_pose_size(uint16_t presence, size_t *size)
   if ((presence & (uint16_t)~DRDC_JAUS_PV_ALL) != 0u) {
     return DRDC_E_RANGE;
   }
-  for (bit = 0u; bit <= TIME_STAMP_BIT; bit++) {
-    if (present(presence, bit) != 0) {
-      n += field_bytes[bit];
+  for (bit = 0u; bit <= JAUS_TIME_STAMP_BIT; bit++) {
+    if (jaus_present(presence, bit) != 0) {
+      n += jaus_field_size(bit);
     }
   }
   *size = n;
   return DRDC_OK;
+}
+
+/* The low 32 bits of an integer's two's complement (modulo 2^32). */
+static uint32_t to_bits(int64_t v)
+{
+  return (uint32_t)((uint64_t)v);
 }
 
 int64_t drdc_jaus_angle_value(uint32_t bam)
@@ -107,57 +53,180 @@ uint32_t drdc_jaus_angle_bam(int64_t value)
   return to_bits(value);
 }
 
+/* The integer of an n-byte field of a signed or unsigned type, from its
+ * bits (two's complement for the signed types). */
+static int64_t from_bits(uint32_t u, size_t n, drdc_jaus_type_t type)
+{
+  int64_t v = (int64_t)u;
+  int64_t half = INT64_C(1) << ((8u * (uint32_t)n) - 1u);
+
+  if (((type == DRDC_JAUS_INT16) || (type == DRDC_JAUS_INT32))
+      && (v >= half)) {
+    v -= 2 * half;
+  }
+  return v;
+}
+
+
+/* The raw value of scaled field `bit` of the body. */
+static int64_t field_get(const drdc_jaus_local_pose_t *local,
+                         const drdc_jaus_global_pose_t *global, unsigned bit)
+{
+  const drdc_euler_t *e = (local != NULL) ? &local->pose.e : &global->pose.e;
+  int64_t v;
+
+  switch (bit) {
+  case 0u:
+    v = (local != NULL) ? (int64_t)local->pose.p.x : global->pose.latitude;
+    break;
+  case 1u:
+    v = (local != NULL) ? (int64_t)local->pose.p.y : global->pose.longitude;
+    break;
+  case 2u:
+    v = (local != NULL) ? (int64_t)local->pose.p.z : global->pose.height;
+    break;
+  case 3u:
+    v = (local != NULL) ? local->position_rms : global->position_rms;
+    break;
+  case 4u:
+    v = drdc_jaus_angle_value(e->roll);
+    break;
+  case 5u:
+    v = drdc_jaus_angle_value(e->pitch);
+    break;
+  case 6u:
+    v = drdc_jaus_angle_value(e->yaw);
+    break;
+  default:
+    v = (int64_t)((local != NULL) ? local->attitude_rms
+                                  : global->attitude_rms);
+    break;
+  }
+  return v;
+}
+
+/* Store the raw value of scaled field `bit` into the body; the value lies
+ * within the field's limits (and, for a local X, Y, Z, in Q15.16). */
+static void field_set(drdc_jaus_local_pose_t *local,
+                      drdc_jaus_global_pose_t *global, unsigned bit,
+                      int64_t v)
+{
+  drdc_euler_t *e = (local != NULL) ? &local->pose.e : &global->pose.e;
+
+  switch (bit) {
+  case 0u:
+    if (local != NULL) {
+      local->pose.p.x = (drdc_q15_16_t)v;
+    } else {
+      global->pose.latitude = v;
+    }
+    break;
+  case 1u:
+    if (local != NULL) {
+      local->pose.p.y = (drdc_q15_16_t)v;
+    } else {
+      global->pose.longitude = v;
+    }
+    break;
+  case 2u:
+    if (local != NULL) {
+      local->pose.p.z = (drdc_q15_16_t)v;
+    } else {
+      global->pose.height = v;
+    }
+    break;
+  case 3u:
+    if (local != NULL) {
+      local->position_rms = (drdc_q15_16_t)v;
+    } else {
+      global->position_rms = (drdc_q15_16_t)v;
+    }
+    break;
+  case 4u:
+    e->roll = drdc_jaus_angle_bam(v);
+    break;
+  case 5u:
+    e->pitch = drdc_jaus_angle_bam(v);
+    break;
+  case 6u:
+    e->yaw = drdc_jaus_angle_bam(v);
+    break;
+  default:
+    if (local != NULL) {
+      local->attitude_rms = (drdc_bam32_t)v;
+    } else {
+      global->attitude_rms = (drdc_bam32_t)v;
+    }
+    break;
+  }
+}
+
+static int local_fits_q15_16(int64_t v)
+{
+  return (v >= (int64_t)INT32_MIN) && (v <= (int64_t)INT32_MAX);
+}
+
 drdc_status_t drdc_jaus_body_pack(const jaus_field_t *fields,
                                   drdc_jaus_form_t form,
-                                  const jaus_body_t *body, uint8_t *buf,
-                                  size_t capacity, size_t *length)
+                                  const drdc_jaus_local_pose_t *local,
+                                  const drdc_jaus_global_pose_t *global,
+                                  uint8_t *buf, size_t capacity,
+                                  size_t *length)
 {
-  int64_t integer[JAUS_POSE_SCALED];
-  drdc_time_jaus_fields_t stamp;
+  uint16_t presence = (local != NULL) ? local->presence : global->presence;
+  uint32_t time_stamp =
+      (local != NULL) ? local->time_stamp : global->time_stamp;
   size_t size = 0u;
-  size_t pos = PRESENCE_BYTES;
+  size_t pos = JAUS_PRESENCE_BYTES;
   unsigned bit;
   drdc_status_t st;
 
-  st = drdc_jaus_pose_size(body->presence, &size);
+  st = drdc_jaus_pose_size(presence, &size);
   if (st != DRDC_OK) {
     return st;
   }
-  /* validate and scale everything before writing a byte */
+  /* validate everything before writing a byte: each present value within
+   * its field's limits (in bit order), the time stamp, the capacity */
   for (bit = 0u; bit < JAUS_POSE_SCALED; bit++) {
-    if (present(body->presence, bit) != 0) {
+    if (jaus_present(presence, bit) != 0) {
       const jaus_field_t *f = &fields[bit];
+      int64_t v = field_get(local, global, bit);
 
-      if ((body->value[bit] < f->min) || (body->value[bit] > f->max)) {
+      if ((v < f->min) || (v > f->max)) {
         return f->outside;
       }
-      st = drdc_jaus_scaled_encode(body->value[bit], f->min, f->max, f->type,
-                                   form, &integer[bit]);
-      if (st != DRDC_OK) {
-        return st;
-      }
-    } else {
-      integer[bit] = 0;
     }
   }
-  if (present(body->presence, TIME_STAMP_BIT) != 0) {
-    st = drdc_time_jaus_unpack(body->stamp, &stamp);
-    if (st != DRDC_OK) {
-      return st;
-    }
+  st = drdc_jaus_stamp_check(presence, time_stamp);
+  if (st != DRDC_OK) {
+    return st;
   }
   if (capacity < size) {
     return DRDC_E_BUFFER;
   }
-  put_le(buf, (uint32_t)body->presence, PRESENCE_BYTES);
+  /* With the field tables' bounds and types and a valid form, a value
+   * within its limits always scales: drdc_jaus_scaled_encode() makes no
+   * check here that has not passed above, so the buffer is written only
+   * on the way to DRDC_OK (its status is still passed on). */
   for (bit = 0u; bit < JAUS_POSE_SCALED; bit++) {
-    if (present(body->presence, bit) != 0) {
-      put_le(&buf[pos], to_bits(integer[bit]), field_bytes[bit]);
-      pos += field_bytes[bit];
+    if (jaus_present(presence, bit) != 0) {
+      const jaus_field_t *f = &fields[bit];
+      int64_t integer = 0;
+
+      st = drdc_jaus_scaled_encode(field_get(local, global, bit), f->min,
+                                   f->max, f->type, form, &integer);
+      if (st != DRDC_OK) {
+        return st;
+      }
+      jaus_put_le(&buf[pos], to_bits(integer),
+                  jaus_field_size(bit));
+      pos += jaus_field_size(bit);
     }
   }
-  if (present(body->presence, TIME_STAMP_BIT) != 0) {
-    put_le(&buf[pos], body->stamp, field_bytes[TIME_STAMP_BIT]);
+  jaus_put_le(buf, (uint32_t)presence, JAUS_PRESENCE_BYTES);
+  if (jaus_present(presence, JAUS_TIME_STAMP_BIT) != 0) {
+    jaus_put_le(&buf[size - JAUS_TIME_STAMP_BYTES], time_stamp,
+                JAUS_TIME_STAMP_BYTES);
   }
   *length = size;
   return DRDC_OK;
@@ -166,19 +235,21 @@ drdc_status_t drdc_jaus_body_pack(const jaus_field_t *fields,
 drdc_status_t drdc_jaus_body_unpack(const jaus_field_t *fields,
                                     drdc_jaus_form_t form,
                                     const uint8_t *buf, size_t length,
-                                    jaus_body_t *body)
+                                    drdc_jaus_local_pose_t *local,
+                                    drdc_jaus_global_pose_t *global)
 {
-  drdc_time_jaus_fields_t stamp;
+  uint16_t presence;
+  uint32_t time_stamp = 0u;
   size_t size = 0u;
-  size_t pos = PRESENCE_BYTES;
-  unsigned bit;
+  unsigned pass;
+  int overflow = 0;
   drdc_status_t st;
 
-  if (length < PRESENCE_BYTES) {
+  if (length < JAUS_PRESENCE_BYTES) {
     return DRDC_E_TRUNCATED;
   }
-  body->presence = (uint16_t)get_le(buf, PRESENCE_BYTES);
-  st = drdc_jaus_pose_size(body->presence, &size);
+  presence = (uint16_t)jaus_get_le(buf, JAUS_PRESENCE_BYTES);
+  st = drdc_jaus_pose_size(presence, &size);
   if (st != DRDC_OK) {
     return st;
   }
@@ -188,29 +259,58 @@ drdc_status_t drdc_jaus_body_unpack(const jaus_field_t *fields,
   if (length > size) {
     return DRDC_E_OVERLONG;
   }
-  /* from here on pos + n <= size == length: every read is inside buf */
-  for (bit = 0u; bit < JAUS_POSE_SCALED; bit++) {
-    body->value[bit] = 0;
-    if (present(body->presence, bit) != 0) {
-      const jaus_field_t *f = &fields[bit];
-      size_t n = field_bytes[bit];
-      int64_t integer = from_bits(get_le(&buf[pos], n), n, f->type);
+  if (jaus_present(presence, JAUS_TIME_STAMP_BIT) != 0) {
+    time_stamp = jaus_get_le(&buf[size - JAUS_TIME_STAMP_BYTES],
+                             JAUS_TIME_STAMP_BYTES);
+  }
+  /* From here on every read is inside buf (size == length). Pass 0
+   * decodes and checks with the body untouched (a local X, Y or Z outside
+   * Q15.16 is reported after the time stamp's check); pass 1 decodes
+   * again, which then succeeds, into the body. */
+  for (pass = 0u; pass < 2u; pass++) {
+    size_t pos = JAUS_PRESENCE_BYTES;
+    unsigned bit;
 
-      st = drdc_jaus_scaled_decode(integer, f->min, f->max, f->type, form,
-                                   &body->value[bit]);
+    for (bit = 0u; bit < JAUS_POSE_SCALED; bit++) {
+      int64_t v = 0;
+
+      if (jaus_present(presence, bit) != 0) {
+        const jaus_field_t *f = &fields[bit];
+        size_t n = jaus_field_size(bit);
+
+        st = drdc_jaus_scaled_decode(
+            from_bits(jaus_get_le(&buf[pos], n), n, f->type), f->min,
+            f->max, f->type, form, &v);
+        if (st != DRDC_OK) {
+          return st;
+        }
+        pos += n;
+      }
+      if (pass == 0u) {
+        /* JAUS allows +-100 km, {le} holds +-32 km */
+        if ((local != NULL) && (bit < 3u) && (local_fits_q15_16(v) == 0)) {
+          overflow = 1;
+        }
+      } else {
+        field_set(local, global, bit, v);
+      }
+    }
+    if (pass == 0u) {
+      st = drdc_jaus_stamp_check(presence, time_stamp);
       if (st != DRDC_OK) {
         return st;
       }
-      pos += n;
+      if (overflow != 0) {
+        return DRDC_E_OVERFLOW;
+      }
     }
   }
-  body->stamp = 0u;
-  if (present(body->presence, TIME_STAMP_BIT) != 0) {
-    body->stamp = get_le(&buf[pos], field_bytes[TIME_STAMP_BIT]);
-    st = drdc_time_jaus_unpack(body->stamp, &stamp);
-    if (st != DRDC_OK) {
-      return st;
-    }
+  if (local != NULL) {
+    local->presence = presence;
+    local->time_stamp = time_stamp;
+  } else {
+    global->presence = presence;
+    global->time_stamp = time_stamp;
   }
   return DRDC_OK;
 }

@@ -7,23 +7,7 @@
  */
 #include <stddef.h>
 
-#include <drdc/fixed_arith.h>
 #include <drdc/jaus_scaled.h>
-
-/* Greatest common divisor of two positive values (Euclid). */
-static int64_t gcd_pos(int64_t a, int64_t b)
-{
-  int64_t x = a;
-  int64_t y = b;
-
-  while (y != 0) {
-    int64_t r = x % y;
-
-    x = y;
-    y = r;
-  }
-  return x;
-}
 
 drdc_status_t drdc_jaus_scaled_range(drdc_jaus_type_t type,
                                      drdc_jaus_form_t form, int64_t *ilo,
@@ -55,34 +39,64 @@ drdc_status_t drdc_jaus_scaled_range(drdc_jaus_type_t type,
 }
 
 /*
- * c + p x q / r rounded to nearest, ties away from zero on the whole sum,
- * for c any integer, p >= 0, q > 0, r > 0. drdc_fx_muldiv_s64 rounds
- * p q / r (>= 0) with ties upwards; that is wrong only when the sum is a
- * tie below zero, which then rounds down instead. p q / r is a tie iff
- * 2 p q' / r' is odd (q' = q / g, r' = r / g, g = gcd(q, r)): r' even,
- * k = p / (r' / 2) a whole odd number, and q' odd. The result lies
- * between c and c + p q / r, so it fits whenever those do.
+ * The mapping is exact rational arithmetic on one factor below 2^32: the
+ * integer span ihi - ilo of a JAUS type is at most 2^32 - 1. Encoding
+ * takes (value - min) (ihi - ilo) / (max - min), decoding
+ * (integer - ilo) (max - min) / (ihi - ilo); in both the other factor is
+ * brought to at most the divisor first, so a 64-bit remainder and the
+ * 32 steps of Horner's rule give the quotient and remainder exactly,
+ * without a 128-bit product, a 128-bit division or any call: the scaling
+ * is a leaf, which keeps the pose functions' stack small.
  */
-static drdc_status_t round_affine(int64_t c, int64_t p, int64_t q, int64_t r,
-                                  int64_t *out)
-{
-  int64_t m = 0;
-  int64_t g = gcd_pos(q, r);
-  int64_t q1 = q / g;
-  int64_t r1 = r / g;
-  int64_t sum;
-  drdc_status_t st = drdc_fx_muldiv_s64(p, q, r, &m);
 
-  if (st != DRDC_OK) {
-    return st;
+/*
+ * floor(a b / r) and its remainder (*rem) for a < 2^32, 0 <= b <= r and
+ * 0 < r < 2^63, by Horner's rule over the bits of a: the partial product
+ * is Q r + R with 0 <= R < r; doubling gives 2 R < 2 r < 2^64 and adding
+ * b gives R + b < 2 r, so each step needs one conditional subtraction.
+ * The quotient is at most a.
+ */
+static uint64_t mul_div_small(uint32_t a, uint64_t b, uint64_t r,
+                              uint64_t *rem)
+{
+  uint64_t q = 0u;
+  uint64_t x = 0u;
+  unsigned k;
+
+  for (k = 32u; k > 0u; k--) {
+    q <<= 1;
+    x <<= 1;
+    if (x >= r) {
+      x -= r;
+      q++;
+    }
+    if (((a >> (k - 1u)) & 1u) != 0u) {
+      x += b;
+      if (x >= r) {
+        x -= r;
+        q++;
+      }
+    }
   }
-  sum = c + m;
-  if (((r1 % 2) == 0) && ((q1 % 2) != 0) && ((p % (r1 / 2)) == 0)
-      && (((p / (r1 / 2)) % 2) != 0) && (sum <= 0)) {
-    sum -= 1;
+  *rem = x;
+  return q;
+}
+
+/*
+ * c + q + rem / r (0 <= rem < r) rounded to nearest, ties away from zero
+ * on the whole sum: up when 2 rem > r, and for a tie (2 rem = r) when
+ * c + q >= 0. The result lies between c and c + q + 1, which the callers'
+ * bounds keep inside the target range.
+ */
+static int64_t round_sum(int64_t c, uint64_t q, uint64_t rem, uint64_t r)
+{
+  int64_t sum = c + (int64_t)q;
+  uint64_t rest = r - rem; /* > 0 */
+
+  if ((rem > rest) || ((rem == rest) && (sum >= 0))) {
+    sum += 1;
   }
-  *out = sum;
-  return DRDC_OK;
+  return sum;
 }
 
 /* Validate the bounds and the type; the span max - min and [ilo, ihi]. */
@@ -104,9 +118,45 @@ static drdc_status_t check(int64_t min, int64_t max, drdc_jaus_type_t type,
   return DRDC_OK;
 }
 
-static drdc_status_t encode(int64_t value, int64_t min, int64_t max,
-                            drdc_jaus_type_t type, drdc_jaus_form_t form,
-                            int sat, int64_t *integer)
+/* The plain forms do the work in their own frame; the saturating forms
+ * clamp an outside input and otherwise call the plain form, which then
+ * validates again (cheap) and cannot fail differently. */
+drdc_status_t drdc_jaus_scaled_encode(int64_t value, int64_t min, int64_t max,
+                                      drdc_jaus_type_t type,
+                                      drdc_jaus_form_t form, int64_t *integer)
+{
+  int64_t span = 0;
+  int64_t ilo = 0;
+  int64_t ihi = 0;
+  int64_t offset;
+  int64_t width;
+  uint64_t q;
+  uint64_t rem = 0u;
+  drdc_status_t st;
+
+  if (integer == NULL) {
+    return DRDC_E_NULL;
+  }
+  st = check(min, max, type, form, &span, &ilo, &ihi);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  if ((value < min) || (value > max)) {
+    return DRDC_E_RANGE;
+  }
+  /* value - min <= span, ihi - ilo < 2^32 */
+  offset = value - min;
+  width = ihi - ilo;
+  q = mul_div_small((uint32_t)width, (uint64_t)offset, (uint64_t)span,
+                    &rem);
+  *integer = round_sum(ilo, q, rem, (uint64_t)span);
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_jaus_scaled_encode_sat(int64_t value, int64_t min,
+                                          int64_t max, drdc_jaus_type_t type,
+                                          drdc_jaus_form_t form,
+                                          int64_t *integer)
 {
   int64_t span = 0;
   int64_t ilo = 0;
@@ -121,18 +171,56 @@ static drdc_status_t encode(int64_t value, int64_t min, int64_t max,
     return st;
   }
   if ((value < min) || (value > max)) {
-    if (sat == 0) {
-      return DRDC_E_RANGE;
-    }
     *integer = (value < min) ? ilo : ihi;
     return DRDC_W_SATURATED;
   }
-  return round_affine(ilo, value - min, ihi - ilo, span, integer);
+  return drdc_jaus_scaled_encode(value, min, max, type, form, integer);
 }
 
-static drdc_status_t decode(int64_t integer, int64_t min, int64_t max,
-                            drdc_jaus_type_t type, drdc_jaus_form_t form,
-                            int sat, int64_t *value)
+drdc_status_t drdc_jaus_scaled_decode(int64_t integer, int64_t min,
+                                      int64_t max, drdc_jaus_type_t type,
+                                      drdc_jaus_form_t form, int64_t *value)
+{
+  int64_t span = 0;
+  int64_t ilo = 0;
+  int64_t ihi = 0;
+  int64_t offset;
+  int64_t width;
+  uint64_t r;
+  uint64_t whole;
+  uint64_t part;
+  uint64_t q;
+  uint64_t rem = 0u;
+  drdc_status_t st;
+
+  if (value == NULL) {
+    return DRDC_E_NULL;
+  }
+  st = check(min, max, type, form, &span, &ilo, &ihi);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  if ((integer < ilo) || (integer > ihi)) {
+    return DRDC_E_RANGE;
+  }
+  /* span = whole r + part, part < r = ihi - ilo < 2^32; then
+   * (integer - ilo) span / r = (integer - ilo) whole + (integer - ilo)
+   * part / r, the first exact and at most span */
+  offset = integer - ilo;
+  width = ihi - ilo;
+  r = (uint64_t)width;
+  whole = (uint64_t)span / r;
+  part = (uint64_t)span % r;
+  q = mul_div_small((uint32_t)offset, part, r, &rem);
+  q += (uint64_t)offset * whole;
+  *value = round_sum(min, q, rem, r);
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_jaus_scaled_decode_sat(int64_t integer, int64_t min,
+                                          int64_t max, drdc_jaus_type_t type,
+                                          drdc_jaus_form_t form,
+                                          int64_t *value)
 {
   int64_t span = 0;
   int64_t ilo = 0;
@@ -147,41 +235,8 @@ static drdc_status_t decode(int64_t integer, int64_t min, int64_t max,
     return st;
   }
   if ((integer < ilo) || (integer > ihi)) {
-    if (sat == 0) {
-      return DRDC_E_RANGE;
-    }
     *value = (integer < ilo) ? min : max;
     return DRDC_W_SATURATED;
   }
-  return round_affine(min, integer - ilo, span, ihi - ilo, value);
-}
-
-drdc_status_t drdc_jaus_scaled_encode(int64_t value, int64_t min, int64_t max,
-                                      drdc_jaus_type_t type,
-                                      drdc_jaus_form_t form, int64_t *integer)
-{
-  return encode(value, min, max, type, form, 0, integer);
-}
-
-drdc_status_t drdc_jaus_scaled_encode_sat(int64_t value, int64_t min,
-                                          int64_t max, drdc_jaus_type_t type,
-                                          drdc_jaus_form_t form,
-                                          int64_t *integer)
-{
-  return encode(value, min, max, type, form, 1, integer);
-}
-
-drdc_status_t drdc_jaus_scaled_decode(int64_t integer, int64_t min,
-                                      int64_t max, drdc_jaus_type_t type,
-                                      drdc_jaus_form_t form, int64_t *value)
-{
-  return decode(integer, min, max, type, form, 0, value);
-}
-
-drdc_status_t drdc_jaus_scaled_decode_sat(int64_t integer, int64_t min,
-                                          int64_t max, drdc_jaus_type_t type,
-                                          drdc_jaus_form_t form,
-                                          int64_t *value)
-{
-  return decode(integer, min, max, type, form, 1, value);
+  return drdc_jaus_scaled_decode(integer, min, max, type, form, value);
 }

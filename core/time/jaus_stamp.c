@@ -79,21 +79,23 @@ drdc_status_t drdc_time_jaus_to_utc(const drdc_time_leap_t *leap,
                                     uint32_t stamp, const drdc_time_t *ref,
                                     drdc_time_t *utc)
 {
+  /* Few values live across the three drdc_time_from_civil() calls (each
+   * one costs a saved register; issue 8: stack depth): the candidate
+   * month is stepped in `c` itself, the best candidate is kept as a time
+   * and its distance recomputed. */
   drdc_time_civil_t c;
-  int64_t best_sec = 0;
-  int32_t best_nsec = 0;
-  int64_t best_dist = -1;
+  drdc_time_t t;
+  drdc_time_t best;
+  int found = 0;
   drdc_status_t st;
   drdc_status_t why = DRDC_E_RANGE;
-  int32_t ref_year;
-  int32_t ref_month;
-  int32_t k;
+  unsigned k;
 
   if ((ref == NULL) || (utc == NULL)) {
     return DRDC_E_NULL;
   }
-  /* The stamp's fields live in a block of their own, so that their stack
-   * slots can be reused (issue 8: stack depth). */
+  /* The stamp is validated in a block of its own, so that the stack
+   * slots of its unpacked fields can be reused. */
   {
     drdc_time_jaus_fields_t f;
 
@@ -101,64 +103,70 @@ drdc_status_t drdc_time_jaus_to_utc(const drdc_time_leap_t *leap,
     if (st != DRDC_OK) {
       return st;
     }
-    c.day = (int32_t)f.day;
-    c.hour = (int32_t)f.hour;
-    c.minute = (int32_t)f.minute;
-    c.second = (int32_t)f.second;
-    c.nsec = (int32_t)f.msec * NS_PER_MS;
   }
   /* the reference's year and month: drdc_time_to_civil() without the
    * fields not needed (the same check, the day of its UTC second), one
-   * call level less */
+   * call level less; written into `c` itself, whose day and time of day
+   * then come from the (valid) stamp's bits */
   if (drdc_time_check(leap, ref) != DRDC_OK) {
     return DRDC_E_RANGE;
   }
-  {
-    int32_t ref_day;
-
-    (void)drdc_time_civil_from_days(
-        (int32_t)drdc_time_floor_div(ref->sec, SECONDS_PER_DAY), &ref_year,
-        &ref_month, &ref_day);
-  }
+  (void)drdc_time_civil_from_days(
+      (int32_t)drdc_time_floor_div(ref->sec, SECONDS_PER_DAY), &c.year,
+      &c.month, &c.day);
+  c.day = (int32_t)((stamp >> DAY_SHIFT) & DAY_MASK);
+  c.hour = (int32_t)((stamp >> HOUR_SHIFT) & HOUR_MASK);
+  c.minute = (int32_t)((stamp >> MINUTE_SHIFT) & MINUTE_MASK);
+  c.second = (int32_t)((stamp >> SECOND_SHIFT) & SECOND_MASK);
+  c.nsec = (int32_t)((stamp >> MSEC_SHIFT) & MSEC_MASK) * NS_PER_MS;
+  best.sec = 0;
+  best.nsec = 0;
   /* The month before, of and after the reference, earliest first so the
    * earlier candidate wins a tie. */
-  for (k = -1; k <= 1; k++) {
-    drdc_time_t t;
-    int64_t dist;
+  c.month--;
+  if (c.month < 1) {
+    c.month = 12;
+    c.year--;
+  }
+  for (k = 0u; k < 3u; k++) {
+    st = drdc_time_from_civil(leap, &c, &t);
+    if (st == DRDC_OK) {
+      /* Both instants are within the calendar: no overflow. */
+      int64_t dist = t.sec - ref->sec;
+      int64_t best_dist = best.sec - ref->sec;
 
-    c.year = ref_year;
-    c.month = ref_month + k;
-    if (c.month < 1) {
-      c.month = 12;
-      c.year--;
-    } else if (c.month > 12) {
+      if (dist < 0) {
+        dist = -dist;
+      }
+      if (best_dist < 0) {
+        best_dist = -best_dist;
+      }
+      if ((found == 0) || (dist < best_dist)) {
+        best = t;
+        found = 1;
+      }
+    } else if (st == DRDC_E_SECOND) {
+      why = st; /* remember: 23:59:60 on a day without a leap second */
+    } else {
+      /* not a date (day 31 of a short month, ...): no candidate */
+    }
+    c.month++;
+    if (c.month > 12) {
       c.month = 1;
       c.year++;
-    } else {
-      /* 1..12 already: the year stays */
-    }
-    st = drdc_time_from_civil(leap, &c, &t);
-    if (st != DRDC_OK) {
-      if (st == DRDC_E_SECOND) {
-        why = st; /* remember: 23:59:60 on a day without a leap second */
-      }
-      continue;
-    }
-    /* Both instants are within the calendar: no overflow. */
-    dist = t.sec - ref->sec;
-    if (dist < 0) {
-      dist = -dist;
-    }
-    if ((best_dist < 0) || (dist < best_dist)) {
-      best_sec = t.sec;
-      best_nsec = t.nsec;
-      best_dist = dist;
     }
   }
-  if ((best_dist < 0) || (best_dist > DRDC_TIME_JAUS_WINDOW_SECONDS)) {
-    return (best_dist < 0) ? why : DRDC_E_RANGE;
+  if (found == 0) {
+    return why;
   }
-  utc->sec = best_sec;
-  utc->nsec = best_nsec;
+  {
+    int64_t best_dist = best.sec - ref->sec;
+
+    if ((best_dist > DRDC_TIME_JAUS_WINDOW_SECONDS)
+        || (best_dist < -DRDC_TIME_JAUS_WINDOW_SECONDS)) {
+      return DRDC_E_RANGE;
+    }
+  }
+  *utc = best;
   return DRDC_OK;
 }

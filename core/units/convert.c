@@ -45,8 +45,7 @@ drdc_status_t drdc_units_convert(int64_t raw, unsigned from_frac,
   }
   /* the exact rationals in a function of their own: not in this frame
    * while the 128-bit division runs */
-  if (units_prepare(raw, from_frac, from, to_frac, to, &a, &factor)
-      != DRDC_OK) {
+  if (units_prepare(from_frac, from, to_frac, to, &a, &factor) != DRDC_OK) {
     return DRDC_E_RANGE;
   }
   /* the one rounding: 128-bit product, nearest, ties away from zero */

@@ -72,26 +72,26 @@ drdc_status_t units_mul_s64(int64_t x, int64_t y, int64_t *out)
   return DRDC_OK;
 }
 
-drdc_status_t units_rat_mul(const units_rat_t *a, const units_rat_t *b,
-                            units_rat_t *out)
+drdc_status_t units_rat_scale(const units_rat_t *a, int64_t num,
+                              int64_t den, units_rat_t *out)
 {
-  int64_t g1 = gcd_s64(a->num, b->den);
-  int64_t g2 = gcd_s64(b->num, a->den);
-  int64_t num;
-  int64_t den;
+  int64_t g1 = gcd_s64(a->num, den);
+  int64_t g2 = gcd_s64(num, a->den);
+  int64_t n;
+  int64_t d;
 
-  if ((a->num < -INT64_MAX) || (b->num < -INT64_MAX) || (a->den <= 0)
-      || (b->den <= 0)) {
+  if ((a->num < -INT64_MAX) || (num < -INT64_MAX) || (a->den <= 0)
+      || (den <= 0)) {
     return DRDC_E_RANGE;
   }
-  if (units_mul_s64(a->num / g1, b->num / g2, &num) != DRDC_OK) {
+  if (units_mul_s64(a->num / g1, num / g2, &n) != DRDC_OK) {
     return DRDC_E_RANGE;
   }
-  if (units_mul_s64(a->den / g2, b->den / g1, &den) != DRDC_OK) {
+  if (units_mul_s64(a->den / g2, den / g1, &d) != DRDC_OK) {
     return DRDC_E_RANGE;
   }
-  out->num = num;
-  out->den = den;
+  out->num = n;
+  out->den = d;
   return DRDC_OK;
 }
 
@@ -113,8 +113,8 @@ drdc_status_t units_rat_inv(const units_rat_t *a, units_rat_t *out)
   return DRDC_OK;
 }
 
-drdc_status_t units_rat_sub(const units_rat_t *a, const units_rat_t *b,
-                            units_rat_t *out)
+drdc_status_t units_rat_sub(int64_t a_num, int64_t a_den,
+                            const units_rat_t *b, units_rat_t *out)
 {
   /* a/b - c/d = (a (d/g) - c (b/g)) / (b/g d), g = gcd(b, d) */
   int64_t g;
@@ -124,13 +124,13 @@ drdc_status_t units_rat_sub(const units_rat_t *a, const units_rat_t *b,
   int64_t num;
   int64_t r;
 
-  if ((a->den <= 0) || (b->den <= 0)) {
+  if ((a_den <= 0) || (b->den <= 0)) {
     return DRDC_E_RANGE;
   }
-  g = gcd_s64(a->den, b->den);
-  if ((units_mul_s64(a->num, b->den / g, &left) != DRDC_OK)
-      || (units_mul_s64(b->num, a->den / g, &right) != DRDC_OK)
-      || (units_mul_s64(a->den / g, b->den, &den) != DRDC_OK)) {
+  g = gcd_s64(a_den, b->den);
+  if ((units_mul_s64(a_num, b->den / g, &left) != DRDC_OK)
+      || (units_mul_s64(b->num, a_den / g, &right) != DRDC_OK)
+      || (units_mul_s64(a_den / g, b->den, &den) != DRDC_OK)) {
     return DRDC_E_RANGE;
   }
   /* both terms are within +-INT64_MAX: check the difference */

@@ -10,21 +10,22 @@
  */
 #include "units_impl.h"
 
-/* 2^n as a rational, n = 0..62. */
-static units_rat_t pow2_rat(unsigned n)
+/* 2^n, n = 0..62. */
+static int64_t pow2(unsigned n)
 {
-  units_rat_t r;
   uint64_t p = (uint64_t)1u << n;
 
-  r.num = (int64_t)p;
-  r.den = 1;
-  return r;
+  return (int64_t)p;
 }
 
 /*
- * Everything below works in two scratch rationals `x`, `y` besides the
- * factor `f` and the offset `h`, reused from step to step: each 16-byte
- * rational in this frame adds to the stack of drdc_units_convert().
+ * The factor is worked on in place, in the caller's `*factor`; the
+ * second operand of each product and the offsets are passed as their
+ * two parts; the products of the input go to the caller's `*a`. So this
+ * frame holds one rational, the offset `h` of an affine map (each
+ * 16-byte rational here adds to the stack of drdc_units_convert()). The
+ * operations and their order are those of before, so every rational and
+ * the result are the same.
  *
  * The offset of the affine map in input LSB: H = (o_from - o_to / F) x
  * 2^from_frac with F = factor_from / factor_to, so that
@@ -35,22 +36,20 @@ static units_rat_t pow2_rat(unsigned n)
  * the factor as fit and the rest into the input (an exact left shift);
  * DRDC_E_RANGE when neither can take them.
  */
-drdc_status_t units_prepare(int64_t raw, unsigned from_frac,
-                            const drdc_unit_t *from, unsigned to_frac,
-                            const drdc_unit_t *to, int64_t *a,
-                            units_rat_t *factor)
+drdc_status_t units_prepare(unsigned from_frac, const drdc_unit_t *from,
+                            unsigned to_frac, const drdc_unit_t *to,
+                            int64_t *a, units_rat_t *factor)
 {
-  units_rat_t f;
-  units_rat_t x;
-  units_rat_t y;
+  units_rat_t *f = factor;
+  int64_t raw = *a;
   int64_t in = raw;
   drdc_status_t st = DRDC_OK;
 
-  x.num = units_number(from->factor_num);
-  x.den = units_number(from->factor_den);
-  f.num = units_number(to->factor_den);
-  f.den = units_number(to->factor_num);
-  if (units_rat_mul(&x, &f, &f) != DRDC_OK) {
+  f->num = units_number(to->factor_den);
+  f->den = units_number(to->factor_num);
+  if (units_rat_scale(f, units_number(from->factor_num),
+                      units_number(from->factor_den), f)
+      != DRDC_OK) {
     return DRDC_E_RANGE;
   }
   if ((from->offset != 0u) || (to->offset != 0u)) {
@@ -58,23 +57,24 @@ drdc_status_t units_prepare(int64_t raw, unsigned from_frac,
     int64_t scaled;
     units_rat_t h;
 
-    x = units_offset(from);
-    y = units_offset(to);
-    if ((units_rat_inv(&f, &h) != DRDC_OK)
-        || (units_rat_mul(&y, &h, &h) != DRDC_OK)
-        || (units_rat_sub(&x, &h, &h) != DRDC_OK)) {
+    if ((units_rat_inv(f, &h) != DRDC_OK)
+        || (units_rat_scale(&h, units_offset_part(to, 0u),
+                            units_offset_part(to, 1u), &h)
+            != DRDC_OK)) {
       return DRDC_E_RANGE;
     }
-    x = pow2_rat(from_frac);
-    if (units_rat_mul(&h, &x, &h) != DRDC_OK) {
+    if ((units_rat_sub(units_offset_part(from, 0u),
+                       units_offset_part(from, 1u), &h, &h)
+         != DRDC_OK)
+        || (units_rat_scale(&h, pow2(from_frac), 1, &h) != DRDC_OK)) {
       return DRDC_E_RANGE;
     }
-    x.num = 1;
-    x.den = h.den;
-    if ((units_mul_s64(raw, h.den, &scaled) != DRDC_OK)
-        || (units_rat_mul(&f, &x, &f) != DRDC_OK)) {
+    /* raw x Hd goes to *a (no local whose address is taken) */
+    if ((units_mul_s64(raw, h.den, a) != DRDC_OK)
+        || (units_rat_scale(f, 1, h.den, f) != DRDC_OK)) {
       return DRDC_E_RANGE;
     }
+    scaled = *a;
     if (((h.num > 0) && (scaled > (INT64_MAX - h.num)))
         || ((h.num < 0) && (scaled < (-INT64_MAX - h.num)))) {
       return DRDC_E_RANGE;
@@ -86,32 +86,27 @@ drdc_status_t units_prepare(int64_t raw, unsigned from_frac,
     unsigned k = shift + 1u;
 
     st = DRDC_E_RANGE;
+    /* Both parts of a step must fit; each writes its output only when
+     * it does, the input's shift (into *a) first, so the factor changes
+     * only when the step is taken. */
     while ((k > 0u) && (st != DRDC_OK)) {
       unsigned rest;
 
       k--;
       rest = shift - k;
-      x = pow2_rat(k);
-      if (units_rat_mul(&f, &x, &y) == DRDC_OK) {
-        int64_t shifted = in;
-
-        if ((rest == 0u)
-            || (units_mul_s64(in, pow2_rat(rest).num, &shifted) == DRDC_OK)) {
-          f = y;
-          in = shifted;
-          st = DRDC_OK;
-        }
+      *a = in;
+      if (((rest == 0u) || (units_mul_s64(in, pow2(rest), a) == DRDC_OK))
+          && (units_rat_scale(f, pow2(k), 1, f) == DRDC_OK)) {
+        in = *a;
+        st = DRDC_OK;
       }
     }
   } else {
-    x.num = 1;
-    x.den = pow2_rat(from_frac - to_frac).num;
-    st = units_rat_mul(&f, &x, &f);
+    st = units_rat_scale(f, 1, pow2(from_frac - to_frac), f);
   }
   if (st != DRDC_OK) {
     return DRDC_E_RANGE;
   }
   *a = in;
-  *factor = f;
   return DRDC_OK;
 }

@@ -542,7 +542,7 @@ int64_t units_number(uint8_t index)
              : units_large[index - UNITS_SMALL_COUNT];
 }
 
-units_rat_t units_offset(const drdc_unit_t *unit)
+int64_t units_offset_part(const drdc_unit_t *unit, unsigned part)
 {
   /* Offsets num / den (the scale's zero in the unit); 0: linear. */
   static const int64_t units_offsets[][2] = {
@@ -550,9 +550,15 @@ units_rat_t units_offset(const drdc_unit_t *unit)
     { 5463, 20 },
     { 45967, 100 },
   };
+
+  return units_offsets[unit->offset][(part != 0u) ? 1 : 0];
+}
+
+units_rat_t units_offset(const drdc_unit_t *unit)
+{
   units_rat_t r;
 
-  r.num = units_offsets[unit->offset][0];
-  r.den = units_offsets[unit->offset][1];
+  r.num = units_offset_part(unit, 0u);
+  r.den = units_offset_part(unit, 1u);
   return r;
 }

@@ -24,31 +24,35 @@ typedef struct units_rat {
 /* The rationals are passed by pointer (no 16-byte copies on the stack);
  * `out` may be `a` or `b`: every part is read before `out` is written. */
 
-/** a x b, exact: cross-cancels before multiplying, so the result is in
- *  lowest terms. DRDC_E_RANGE when a part does not fit int64_t (outputs
- *  unchanged). */
-drdc_status_t units_rat_mul(const units_rat_t *a, const units_rat_t *b,
-                            units_rat_t *out);
+/** a x num / den (den > 0), exact: cross-cancels before multiplying,
+ *  so the result is in lowest terms when a and num / den are; the same
+ *  as a product of two rationals, with the second one passed as its two
+ *  parts (no rational on the caller's stack). DRDC_E_RANGE when a part
+ *  does not fit int64_t (outputs unchanged). */
+drdc_status_t units_rat_scale(const units_rat_t *a, int64_t num,
+                              int64_t den, units_rat_t *out);
 
 /** 1 / a for a != 0 (sign moved to the numerator); DRDC_E_RANGE for
  *  a == 0 or a numerator of INT64_MIN. */
 drdc_status_t units_rat_inv(const units_rat_t *a, units_rat_t *out);
 
-/** a - b, exact; DRDC_E_RANGE when a part does not fit int64_t. */
-drdc_status_t units_rat_sub(const units_rat_t *a, const units_rat_t *b,
-                            units_rat_t *out);
+/** a_num / a_den - b (a_den > 0), exact; DRDC_E_RANGE when a part does
+ *  not fit int64_t. */
+drdc_status_t units_rat_sub(int64_t a_num, int64_t a_den,
+                            const units_rat_t *b, units_rat_t *out);
 
 /** x * y when it fits int64_t; DRDC_E_RANGE otherwise. */
 drdc_status_t units_mul_s64(int64_t x, int64_t y, int64_t *out);
 
 /** Everything of drdc_units_convert() before its one rounding, for
- *  validated arguments: the exact input `*a` and factor A / B such that
- *  the result is round(a x A / B) (core/units/scale.c). DRDC_E_RANGE when
- *  they do not fit 63-bit integers. */
-drdc_status_t units_prepare(int64_t raw, unsigned from_frac,
-                            const drdc_unit_t *from, unsigned to_frac,
-                            const drdc_unit_t *to, int64_t *a,
-                            units_rat_t *factor);
+ *  validated arguments: from the raw input in `*a`, the exact input `*a`
+ *  and factor A / B such that the result is round(a x A / B)
+ *  (core/units/scale.c). DRDC_E_RANGE when they do not fit 63-bit
+ *  integers; `*a` and `*factor` are then undefined (the factor is worked
+ *  on in place, in the caller's frame). */
+drdc_status_t units_prepare(unsigned from_frac, const drdc_unit_t *from,
+                            unsigned to_frac, const drdc_unit_t *to,
+                            int64_t *a, units_rat_t *factor);
 
 /** One unit: indices into the tables of core/units/table.c (generated
  *  by core/units/gen_table.py); its name is the row's string in the
@@ -77,5 +81,9 @@ int64_t units_number(uint8_t index);
 
 /** The unit's offset num / den (0 / 1 for linear units). */
 units_rat_t units_offset(const drdc_unit_t *unit);
+
+/** The numerator (`part` 0) or denominator (`part` 1) of the unit's
+ *  offset, as a value (no rational on the caller's stack). */
+int64_t units_offset_part(const drdc_unit_t *unit, unsigned part);
 
 #endif /* DRDC_UNITS_IMPL_H */

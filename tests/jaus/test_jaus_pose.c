@@ -602,6 +602,30 @@ static void test_drdc_jaus_local_pose_unpack_bad_input(void)
                         unpack_local(msec1000, sizeof msec1000, DRDC_JAUS_FORM_RA3));
 }
 
+/* A local X, Y or Z beyond Q15.16 is the last check of unpacking (the
+ * body is decoded twice since the stack work of issue 8: check, then
+ * store): a later field's decoding error and a bad time stamp come
+ * first, and the body stays as it was. */
+static void test_local_overflow_is_the_last_check(void)
+{
+  /* RA 3.x X = -2^30 (-50 000 m) and roll = -32768 (not an RA 3.x value) */
+  static const uint8_t x_far_bad_roll[] = { 0x11, 0x00, 0x00, 0x00, 0x00, 0xc0,
+                                            0x00, 0x80 };
+  /* AS6009 X = 50 000 m and a stamp of day 0 */
+  static const uint8_t x_far_day0[] = { 0x01, 0x01, 0x00, 0x00, 0x00, 0xc0,
+                                        0x00, 0x00, 0x00, 0x00 };
+  /* the same with a valid stamp: day 1 */
+  static const uint8_t x_far_day1[] = { 0x01, 0x01, 0x00, 0x00, 0x00, 0xc0,
+                                        0x00, 0x00, 0x00, 0x08 };
+
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, unpack_local(x_far_bad_roll, sizeof x_far_bad_roll,
+                                                   DRDC_JAUS_FORM_RA3));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DAY,
+                        unpack_local(x_far_day0, sizeof x_far_day0, DRDC_JAUS_FORM_AS6009));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        unpack_local(x_far_day1, sizeof x_far_day1, DRDC_JAUS_FORM_AS6009));
+}
+
 void suite_jaus_pose(void)
 {
   UnitySetTestFile(__FILE__);
@@ -615,4 +639,5 @@ void suite_jaus_pose(void)
   RUN_TEST(test_drdc_jaus_local_pose_pack_bad_input);
   RUN_TEST(test_drdc_jaus_global_pose_unpack_bad_input);
   RUN_TEST(test_drdc_jaus_local_pose_unpack_bad_input);
+  RUN_TEST(test_local_overflow_is_the_last_check);
 }

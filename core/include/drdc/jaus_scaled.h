@@ -56,7 +56,11 @@
  * decoding), so the encoding of a value mirrored about the RA signed
  * midpoint is the negated integer; older implementations that added 0.5
  * and truncated rounded negative values wrongly. Exact rational
- * intermediate (drdc_fx_muldiv_s64, 128-bit).
+ * intermediate: one factor of the product is the integer span (below
+ * 2^32), so quotient and remainder come exactly from 64-bit arithmetic
+ * (32 steps of Horner's rule), without a 128-bit product or division;
+ * no call but the range lookup (worst-case stack 80 / 104 bytes on
+ * Cortex-M3, 80 / 96 on PowerPC e500, encode / decode).
  *
  * **Round trips**: decode(encode(v)) is within half a ScaleFactor of v;
  * encode(decode(i)) == i exactly whenever the real format resolves the
