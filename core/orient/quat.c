@@ -15,73 +15,9 @@
 
 #include "orient_impl.h"
 
-/* Every part of a and b in (-1.0, 1.0], raw (-2^30, 2^30]: then
- * 2^30 - part is in [0, 2^31) as uint32_t, so one OR of the eight
- * differences tests them all (bit 31 clear). A part of exactly -1.0
- * takes the checked path, with the same result. */
-static int unit_range(const drdc_quat_t *a, const drdc_quat_t *b)
-{
-  const uint32_t one = UINT32_C(1) << 30;
-  uint32_t m = (one - (uint32_t)a->s) | (one - (uint32_t)a->x)
-               | (one - (uint32_t)a->y) | (one - (uint32_t)a->z)
-               | (one - (uint32_t)b->s) | (one - (uint32_t)b->x)
-               | (one - (uint32_t)b->y) | (one - (uint32_t)b->z);
-
-  return (m >> 31u) == 0u;
-}
-
-/* The product of two quaternions whose parts are all in (-1.0, 1.0]
- * (Q1.30 raw (-2^30, 2^30]): every product is <= 2^60 and every sum of
- * four <= 2^62, so the sums are exact without checks, and the negated
- * parts of b cannot overflow. Each part is rounded as
- * drdc_orient_impl_q60_to_q30() does; DRDC_E_OVERFLOW when a part is
- * outside [-2, 2) (possible for |a| |b| > 2). Out of line (noinline), as
- * quat_mul_wide(): drdc_quat_mul() tail-calls one or the other, so the
- * worst-case stack is the larger frame, not their sum. */
-static __attribute__((noinline)) drdc_status_t
-quat_mul_unit(const drdc_quat_t *a, const drdc_quat_t *b, drdc_quat_t *out)
-{
-  const int32_t as = a->s;
-  const int32_t ax = a->x;
-  const int32_t ay = a->y;
-  const int32_t az = a->z;
-  const int32_t bs = b->s;
-  const int32_t bx = b->x;
-  const int32_t by = b->y;
-  const int32_t bz = b->z;
-  const int32_t nbx = -bx;
-  const int32_t nby = -by;
-  const int32_t nbz = -bz;
-  uint32_t ovf = 0u;
-  uint32_t rs;
-  uint32_t rx;
-  uint32_t ry;
-  uint32_t rz;
-
-  rs = orient_q60_round_bits(((int64_t)as * bs) + ((int64_t)ax * nbx)
-                                 + ((int64_t)ay * nby) + ((int64_t)az * nbz),
-                             &ovf);
-  rx = orient_q60_round_bits(((int64_t)as * bx) + ((int64_t)ax * bs)
-                                 + ((int64_t)ay * bz) + ((int64_t)az * nby),
-                             &ovf);
-  ry = orient_q60_round_bits(((int64_t)as * by) + ((int64_t)ax * nbz)
-                                 + ((int64_t)ay * bs) + ((int64_t)az * bx),
-                             &ovf);
-  rz = orient_q60_round_bits(((int64_t)as * bz) + ((int64_t)ax * by)
-                                 + ((int64_t)ay * nbx) + ((int64_t)az * bs),
-                             &ovf);
-  if ((ovf >> 30u) != 0u) {
-    return DRDC_E_OVERFLOW;
-  }
-  out->s = (drdc_q1_30_t)rs;
-  out->x = (drdc_q1_30_t)rx;
-  out->y = (drdc_q1_30_t)ry;
-  out->z = (drdc_q1_30_t)rz;
-  return DRDC_OK;
-}
-
-/* The product for parts beyond (-1, 1]: kept out of line (noinline) so
- * that the common unit case keeps a light frame. */
+/* The product for a part of a beyond (-1, 1]: kept out of line
+ * (noinline) so that the common case keeps a light frame; each sum is
+ * checked for the 2^63 bound by its high words. */
 static __attribute__((noinline)) drdc_status_t
 quat_mul_wide(const drdc_quat_t *a, const drdc_quat_t *b, drdc_quat_t *out)
 {
@@ -109,17 +45,80 @@ quat_mul_wide(const drdc_quat_t *a, const drdc_quat_t *b, drdc_quat_t *out)
   return DRDC_OK;
 }
 
+/* The Q1.30 bits of the exact Q60 sum v (|v| < 2^63), rounded to
+ * nearest, ties away from zero, as orient_q60_round_bits() does, with
+ * its bias 2^29 - [v < 0] added as one 32-bit word (it is 2^29 or
+ * 2^29 - 1, never negative): one carry into the high word instead of a
+ * 64-bit addition and a 64-bit subtraction. Bits 30..31 of *ovf are set
+ * when the rounded value does not fit int32_t. */
+static inline uint32_t round_q60_bits(int64_t v, uint32_t *ovf)
+{
+  uint64_t u = (uint64_t)v;
+  uint32_t bias = UINT32_C(0x20000000) - (uint32_t)(u >> 63u);
+  uint32_t hi;
+
+  u += bias;
+  hi = (uint32_t)(u >> 32u);
+  *ovf |= hi + UINT32_C(0x20000000);
+  return (uint32_t)(u >> 30u);
+}
+
 drdc_status_t drdc_quat_mul(const drdc_quat_t *a, const drdc_quat_t *b,
                             drdc_quat_t *out)
 {
+  const uint32_t one = UINT32_C(1) << 30;
+  int64_t as;
+  int64_t ax;
+  int64_t ay;
+  int64_t az;
+  int32_t bs;
+  int32_t bx;
+  int32_t by;
+  int32_t bz;
+  uint32_t ovf = 0u;
+  uint32_t rs;
+  uint32_t rx;
+  uint32_t ry;
+  uint32_t rz;
+
   if ((a == NULL) || (b == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  if (unit_range(a, b) != 0) {
-    return quat_mul_unit(a, b, out);
+  /* Every part of a in (-1.0, 1.0] (raw (-2^30, 2^30]: 2^30 - part in
+   * [0, 2^31) as uint32_t, bit 31 clear in the OR of the four): every
+   * product with a part of b (any int32) is then within [-2^61, 2^61),
+   * a negated one within (-2^61, 2^61], and each part below has a
+   * negated term whose own product is above -2^61 (it would need a part
+   * of a of -2^30): every sum of four, and every partial sum, is in
+   * (-2^63, 2^63), exact in int64_t without checks. A part of a of
+   * exactly -1.0, or beyond, takes the checked path, with the same
+   * result. */
+  if ((((one - (uint32_t)a->s) | (one - (uint32_t)a->x)
+        | (one - (uint32_t)a->y) | (one - (uint32_t)a->z))
+       >> 31u)
+      != 0u) {
+    return quat_mul_wide(a, b, out);
   }
-  /* Parts up to 2.0 in magnitude: the same exact sums, checked. */
-  return quat_mul_wide(a, b, out);
+  as = a->s;
+  ax = a->x;
+  ay = a->y;
+  az = a->z;
+  bs = b->s;
+  bx = b->x;
+  by = b->y;
+  bz = b->z;
+  rs = round_q60_bits((as * bs) - (ax * bx) - (ay * by) - (az * bz), &ovf);
+  rx = round_q60_bits((as * bx) + (ax * bs) + (ay * bz) - (az * by), &ovf);
+  ry = round_q60_bits((as * by) - (ax * bz) + (ay * bs) + (az * bx), &ovf);
+  rz = round_q60_bits((as * bz) + (ax * by) - (ay * bx) + (az * bs), &ovf);
+  if ((ovf >> 30u) != 0u) {
+    return DRDC_E_OVERFLOW;
+  }
+  out->s = (drdc_q1_30_t)rs;
+  out->x = (drdc_q1_30_t)rx;
+  out->y = (drdc_q1_30_t)ry;
+  out->z = (drdc_q1_30_t)rz;
+  return DRDC_OK;
 }
 
 drdc_status_t drdc_quat_conj(const drdc_quat_t *q, drdc_quat_t *out)
