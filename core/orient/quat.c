@@ -63,50 +63,31 @@ static inline uint32_t round_q60_bits(int64_t v, uint32_t *ovf)
   return (uint32_t)(u >> 30u);
 }
 
-drdc_status_t drdc_quat_mul(const drdc_quat_t *a, const drdc_quat_t *b,
-                            drdc_quat_t *out)
+/* The product when every part of a is in (-1.0, 1.0] (raw (-2^30,
+ * 2^30]): every product with a part of b (any int32) is then within
+ * [-2^61, 2^61), a negated one within (-2^61, 2^61], and each part below
+ * has a negated term whose own product is above -2^61 (it would need a
+ * part of a of -2^30): every sum of four, and every partial sum, is in
+ * (-2^63, 2^63), exact in int64_t without checks. Out of line
+ * (noinline), as quat_mul_wide(): drdc_quat_mul() tail-calls one or the
+ * other, so the worst-case stack is the larger frame, not their sum. */
+static __attribute__((noinline)) drdc_status_t
+quat_mul_unit(const drdc_quat_t *a, const drdc_quat_t *b, drdc_quat_t *out)
 {
-  const uint32_t one = UINT32_C(1) << 30;
-  int64_t as;
-  int64_t ax;
-  int64_t ay;
-  int64_t az;
-  int32_t bs;
-  int32_t bx;
-  int32_t by;
-  int32_t bz;
+  const int64_t as = a->s;
+  const int64_t ax = a->x;
+  const int64_t ay = a->y;
+  const int64_t az = a->z;
+  const int32_t bs = b->s;
+  const int32_t bx = b->x;
+  const int32_t by = b->y;
+  const int32_t bz = b->z;
   uint32_t ovf = 0u;
   uint32_t rs;
   uint32_t rx;
   uint32_t ry;
   uint32_t rz;
 
-  if ((a == NULL) || (b == NULL) || (out == NULL)) {
-    return DRDC_E_NULL;
-  }
-  /* Every part of a in (-1.0, 1.0] (raw (-2^30, 2^30]: 2^30 - part in
-   * [0, 2^31) as uint32_t, bit 31 clear in the OR of the four): every
-   * product with a part of b (any int32) is then within [-2^61, 2^61),
-   * a negated one within (-2^61, 2^61], and each part below has a
-   * negated term whose own product is above -2^61 (it would need a part
-   * of a of -2^30): every sum of four, and every partial sum, is in
-   * (-2^63, 2^63), exact in int64_t without checks. A part of a of
-   * exactly -1.0, or beyond, takes the checked path, with the same
-   * result. */
-  if ((((one - (uint32_t)a->s) | (one - (uint32_t)a->x)
-        | (one - (uint32_t)a->y) | (one - (uint32_t)a->z))
-       >> 31u)
-      != 0u) {
-    return quat_mul_wide(a, b, out);
-  }
-  as = a->s;
-  ax = a->x;
-  ay = a->y;
-  az = a->z;
-  bs = b->s;
-  bx = b->x;
-  by = b->y;
-  bz = b->z;
   rs = round_q60_bits((as * bs) - (ax * bx) - (ay * by) - (az * bz), &ovf);
   rx = round_q60_bits((as * bx) + (ax * bs) + (ay * bz) - (az * by), &ovf);
   ry = round_q60_bits((as * by) - (ax * bz) + (ay * bs) + (az * bx), &ovf);
@@ -119,6 +100,27 @@ drdc_status_t drdc_quat_mul(const drdc_quat_t *a, const drdc_quat_t *b,
   out->y = (drdc_q1_30_t)ry;
   out->z = (drdc_q1_30_t)rz;
   return DRDC_OK;
+}
+
+drdc_status_t drdc_quat_mul(const drdc_quat_t *a, const drdc_quat_t *b,
+                            drdc_quat_t *out)
+{
+  const uint32_t one = UINT32_C(1) << 30;
+
+  if ((a == NULL) || (b == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  /* 2^30 - part in [0, 2^31) as uint32_t for each part of a in (-2^30,
+   * 2^30]: bit 31 clear in the OR of the four. Only a is tested: the
+   * bound of quat_mul_unit() holds for any b. A part of a of exactly
+   * -1.0, or beyond, takes the checked path, with the same result. */
+  if ((((one - (uint32_t)a->s) | (one - (uint32_t)a->x)
+        | (one - (uint32_t)a->y) | (one - (uint32_t)a->z))
+       >> 31u)
+      == 0u) {
+    return quat_mul_unit(a, b, out);
+  }
+  return quat_mul_wide(a, b, out);
 }
 
 drdc_status_t drdc_quat_conj(const drdc_quat_t *q, drdc_quat_t *out)
