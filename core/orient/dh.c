@@ -36,11 +36,11 @@ typedef struct link_trig {
   drdc_q1_30_t ct; /**< cos(theta + q) */
   drdc_q1_30_t sa; /**< sin(alpha) */
   drdc_q1_30_t ca; /**< cos(alpha) */
-  int64_t a;       /**< link length, Q15.16 */
-  int64_t d;       /**< link offset (plus q if prismatic), Q15.16 */
+  int32_t a;       /**< link length, Q15.16 */
+  int32_t d;       /**< link offset (plus q if prismatic), Q15.16 */
 } link_trig_t;
 
-static drdc_status_t link_trig(drdc_dh_convention_t convention,
+static inline __attribute__((always_inline)) drdc_status_t link_trig(drdc_dh_convention_t convention,
                                const drdc_dh_link_t *link, int32_t q,
                                link_trig_t *out)
 {
@@ -63,7 +63,7 @@ static drdc_status_t link_trig(drdc_dh_convention_t convention,
   drdc_fx_sincos_bam32(theta, &out->st, &out->ct);
   drdc_fx_sincos_bam32(link->alpha, &out->sa, &out->ca);
   out->a = link->a;
-  out->d = d;
+  out->d = (int32_t)d;
   return DRDC_OK;
 }
 
@@ -146,9 +146,9 @@ static int64_t link_t(drdc_dh_convention_t convention, const link_trig_t *g,
 
   if (convention == DRDC_DH_STANDARD) {
     if (i == 0u) {
-      v = g->a * g->ct;
+      v = (int64_t)g->a * g->ct;
     } else if (i == 1u) {
-      v = g->a * g->st;
+      v = (int64_t)g->a * g->st;
     } else {
       v = scale30(g->d);
     }
@@ -156,9 +156,9 @@ static int64_t link_t(drdc_dh_convention_t convention, const link_trig_t *g,
     if (i == 0u) {
       v = scale30(g->a);
     } else if (i == 1u) {
-      v = -(g->d * g->sa);
+      v = -((int64_t)g->d * g->sa);
     } else {
-      v = g->d * g->ca;
+      v = (int64_t)g->d * g->ca;
     }
   }
   return v;
@@ -224,18 +224,91 @@ static int64_t mul61(int64_t a, int64_t b)
   return mul_round(a, b, 60u);
 }
 
+/* The chain of drdc_dh_forward() as dh_row() reads it. */
+typedef struct dh_chain {
+  const drdc_dh_link_t *links; /**< the links */
+  const int32_t *q;            /**< their joint variables */
+  unsigned n;                  /**< links to go through */
+  drdc_dh_convention_t convention; /**< standard or modified */
+  drdc_status_t bad;           /**< status of link n's parameters, or OK */
+} dh_chain_t;
+
+/* Row i of the chain's rotation (Q2.61) and translation (Q46) through
+ * links 0..c->n - 1. Row i of each product depends only on row i of the
+ * one before (R' = R R_link, t' = R t_link + t), so each row is carried
+ * through the chain on its own with the link's elements formed on
+ * demand: four int64 of state instead of the whole 3x3 matrix and
+ * translation, and no link element is loop-invariant for GCC to hoist
+ * into the frame. The link's sines and cosines are computed once per
+ * row (three times per link). Out of line (noinline), so that the
+ * caller's result is not in the frame of the deep calls.
+ * Bad parameters of link k: c->n becomes k, c->bad their status, and
+ * that status is returned (nothing written); the rows after stop at k.
+ * Otherwise writes the rounded rotation row to row[0..2] (Q1.30) and,
+ * when no link was bad, the translation to *t (Q15.16).
+ * @retval DRDC_OK written
+ * @retval DRDC_E_OVERFLOW a translation leaves int64 on the way, or
+ *         (no link bad) the final one leaves Q15.16 */
+static inline drdc_status_t
+dh_row(dh_chain_t *c, unsigned i, drdc_q1_30_t row[3], int32_t *t)
+{
+  const int64_t one = orient_pow2_s64(61u);
+  int64_t r0 = (i == 0u) ? one : 0;
+  int64_t r1 = (i == 1u) ? one : 0;
+  int64_t r2 = (i == 2u) ? one : 0;
+  int64_t ti = 0;
+  link_trig_t g;
+  unsigned k;
+  drdc_status_t st;
+
+  for (k = 0u; k < c->n; k++) {
+    const drdc_dh_convention_t cv = c->convention;
+    int64_t n0;
+    int64_t n1;
+    int64_t n2;
+
+    st = link_trig(cv, &c->links[k], c->q[k], &g);
+    if (st != DRDC_OK) {
+      c->n = k;
+      c->bad = st;
+      return st;
+    }
+    /* t += R t_link: Q61 x Q46 / 2^61 -> Q46, correctly rounded each;
+     * |R t_link| <= 1.01 |t_link| <= 2^62. */
+    if (drdc_orient_impl_sum4(mul_round(r0, link_t(cv, &g, 0u), 61u),
+                              mul_round(r1, link_t(cv, &g, 1u), 61u),
+                              mul_round(r2, link_t(cv, &g, 2u), 61u), ti,
+                              &ti)
+        != DRDC_OK) {
+      return DRDC_E_OVERFLOW;
+    }
+    n0 = mul61(r0, link_r(cv, &g, 0u, 0u)) + mul61(r1, link_r(cv, &g, 1u, 0u))
+         + mul61(r2, link_r(cv, &g, 2u, 0u));
+    n1 = mul61(r0, link_r(cv, &g, 0u, 1u)) + mul61(r1, link_r(cv, &g, 1u, 1u))
+         + mul61(r2, link_r(cv, &g, 2u, 1u));
+    n2 = mul61(r0, link_r(cv, &g, 0u, 2u)) + mul61(r1, link_r(cv, &g, 1u, 2u))
+         + mul61(r2, link_r(cv, &g, 2u, 2u));
+    r0 = n0;
+    r1 = n1;
+    r2 = n2;
+  }
+  st = (c->bad == DRDC_OK) ? round30(ti, t) : DRDC_OK;
+  if (st == DRDC_OK) {
+    row[0] = (drdc_q1_30_t)drdc_fx_rshift_round_s64(r0, 31u);
+    row[1] = (drdc_q1_30_t)drdc_fx_rshift_round_s64(r1, 31u);
+    row[2] = (drdc_q1_30_t)drdc_fx_rshift_round_s64(r2, 31u);
+  }
+  return st;
+}
+
 drdc_status_t drdc_dh_forward(drdc_dh_convention_t convention,
                               const drdc_dh_link_t *links, unsigned n,
                               const int32_t *q, drdc_transform_t *out)
 {
-  int64_t r[3][3]; /* the rotation so far, Q2.61 */
-  int64_t t[3];    /* the translation so far, Q46 */
-  link_trig_t g;
-  int32_t tr[3];
-  unsigned k;
-  unsigned i;
-  unsigned j;
-  drdc_status_t st = DRDC_OK;
+  drdc_q1_30_t m[2][3]; /* rows 0 and 1 until the last row succeeds */
+  int32_t t[3];
+  dh_chain_t c;
+  drdc_status_t st;
 
   if ((out == NULL) || ((n > 0u) && ((links == NULL) || (q == NULL)))) {
     return DRDC_E_NULL;
@@ -246,56 +319,42 @@ drdc_status_t drdc_dh_forward(drdc_dh_convention_t convention,
   if ((convention != DRDC_DH_STANDARD) && (convention != DRDC_DH_MODIFIED)) {
     return DRDC_E_RANGE;
   }
-  for (i = 0u; i < 3u; i++) {
-    for (j = 0u; j < 3u; j++) {
-      r[i][j] = (i == j) ? orient_pow2_s64(61u) : 0;
-    }
-    t[i] = 0;
+  c.links = links;
+  c.q = q;
+  c.n = n;
+  c.convention = convention;
+  c.bad = DRDC_OK;
+  /* The statuses of the link-by-link product, in its order: a
+   * translation overflowing at link k, in any row, comes before the bad
+   * parameters of a later link (the first row finds them, the others
+   * stop there), and both before the final range check of the
+   * translation. Every overflow is DRDC_E_OVERFLOW: the first found
+   * decides. */
+  st = dh_row(&c, 0u, m[0], &t[0]);
+  if (st != DRDC_E_OVERFLOW) {
+    st = dh_row(&c, 1u, m[1], &t[1]);
   }
-  for (k = 0u; k < n; k++) {
-    st = link_trig(convention, &links[k], q[k], &g);
-    if (st != DRDC_OK) {
-      return st;
+  if ((st != DRDC_E_OVERFLOW) && (c.bad != DRDC_OK)) {
+    st = dh_row(&c, 2u, m[0], &t[2]); /* its overflow only: m is spent */
+    if (st == DRDC_OK) {
+      st = c.bad;
     }
-    for (i = 0u; i < 3u; i++) {
-      /* t += R t_link: Q61 x Q46 / 2^61 -> Q46, correctly rounded each;
-       * |R t_link| <= 1.01 |t_link| <= 2^62. Row i of the new rotation
-       * needs only row i of the old one: replaced in place after. */
-      int64_t nr[3];
-      int64_t s;
-
-      if (drdc_orient_impl_sum4(
-              mul_round(r[i][0], link_t(convention, &g, 0u), 61u),
-              mul_round(r[i][1], link_t(convention, &g, 1u), 61u),
-              mul_round(r[i][2], link_t(convention, &g, 2u), 61u),
-              t[i], &s)
-          != DRDC_OK) {
-        return DRDC_E_OVERFLOW;
-      }
-      t[i] = s;
-      for (j = 0u; j < 3u; j++) {
-        nr[j] = mul61(r[i][0], link_r(convention, &g, 0u, j))
-                + mul61(r[i][1], link_r(convention, &g, 1u, j))
-                + mul61(r[i][2], link_r(convention, &g, 2u, j));
-      }
-      r[i][0] = nr[0];
-      r[i][1] = nr[1];
-      r[i][2] = nr[2];
-    }
-  }
-  for (i = 0u; (i < 3u) && (st == DRDC_OK); i++) {
-    st = round30(t[i], &tr[i]);
+  } else if (st != DRDC_E_OVERFLOW) {
+    /* No error left but this row's: it writes out only on success. */
+    st = dh_row(&c, 2u, out->r.m[2], &out->t.z);
+  } else {
+    /* overflow: decided */
   }
   if (st != DRDC_OK) {
     return st;
   }
-  for (i = 0u; i < 3u; i++) {
-    for (j = 0u; j < 3u; j++) {
-      out->r.m[i][j] = (drdc_q1_30_t)drdc_fx_rshift_round_s64(r[i][j], 31u);
-    }
-  }
-  out->t.x = tr[0];
-  out->t.y = tr[1];
-  out->t.z = tr[2];
+  out->r.m[0][0] = m[0][0];
+  out->r.m[0][1] = m[0][1];
+  out->r.m[0][2] = m[0][2];
+  out->r.m[1][0] = m[1][0];
+  out->r.m[1][1] = m[1][1];
+  out->r.m[1][2] = m[1][2];
+  out->t.x = t[0];
+  out->t.y = t[1];
   return DRDC_OK;
 }
