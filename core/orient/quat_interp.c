@@ -43,9 +43,10 @@ static int32_t vec_norm(const drdc_quat_t *q)
                                    + orient_square_u64(q->z));
 }
 
-/* [cos(h), sin(h) v / |v|] for a binary angle h and a non-zero vector v
- * of length vn (Q1.30 parts). */
-static void exp_axis(drdc_bam32_t h, const int32_t v[3], int32_t vn,
+/* [cos(h), sin(h) v / |v|] for a binary angle h and the non-zero vector
+ * part v of *vq (its scalar part unused) of length vn (Q1.30 parts); out
+ * may be vq (each part of v is read before its own is written). */
+static void exp_axis(drdc_bam32_t h, const drdc_quat_t *vq, int32_t vn,
                      drdc_quat_t *out)
 {
   drdc_q1_30_t s;
@@ -53,10 +54,10 @@ static void exp_axis(drdc_bam32_t h, const int32_t v[3], int32_t vn,
 
   drdc_fx_sincos_bam32(h, &s, &c);
   /* |v_i| <= vn: each quotient is within [-|s|, |s|]; |s v| <= 2^61 */
+  out->x = (drdc_q1_30_t)orient_muldiv_round64(s, vq->x, vn);
+  out->y = (drdc_q1_30_t)orient_muldiv_round64(s, vq->y, vn);
+  out->z = (drdc_q1_30_t)orient_muldiv_round64(s, vq->z, vn);
   out->s = c;
-  out->x = (drdc_q1_30_t)orient_muldiv_round64(s, v[0], vn);
-  out->y = (drdc_q1_30_t)orient_muldiv_round64(s, v[1], vn);
-  out->z = (drdc_q1_30_t)orient_muldiv_round64(s, v[2], vn);
 }
 
 drdc_status_t drdc_quat_nlerp(const drdc_quat_t *a, const drdc_quat_t *b,
@@ -100,14 +101,14 @@ drdc_status_t drdc_quat_nlerp(const drdc_quat_t *a, const drdc_quat_t *b,
   return drdc_quat_normalize(&r, out);
 }
 
+/* Two quaternions of storage only (na, and nb which then holds the
+ * relative rotation, its power and the product): the frame stays small
+ * under the deep normalisations. */
 static drdc_status_t slerp(const drdc_quat_t *a, const drdc_quat_t *b,
                            drdc_q1_30_t t, int shorter, drdc_quat_t *out)
 {
   drdc_quat_t na;
   drdc_quat_t nb;
-  drdc_quat_t d;
-  drdc_quat_t r;
-  int32_t v[3];
   int32_t vn;
   int flip = 0;
   drdc_bam32_t half;
@@ -124,37 +125,34 @@ static drdc_status_t slerp(const drdc_quat_t *a, const drdc_quat_t *b,
   na.x = -na.x; /* conj(a) */
   na.y = -na.y;
   na.z = -na.z;
-  (void)drdc_quat_mul(&na, &nb, &d); /* unit operands: no overflow */
+  (void)drdc_quat_mul(&na, &nb, &nb); /* d; unit operands: no overflow */
   na.x = -na.x;
   na.y = -na.y;
   na.z = -na.z;
-  if ((shorter != 0) && (d.s < 0)) {
-    negate_unit(&d);
+  if ((shorter != 0) && (nb.s < 0)) {
+    negate_unit(&nb);
   }
-  vn = vec_norm(&d);
+  vn = vec_norm(&nb);
   if (vn == 0) {
     /* no rotation between them (or a half turn of the scalar only) */
-    if (d.s < 0) {
+    if (nb.s < 0) {
       flip = 1;
     }
-    r.s = ORIENT_Q1_30_ONE;
-    r.x = 0;
-    r.y = 0;
-    r.z = 0;
+    nb.s = ORIENT_Q1_30_ONE;
+    nb.x = 0;
+    nb.y = 0;
+    nb.z = 0;
   } else {
-    (void)drdc_fx_atan2_bam32(vn, d.s, &half); /* [0, 2^31] */
+    (void)drdc_fx_atan2_bam32(vn, nb.s, &half); /* [0, 2^31] */
     /* t half: half <= 2^31 as unsigned; the product is <= 2^61 */
     ht = (drdc_bam32_t)drdc_fx_rshift_round_s64((int64_t)half * t, 30u);
-    v[0] = d.x;
-    v[1] = d.y;
-    v[2] = d.z;
-    exp_axis(ht, v, vn, &r);
+    exp_axis(ht, &nb, vn, &nb);
   }
-  (void)drdc_quat_mul(&na, &r, &d);
+  (void)drdc_quat_mul(&na, &nb, &nb);
   if (flip != 0) {
-    negate_unit(&d); /* the scalar-only half turn: a -> -a at t = 1 */
+    negate_unit(&nb); /* the scalar-only half turn: a -> -a at t = 1 */
   }
-  return drdc_quat_normalize(&d, out);
+  return drdc_quat_normalize(&nb, out);
 }
 
 drdc_status_t drdc_quat_slerp(const drdc_quat_t *a, const drdc_quat_t *b,
@@ -169,41 +167,44 @@ drdc_status_t drdc_quat_slerp(const drdc_quat_t *a, const drdc_quat_t *b,
   return slerp(a, b, t, 1, out);
 }
 
-/* log(conj(q1) q) as half-angle times unit axis, in binary-angle units
- * (each part <= 2^30). */
-static drdc_status_t log_rel(const drdc_quat_t *q1n, const drdc_quat_t *q,
-                             int64_t w[3])
+/* log(c q) for c = conj(q1) (unit), as half-angle times unit axis in
+ * binary-angle units (each part <= 2^30) in w->x, w->y, w->z (w->s
+ * unused); w is written only on success. */
+static drdc_status_t log_rel(const drdc_quat_t *c, const drdc_quat_t *q,
+                             drdc_quat_t *w)
 {
-  drdc_quat_t c = *q1n;
-  drdc_quat_t n;
   drdc_quat_t d;
   drdc_bam32_t half;
   int32_t vn;
-  drdc_status_t st = drdc_quat_normalize(q, &n);
+  drdc_status_t st = drdc_quat_normalize(q, &d);
 
   if (st != DRDC_OK) {
     return st;
   }
-  c.x = -c.x;
-  c.y = -c.y;
-  c.z = -c.z;
-  (void)drdc_quat_mul(&c, &n, &d);
+  (void)drdc_quat_mul(c, &d, &d);
   if (d.s < 0) {
     negate_unit(&d);
   }
   vn = vec_norm(&d);
   if (vn == 0) {
-    w[0] = 0;
-    w[1] = 0;
-    w[2] = 0;
+    w->x = 0;
+    w->y = 0;
+    w->z = 0;
     return DRDC_OK;
   }
   (void)drdc_fx_atan2_bam32(vn, d.s, &half); /* [0, 2^30] */
-  /* half <= 2^30, |d| <= 2^30 + a few: products below 2^61 */
-  w[0] = orient_muldiv_round64((int64_t)half, d.x, vn);
-  w[1] = orient_muldiv_round64((int64_t)half, d.y, vn);
-  w[2] = orient_muldiv_round64((int64_t)half, d.z, vn);
+  /* half <= 2^30, |d| <= 2^30 + a few: products below 2^61, quotients
+   * within [-half, half] */
+  w->x = (int32_t)orient_muldiv_round64((int64_t)half, d.x, vn);
+  w->y = (int32_t)orient_muldiv_round64((int64_t)half, d.y, vn);
+  w->z = (int32_t)orient_muldiv_round64((int64_t)half, d.z, vn);
   return DRDC_OK;
+}
+
+/* -(a + b) / 4 rounded, for |a|, |b| <= 2^30 */
+static int32_t quarter_sum(int32_t a, int32_t b)
+{
+  return (int32_t)-drdc_fx_rshift_round_s64((int64_t)a + b, 2u);
 }
 
 drdc_status_t drdc_quat_squad_control(const drdc_quat_t *q0,
@@ -212,33 +213,38 @@ drdc_status_t drdc_quat_squad_control(const drdc_quat_t *q0,
                                       drdc_quat_t *out)
 {
   drdc_quat_t n1;
-  drdc_quat_t e;
-  drdc_quat_t r;
-  int64_t w0[3];
-  int64_t w2[3];
-  int32_t v[3];
-  uint64_t n2 = 0u;
-  unsigned i;
+  drdc_quat_t e; /* log(conj(q1) q0), then w, then exp(w), then q1 exp(w) */
+  uint64_t n2;
   drdc_status_t st;
 
   if ((q0 == NULL) || (q1 == NULL) || (q2 == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
   st = drdc_quat_normalize(q1, &n1);
-  if (st == DRDC_OK) {
-    st = log_rel(&n1, q0, w0);
+  if (st != DRDC_OK) {
+    return st;
   }
+  n1.x = -n1.x; /* conj(q1): unit parts, exact */
+  n1.y = -n1.y;
+  n1.z = -n1.z;
+  /* log(conj(q1) q2) goes to out as scratch: log_rel() writes it only
+   * on success, after reading q2, and nothing can fail after it. */
+  st = log_rel(&n1, q0, &e);
   if (st == DRDC_OK) {
-    st = log_rel(&n1, q2, w2);
+    st = log_rel(&n1, q2, out);
   }
   if (st != DRDC_OK) {
     return st;
   }
+  n1.x = -n1.x;
+  n1.y = -n1.y;
+  n1.z = -n1.z;
   /* w = -(w0 + w2) / 4, each part <= 2^29 binary-angle units */
-  for (i = 0u; i < 3u; i++) {
-    v[i] = (int32_t)-drdc_fx_rshift_round_s64(w0[i] + w2[i], 2u);
-    n2 += orient_square_u64(v[i]);
-  }
+  e.x = quarter_sum(e.x, out->x);
+  e.y = quarter_sum(e.y, out->y);
+  e.z = quarter_sum(e.z, out->z);
+  n2 = orient_square_u64(e.x) + orient_square_u64(e.y)
+       + orient_square_u64(e.z);
   if (n2 == 0u) {
     *out = n1;
     return DRDC_OK;
@@ -246,17 +252,16 @@ drdc_status_t drdc_quat_squad_control(const drdc_quat_t *q0,
   {
     uint64_t ang = drdc_fx_sqrt_u64(n2); /* <= 2^29 sqrt(3) */
 
-    exp_axis((drdc_bam32_t)ang, v, (int32_t)ang, &e);
+    exp_axis((drdc_bam32_t)ang, &e, (int32_t)ang, &e);
   }
-  (void)drdc_quat_mul(&n1, &e, &r);
-  return drdc_quat_normalize(&r, out);
+  (void)drdc_quat_mul(&n1, &e, &e);
+  return drdc_quat_normalize(&e, out);
 }
 
 drdc_status_t drdc_quat_squad(const drdc_quat_t *q1, const drdc_quat_t *q2,
                               const drdc_quat_t *s1, const drdc_quat_t *s2,
                               drdc_q1_30_t t, drdc_quat_t *out)
 {
-  drdc_quat_t a;
   drdc_quat_t b;
   drdc_q1_30_t u;
   drdc_status_t st;
@@ -268,9 +273,14 @@ drdc_status_t drdc_quat_squad(const drdc_quat_t *q1, const drdc_quat_t *q2,
   if (!t_ok(t)) {
     return DRDC_E_RANGE;
   }
-  st = slerp(q1, q2, t, 1, &a);
+  /* The slerp between the control points first, into b; then the one
+   * between the keys into out itself (slerp() writes it only on
+   * success, and reads its inputs before): no second buffer. Either can
+   * fail only with DRDC_E_DOMAIN (a zero quaternion), so the order does
+   * not change the status; out is written only when both succeeded. */
+  st = slerp(s1, s2, t, 0, &b);
   if (st == DRDC_OK) {
-    st = slerp(s1, s2, t, 0, &b);
+    st = slerp(q1, q2, t, 1, out);
   }
   if (st != DRDC_OK) {
     return st;
@@ -278,5 +288,5 @@ drdc_status_t drdc_quat_squad(const drdc_quat_t *q1, const drdc_quat_t *q2,
   /* 2 t (1 - t) in Q1.30: t (2^30 - t) <= 2^58, result <= 2^29 */
   u = (drdc_q1_30_t)drdc_fx_rshift_round_s64(
       (int64_t)t * ((int64_t)ORIENT_Q1_30_ONE - t), 29u);
-  return slerp(&a, &b, u, 0, out);
+  return slerp(out, &b, u, 0, out);
 }
