@@ -241,6 +241,51 @@ static void test_dh_bad_inputs(void)
   TEST_ASSERT_EQUAL_INT32(0, t.t.x);
 }
 
+/* drdc_dh_forward() carries the chain row by row: its statuses must come
+ * in the order of the link-by-link product all the same. Links of d =
+ * 30 000 m along z (alpha = theta = 0): the translation is row 2's. */
+static void test_dh_status_order_row_by_row(void)
+{
+  drdc_transform_t t;
+  drdc_dh_link_t links[8];
+  int32_t q[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
+  unsigned k;
+
+  for (k = 0u; k < 8u; k++) {
+    links[k].a = 0;
+    links[k].alpha = 0u;
+    links[k].d = INT32_C(30000) << 16;
+    links[k].theta = 0u;
+    links[k].type = DRDC_JOINT_REVOLUTE;
+  }
+  t.r.m[2][2] = 99;
+  t.t.z = 99;
+  /* 60 000 m after two links: only the last row's final range check
+   * fails, and it leaves out unchanged */
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        drdc_dh_forward(DRDC_DH_STANDARD, links, 2u, q, &t));
+  TEST_ASSERT_EQUAL_INT32(99, t.r.m[2][2]);
+  TEST_ASSERT_EQUAL_INT32(99, t.t.z);
+  /* a bad joint type at link 2 comes before that final check */
+  links[2].type = (drdc_joint_type_t)3;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
+                        drdc_dh_forward(DRDC_DH_STANDARD, links, 3u, q, &t));
+  TEST_ASSERT_EQUAL_INT32(99, t.t.z);
+  /* 150 000 m at link 4 leaves Q17.46 (131 072 m): that overflow, found
+   * in the last row, comes before the bad type of link 6, found by the
+   * first */
+  links[2].type = DRDC_JOINT_REVOLUTE;
+  links[6].type = (drdc_joint_type_t)3;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        drdc_dh_forward(DRDC_DH_MODIFIED, links, 8u, q, &t));
+  TEST_ASSERT_EQUAL_INT32(99, t.t.z);
+  /* and after the bad type of link 3 it is never reached */
+  links[3].type = (drdc_joint_type_t)3;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
+                        drdc_dh_forward(DRDC_DH_MODIFIED, links, 8u, q, &t));
+  TEST_ASSERT_EQUAL_INT32(99, t.r.m[2][2]);
+}
+
 void suite_orient_transform(void)
 {
   UnitySetTestFile(__FILE__);
@@ -251,4 +296,5 @@ void suite_orient_transform(void)
   RUN_TEST(test_chain_compose_and_invert);
   RUN_TEST(test_global_local_round_trip);
   RUN_TEST(test_dh_bad_inputs);
+  RUN_TEST(test_dh_status_order_row_by_row);
 }

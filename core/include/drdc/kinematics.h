@@ -80,8 +80,10 @@ drdc_status_t drdc_dh_link_transform(drdc_dh_convention_t convention,
  *         joint type
  * @retval DRDC_E_OVERFLOW a translation leaves +-32768 m on the way
  * Method: the product is accumulated with the rotation in Q2.61 and the
- * translation in Q17.46 (int64), each link's elements exact products of
- * its sines and cosines (formed on demand, never stored as a matrix),
+ * translation in Q17.46 (int64), one row at a time (row i of each
+ * product needs only row i of the one before), each link's elements
+ * exact products of its sines and cosines (formed on demand, never
+ * stored as a matrix),
  * every step correctly rounded from the exact 128-bit product (a rounded
  * shift: the divisors are 2^60 and 2^61); the result is rounded once.
  * Accuracy: measured against an independent numpy double model (PUMA 560
