@@ -118,17 +118,15 @@ typedef struct drdc_vec3_q47_16 {
  *         (only possible when |a| |b| >= 2)
  *
  * Scaling: each part is a sum of four exact Q60 products (64-bit; when a
- * part is beyond +-1.0 the sums are checked for overflow), rounded once:
- * correctly rounded, error <= 0.5 LSB. Measured: 0 LSB against exact
- * Python-integer products (55 cases incl. overflow); q * conj(q) of a
- * normalised q is 1 within 2 LSB.
+ * part of a is beyond +-1.0 the sums are checked for overflow), rounded
+ * once: correctly rounded, error <= 0.5 LSB. Measured: 0 LSB against
+ * exact Python-integer products (55 cases incl. overflow); q * conj(q) of
+ * a normalised q is 1 within 2 LSB.
  *
- * Cost (QEMU -icount, 2 048 products of unit quaternions, one-off
- * measurement): 4.4 times the instructions of a hand-written 16
- * multiply-accumulate product with truncating shifts on Cortex-M3 (3.7
- * times on PowerPC e500); the difference is the four calls of
- * drdc_fx_rshift_round_s64() for the rounding. Soft-float double takes
- * 6.4 times as long as this function on Cortex-M3.
+ * Cost (`./waf bench`, docs/performance.md): 1.3 times the cycles of a
+ * hand-written 16 multiply-accumulate product with truncating shifts on
+ * Cortex-M3, 1.9 times on PowerPC e500 (the rounding and the overflow
+ * checks); soft-float double takes about 20 times as long on Cortex-M3.
  *
  * @code
  * drdc_quat_t yaw90 = { 759250125, 0, 0, 759250125 }, r;
