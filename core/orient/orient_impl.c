@@ -118,23 +118,11 @@ drdc_status_t drdc_orient_impl_sum4(int64_t a, int64_t b, int64_t c,
 
 void drdc_orient_impl_half_sincos(drdc_bam32_t a, int64_t *s2, int64_t *c2)
 {
-  /* floor(a / 2) of the signed angle, computed on the unsigned bits: an
-   * arithmetic shift by one that keeps the sign bit. */
-  drdc_bam32_t h = (a >> 1u) | (a & 0x80000000u);
-  drdc_q1_30_t s0;
-  drdc_q1_30_t c0;
-  drdc_q1_30_t s1;
-  drdc_q1_30_t c1;
+  orient_half_t hv;
 
-  drdc_fx_sincos_bam32(h, &s0, &c0);
-  if ((a & 1u) == 0u) {
-    *s2 = (int64_t)s0 * 2;
-    *c2 = (int64_t)c0 * 2;
-  } else {
-    drdc_fx_sincos_bam32(h + 1u, &s1, &c1);
-    *s2 = (int64_t)s0 + s1;
-    *c2 = (int64_t)c0 + c1;
-  }
+  orient_half_sincos_mag(a, &hv);
+  *s2 = (hv.neg != 0u) ? -(int64_t)hv.s : (int64_t)hv.s;
+  *c2 = (int64_t)hv.c;
 }
 
 /* round(mag / 2^(k + 1)) for mag / 2^k < 2^32 (to nearest, ties up:

@@ -18,6 +18,7 @@
 #include <stdint.h>
 
 #include <drdc/fixed_arith.h>
+#include <drdc/fixed_trig.h>
 #include <drdc/orient.h>
 
 /** The least int64_t, spelled without the unsigned constant of the
@@ -365,6 +366,49 @@ static inline int64_t orient_mul_rshift_round(int64_t a, int64_t b,
  * curvature term is below 2^-60).
  */
 void drdc_orient_impl_half_sincos(drdc_bam32_t a, int64_t *s2, int64_t *c2);
+
+/** |v| of an int32_t as uint32_t; exact for INT32_MIN. */
+static inline uint32_t orient_abs32(int32_t v)
+{
+  return (v < 0) ? (0u - (uint32_t)v) : (uint32_t)v;
+}
+
+/** Doubled half-angle sine and cosine as magnitudes (Q1.31 scale,
+ *  <= 2^31) and the sign of the sine; the cosine is never negative. */
+typedef struct orient_half {
+  uint32_t s;   /**< |2 sin(a / 2)|, Q1.31 scale */
+  uint32_t c;   /**< 2 cos(a / 2) >= 0, Q1.31 scale */
+  uint32_t neg; /**< 1 when the sine is negative, else 0 */
+} orient_half_t;
+
+/** The values of drdc_orient_impl_half_sincos() as magnitudes and a sign
+ *  bit (the same bits: s2 = (-1)^neg s, c2 = c), for callers that
+ *  multiply them with 32x32->64 products; inline, so that the three
+ *  angles of drdc_quat_from_euler() pay no call of their own. */
+static inline void orient_half_sincos_mag(drdc_bam32_t a, orient_half_t *out)
+{
+  drdc_bam32_t h = (a >> 1u) | (a & 0x80000000u); /* floor(a / 2), signed */
+  drdc_q1_30_t s0;
+  drdc_q1_30_t c0;
+  drdc_q1_30_t s1;
+  drdc_q1_30_t c1;
+
+  drdc_fx_sincos_bam32(h, &s0, &c0);
+  if ((a & 1u) == 0u) {
+    s1 = s0;
+    c1 = c0;
+  } else {
+    drdc_fx_sincos_bam32(h + 1u, &s1, &c1);
+  }
+  /* c0, c1 >= 0 (the half angle is in [-pi/2, pi/2]): the sum <= 2^31
+   * fits uint32. s0 and s1 never have opposite signs (h < 0 < h + 1 has
+   * no integer h), so the sign is that of either nonzero one and the
+   * magnitude the sum of theirs (|s0|, |s1| <= 2^30). */
+  out->c = (uint32_t)c0 + (uint32_t)c1;
+  out->neg = ((uint32_t)s0 | (uint32_t)s1) >> 31u;
+  out->s = orient_abs32(s0) + orient_abs32(s1);
+}
+
 
 /** atan2 of two int64_t coordinates: both are scaled by the same power
  *  of two (rounded) so that the larger fits in 31 bits with the most
