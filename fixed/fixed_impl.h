@@ -15,6 +15,7 @@
 
 #include <stdint.h>
 
+#include <drdc/fixed_wide.h>
 #include <drdc/status.h>
 
 /** |x| of an int32_t as uint32_t; exact for INT32_MIN (2^31). */
@@ -132,23 +133,13 @@ typedef struct fx_u128 {
   uint64_t lo;
 } fx_u128_t;
 
-/** a * b exactly, from four 32 x 32 -> 64 products. */
+/** a * b exactly, from four 32 x 32 -> 64 products
+ *  (drdc_fx_mul_u64_u128(), as a struct). */
 static inline fx_u128_t fx_mul_u64(uint64_t a, uint64_t b)
 {
-  uint64_t a0 = a & 0xFFFFFFFFu;
-  uint64_t a1 = a >> 32;
-  uint64_t b0 = b & 0xFFFFFFFFu;
-  uint64_t b1 = b >> 32;
-  uint64_t p00 = a0 * b0;
-  uint64_t p01 = a0 * b1;
-  uint64_t p10 = a1 * b0;
-  uint64_t p11 = a1 * b1;
-  /* middle column: at most 3 (2^32 - 1) < 2^34, no overflow */
-  uint64_t mid = (p00 >> 32) + (p01 & 0xFFFFFFFFu) + (p10 & 0xFFFFFFFFu);
   fx_u128_t r;
 
-  r.lo = (mid << 32) | (p00 & 0xFFFFFFFFu);
-  r.hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+  drdc_fx_mul_u64_u128(a, b, &r.hi, &r.lo);
   return r;
 }
 

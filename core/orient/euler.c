@@ -92,7 +92,7 @@ drdc_status_t drdc_quat_from_euler(const drdc_euler_t *e, drdc_quat_t *out)
 static drdc_status_t euler_from_elements(const int64_t p[3][3], int64_t one,
                                          drdc_euler_t *out)
 {
-  uint64_t h = drdc_orient_impl_hypot62(p[0][0], p[1][0]); /* cos(pitch) */
+  uint64_t h = drdc_fx_hypot62(p[0][0], p[1][0]); /* cos(pitch) */
   drdc_euler_t e;
   drdc_status_t st;
 
