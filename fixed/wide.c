@@ -42,7 +42,9 @@ uint32_t drdc_fx_reciprocal_3by2(uint32_t d1, uint32_t d0)
   return v;
 }
 
-uint64_t drdc_fx_div_128_64(uint64_t nh, uint64_t nl, uint64_t x)
+/* the body of drdc_fx_div_128_64(), inline in drdc_fx_hypot62()'s
+ * Newton steps (no call per step) */
+static inline uint64_t div_128_64(uint64_t nh, uint64_t nl, uint64_t x)
 {
   unsigned z = (unsigned)__builtin_clzll(x);
   uint64_t dn = x << z;
@@ -64,6 +66,11 @@ uint64_t drdc_fx_div_128_64(uint64_t nh, uint64_t nl, uint64_t x)
   q0 = drdc_fx_div_3by2((uint32_t)(r >> 32u), (uint32_t)r, (uint32_t)ul, dn,
                         rcp, &r);
   return ((uint64_t)q1 << 32u) | q0;
+}
+
+uint64_t drdc_fx_div_128_64(uint64_t nh, uint64_t nl, uint64_t x)
+{
+  return div_128_64(nh, nl, x);
 }
 
 /* floor(sqrt(t)) for t >= 2^30: integer Newton steps from the tangent of
@@ -127,7 +134,7 @@ uint64_t drdc_fx_hypot62(int64_t x, int64_t y)
    * each stays >= floor(sqrt(N)) and the second is at most 2 above it
    * (sqrt(N) < 2^63). */
   for (i = 0u; i < 2u; i++) {
-    root = (root + drdc_fx_div_128_64(nh, nl, root)) >> 1u;
+    root = (root + div_128_64(nh, nl, root)) >> 1u;
   }
   drdc_fx_mul_u64_u128(root, root, &sh, &sl);
   while ((sh > nh) || ((sh == nh) && (sl > nl))) {
