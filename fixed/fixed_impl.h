@@ -193,8 +193,12 @@ static inline int fx_le_u128(fx_u128_t a, fx_u128_t b)
  * 32-bit quotient words costs two 32x32->64 products
  * (drdc_fx_div_3by2()); no call to libgcc's 64-bit division. The floor
  * quotient and remainder are exact, so the rounding is decided exactly.
+ * Always inline: as a function of its own (GCC made one in hyperbolic.c)
+ * its 64-byte PowerPC frame, stacked on log_parts(), took
+ * drdc_fx_asinh_q5_58() to 272 bytes of stack, over issue 8's 256.
  */
-static inline int fx_div_round_u128(fx_u128_t n, uint64_t d, uint64_t *q)
+static inline __attribute__((always_inline)) int
+fx_div_round_u128(fx_u128_t n, uint64_t d, uint64_t *q)
 {
   unsigned s;
   uint64_t v;
