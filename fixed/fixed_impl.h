@@ -15,6 +15,7 @@
 
 #include <stdint.h>
 
+#include <drdc/fixed_wide.h>
 #include <drdc/status.h>
 
 /** |x| of an int32_t as uint32_t; exact for INT32_MIN (2^31). */
@@ -132,23 +133,13 @@ typedef struct fx_u128 {
   uint64_t lo;
 } fx_u128_t;
 
-/** a * b exactly, from four 32 x 32 -> 64 products. */
+/** a * b exactly, from four 32 x 32 -> 64 products
+ *  (drdc_fx_mul_u64_u128(), as a struct). */
 static inline fx_u128_t fx_mul_u64(uint64_t a, uint64_t b)
 {
-  uint64_t a0 = a & 0xFFFFFFFFu;
-  uint64_t a1 = a >> 32;
-  uint64_t b0 = b & 0xFFFFFFFFu;
-  uint64_t b1 = b >> 32;
-  uint64_t p00 = a0 * b0;
-  uint64_t p01 = a0 * b1;
-  uint64_t p10 = a1 * b0;
-  uint64_t p11 = a1 * b1;
-  /* middle column: at most 3 (2^32 - 1) < 2^34, no overflow */
-  uint64_t mid = (p00 >> 32) + (p01 & 0xFFFFFFFFu) + (p10 & 0xFFFFFFFFu);
   fx_u128_t r;
 
-  r.lo = (mid << 32) | (p00 & 0xFFFFFFFFu);
-  r.hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+  drdc_fx_mul_u64_u128(a, b, &r.hi, &r.lo);
   return r;
 }
 
@@ -196,31 +187,27 @@ static inline int fx_le_u128(fx_u128_t a, fx_u128_t b)
 /**
  * n / d rounded to nearest, ties away from zero, for a 128-bit n and
  * 64-bit d != 0. Returns 0 and writes `*q` when the quotient fits 64 bits,
- * 1 when it does not. Restoring long division, one quotient bit per step:
- * the remainder stays below d, so after the shift it is below 2d < 2^65
- * and the bit shifted out (`carry`) is its 65th bit.
+ * 1 when it does not. Division by the invariant d (fixed_wide.h): d is
+ * normalised so its top bit is set, one 3/2 reciprocal of Moeller and
+ * Granlund is formed from 32/32 hardware divisions, and each of the two
+ * 32-bit quotient words costs two 32x32->64 products
+ * (drdc_fx_div_3by2()); no call to libgcc's 64-bit division. The floor
+ * quotient and remainder are exact, so the rounding is decided exactly.
+ * Always inline: as a function of its own (GCC made one in hyperbolic.c)
+ * its 64-byte PowerPC frame, stacked on log_parts(), took
+ * drdc_fx_asinh_q5_58() to 272 bytes of stack, over issue 8's 256.
  */
-static inline int fx_div_round_u128(fx_u128_t n, uint64_t d, uint64_t *q)
+static inline __attribute__((always_inline)) int
+fx_div_round_u128(fx_u128_t n, uint64_t d, uint64_t *q)
 {
-  /* Knuth's algorithm D with two 32-bit quotient digits (as Hacker's
-   * Delight's divlu): normalise d so its top bit is set, estimate each
-   * digit from the top 64 bits of the remainder divided by the top 32
-   * bits of d, and correct the estimate (at most twice) with the next
-   * digit of d. Two 64/32 divisions instead of 64 shift-and-subtract
-   * steps on 128 bits. */
-  const uint64_t base = UINT64_C(1) << 32;
   unsigned s;
   uint64_t v;
-  uint64_t vn1;
-  uint64_t vn0;
   uint64_t un32;
   uint64_t un10;
-  uint64_t un1;
-  uint64_t un0;
-  uint64_t q1;
-  uint64_t q0;
-  uint64_t rhat;
-  uint64_t un21;
+  uint64_t r;
+  uint32_t rcp;
+  uint32_t q1;
+  uint32_t q0;
   uint64_t rem;
   uint64_t quo;
 
@@ -229,39 +216,20 @@ static inline int fx_div_round_u128(fx_u128_t n, uint64_t d, uint64_t *q)
   }
   s = (unsigned)__builtin_clzll(d); /* d != 0 */
   v = d << s;
-  vn1 = v >> 32;
-  vn0 = v & 0xFFFFFFFFu;
   if (s == 0u) {
     un32 = n.hi;
   } else {
     un32 = (n.hi << s) | (n.lo >> (64u - s));
   }
   un10 = n.lo << s;
-  un1 = un10 >> 32;
-  un0 = un10 & 0xFFFFFFFFu;
-
-  q1 = un32 / vn1;
-  rhat = un32 - (q1 * vn1);
-  while ((q1 >= base) || ((q1 * vn0) > ((rhat << 32) | un1))) {
-    q1--;
-    rhat += vn1;
-    if (rhat >= base) {
-      break;
-    }
-  }
-  un21 = ((un32 << 32) | un1) - (q1 * v); /* < v, exact modulo 2^64 */
-
-  q0 = un21 / vn1;
-  rhat = un21 - (q0 * vn1);
-  while ((q0 >= base) || ((q0 * vn0) > ((rhat << 32) | un0))) {
-    q0--;
-    rhat += vn1;
-    if (rhat >= base) {
-      break;
-    }
-  }
-  rem = (((un21 << 32) | un0) - (q0 * v)) >> s;
-  quo = (q1 << 32) | q0;
+  rcp = drdc_fx_reciprocal_3by2((uint32_t)(v >> 32), (uint32_t)v);
+  /* un32 < v and then r < v: each step's precondition */
+  q1 = drdc_fx_div_3by2((uint32_t)(un32 >> 32), (uint32_t)un32,
+                        (uint32_t)(un10 >> 32), v, rcp, &r);
+  q0 = drdc_fx_div_3by2((uint32_t)(r >> 32), (uint32_t)r, (uint32_t)un10, v,
+                        rcp, &r);
+  rem = r >> s;
+  quo = ((uint64_t)q1 << 32) | q0;
 
   if (rem >= (d - rem)) {
     if (quo == UINT64_MAX) {

@@ -83,11 +83,11 @@ drdc_status_t drdc_dcm_from_quat(const drdc_quat_t *q, drdc_dcm_t *out)
    * nine divisions p 2^30 / n2 (|p| <= n2: quotients within 2^30) */
   z = (unsigned)__builtin_clzll((uint64_t)sq.n2);
   dn = (uint64_t)sq.n2 << z;
-  rcp = drdc_orient_impl_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
+  rcp = drdc_fx_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
   for (i = 0u; i < 3u; i++) {
     drdc_orient_impl_numerator_row(sq.c, i, row);
     for (j = 0u; j < 3u; j++) {
-      uint32_t e = orient_round_div_shifted(row[j], 30u + z, dn, rcp);
+      uint32_t e = drdc_fx_round_div_shifted(row[j], 30u + z, dn, rcp);
 
       out->m[i][j] = (drdc_q1_30_t)e;
     }
@@ -303,7 +303,7 @@ drdc_status_t drdc_dcm_apply_q47_16(const drdc_dcm_t *r,
 
     for (j = 0u; j < 3u; j++) {
       /* |m| <= 2^31, |v| <= 2^55: |t| = |m v| / 2^24 <= 2^62. */
-      t[j] = orient_mul_rshift_round(r->m[i][j], in[j], 30u - GUARD_BITS);
+      t[j] = drdc_fx_mul_rshift_round(r->m[i][j], in[j], 30u - GUARD_BITS);
     }
     /* For |m| <= 1.0 each |t| <= 2^61 and the sum fits; checked anyway
      * for matrices with elements up to 2.0. */

@@ -15,45 +15,75 @@
 
 #include "orient_impl.h"
 
-/* Round a Q62 value to Q1.30. The callers' values are sums of two
- * products of half-angle factors, at most sqrt(2) 2^62 in magnitude (so
- * the result is at most 2^30 sqrt(2) < 2^31: no overflow). */
-static drdc_q1_30_t q62_to_q30(int64_t v)
+/* Every product below is of two uint32 magnitudes (<= 2^31) with the
+ * signs carried beside them: one 32x32->64 multiply each (UMULL,
+ * mullw/mulhwu) instead of a 64x64 product. */
+
+/* round(a b / 2^31) of two magnitudes <= 2^31 (ties up, which is ties
+ * away from zero once the sign is put back): <= 2^31. */
+static inline uint32_t mul_round_q31(uint32_t a, uint32_t b)
 {
-  return (drdc_q1_30_t)drdc_fx_rshift_round_s64(v, 32u);
+  uint64_t p = ((uint64_t)a * b) + (UINT64_C(1) << 30u);
+
+  return (uint32_t)(p >> 31u);
+}
+
+/* (-1)^na (a b + (-1)^nc c d) for magnitudes <= 2^31 (each product
+ * <= 2^62), rounded from Q62 to Q1.30 to nearest, ties away from zero.
+ * The sum is formed modulo 2^64; by Cauchy-Schwarz its magnitude is at
+ * most 2^62 (+ the slop of the Q1.31 roundings), so the modular value is
+ * the exact one. Rounding without a branch, as orient_q60_round_bits():
+ * floor((v + 2^31 - [v < 0]) / 2^32) is the high word of the biased
+ * value, |result| <= 2^30 sqrt(2) < 2^31; the rounding is symmetric, so
+ * the common sign (-1)^na is applied to the rounded word. */
+static inline drdc_q1_30_t part_q30(uint32_t a, uint32_t b, uint32_t na,
+                                    uint32_t c, uint32_t d, uint32_t nc)
+{
+  uint64_t ab = (uint64_t)a * b;
+  uint64_t cd = (uint64_t)c * d;
+  uint64_t v = (nc != 0u) ? (ab - cd) : (ab + cd);
+  uint32_t hi;
+
+  v += (UINT64_C(1) << 31u) - (v >> 63u);
+  hi = (uint32_t)(v >> 32u);
+  if (na != 0u) {
+    hi = 0u - hi;
+  }
+  return (drdc_q1_30_t)hi;
 }
 
 drdc_status_t drdc_quat_from_euler(const drdc_euler_t *e, drdc_quat_t *out)
 {
-  int64_t cy;
-  int64_t sy;
-  int64_t cp;
-  int64_t sp;
-  int64_t cr;
-  int64_t sr;
-  int64_t cc;
-  int64_t ss;
-  int64_t cs;
-  int64_t sc;
+  orient_half_t y;
+  orient_half_t p;
+  orient_half_t r;
+  uint32_t cc;
+  uint32_t ss;
+  uint32_t cs;
+  uint32_t sc;
+  uint32_t nss;
 
   if ((e == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  /* Doubled half-angle sines and cosines: Q1.31 scale, |.| <= 2^31. */
-  drdc_orient_impl_half_sincos(e->yaw, &sy, &cy);
-  drdc_orient_impl_half_sincos(e->pitch, &sp, &cp);
-  drdc_orient_impl_half_sincos(e->roll, &sr, &cr);
-  /* Pair products Q62 (<= 2^62), rounded once to Q1.31 (<= 2^31). */
-  cc = drdc_fx_rshift_round_s64(cy * cp, 31u);
-  ss = drdc_fx_rshift_round_s64(sy * sp, 31u);
-  cs = drdc_fx_rshift_round_s64(cy * sp, 31u);
-  sc = drdc_fx_rshift_round_s64(sy * cp, 31u);
-  /* Each part: a sum of two Q62 products; by Cauchy-Schwarz its
-   * magnitude is <= 2^62 (+ rounding slop), far from 2^63. */
-  out->s = q62_to_q30((cc * cr) + (ss * sr));
-  out->x = q62_to_q30((cc * sr) - (ss * cr));
-  out->y = q62_to_q30((cs * cr) + (sc * sr));
-  out->z = q62_to_q30((sc * cr) - (cs * sr));
+  /* Doubled half-angle sines and cosines: Q1.31 scale, |.| <= 2^31;
+   * the half angle is in [-pi/2, pi/2], so every cosine is >= 0. */
+  orient_half_sincos_mag(e->yaw, &y);
+  orient_half_sincos_mag(e->pitch, &p);
+  orient_half_sincos_mag(e->roll, &r);
+  /* Pair products Q62 (<= 2^62), rounded once to Q1.31 (<= 2^31):
+   * magnitudes here, the signs carried beside them (cc >= 0, ss has
+   * y.neg ^ p.neg, cs has p.neg, sc has y.neg). */
+  cc = mul_round_q31(y.c, p.c);
+  ss = mul_round_q31(y.s, p.s);
+  cs = mul_round_q31(y.c, p.s);
+  sc = mul_round_q31(y.s, p.c);
+  nss = y.neg ^ p.neg;
+  /* Each part: a sum of two Q62 products, rounded once. */
+  out->s = part_q30(cc, r.c, 0u, ss, r.s, nss ^ r.neg);
+  out->x = part_q30(cc, r.s, r.neg, ss, r.c, nss ^ r.neg ^ 1u);
+  out->y = part_q30(cs, r.c, p.neg, sc, r.s, y.neg ^ r.neg ^ p.neg);
+  out->z = part_q30(sc, r.c, y.neg, cs, r.s, p.neg ^ r.neg ^ 1u ^ y.neg);
   return DRDC_OK;
 }
 
@@ -62,7 +92,7 @@ drdc_status_t drdc_quat_from_euler(const drdc_euler_t *e, drdc_quat_t *out)
 static drdc_status_t euler_from_elements(const int64_t p[3][3], int64_t one,
                                          drdc_euler_t *out)
 {
-  uint64_t h = drdc_orient_impl_hypot62(p[0][0], p[1][0]); /* cos(pitch) */
+  uint64_t h = drdc_fx_hypot62(p[0][0], p[1][0]); /* cos(pitch) */
   drdc_euler_t e;
   drdc_status_t st;
 

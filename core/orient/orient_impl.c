@@ -8,35 +8,11 @@
 
 #include <stddef.h>
 
-#include <drdc/fixed_sqrt.h>
 #include <drdc/fixed_trig.h>
-
-static uint32_t abs32(int32_t x)
-{
-  return (x < 0) ? (0u - (uint32_t)x) : (uint32_t)x;
-}
 
 static uint64_t abs64(int64_t x)
 {
   return (x < 0) ? (UINT64_C(0) - (uint64_t)x) : (uint64_t)x;
-}
-
-unsigned drdc_orient_impl_headroom(uint64_t v, unsigned limit)
-{
-  uint64_t w = v;
-  unsigned top;
-  unsigned s = 0u;
-
-  if ((v == 0u) || (limit == 0u) || (limit > 64u)) {
-    return 0u;
-  }
-  top = limit - 1u;
-  /* w < 2^(limit - 1): one more doubling still stays below 2^limit */
-  while (((w >> top) == 0u) && (s < limit)) {
-    w <<= 1u;
-    s++;
-  }
-  return s;
 }
 
 /* v 2^n for |v| 2^n <= 2^30, shifted as unsigned (no shift of a signed
@@ -55,14 +31,14 @@ drdc_status_t drdc_orient_impl_scale(const drdc_quat_t *q,
   const int32_t x = q->x;
   const int32_t y = q->y;
   const int32_t z = q->z;
-  uint32_t m = abs32(s);
-  uint32_t a = abs32(x);
+  uint32_t m = orient_abs32(s);
+  uint32_t a = orient_abs32(x);
   unsigned shift;
 
   m = (a > m) ? a : m;
-  a = abs32(y);
+  a = orient_abs32(y);
   m = (a > m) ? a : m;
-  a = abs32(z);
+  a = orient_abs32(z);
   m = (a > m) ? a : m;
   if (m == 0u) {
     return DRDC_E_DOMAIN;
@@ -118,23 +94,11 @@ drdc_status_t drdc_orient_impl_sum4(int64_t a, int64_t b, int64_t c,
 
 void drdc_orient_impl_half_sincos(drdc_bam32_t a, int64_t *s2, int64_t *c2)
 {
-  /* floor(a / 2) of the signed angle, computed on the unsigned bits: an
-   * arithmetic shift by one that keeps the sign bit. */
-  drdc_bam32_t h = (a >> 1u) | (a & 0x80000000u);
-  drdc_q1_30_t s0;
-  drdc_q1_30_t c0;
-  drdc_q1_30_t s1;
-  drdc_q1_30_t c1;
+  orient_half_t hv;
 
-  drdc_fx_sincos_bam32(h, &s0, &c0);
-  if ((a & 1u) == 0u) {
-    *s2 = (int64_t)s0 * 2;
-    *c2 = (int64_t)c0 * 2;
-  } else {
-    drdc_fx_sincos_bam32(h + 1u, &s1, &c1);
-    *s2 = (int64_t)s0 + s1;
-    *c2 = (int64_t)c0 + c1;
-  }
+  orient_half_sincos_mag(a, &hv);
+  *s2 = (hv.neg != 0u) ? -(int64_t)hv.s : (int64_t)hv.s;
+  *c2 = (int64_t)hv.c;
 }
 
 /* round(mag / 2^(k + 1)) for mag / 2^k < 2^32 (to nearest, ties up:
@@ -181,138 +145,6 @@ drdc_status_t drdc_orient_impl_atan2_s64(int64_t y, int64_t x,
     xs = halve_round(mx, k, (x < 0) ? 1 : 0);
   }
   return drdc_fx_atan2_bam32(ys, xs, out);
-}
-
-/* floor(N / x) for N = nh 2^64 + nl and a divisor x with N < x 2^64
- * (so that the quotient fits 64 bits): two quotient words of
- * orient_div_3by2() with the reciprocal of x normalised. */
-static uint64_t div_128_64(uint64_t nh, uint64_t nl, uint64_t x)
-{
-  unsigned z = (unsigned)__builtin_clzll(x);
-  uint64_t dn = x << z;
-  uint32_t rcp =
-      drdc_orient_impl_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
-  uint64_t uh = nh;
-  uint64_t ul = nl;
-  uint64_t r;
-  uint32_t q1;
-  uint32_t q0;
-
-  if (z != 0u) {
-    unsigned zr = 64u - z;
-
-    uh = (nh << z) | (nl >> zr); /* N 2^z < x 2^z 2^64 < 2^128 */
-    ul = nl << z;
-  }
-  q1 = orient_div_3by2((uint32_t)(uh >> 32u), (uint32_t)uh,
-                       (uint32_t)(ul >> 32u), dn, rcp, &r);
-  q0 = orient_div_3by2((uint32_t)(r >> 32u), (uint32_t)r, (uint32_t)ul, dn,
-                       rcp, &r);
-  return ((uint64_t)q1 << 32u) | q0;
-}
-
-/* floor(sqrt(t)) for t >= 2^30: integer Newton steps from the tangent of
- * sqrt at 2^30, (t >> 16) + 2^14, which lies above the root; the steps
- * decrease to the floor of the root and stop there. */
-static uint32_t isqrt32_big(uint32_t t)
-{
-  uint32_t g = (t >> 16u) + 16384u;
-  uint32_t n = (g + (t / g)) >> 1u;
-
-  while (n < g) {
-    g = n;
-    n = (g + (t / g)) >> 1u;
-  }
-  return g;
-}
-
-uint64_t drdc_orient_impl_hypot62(int64_t x, int64_t y)
-{
-  uint64_t ax = abs64(x);
-  uint64_t ay = abs64(y);
-  uint64_t xh;
-  uint64_t xl;
-  uint64_t yh;
-  uint64_t yl;
-  uint64_t nh;
-  uint64_t nl;
-  uint64_t sh;
-  uint64_t sl;
-  uint64_t root;
-  unsigned len;
-  unsigned e;
-  unsigned i;
-  uint32_t t;
-
-  orient_mul_u64(ax, ax, &xh, &xl);
-  orient_mul_u64(ay, ay, &yh, &yl);
-  nl = xl + yl;
-  nh = xh + yh + ((nl < xl) ? 1u : 0u); /* N = x^2 + y^2 <= 2^125 */
-  if (nh == 0u) {
-    return drdc_fx_sqrt_u64(nl); /* the same rounding */
-  }
-  /* t = N / 2^e in [2^30, 2^32) with e even; then (isqrt(t) + 1) 2^(e/2)
-   * is above sqrt(N) by a relative 2^-15 at most */
-  len = 128u - (unsigned)__builtin_clzll(nh); /* 65..126 */
-  e = (len - 31u) & ~1u;
-  if (e >= 64u) {
-    unsigned sr = e - 64u;
-
-    t = (uint32_t)(nh >> sr);
-  } else {
-    unsigned sl64 = 64u - e;
-    uint64_t w = (nh << sl64) | (nl >> e);
-
-    t = (uint32_t)w;
-  }
-  root = (uint64_t)isqrt32_big(t) + 1u;
-  e /= 2u;
-  root <<= e;
-  /* Two Newton steps from above: relative errors 2^-15, 2^-31, 2^-63;
-   * each stays >= floor(sqrt(N)) and the second is at most 2 above it
-   * (sqrt(N) < 2^63). */
-  for (i = 0u; i < 2u; i++) {
-    root = (root + div_128_64(nh, nl, root)) >> 1u;
-  }
-  orient_mul_u64(root, root, &sh, &sl);
-  while ((sh > nh) || ((sh == nh) && (sl > nl))) {
-    root--;
-    orient_mul_u64(root, root, &sh, &sl);
-  }
-  /* remainder N - root^2 (< 2^65): up when it exceeds root */
-  sh = (nh - sh) - ((nl < sl) ? 1u : 0u);
-  sl = nl - sl;
-  return ((sh != 0u) || (sl > root)) ? (root + 1u) : root;
-}
-
-uint32_t drdc_orient_impl_reciprocal_3by2(uint32_t d1, uint32_t d0)
-{
-  uint32_t v = orient_reciprocal_word(d1);
-  uint32_t p = d1 * v;
-  uint64_t t;
-  uint32_t t1;
-  uint32_t t0;
-
-  p += d0;
-  if (p < d0) {
-    v--;
-    if (p >= d1) {
-      v--;
-      p -= d1;
-    }
-    p -= d1;
-  }
-  t = (uint64_t)v * d0;
-  t1 = (uint32_t)(t >> 32u);
-  t0 = (uint32_t)t;
-  p += t1;
-  if (p < t1) {
-    v--;
-    if ((p > d1) || ((p == d1) && (t0 >= d0))) {
-      v--;
-    }
-  }
-  return v;
 }
 
 void drdc_orient_impl_numerator_row(const int32_t c[4], unsigned i,

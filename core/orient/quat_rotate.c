@@ -20,7 +20,7 @@
 /*
  * out_i = sum_j p_ij v_j / n2 with the exact Q60 numerators p of the
  * rotation (|p| <= n2): each term p v 2^6 / n2 is correctly rounded
- * (orient_round_div_128(): 128-bit product, one reciprocal of n2 for the
+ * (drdc_fx_round_div_128(): 128-bit product, one reciprocal of n2 for the
  * nine divisions), |term| <= 2^61, the sum of three fits int64 and is
  * rounded once more. Error <= 0.5 + 3 / 128 LSB against the exact
  * rotation of q / |q|: the matrix is never rounded. One row of p at a
@@ -43,13 +43,13 @@ static drdc_status_t rotate(const drdc_quat_t *q, const int64_t in[3],
   }
   z = (unsigned)__builtin_clzll((uint64_t)sq.n2);
   dn = (uint64_t)sq.n2 << z;
-  rcp = drdc_orient_impl_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
+  rcp = drdc_fx_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
   for (i = 0u; i < 3u; i++) {
     int64_t s = 0;
 
     drdc_orient_impl_numerator_row(sq.c, i, row);
     for (j = 0u; j < 3u; j++) {
-      s += orient_round_div_128(row[j], in[j] * orient_pow2_s64(GUARD_BITS),
+      s += drdc_fx_round_div_128(row[j], in[j] * orient_pow2_s64(GUARD_BITS),
                                 dn, z, rcp);
     }
     res[i] = drdc_fx_rshift_round_s64(s, GUARD_BITS);
@@ -85,7 +85,7 @@ static inline int64_t rotate_term(int64_t p, int32_t v, uint64_t *lo)
  * A row of p has the length n2 (R(q) is orthogonal) and |v| <= sqrt(3)
  * 2^31 < 2^32, so |S| < n2 2^32: |S| 2^z (z = 1..5, the normalisation of
  * n2) fits three words u2 u1 u0 with u2 2^32 + u1 < dn = n2 2^z, and one
- * quotient word of orient_div_3by2() is the whole quotient. The remainder
+ * quotient word of drdc_fx_div_3by2() is the whole quotient. The remainder
  * rounds it to nearest, ties away from zero.
  * Returns 0, or 1 when the part is outside int32_t.
  */
@@ -125,7 +125,7 @@ static int rotate_part_q15_16(const int64_t p[3], const int32_t v[3],
   u2 = (w1 << z) | (w0 >> (32u - z));
   u1 = (w0 << z) | (mag_lo >> (32u - z));
   u0 = mag_lo << z;
-  quo = orient_div_3by2(u2, u1, u0, dn, rcp, &r);
+  quo = drdc_fx_div_3by2(u2, u1, u0, dn, rcp, &r);
   if (r >= (dn - r)) {
     quo++; /* remainder >= half of the divisor: away from zero */
   }
@@ -167,7 +167,7 @@ drdc_status_t drdc_quat_rotate_q15_16(const drdc_quat_t *q,
   /* n2 in [2^58, 2^62]: normalised by z = 1..5 so that bit 63 is set */
   z = (unsigned)__builtin_clzll((uint64_t)sq.n2);
   dn = (uint64_t)sq.n2 << z;
-  rcp = drdc_orient_impl_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
+  rcp = drdc_fx_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
   for (i = 0u; i < 3u; i++) {
     drdc_orient_impl_numerator_row(sq.c, i, row);
     if (rotate_part_q15_16(row, in, dn, z, rcp, &res[i]) != 0) {

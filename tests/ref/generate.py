@@ -28,6 +28,7 @@ GENERATORS = [
     "gen_fixed_trig",
     "gen_fixed_hyper",
     "gen_fixed_q5_58",
+    "gen_fixed_wide",
     "gen_fixed_tables",
     "gen_orient_quat",
     "gen_orient_dh",
