@@ -162,4 +162,28 @@ int64_t geo_ups_angle(drdc_q47_16_t v);
 drdc_status_t geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,
                               int32_t prec, char *text, size_t size);
 
+/** UPS angle -> metres in Q28.36 (2^-36 m, rounded); geo_ups_metres() is
+ *  its rounding to Q47.16. */
+int64_t geo_ups_q36(int64_t a);
+
+/**
+ * drdc_geo_to_utm() with easting and northing in Q28.36 metres (2^-36 m,
+ * int64_t in the drdc_geo_utm_t fields): the false origin plus the
+ * projection's offset before its rounding to Q47.16. Same checks,
+ * statuses and convergence and scale; drdc_geo_to_utm() rounds the
+ * offsets of this result, so its Q47.16 are the rounding of these.
+ */
+drdc_status_t geo_to_utm_q36(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
+                             drdc_geo_utm_t *out, drdc_nas_t *convergence,
+                             drdc_q5_58_t *scale);
+
+/**
+ * geo_mgrs_format() of a position whose easting and northing carry
+ * frac_bits fraction bits (16: Q47.16; 36: geo_to_utm_q36()): the digits
+ * truncate that value.
+ */
+drdc_status_t geo_mgrs_format_bits(const drdc_geo_utm_t *u, unsigned frac_bits,
+                                   drdc_nas_t lat, int32_t prec, char *text,
+                                   size_t size);
+
 #endif /* DRDC_GEO_IMPL_H */

@@ -39,6 +39,9 @@
 #define UPS_SOUTH_MAX M(3300000)
 #define UPS_FALSE_ORIGIN M(2000000)
 
+/* Q47.16 metres -> Q28.36 (exact for the false origins used here). */
+#define Q36_FROM_Q16(v) ((v) * INT64_C(1048576))
+
 /* 2^62, the divisor that takes k0 A (Q40) times an angle (Q58) to Q36. */
 #define TWO_POW_62 INT64_C(4611686018427387904)
 
@@ -113,11 +116,18 @@ static drdc_nas_t central_meridian(int32_t zone)
   return ((6 * (int64_t)zone) - 183) * GEO_NAS_DEG;
 }
 
-/* an angle on the sphere of radius k0 A (Q5.58) -> metres (Q47.16) */
+/* an angle on the sphere of radius k0 A (Q5.58) -> metres (Q28.36,
+ * rounded: 2^-36 m = 15 pm, far below the series' own error) */
+static int64_t q36_from_angle(int64_t a)
+{
+  return geo_muldiv(a, GEO_K0A_Q40, TWO_POW_62);
+}
+
+/* an angle on the sphere of radius k0 A (Q5.58) -> metres (Q47.16): the
+ * Q28.36 metres rounded */
 static drdc_q47_16_t metres_from_angle(int64_t a)
 {
-  return drdc_fx_rshift_round_s64(geo_muldiv(a, GEO_K0A_Q40, TWO_POW_62),
-                                  20u);
+  return drdc_fx_rshift_round_s64(q36_from_angle(a), 20u);
 }
 
 /* metres (Q47.16, |v| < 2^43) -> angle on the sphere of radius k0 A */
@@ -178,7 +188,7 @@ static bool ups_in_range(bool north, drdc_q47_16_t v)
                : ((v >= UPS_SOUTH_MIN) && (v <= UPS_SOUTH_MAX));
 }
 
-/* UPS forward; tm is the caller's scratch (x, y, gamma, k in its xi,
+/* UPS forward, easting and northing in Q28.36; tm is the caller's scratch (x, y, gamma, k in its xi,
  * eta, gamma, k), so the UTM and UPS branches of drdc_geo_to_utm() share
  * one struct on the stack */
 static drdc_status_t ups_forward(drdc_nas_t lat, drdc_nas_t lon,
@@ -195,15 +205,18 @@ static drdc_status_t ups_forward(drdc_nas_t lat, drdc_nas_t lon,
                       &tm->eta, &tm->gamma, &tm->k) == 0) {
     return DRDC_E_RANGE;
   }
-  e = UPS_FALSE_ORIGIN + geo_ups_metres(tm->xi);
-  n = UPS_FALSE_ORIGIN + geo_ups_metres(tm->eta);
+  /* Q28.36 offsets in tm's slots; the Q47.16 metres for the checks */
+  tm->xi = geo_ups_q36(tm->xi);
+  tm->eta = geo_ups_q36(tm->eta);
+  e = UPS_FALSE_ORIGIN + drdc_fx_rshift_round_s64(tm->xi, 20u);
+  n = UPS_FALSE_ORIGIN + drdc_fx_rshift_round_s64(tm->eta, 20u);
   if (!ups_in_range(north, e) || !ups_in_range(north, n)) {
     return DRDC_E_RANGE;
   }
   out->zone = DRDC_GEO_ZONE_UPS;
   out->north = north;
-  out->easting = e;
-  out->northing = n;
+  out->easting = Q36_FROM_Q16(UPS_FALSE_ORIGIN) + tm->xi;
+  out->northing = Q36_FROM_Q16(UPS_FALSE_ORIGIN) + tm->eta;
   if (convergence != NULL) {
     *convergence = geo_nas_from_rad(tm->gamma);
   }
@@ -249,9 +262,9 @@ static drdc_status_t ups_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat,
   return DRDC_OK;
 }
 
-drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
-                              drdc_geo_utm_t *out, drdc_nas_t *convergence,
-                              drdc_q5_58_t *scale)
+drdc_status_t geo_to_utm_q36(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
+                             drdc_geo_utm_t *out, drdc_nas_t *convergence,
+                             drdc_q5_58_t *scale)
 {
   drdc_status_t st;
   int32_t z = zone;
@@ -280,8 +293,13 @@ drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
   if (st != DRDC_OK) {
     return st;
   }
-  e = UTM_FALSE_EASTING + metres_from_angle(tm.eta);
-  n = metres_from_angle(tm.xi);
+  /* the offsets in Q28.36 (in tm's own slots), and the Q47.16 metres of
+   * drdc_geo_to_utm() for the range checks: each offset rounded on its
+   * own, then the false origin added, as q16_from_q36() does */
+  tm.eta = q36_from_angle(tm.eta);
+  tm.xi = q36_from_angle(tm.xi);
+  e = UTM_FALSE_EASTING + drdc_fx_rshift_round_s64(tm.eta, 20u);
+  n = drdc_fx_rshift_round_s64(tm.xi, 20u);
   if (!north) {
     n = n + UTM_FALSE_NORTHING_SOUTH;
   }
@@ -294,8 +312,9 @@ drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
   }
   out->zone = z;
   out->north = north;
-  out->easting = e;
-  out->northing = n;
+  out->easting = Q36_FROM_Q16(UTM_FALSE_EASTING) + tm.eta;
+  out->northing = north ? tm.xi
+                        : (Q36_FROM_Q16(UTM_FALSE_NORTHING_SOUTH) + tm.xi);
   if (convergence != NULL) {
     *convergence = geo_nas_from_rad(tm.gamma);
   }
@@ -303,6 +322,36 @@ drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
     *scale = tm.k;
   }
   return DRDC_OK;
+}
+
+/* Q47.16 metres of a Q28.36 coordinate v whose false origin is origin
+ * (Q47.16): the offset from the origin rounded, then the origin added,
+ * the bits drdc_geo_to_utm() has always returned (a tie of a negative
+ * offset rounds away from zero, which the rounding of the sum would
+ * not) */
+static drdc_q47_16_t q16_from_q36(int64_t v, drdc_q47_16_t origin)
+{
+  return origin + drdc_fx_rshift_round_s64(v - Q36_FROM_Q16(origin), 20u);
+}
+
+drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
+                              drdc_geo_utm_t *out, drdc_nas_t *convergence,
+                              drdc_q5_58_t *scale)
+{
+  drdc_status_t st = geo_to_utm_q36(lat, lon, zone, out, convergence, scale);
+
+  if (st == DRDC_OK) {
+    if (out->zone == DRDC_GEO_ZONE_UPS) {
+      out->easting = q16_from_q36(out->easting, UPS_FALSE_ORIGIN);
+      out->northing = q16_from_q36(out->northing, UPS_FALSE_ORIGIN);
+    } else {
+      out->easting = q16_from_q36(out->easting, UTM_FALSE_EASTING);
+      out->northing = q16_from_q36(out->northing,
+                                   out->north ? 0
+                                              : UTM_FALSE_NORTHING_SOUTH);
+    }
+  }
+  return st;
 }
 
 drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
