@@ -166,20 +166,26 @@ drdc_status_t geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,
  *  its rounding to Q47.16. */
 int64_t geo_ups_q36(int64_t a);
 
+/** Added to a zone code of drdc_geo_to_utm() (-1..60): geo_utm_forward()
+ *  returns easting and northing in Q28.36 metres. */
+#define GEO_ZONE_Q36 ((int32_t)256)
+
 /**
- * drdc_geo_to_utm() with easting and northing in Q28.36 metres (2^-36 m,
- * int64_t in the drdc_geo_utm_t fields): the false origin plus the
- * projection's offset before its rounding to Q47.16. Same checks,
- * statuses and convergence and scale; drdc_geo_to_utm() rounds the
- * offsets of this result, so its Q47.16 are the rounding of these.
+ * drdc_geo_to_utm(), which passes its arguments on to this; with zone
+ * plus GEO_ZONE_Q36 the easting and northing are in Q28.36 metres
+ * (2^-36 m, int64_t in the drdc_geo_utm_t fields): the false origin plus
+ * the projection's offset before its rounding to Q47.16. Same checks,
+ * statuses, convergence and scale; the Q47.16 result is the offset from
+ * the false origin rounded to nearest.
  */
-drdc_status_t geo_to_utm_q36(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
-                             drdc_geo_utm_t *out, drdc_nas_t *convergence,
-                             drdc_q5_58_t *scale);
+drdc_status_t geo_utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
+                              drdc_geo_utm_t *out, drdc_nas_t *convergence,
+                              drdc_q5_58_t *scale);
 
 /**
  * geo_mgrs_format() of a position whose easting and northing carry
- * frac_bits fraction bits (16: Q47.16; 36: geo_to_utm_q36()): the digits
+ * frac_bits fraction bits (16: Q47.16; 36: geo_utm_forward() with
+ * GEO_ZONE_Q36): the digits
  * truncate that value.
  */
 drdc_status_t geo_mgrs_format_bits(const drdc_geo_utm_t *u, unsigned frac_bits,

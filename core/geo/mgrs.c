@@ -10,7 +10,7 @@
  * by zone modulo 3, rows A-V (I and O skipped) shifted by 5 in even zones;
  * UPS columns and rows from their own sets per polar half. Coordinates
  * are whole micrometres, truncated: of the Q28.36 metres of
- * geo_to_utm_q36() (encode from geographic) or of the Q47.16 input
+ * geo_utm_forward() (encode from geographic) or of the Q47.16 input
  * (from UTM).
  */
 #include <drdc/geo_mgrs.h>
@@ -214,7 +214,8 @@ drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
   /* the easting and northing before their rounding to Q47.16 (2^-36 m,
    * within about 0.1 nm of the series' value), so the truncation falls
    * on the side of the digit boundary GeographicLib's value falls */
-  st = geo_to_utm_q36(lat, lon, DRDC_GEO_ZONE_STANDARD, &u, NULL, NULL);
+  st = geo_utm_forward(lat, lon, DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, &u,
+                       NULL, NULL);
   if (st != DRDC_OK) {
     return st;
   }

@@ -42,6 +42,9 @@
 /* Q47.16 metres -> Q28.36 (exact for the false origins used here). */
 #define Q36_FROM_Q16(v) ((v) * INT64_C(1048576))
 
+/* Every zone code from here up asks geo_utm_forward() for Q28.36. */
+#define ZONE_FINE_MIN (GEO_ZONE_Q36 + DRDC_GEO_ZONE_STANDARD)
+
 /* 2^62, the divisor that takes k0 A (Q40) times an angle (Q58) to Q36. */
 #define TWO_POW_62 INT64_C(4611686018427387904)
 
@@ -188,10 +191,10 @@ static bool ups_in_range(bool north, drdc_q47_16_t v)
                : ((v >= UPS_SOUTH_MIN) && (v <= UPS_SOUTH_MAX));
 }
 
-/* UPS forward, easting and northing in Q28.36; tm is the caller's scratch (x, y, gamma, k in its xi,
- * eta, gamma, k), so the UTM and UPS branches of drdc_geo_to_utm() share
- * one struct on the stack */
-static drdc_status_t ups_forward(drdc_nas_t lat, drdc_nas_t lon,
+/* UPS forward, easting and northing in Q47.16 or (fine) Q28.36; tm is
+ * the caller's scratch (x, y, gamma, k in its xi, eta, gamma, k), so the
+ * UTM and UPS branches of geo_utm_forward() share one struct on the stack */
+static drdc_status_t ups_forward(drdc_nas_t lat, drdc_nas_t lon, bool fine,
                                  drdc_geo_utm_t *out,
                                  drdc_nas_t *convergence,
                                  drdc_q5_58_t *scale, geo_tm_t *tm)
@@ -215,8 +218,8 @@ static drdc_status_t ups_forward(drdc_nas_t lat, drdc_nas_t lon,
   }
   out->zone = DRDC_GEO_ZONE_UPS;
   out->north = north;
-  out->easting = Q36_FROM_Q16(UPS_FALSE_ORIGIN) + tm->xi;
-  out->northing = Q36_FROM_Q16(UPS_FALSE_ORIGIN) + tm->eta;
+  out->easting = fine ? (Q36_FROM_Q16(UPS_FALSE_ORIGIN) + tm->xi) : e;
+  out->northing = fine ? (Q36_FROM_Q16(UPS_FALSE_ORIGIN) + tm->eta) : n;
   if (convergence != NULL) {
     *convergence = geo_nas_from_rad(tm->gamma);
   }
@@ -262,12 +265,18 @@ static drdc_status_t ups_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat,
   return DRDC_OK;
 }
 
-drdc_status_t geo_to_utm_q36(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
-                             drdc_geo_utm_t *out, drdc_nas_t *convergence,
-                             drdc_q5_58_t *scale)
+/* drdc_geo_to_utm() and its Q28.36 form for MGRS in one (geo_impl.h):
+ * zone is a zone code of drdc_geo_to_utm(), plus GEO_ZONE_Q36 for the
+ * Q28.36 result. drdc_geo_to_utm() passes its arguments on (a sibling
+ * call, no frame of its own at run time) and MGRS calls this directly, so
+ * neither stack grows. */
+drdc_status_t geo_utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
+                              drdc_geo_utm_t *out, drdc_nas_t *convergence,
+                              drdc_q5_58_t *scale)
 {
   drdc_status_t st;
-  int32_t z = zone;
+  int32_t fine = (zone >= ZONE_FINE_MIN) ? GEO_ZONE_Q36 : 0;
+  int32_t z = zone - fine;
   bool north = (lat >= 0);
   geo_tm_t tm;
   drdc_q47_16_t e;
@@ -280,28 +289,32 @@ drdc_status_t geo_to_utm_q36(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
   if (st != DRDC_OK) {
     return st;
   }
-  if (zone == DRDC_GEO_ZONE_STANDARD) {
+  if (z == DRDC_GEO_ZONE_STANDARD) {
     z = standard_zone(lat, lon);
   }
   if ((z < DRDC_GEO_ZONE_UPS) || (z > DRDC_GEO_ZONE_MAX)) {
     return DRDC_E_ZONE;
   }
   if (z == DRDC_GEO_ZONE_UPS) {
-    return ups_forward(lat, lon, out, convergence, scale, &tm);
+    return ups_forward(lat, lon, fine != 0, out, convergence, scale, &tm);
   }
   st = tm_forward_nas(lat, lon_normalize(lon - central_meridian(z)), &tm);
   if (st != DRDC_OK) {
     return st;
   }
-  /* the offsets in Q28.36 (in tm's own slots), and the Q47.16 metres of
-   * drdc_geo_to_utm() for the range checks: each offset rounded on its
-   * own, then the false origin added, as q16_from_q36() does */
+  /* the zone and the fine request in one value from here on (one
+   * register fewer across the calls above on the deepest path) */
+  z = z + fine;
+  /* the offsets in Q28.36 (in tm's own slots), each rounded to Q47.16
+   * before the false origin is added (a tie of a negative offset rounds
+   * away from zero, which the rounding of the sum would not) */
   tm.eta = q36_from_angle(tm.eta);
   tm.xi = q36_from_angle(tm.xi);
   e = UTM_FALSE_EASTING + drdc_fx_rshift_round_s64(tm.eta, 20u);
   n = drdc_fx_rshift_round_s64(tm.xi, 20u);
   if (!north) {
     n = n + UTM_FALSE_NORTHING_SOUTH;
+    tm.xi = tm.xi + Q36_FROM_Q16(UTM_FALSE_NORTHING_SOUTH);
   }
   if ((e < UTM_E_MIN) || (e > UTM_E_MAX)) {
     return DRDC_E_RANGE;
@@ -310,11 +323,11 @@ drdc_status_t geo_to_utm_q36(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
             : ((n < UTM_N_SOUTH_MIN) || (n > UTM_N_SOUTH_MAX))) {
     return DRDC_E_RANGE;
   }
-  out->zone = z;
+  out->zone = z % GEO_ZONE_Q36;
   out->north = north;
-  out->easting = Q36_FROM_Q16(UTM_FALSE_EASTING) + tm.eta;
-  out->northing = north ? tm.xi
-                        : (Q36_FROM_Q16(UTM_FALSE_NORTHING_SOUTH) + tm.xi);
+  out->easting = (z >= GEO_ZONE_Q36) ? (Q36_FROM_Q16(UTM_FALSE_EASTING) + tm.eta)
+                                  : e;
+  out->northing = (z >= GEO_ZONE_Q36) ? tm.xi : n;
   if (convergence != NULL) {
     *convergence = geo_nas_from_rad(tm.gamma);
   }
@@ -324,34 +337,16 @@ drdc_status_t geo_to_utm_q36(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
   return DRDC_OK;
 }
 
-/* Q47.16 metres of a Q28.36 coordinate v whose false origin is origin
- * (Q47.16): the offset from the origin rounded, then the origin added,
- * the bits drdc_geo_to_utm() has always returned (a tie of a negative
- * offset rounds away from zero, which the rounding of the sum would
- * not) */
-static drdc_q47_16_t q16_from_q36(int64_t v, drdc_q47_16_t origin)
-{
-  return origin + drdc_fx_rshift_round_s64(v - Q36_FROM_Q16(origin), 20u);
-}
-
 drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
                               drdc_geo_utm_t *out, drdc_nas_t *convergence,
                               drdc_q5_58_t *scale)
 {
-  drdc_status_t st = geo_to_utm_q36(lat, lon, zone, out, convergence, scale);
-
-  if (st == DRDC_OK) {
-    if (out->zone == DRDC_GEO_ZONE_UPS) {
-      out->easting = q16_from_q36(out->easting, UPS_FALSE_ORIGIN);
-      out->northing = q16_from_q36(out->northing, UPS_FALSE_ORIGIN);
-    } else {
-      out->easting = q16_from_q36(out->easting, UTM_FALSE_EASTING);
-      out->northing = q16_from_q36(out->northing,
-                                   out->north ? 0
-                                              : UTM_FALSE_NORTHING_SOUTH);
-    }
-  }
-  return st;
+  /* a zone code above the zones is DRDC_E_ZONE (after the checks that
+   * come first), never a request for the fine result */
+  return geo_utm_forward(lat, lon,
+                         (zone > DRDC_GEO_ZONE_MAX) ? (DRDC_GEO_ZONE_MAX + 1)
+                                                    : zone,
+                         out, convergence, scale);
 }
 
 drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
