@@ -86,13 +86,15 @@ static int64_t pow10_i64(int32_t n)
  * micrometres (the fraction times 10^6 stays below 2^56); -1 when v < 0 */
 static int64_t micrometres(int64_t v, unsigned frac_bits)
 {
-  int64_t one = (int64_t)(UINT64_C(1) << frac_bits);
+  uint64_t u = (uint64_t)v;
+  uint64_t frac = u & ((UINT64_C(1) << frac_bits) - 1u);
 
   if (v < 0) {
     return -1;
   }
-  return ((v / one) * INT64_C(1000000))
-         + (((v % one) * INT64_C(1000000)) / one);
+  /* shifts of the non-negative value: no 64-bit division */
+  return (int64_t)(((u >> frac_bits) * UINT64_C(1000000))
+                   + ((frac * UINT64_C(1000000)) >> frac_bits));
 }
 
 drdc_status_t geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,

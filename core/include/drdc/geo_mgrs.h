@@ -86,7 +86,12 @@ drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
  * @retval DRDC_E_BUFFER size is too small for the text; nothing written.
  *
  * Text unchanged on error. Exactness: the digits truncate u's Q47.16
- * easting and northing exactly (no rounding is involved).
+ * easting and northing exactly (no rounding is involved). GeoConvert
+ * forms the micrometres as a double product, which rounds up to the next
+ * 1 um where the exact value lies within 2^-9 um below it (coordinates
+ * above 2^43 um = 8 796 km): on 60 000 random Q47.16 inputs in the MGRS
+ * limits every text equals GeoConvert's at precisions up to 10, and 8
+ * differ at 11, all such northings.
  */
 drdc_status_t drdc_geo_mgrs_from_utm(const drdc_geo_utm_t *u, int32_t prec,
                                      char *text, size_t size);
