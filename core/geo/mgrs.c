@@ -213,9 +213,9 @@ drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
   if (text == NULL) {
     return DRDC_E_NULL;
   }
-  /* the easting and northing before their rounding to Q47.16 (2^-36 m,
-   * within about 0.1 nm of the series' value), so the truncation falls
-   * on the side of the digit boundary GeographicLib's value falls */
+  /* the easting and northing before their rounding to Q47.16 (2^-36 m),
+   * so the truncation falls on the side of a digit boundary that
+   * GeographicLib's value falls on, but within nanometres of it */
   st = geo_utm_forward(lat, lon, DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, &u,
                        NULL, NULL);
   if (st != DRDC_OK) {

@@ -47,10 +47,11 @@
  *
  * Text unchanged on error. Exactness: the digits truncate the UTM/UPS
  * easting and northing of drdc_geo_to_utm()'s transverse Mercator or UPS
- * before its rounding to Q47.16 (held in 2^-36 m; the series' error is
- * below 1 nm), so the strings equal GeoConvert's at every precision
- * except where GeographicLib's own coordinate (accurate to about 5 nm)
- * lies within a few nanometres of a 1 um boundary. Measured against
+ * before its rounding to Q47.16 (held in 2^-36 m: GeographicLib's own
+ * 6th-order series evaluated in Q5.58), so the strings equal GeoConvert's
+ * at every precision except where GeographicLib's coordinate (its own
+ * error is about 5 nm) lies within a few nanometres of a 1 um boundary,
+ * where its double arithmetic decides the last digit. Measured against
  * GeoConvert -m on 6 063 points x 13 precisions (tests/ref/gen_geo_mgrs.py):
  * identical at precisions -1..10; at 11 (1 um) 3 differ by one unit of
  * the last digit, each a point whose coordinate GeoConvert -u -p 9 prints
