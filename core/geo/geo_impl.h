@@ -162,4 +162,34 @@ int64_t geo_ups_angle(drdc_q47_16_t v);
 drdc_status_t geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,
                               int32_t prec, char *text, size_t size);
 
+/** UPS angle -> metres in Q28.36 (2^-36 m, rounded); geo_ups_metres() is
+ *  its rounding to Q47.16. */
+int64_t geo_ups_q36(int64_t a);
+
+/** Added to a zone code of drdc_geo_to_utm() (-1..60): geo_utm_forward()
+ *  returns easting and northing in Q28.36 metres. */
+#define GEO_ZONE_Q36 ((int32_t)256)
+
+/**
+ * drdc_geo_to_utm(), which passes its arguments on to this; with zone
+ * plus GEO_ZONE_Q36 the easting and northing are in Q28.36 metres
+ * (2^-36 m, int64_t in the drdc_geo_utm_t fields): the false origin plus
+ * the projection's offset before its rounding to Q47.16. Same checks,
+ * statuses, convergence and scale; the Q47.16 result is the offset from
+ * the false origin rounded to nearest.
+ */
+drdc_status_t geo_utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
+                              drdc_geo_utm_t *out, drdc_nas_t *convergence,
+                              drdc_q5_58_t *scale);
+
+/**
+ * geo_mgrs_format() of a position whose easting and northing carry
+ * frac_bits fraction bits (16: Q47.16; 36: geo_utm_forward() with
+ * GEO_ZONE_Q36): the digits
+ * truncate that value.
+ */
+drdc_status_t geo_mgrs_format_bits(const drdc_geo_utm_t *u, unsigned frac_bits,
+                                   drdc_nas_t lat, int32_t prec, char *text,
+                                   size_t size);
+
 #endif /* DRDC_GEO_IMPL_H */

@@ -9,7 +9,9 @@
  * GeographicLib implements it (NGA.SIG.0012): UTM columns A-H, J-R, S-Z
  * by zone modulo 3, rows A-V (I and O skipped) shifted by 5 in even zones;
  * UPS columns and rows from their own sets per polar half. Coordinates
- * are whole micrometres (Q47.16 metres times 15625 / 1024, truncated).
+ * are whole micrometres, truncated: of the Q28.36 metres of
+ * geo_utm_forward() (encode from geographic) or of the Q47.16 input
+ * (from UTM).
  */
 #include <drdc/geo_mgrs.h>
 
@@ -79,8 +81,31 @@ static int64_t pow10_i64(int32_t n)
   return p;
 }
 
+/* whole micrometres of a coordinate v >= 0 with frac_bits fraction
+ * bits, truncated: the whole metres times 10^6 plus the fraction's
+ * micrometres (the fraction times 10^6 stays below 2^56); -1 when v < 0 */
+static int64_t micrometres(int64_t v, unsigned frac_bits)
+{
+  uint64_t u = (uint64_t)v;
+  uint64_t frac = u & ((UINT64_C(1) << frac_bits) - 1u);
+
+  if (v < 0) {
+    return -1;
+  }
+  /* shifts of the non-negative value: no 64-bit division */
+  return (int64_t)(((u >> frac_bits) * UINT64_C(1000000))
+                   + ((frac * UINT64_C(1000000)) >> frac_bits));
+}
+
 drdc_status_t geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,
                               int32_t prec, char *text, size_t size)
+{
+  return geo_mgrs_format_bits(u, 16u, lat, prec, text, size);
+}
+
+drdc_status_t geo_mgrs_format_bits(const drdc_geo_utm_t *u, unsigned frac_bits,
+                                   drdc_nas_t lat, int32_t prec, char *text,
+                                   size_t size)
 {
   char *buf = text;
   size_t n = 0u;
@@ -95,11 +120,11 @@ drdc_status_t geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,
   if ((prec < DRDC_GEO_MGRS_PREC_MIN) || (prec > DRDC_GEO_MGRS_PREC_MAX)) {
     return DRDC_E_RANGE;
   }
-  /* whole micrometres, truncated (the coordinates are positive) */
-  x = (u->easting * 15625) / 1024;
-  y = (u->northing * 15625) / 1024;
-  ix = x / TILE_UM;
-  iy = y / TILE_UM;
+  /* whole micrometres, truncated (-1 below zero: its tile index is -1) */
+  x = micrometres(u->easting, frac_bits);
+  y = micrometres(u->northing, frac_bits);
+  ix = geo_floor_div(x, TILE_UM);
+  iy = geo_floor_div(y, TILE_UM);
   eastp = (ix >= UPS_POLE_INDEX);
   /* the MGRS limits: UTM columns 1..8, rows 0..94 (north) or 10..99
    * (south); UPS 13..26 (north) or 8..31 (south) on both axes */
@@ -107,7 +132,7 @@ drdc_status_t geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,
     if ((ix < 1) || (ix > 8)) {
       return DRDC_E_EASTING;
     }
-    if (u->north && (iy > 94)) {
+    if (u->north && ((iy < 0) || (iy > 94))) {
       return DRDC_E_NORTHING;
     }
     if (!u->north && ((iy < 10) || (iy > 99))) {
@@ -188,12 +213,16 @@ drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
   if (text == NULL) {
     return DRDC_E_NULL;
   }
-  st = drdc_geo_to_utm(lat, lon, DRDC_GEO_ZONE_STANDARD, &u, NULL, NULL);
+  /* the easting and northing before their rounding to Q47.16 (2^-36 m),
+   * so the truncation falls on the side of a digit boundary that
+   * GeographicLib's value falls on, but within nanometres of it */
+  st = geo_utm_forward(lat, lon, DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, &u,
+                       NULL, NULL);
   if (st != DRDC_OK) {
     return st;
   }
   /* the standard zone is always inside the MGRS limits */
-  return geo_mgrs_format(&u, lat, prec, text, size);
+  return geo_mgrs_format_bits(&u, 36u, lat, prec, text, size);
 }
 
 drdc_status_t drdc_geo_mgrs_from_utm(const drdc_geo_utm_t *u, int32_t prec,

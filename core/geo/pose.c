@@ -292,10 +292,13 @@ static drdc_status_t mgrs_and_gamma(drdc_nas_t lat, drdc_nas_t lon,
   if ((prec < DRDC_GEO_MGRS_PREC_MIN) || (prec > DRDC_GEO_MGRS_PREC_MAX)) {
     return DRDC_E_RANGE;
   }
-  st = drdc_geo_to_utm(lat, lon, DRDC_GEO_ZONE_STANDARD, &u, gamma, NULL);
+  /* the coordinates before their rounding to Q47.16, as
+   * drdc_geo_mgrs_encode() truncates them */
+  st = geo_utm_forward(lat, lon, DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, &u,
+                       gamma, NULL);
   if (st == DRDC_OK) {
     /* the standard zone is always inside the MGRS limits */
-    st = geo_mgrs_format(&u, lat, prec, text, DRDC_GEO_MGRS_SIZE);
+    st = geo_mgrs_format_bits(&u, 36u, lat, prec, text, DRDC_GEO_MGRS_SIZE);
   }
   return st;
 }
@@ -342,15 +345,15 @@ drdc_status_t drdc_pose_wmgrs_from_w(const drdc_WPose_t *w, int32_t prec,
   if ((prec < DRDC_GEO_MGRS_PREC_MIN) || (prec > DRDC_GEO_MGRS_PREC_MAX)) {
     return DRDC_E_RANGE;
   }
-  st = drdc_geo_to_utm(w->latitude, w->longitude, DRDC_GEO_ZONE_STANDARD,
-                       &u, &gamma, NULL);
+  st = geo_utm_forward(w->latitude, w->longitude,
+                       DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, &u, &gamma, NULL);
   if (st == DRDC_OK) {
     st = turn_about_down(&w->q, -gamma, &q);
   }
   if (st == DRDC_OK) {
     /* the standard zone is always inside the MGRS limits */
-    st = geo_mgrs_format(&u, w->latitude, prec, out->mgrs,
-                         DRDC_GEO_MGRS_SIZE);
+    st = geo_mgrs_format_bits(&u, 36u, w->latitude, prec, out->mgrs,
+                              DRDC_GEO_MGRS_SIZE);
   }
   if (st != DRDC_OK) {
     return st;

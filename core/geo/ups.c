@@ -56,10 +56,14 @@ int geo_ups_forward(int64_t phi, int64_t lam, bool north, int64_t *x,
   return 1;
 }
 
+int64_t geo_ups_q36(int64_t a)
+{
+  return geo_muldiv(a, GEO_UPS_K_Q39, TWO_POW_61);
+}
+
 drdc_q47_16_t geo_ups_metres(int64_t a)
 {
-  return drdc_fx_rshift_round_s64(geo_muldiv(a, GEO_UPS_K_Q39, TWO_POW_61),
-                                  20u);
+  return drdc_fx_rshift_round_s64(geo_ups_q36(a), 20u);
 }
 
 int64_t geo_ups_angle(drdc_q47_16_t v)

@@ -39,6 +39,12 @@
 #define UPS_SOUTH_MAX M(3300000)
 #define UPS_FALSE_ORIGIN M(2000000)
 
+/* Q47.16 metres -> Q28.36 (exact for the false origins used here). */
+#define Q36_FROM_Q16(v) ((v) * INT64_C(1048576))
+
+/* Every zone code from here up asks geo_utm_forward() for Q28.36. */
+#define ZONE_FINE_MIN (GEO_ZONE_Q36 + DRDC_GEO_ZONE_STANDARD)
+
 /* 2^62, the divisor that takes k0 A (Q40) times an angle (Q58) to Q36. */
 #define TWO_POW_62 INT64_C(4611686018427387904)
 
@@ -113,11 +119,18 @@ static drdc_nas_t central_meridian(int32_t zone)
   return ((6 * (int64_t)zone) - 183) * GEO_NAS_DEG;
 }
 
-/* an angle on the sphere of radius k0 A (Q5.58) -> metres (Q47.16) */
+/* an angle on the sphere of radius k0 A (Q5.58) -> metres (Q28.36,
+ * rounded: 2^-36 m = 15 pm, far below the series' own error) */
+static int64_t q36_from_angle(int64_t a)
+{
+  return geo_muldiv(a, GEO_K0A_Q40, TWO_POW_62);
+}
+
+/* an angle on the sphere of radius k0 A (Q5.58) -> metres (Q47.16): the
+ * Q28.36 metres rounded */
 static drdc_q47_16_t metres_from_angle(int64_t a)
 {
-  return drdc_fx_rshift_round_s64(geo_muldiv(a, GEO_K0A_Q40, TWO_POW_62),
-                                  20u);
+  return drdc_fx_rshift_round_s64(q36_from_angle(a), 20u);
 }
 
 /* metres (Q47.16, |v| < 2^43) -> angle on the sphere of radius k0 A */
@@ -178,10 +191,10 @@ static bool ups_in_range(bool north, drdc_q47_16_t v)
                : ((v >= UPS_SOUTH_MIN) && (v <= UPS_SOUTH_MAX));
 }
 
-/* UPS forward; tm is the caller's scratch (x, y, gamma, k in its xi,
- * eta, gamma, k), so the UTM and UPS branches of drdc_geo_to_utm() share
- * one struct on the stack */
-static drdc_status_t ups_forward(drdc_nas_t lat, drdc_nas_t lon,
+/* UPS forward, easting and northing in Q47.16 or (fine) Q28.36; tm is
+ * the caller's scratch (x, y, gamma, k in its xi, eta, gamma, k), so the
+ * UTM and UPS branches of geo_utm_forward() share one struct on the stack */
+static drdc_status_t ups_forward(drdc_nas_t lat, drdc_nas_t lon, bool fine,
                                  drdc_geo_utm_t *out,
                                  drdc_nas_t *convergence,
                                  drdc_q5_58_t *scale, geo_tm_t *tm)
@@ -195,15 +208,18 @@ static drdc_status_t ups_forward(drdc_nas_t lat, drdc_nas_t lon,
                       &tm->eta, &tm->gamma, &tm->k) == 0) {
     return DRDC_E_RANGE;
   }
-  e = UPS_FALSE_ORIGIN + geo_ups_metres(tm->xi);
-  n = UPS_FALSE_ORIGIN + geo_ups_metres(tm->eta);
+  /* Q28.36 offsets in tm's slots; the Q47.16 metres for the checks */
+  tm->xi = geo_ups_q36(tm->xi);
+  tm->eta = geo_ups_q36(tm->eta);
+  e = UPS_FALSE_ORIGIN + drdc_fx_rshift_round_s64(tm->xi, 20u);
+  n = UPS_FALSE_ORIGIN + drdc_fx_rshift_round_s64(tm->eta, 20u);
   if (!ups_in_range(north, e) || !ups_in_range(north, n)) {
     return DRDC_E_RANGE;
   }
   out->zone = DRDC_GEO_ZONE_UPS;
   out->north = north;
-  out->easting = e;
-  out->northing = n;
+  out->easting = fine ? (Q36_FROM_Q16(UPS_FALSE_ORIGIN) + tm->xi) : e;
+  out->northing = fine ? (Q36_FROM_Q16(UPS_FALSE_ORIGIN) + tm->eta) : n;
   if (convergence != NULL) {
     *convergence = geo_nas_from_rad(tm->gamma);
   }
@@ -249,12 +265,18 @@ static drdc_status_t ups_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat,
   return DRDC_OK;
 }
 
-drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
+/* drdc_geo_to_utm() and its Q28.36 form for MGRS in one (geo_impl.h):
+ * zone is a zone code of drdc_geo_to_utm(), plus GEO_ZONE_Q36 for the
+ * Q28.36 result. drdc_geo_to_utm() passes its arguments on (a sibling
+ * call, no frame of its own at run time) and MGRS calls this directly, so
+ * neither stack grows. */
+drdc_status_t geo_utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
                               drdc_geo_utm_t *out, drdc_nas_t *convergence,
                               drdc_q5_58_t *scale)
 {
   drdc_status_t st;
-  int32_t z = zone;
+  int32_t fine = (zone >= ZONE_FINE_MIN) ? GEO_ZONE_Q36 : 0;
+  int32_t z = zone - fine;
   bool north = (lat >= 0);
   geo_tm_t tm;
   drdc_q47_16_t e;
@@ -267,23 +289,32 @@ drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
   if (st != DRDC_OK) {
     return st;
   }
-  if (zone == DRDC_GEO_ZONE_STANDARD) {
+  if (z == DRDC_GEO_ZONE_STANDARD) {
     z = standard_zone(lat, lon);
   }
   if ((z < DRDC_GEO_ZONE_UPS) || (z > DRDC_GEO_ZONE_MAX)) {
     return DRDC_E_ZONE;
   }
   if (z == DRDC_GEO_ZONE_UPS) {
-    return ups_forward(lat, lon, out, convergence, scale, &tm);
+    return ups_forward(lat, lon, fine != 0, out, convergence, scale, &tm);
   }
   st = tm_forward_nas(lat, lon_normalize(lon - central_meridian(z)), &tm);
   if (st != DRDC_OK) {
     return st;
   }
-  e = UTM_FALSE_EASTING + metres_from_angle(tm.eta);
-  n = metres_from_angle(tm.xi);
+  /* the zone and the fine request in one value from here on (one
+   * register fewer across the calls above on the deepest path) */
+  z = z + fine;
+  /* the offsets in Q28.36 (in tm's own slots), each rounded to Q47.16
+   * before the false origin is added (a tie of a negative offset rounds
+   * away from zero, which the rounding of the sum would not) */
+  tm.eta = q36_from_angle(tm.eta);
+  tm.xi = q36_from_angle(tm.xi);
+  e = UTM_FALSE_EASTING + drdc_fx_rshift_round_s64(tm.eta, 20u);
+  n = drdc_fx_rshift_round_s64(tm.xi, 20u);
   if (!north) {
     n = n + UTM_FALSE_NORTHING_SOUTH;
+    tm.xi = tm.xi + Q36_FROM_Q16(UTM_FALSE_NORTHING_SOUTH);
   }
   if ((e < UTM_E_MIN) || (e > UTM_E_MAX)) {
     return DRDC_E_RANGE;
@@ -292,10 +323,11 @@ drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
             : ((n < UTM_N_SOUTH_MIN) || (n > UTM_N_SOUTH_MAX))) {
     return DRDC_E_RANGE;
   }
-  out->zone = z;
+  out->zone = z % GEO_ZONE_Q36;
   out->north = north;
-  out->easting = e;
-  out->northing = n;
+  out->easting = (z >= GEO_ZONE_Q36) ? (Q36_FROM_Q16(UTM_FALSE_EASTING) + tm.eta)
+                                  : e;
+  out->northing = (z >= GEO_ZONE_Q36) ? tm.xi : n;
   if (convergence != NULL) {
     *convergence = geo_nas_from_rad(tm.gamma);
   }
@@ -303,6 +335,18 @@ drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
     *scale = tm.k;
   }
   return DRDC_OK;
+}
+
+drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
+                              drdc_geo_utm_t *out, drdc_nas_t *convergence,
+                              drdc_q5_58_t *scale)
+{
+  /* a zone code above the zones is DRDC_E_ZONE (after the checks that
+   * come first), never a request for the fine result */
+  return geo_utm_forward(lat, lon,
+                         (zone > DRDC_GEO_ZONE_MAX) ? (DRDC_GEO_ZONE_MAX + 1)
+                                                    : zone,
+                         out, convergence, scale);
 }
 
 drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,

@@ -223,10 +223,12 @@ drdc_status_t drdc_pose_we_from_weutm(const drdc_WeUTMPose_t *u,
  * @retval DRDC_E_OVERFLOW w->q is far from unit length and a part of
  *         the turned quaternion leaves Q1.30.
  *
- * Output unchanged on error. Accuracy: the text is drdc_geo_mgrs_encode()'s:
- * identical to GeoConvert's on all 500 measured points at precisions up to
- * 8 (1 mm); at 9..11 the easting and northing within 15 um of
- * GeographicLib's may truncate to a neighbouring cell (62 of 109). The
+ * Output unchanged on error. Accuracy: the text is drdc_geo_mgrs_encode()'s
+ * (the coordinates truncated before their rounding to Q47.16): identical
+ * to GeoConvert's on all 500 measured points at every precision -1..11
+ * (109 of them finer than 1 mm); at 1 um a point whose GeographicLib
+ * coordinate lies within a few nm of a digit boundary may differ by one
+ * unit of the last digit (see drdc_geo_mgrs_encode()). The
  * attitude as drdc_pose_grid_from_true(); measured on 500 GeoConvert
  * points with SciPy rotations (q_z(-gamma) q of the exact input): every
  * part of q within 2 LSB of Q1.30.
