@@ -126,20 +126,100 @@ drdc_status_t drdc_geo_to_ecef(const drdc_geo_point_t *p,
   return DRDC_OK;
 }
 
+
 static int64_t ecef_abs64(int64_t v)
 {
   return (v < 0) ? -v : v;
 }
 
+/* 1 / sqrt(x) for x in [1/4, 2) (Q5.58, the result at most 2): a seed
+ * within 2^-15 relative from the Q1.30 root of drdc_fx_sqrt_q1_30() and a
+ * 32-bit quotient, then Newton steps y (3 - x y^2) / 2, each squaring
+ * the relative error (2^-29, then 2^-57 with the roundings). Three to
+ * four products a step; no 64-bit division (drdc_fx_rsqrt_q1_30() takes
+ * a 64-bit quotient, drdc_fx_sqrt_q5_58() two 128-bit ones). */
+static int64_t rsqrt_q58(int64_t x, unsigned steps)
+{
+  /* x >> 28 as Q1.30 (x >= 0): floor, so in [2^28, 2^31) */
+  drdc_q1_30_t s30 = 0;
+  uint32_t d;
+  int64_t y;
+  unsigned i;
+
+  (void)drdc_fx_sqrt_q1_30((drdc_q1_30_t)((uint64_t)x >> 28), &s30);
+  /* s30 in [2^29, 2^30.5): d = s 2^16 in [2^15, 2^16.5), and
+   * (2^32 - 1) / d = 2^16 / s within 2^-15 relative, Q15.16 */
+  d = (uint32_t)s30 >> 14;
+  d = 0xFFFFFFFFu / d;
+  y = (int64_t)d * INT64_C(4398046511104);
+  for (i = 0u; i < steps; i++) {
+    y = drdc_fx_rshift_round_s64_inline(
+      geo_mul(y, (3 * GEO_ONE) - geo_mul(x, geo_mul(y, y))), 1u);
+  }
+  return y;
+}
+
+/* (*a, *b) scaled by one power of two so the larger magnitude lies in
+ * [2^57, 2^58) (rounding right shift, or exact left shift), both then
+ * read as Q5.58 values of magnitude below 1; returns the shift: > 0
+ * right, < 0 left. |*a|, |*b| < 2^62, not both zero. */
+static int scale_legs(int64_t *a, int64_t *b)
+{
+  uint64_t ma = (uint64_t)ecef_abs64(*a);
+  uint64_t mb = (uint64_t)ecef_abs64(*b);
+  uint64_t m = (ma > mb) ? ma : mb;
+  unsigned n = 0u;
+
+  if (m >= (UINT64_C(1) << 58)) {
+    while ((m >> n) >= (UINT64_C(1) << 58)) {
+      n++;
+    }
+    *a = drdc_fx_rshift_round_s64_inline(*a, n);
+    *b = drdc_fx_rshift_round_s64_inline(*b, n);
+    return (int)n;
+  }
+  while ((m << n) < (UINT64_C(1) << 57)) {
+    n++;
+  }
+  *a = *a * (int64_t)(UINT64_C(1) << n);
+  *b = *b * (int64_t)(UINT64_C(1) << n);
+  return -(int)n;
+}
+
+/* hypot(u, v) of Q27.36 lengths |u|, |v| < 2^61: on the scaled legs
+ * (a^2 + b^2 in [1/4, 2)) sqrt(q) = q / sqrt(q), scaled back. Relative
+ * error within 2^-56 (1e-10 m at the Earth's radius; the exact 128-bit
+ * root of drdc_fx_hypot_s64() takes several times the cycles). */
+static int64_t length_q36(int64_t u, int64_t v)
+{
+  int64_t a = u;
+  int64_t b = v;
+  int64_t q;
+  int k;
+
+  if ((u == 0) && (v == 0)) {
+    return 0;
+  }
+  k = scale_legs(&a, &b);
+  q = geo_mul(a, a) + geo_mul(b, b);
+  q = geo_mul(q, rsqrt_q58(q, 2u));
+  /* q < 2^58.5 and the result below 2^61.5: no overflow either way */
+  return (k >= 0) ? (q * (int64_t)(UINT64_C(1) << (unsigned)k))
+                  : drdc_fx_rshift_round_s64_inline(q, (unsigned)-k);
+}
+
 /* (*c, *s) = (u, v) / hypot(u, v), Q5.58; (u, v) != (0, 0), |u|, |v| <
- * 2^62. The quotients go straight into the outputs (no wrapper frame, no
- * local): |u|, |v| <= r, so they never fail. */
+ * 2^62: the scaled legs times 1 / sqrt(a^2 + b^2), within 3 LSB. */
 static void unit_q58(int64_t u, int64_t v, int64_t *c, int64_t *s)
 {
-  int64_t r = (int64_t)drdc_fx_hypot_s64(u, v);
+  int64_t a = u;
+  int64_t b = v;
+  int64_t y;
 
-  (void)drdc_fx_div_q5_58(u, r, c);
-  (void)drdc_fx_div_q5_58(v, r, s);
+  (void)scale_legs(&a, &b);
+  y = rsqrt_q58(geo_mul(a, a) + geo_mul(b, b), 2u);
+  *c = geo_mul(a, y);
+  *s = geo_mul(b, y);
 }
 
 /* The state of Bowring's iteration (Q27.36), one struct in the frame of
@@ -177,10 +257,13 @@ static int64_t height_q36(const bowring_t *b)
 {
   int64_t c = 0;
   int64_t s = 0;
+  int64_t w2;
 
   unit_q58(b->u, b->v, &c, &s);
+  /* w = sqrt(1 - e^2 s^2) as w^2 / sqrt(w^2), w^2 in [1 - e^2, 1] */
+  w2 = GEO_ONE - geo_mul(GEO_E2, geo_mul(s, s));
   return (geo_mul(b->p, c) + geo_mul(b->z, s))
-         - geo_mul(A_Q36, geo_sqrt(GEO_ONE - geo_mul(GEO_E2, geo_mul(s, s))));
+         - geo_mul(A_Q36, geo_mul(w2, rsqrt_q58(w2, 2u)));
 }
 
 /* Below this height (Q27.36: -50 km) the point is less than 6 300 km
@@ -198,7 +281,7 @@ static drdc_status_t geodetic_direction(int64_t x, int64_t y, int64_t z,
   bowring_t b;
   int64_t h;
 
-  b.p = (int64_t)drdc_fx_hypot_s64(x, y);
+  b.p = length_q36(x, y);
   b.z = z;
   if ((b.p < (ECEF_CORE * Q36_PER_Q16))
       && (ecef_abs64(z) < (ECEF_CORE * Q36_PER_Q16))) {

@@ -59,9 +59,12 @@ drdc_status_t drdc_geo_to_ecef(const drdc_geo_point_t *p,
  * tan beta = (b / a) tan phi (it converges cubically: within 1.4e-19 rad
  * after two steps for heights -10 km .. 10 000 km, by mpmath), a third
  * step for points more than 50 km below the ellipsoid; then
- * h = p cos phi + Z sin phi - a sqrt(1 - e^2 sin^2 phi). Two atan2, three
- * or four square roots and hypot in Q5.58 in all (before: nine atan2,
- * sin/cos and square roots and eight quotients).
+ * h = p cos phi + Z sin phi - a sqrt(1 - e^2 sin^2 phi). The lengths and
+ * unit vectors use reciprocal square roots by Newton steps from a 32-bit
+ * seed (no Q5.58 division or square root); two atan2 in all (before:
+ * nine atan2, sin/cos and square roots and eight quotients; 43 207
+ * cycles on Cortex-M3, now 10 513, against 18 910 for the same algorithm
+ * in soft-float double).
  *
  * @param ecef X, Y, Z in Q47.16 metres.
  * @param[out] p latitude, longitude in [-180, 180] (0 on the polar
