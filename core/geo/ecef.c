@@ -77,6 +77,22 @@ static void turn(int64_t t, int64_t *a, int64_t *b)
   *b = geo_mul(*b, c) - geo_mul(a0, s);
 }
 
+/* *x, *y += or -= (N + h) cos phi (cos lam, sin lam): the longitude's
+ * part of ecef_acc_q36(), in its own frame */
+static void ecef_acc_lon(drdc_nas_t lon, int64_t nh, int64_t cphi, bool sub,
+                         int64_t *x, int64_t *y)
+{
+  int64_t slam = 0;
+  int64_t clam = 0;
+  int64_t v;
+
+  geo_sincos(lon_rad(lon), &slam, &clam);
+  v = geo_mul(nh, geo_mul(cphi, clam));
+  *x = sub ? (*x - v) : (*x + v);
+  v = geo_mul(nh, geo_mul(cphi, slam));
+  *y = sub ? (*y - v) : (*y + v);
+}
+
 /* ECEF of a checked point in Q27.36, added to (*x, *y, *z), or subtracted
  * when sub (geo_mul() rounds symmetrically, so the difference of two
  * points is exactly that of their coordinates) */
@@ -85,32 +101,23 @@ static void ecef_acc_q36(const drdc_geo_point_t *p, bool sub, int64_t *x,
 {
   int64_t sphi = 0;
   int64_t cphi = 0;
-  int64_t slam = 0;
-  int64_t clam = 0;
-  int64_t n;
+  int64_t n = 0;
   int64_t v;
 
   geo_sincos(geo_rad_from_nas(p->lat), &sphi, &cphi);
-  n = geo_div(A_Q36, geo_sqrt(GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi))));
+  /* N = a / w: the quotient straight into n (no wrapper frame) */
+  (void)drdc_fx_div_q5_58(
+    A_Q36, geo_sqrt(GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi))), &n);
   v = geo_mul(geo_mul(n, GEO_ONE - GEO_E2) + (p->height * Q36_PER_Q16),
               sphi);
   *z = sub ? (*z - v) : (*z + v);
-  /* N + h from here on */
-  n = n + (p->height * Q36_PER_Q16);
-  geo_sincos(lon_rad(p->lon), &slam, &clam);
-  v = geo_mul(n, geo_mul(cphi, clam));
-  *x = sub ? (*x - v) : (*x + v);
-  v = geo_mul(n, geo_mul(cphi, slam));
-  *y = sub ? (*y - v) : (*y + v);
+  ecef_acc_lon(p->lon, n + (p->height * Q36_PER_Q16), cphi, sub, x, y);
 }
 
 drdc_status_t drdc_geo_to_ecef(const drdc_geo_point_t *p,
                                drdc_vec3_q47_16_t *ecef)
 {
   drdc_status_t st;
-  int64_t x = 0;
-  int64_t y = 0;
-  int64_t z = 0;
 
   if ((p == NULL) || (ecef == NULL)) {
     return DRDC_E_NULL;
@@ -119,13 +126,17 @@ drdc_status_t drdc_geo_to_ecef(const drdc_geo_point_t *p,
   if (st != DRDC_OK) {
     return st;
   }
-  ecef_acc_q36(p, false, &x, &y, &z);
-  ecef->x = drdc_fx_rshift_round_s64(x, 20u);
-  ecef->y = drdc_fx_rshift_round_s64(y, 20u);
-  ecef->z = drdc_fx_rshift_round_s64(z, 20u);
+  /* nothing fails from here on: the output holds the Q27.36 sums, then
+   * their Q47.16 rounding (no local copy on the stack) */
+  ecef->x = 0;
+  ecef->y = 0;
+  ecef->z = 0;
+  ecef_acc_q36(p, false, &ecef->x, &ecef->y, &ecef->z);
+  ecef->x = drdc_fx_rshift_round_s64_inline(ecef->x, 20u);
+  ecef->y = drdc_fx_rshift_round_s64_inline(ecef->y, 20u);
+  ecef->z = drdc_fx_rshift_round_s64_inline(ecef->z, 20u);
   return DRDC_OK;
 }
-
 
 static int64_t ecef_abs64(int64_t v)
 {
@@ -348,16 +359,13 @@ drdc_status_t drdc_geo_from_ecef(const drdc_vec3_q47_16_t *ecef,
                       ecef->z * Q36_PER_Q16, p);
 }
 
-/* ENU of p at ref, Q47.16 */
+/* ENU of p at ref, Q47.16; *e, *n, *u (the caller's) hold the Q27.36
+ * sums on the way, so this frame keeps no copies */
 static drdc_status_t enu_q16(const drdc_geo_point_t *ref,
                              const drdc_geo_point_t *p, int64_t *e,
                              int64_t *n, int64_t *u)
 {
   drdc_status_t st;
-  /* dx, dy, dz, then turned in place (see below) */
-  int64_t a = 0;
-  int64_t b = 0;
-  int64_t c = 0;
 
   st = check_point(ref);
   if (st == DRDC_OK) {
@@ -366,16 +374,20 @@ static drdc_status_t enu_q16(const drdc_geo_point_t *ref,
   if (st != DRDC_OK) {
     return st;
   }
-  ecef_acc_q36(p, false, &a, &b, &c);
-  ecef_acc_q36(ref, true, &a, &b, &c);
+  /* dx, dy, dz in *u, *e, *n */
+  *u = 0;
+  *e = 0;
+  *n = 0;
+  ecef_acc_q36(p, false, u, e, n);
+  ecef_acc_q36(ref, true, u, e, n);
   /* about the axis by the longitude: (dx, dy) -> (towards the ref's
    * meridian plane t, east); about east by the latitude: (t, dz) ->
    * (up, north) */
-  turn(lon_rad(ref->lon), &a, &b);
-  turn(geo_rad_from_nas(ref->lat), &a, &c);
-  *e = drdc_fx_rshift_round_s64(b, 20u);
-  *n = drdc_fx_rshift_round_s64(c, 20u);
-  *u = drdc_fx_rshift_round_s64(a, 20u);
+  turn(lon_rad(ref->lon), u, e);
+  turn(geo_rad_from_nas(ref->lat), u, n);
+  *e = drdc_fx_rshift_round_s64_inline(*e, 20u);
+  *n = drdc_fx_rshift_round_s64_inline(*n, 20u);
+  *u = drdc_fx_rshift_round_s64_inline(*u, 20u);
   return DRDC_OK;
 }
 
