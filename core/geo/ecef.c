@@ -77,6 +77,33 @@ static void turn(int64_t t, int64_t *a, int64_t *b)
   *b = geo_mul(*b, c) - geo_mul(a0, s);
 }
 
+/* 1 / sqrt(x) for x in [1/4, 2) (Q5.58, the result at most 2): a seed
+ * within 2^-15 relative from the Q1.30 root of drdc_fx_sqrt_q1_30() and a
+ * 32-bit quotient, then Newton steps y (3 - x y^2) / 2, each squaring
+ * the relative error (2^-29, then 2^-57 with the roundings). Three to
+ * four products a step; no 64-bit division (drdc_fx_rsqrt_q1_30() takes
+ * a 64-bit quotient, drdc_fx_sqrt_q5_58() two 128-bit ones). */
+static int64_t rsqrt_q58(int64_t x, unsigned steps)
+{
+  /* x >> 28 as Q1.30 (x >= 0): floor, so in [2^28, 2^31) */
+  drdc_q1_30_t s30 = 0;
+  uint32_t d;
+  int64_t y;
+  unsigned i;
+
+  (void)drdc_fx_sqrt_q1_30((drdc_q1_30_t)((uint64_t)x >> 28), &s30);
+  /* s30 in [2^29, 2^30.5): d = s 2^16 in [2^15, 2^16.5), and
+   * (2^32 - 1) / d = 2^16 / s within 2^-15 relative, Q15.16 */
+  d = (uint32_t)s30 >> 14;
+  d = 0xFFFFFFFFu / d;
+  y = (int64_t)d * INT64_C(4398046511104);
+  for (i = 0u; i < steps; i++) {
+    y = drdc_fx_rshift_round_s64_inline(
+      geo_mul(y, (3 * GEO_ONE) - geo_mul(x, geo_mul(y, y))), 1u);
+  }
+  return y;
+}
+
 /* *x, *y += or -= (N + h) cos phi (cos lam, sin lam): the longitude's
  * part of ecef_acc_q36(), in its own frame */
 static void ecef_acc_lon(drdc_nas_t lon, int64_t nh, int64_t cphi, bool sub,
@@ -101,13 +128,14 @@ static void ecef_acc_q36(const drdc_geo_point_t *p, bool sub, int64_t *x,
 {
   int64_t sphi = 0;
   int64_t cphi = 0;
-  int64_t n = 0;
+  int64_t n;
   int64_t v;
 
   geo_sincos(geo_rad_from_nas(p->lat), &sphi, &cphi);
-  /* N = a / w: the quotient straight into n (no wrapper frame) */
-  (void)drdc_fx_div_q5_58(
-    A_Q36, geo_sqrt(GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi))), &n);
+  /* N = a / w = a / sqrt(w^2), w^2 = 1 - e^2 sin^2 phi in [1 - e^2, 1]:
+   * no Q5.58 square root or quotient */
+  n = geo_mul(A_Q36,
+              rsqrt_q58(GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi)), 2u));
   v = geo_mul(geo_mul(n, GEO_ONE - GEO_E2) + (p->height * Q36_PER_Q16),
               sphi);
   *z = sub ? (*z - v) : (*z + v);
@@ -143,33 +171,6 @@ static int64_t ecef_abs64(int64_t v)
   return (v < 0) ? -v : v;
 }
 
-/* 1 / sqrt(x) for x in [1/4, 2) (Q5.58, the result at most 2): a seed
- * within 2^-15 relative from the Q1.30 root of drdc_fx_sqrt_q1_30() and a
- * 32-bit quotient, then Newton steps y (3 - x y^2) / 2, each squaring
- * the relative error (2^-29, then 2^-57 with the roundings). Three to
- * four products a step; no 64-bit division (drdc_fx_rsqrt_q1_30() takes
- * a 64-bit quotient, drdc_fx_sqrt_q5_58() two 128-bit ones). */
-static int64_t rsqrt_q58(int64_t x, unsigned steps)
-{
-  /* x >> 28 as Q1.30 (x >= 0): floor, so in [2^28, 2^31) */
-  drdc_q1_30_t s30 = 0;
-  uint32_t d;
-  int64_t y;
-  unsigned i;
-
-  (void)drdc_fx_sqrt_q1_30((drdc_q1_30_t)((uint64_t)x >> 28), &s30);
-  /* s30 in [2^29, 2^30.5): d = s 2^16 in [2^15, 2^16.5), and
-   * (2^32 - 1) / d = 2^16 / s within 2^-15 relative, Q15.16 */
-  d = (uint32_t)s30 >> 14;
-  d = 0xFFFFFFFFu / d;
-  y = (int64_t)d * INT64_C(4398046511104);
-  for (i = 0u; i < steps; i++) {
-    y = drdc_fx_rshift_round_s64_inline(
-      geo_mul(y, (3 * GEO_ONE) - geo_mul(x, geo_mul(y, y))), 1u);
-  }
-  return y;
-}
-
 /* (*a, *b) scaled by one power of two so the larger magnitude lies in
  * [2^57, 2^58) (rounding right shift, or exact left shift), both then
  * read as Q5.58 values of magnitude below 1; returns the shift: > 0
@@ -197,83 +198,65 @@ static int scale_legs(int64_t *a, int64_t *b)
   return -(int)n;
 }
 
-/* hypot(u, v) of Q27.36 lengths |u|, |v| < 2^61: on the scaled legs
- * (a^2 + b^2 in [1/4, 2)) sqrt(q) = q / sqrt(q), scaled back. Relative
- * error within 2^-56 (1e-10 m at the Earth's radius; the exact 128-bit
- * root of drdc_fx_hypot_s64() takes several times the cycles). */
-static int64_t length_q36(int64_t u, int64_t v)
-{
-  int64_t a = u;
-  int64_t b = v;
-  int64_t q;
-  int k;
+/* The state of Bowring's iteration (Q27.36 lengths, or Q5.58 when (u, v)
+ * is a unit vector), one struct in the frame of geodetic_direction() that
+ * the helpers below reach by pointer, so no level keeps copies of it */
+typedef struct bowring {
+  int64_t p; /**< distance from the polar axis */
+  int64_t z; /**< distance from the equatorial plane */
+  int64_t u; /**< a direction: horizontal part */
+  int64_t v; /**< a direction: vertical part */
+} bowring_t;
 
-  if ((u == 0) && (v == 0)) {
-    return 0;
-  }
-  k = scale_legs(&a, &b);
-  q = geo_mul(a, a) + geo_mul(b, b);
-  q = geo_mul(q, rsqrt_q58(q, 2u));
-  /* q < 2^58.5 and the result below 2^61.5: no overflow either way */
+/* (b->u, b->v) <- (u, v) / hypot(u, v) (Q5.58, within 3 LSB), and
+ * returns hypot(u, v) (relative error within 2^-56: 1e-10 m at the
+ * Earth's radius). On the legs scaled to [2^57, 2^58) (a^2 + b^2 in
+ * [1/4, 2)): y = 1 / sqrt(a^2 + b^2), the unit vector (a y, b y), the
+ * length (a^2 + b^2) y scaled back. (u, v) != (0, 0), |u|, |v| < 2^61.
+ * A fifth of the cycles of drdc_fx_hypot_s64()'s exact 128-bit root and
+ * two Q5.58 quotients. */
+static int64_t normalise(bowring_t *b)
+{
+  int64_t a = b->u;
+  int64_t c = b->v;
+  int64_t q;
+  int64_t y;
+  int k = scale_legs(&a, &c);
+
+  q = geo_mul(a, a) + geo_mul(c, c);
+  y = rsqrt_q58(q, 2u);
+  b->u = geo_mul(a, y);
+  b->v = geo_mul(c, y);
+  q = geo_mul(q, y);
+  /* q < 2^58.5 and the length below 2^61.5: no overflow either way */
   return (k >= 0) ? (q * (int64_t)(UINT64_C(1) << (unsigned)k))
                   : drdc_fx_rshift_round_s64_inline(q, (unsigned)-k);
 }
 
-/* (*c, *s) = (u, v) / hypot(u, v), Q5.58; (u, v) != (0, 0), |u|, |v| <
- * 2^62: the scaled legs times 1 / sqrt(a^2 + b^2), within 3 LSB. */
-static void unit_q58(int64_t u, int64_t v, int64_t *c, int64_t *s)
-{
-  int64_t a = u;
-  int64_t b = v;
-  int64_t y;
-
-  (void)scale_legs(&a, &b);
-  y = rsqrt_q58(geo_mul(a, a) + geo_mul(b, b), 2u);
-  *c = geo_mul(a, y);
-  *s = geo_mul(b, y);
-}
-
-/* The state of Bowring's iteration (Q27.36), one struct in the frame of
- * geodetic_direction() that the steps below it reach by pointer, so no
- * level keeps copies of it in its own frame */
-typedef struct bowring {
-  int64_t p; /**< distance from the polar axis */
-  int64_t z; /**< distance from the equatorial plane */
-  int64_t u; /**< direction of the latitude: horizontal part */
-  int64_t v; /**< direction of the latitude: vertical part */
-} bowring_t;
-
 /* One step of Bowring's iteration at distance p from the axis and height
- * z over the equator (Q27.36): (*u, *v), the direction of the parametric
- * latitude beta, becomes (p - e^2 a cos^3 beta, z + e'^2 b sin^3 beta),
- * the direction of the geodetic latitude. The step converges cubically
- * (measured with mpmath: from beta_0 = atan2(a z, b p) the latitude is
- * within 8e-9 rad after one step, 1.4e-19 after two for heights
- * -10 km .. 10 000 km, 2e-25 after two for any point at least 6 300 km
- * from the centre, 4e-27 after three for every accepted point). */
+ * z over the equator: the unit vector (b->u, b->v) (cos, sin) of the
+ * parametric latitude beta becomes (p - e^2 a cos^3 beta,
+ * z + e'^2 b sin^3 beta), the direction of the geodetic latitude. The
+ * step converges cubically (measured with mpmath: from beta_0 =
+ * atan2(a z, b p) the latitude is within 8e-9 rad after one step,
+ * 1.4e-19 after two for heights -10 km .. 10 000 km, 2e-25 after two for
+ * any point at least 6 300 km from the centre, 4e-27 after three for
+ * every accepted point). */
 static void bowring_step(bowring_t *b)
 {
-  int64_t c = 0;
-  int64_t s = 0;
-
-  unit_q58(b->u, b->v, &c, &s);
-  b->u = b->p - geo_mul(GEO_E2A_Q36, geo_mul(geo_mul(c, c), c));
-  b->v = b->z + geo_mul(GEO_EP2B_Q36, geo_mul(geo_mul(s, s), s));
+  b->u = b->p - geo_mul(GEO_E2A_Q36, geo_mul(geo_mul(b->u, b->u), b->u));
+  b->v = b->z + geo_mul(GEO_EP2B_Q36, geo_mul(geo_mul(b->v, b->v), b->v));
 }
 
-/* h = p cos phi + z sin phi - a sqrt(1 - e^2 sin^2 phi) (Q27.36) with phi
- * the direction (u, v); stationary in phi at the true latitude, so an
- * error d of phi moves h by about N d^2 only */
+/* h = p cos phi + z sin phi - a sqrt(1 - e^2 sin^2 phi) (Q27.36) with
+ * (b->u, b->v) = (cos phi, sin phi); stationary in phi at the true
+ * latitude, so an error d of phi moves h by about N d^2 only. w =
+ * sqrt(w^2) as w^2 / sqrt(w^2), w^2 in [1 - e^2, 1]. */
 static int64_t height_q36(const bowring_t *b)
 {
-  int64_t c = 0;
-  int64_t s = 0;
-  int64_t w2;
+  int64_t w2 = GEO_ONE - geo_mul(GEO_E2, geo_mul(b->v, b->v));
 
-  unit_q58(b->u, b->v, &c, &s);
-  /* w = sqrt(1 - e^2 s^2) as w^2 / sqrt(w^2), w^2 in [1 - e^2, 1] */
-  w2 = GEO_ONE - geo_mul(GEO_E2, geo_mul(s, s));
-  return (geo_mul(b->p, c) + geo_mul(b->z, s))
+  return (geo_mul(b->p, b->u) + geo_mul(b->z, b->v))
          - geo_mul(A_Q36, geo_mul(w2, rsqrt_q58(w2, 2u)));
 }
 
@@ -282,18 +265,24 @@ static int64_t height_q36(const bowring_t *b)
  * third step. */
 #define DEEP_Q36 (INT64_C(-50000) * INT64_C(68719476736))
 
-/* The direction (P, Z) of the geodetic latitude and the height (Q47.16)
- * of ECEF x, y, z in Q27.36 (|x|, |y|, |z| < 2^61). On DRDC_OK they are
- * written to out as scratch: out->lon = P, out->lat = Z (Q27.36), and
- * the final out->height; nothing is written on error. */
+/* The unit vector (cos phi, sin phi) of the geodetic latitude (Q5.58) and
+ * the height (Q47.16) of ECEF x, y, z in Q27.36 (|x|, |y|, |z| < 2^61).
+ * On DRDC_OK they are written to out as scratch: out->lon = cos phi,
+ * out->lat = sin phi, and the final out->height; nothing is written on
+ * error. */
 static drdc_status_t geodetic_direction(int64_t x, int64_t y, int64_t z,
                                         drdc_geo_point_t *out)
 {
   bowring_t b;
   int64_t h;
 
-  b.p = length_q36(x, y);
+  b.p = 0;
   b.z = z;
+  b.u = x;
+  b.v = y;
+  if ((x != 0) || (y != 0)) {
+    b.p = normalise(&b);
+  }
   if ((b.p < (ECEF_CORE * Q36_PER_Q16))
       && (ecef_abs64(z) < (ECEF_CORE * Q36_PER_Q16))) {
     return DRDC_E_HEIGHT;
@@ -301,16 +290,21 @@ static drdc_status_t geodetic_direction(int64_t x, int64_t y, int64_t z,
   /* tan beta_0 = a z / (b p), then tan beta = (b / a) tan phi */
   b.u = geo_mul(b.p, GEO_B_OVER_A);
   b.v = z;
+  (void)normalise(&b);
   bowring_step(&b);
   b.v = geo_mul(b.v, GEO_B_OVER_A);
+  (void)normalise(&b);
   bowring_step(&b);
+  (void)normalise(&b);
   h = height_q36(&b);
   if (h < DEEP_Q36) {
     b.v = geo_mul(b.v, GEO_B_OVER_A);
+    (void)normalise(&b);
     bowring_step(&b);
+    (void)normalise(&b);
     h = height_q36(&b);
   }
-  h = drdc_fx_rshift_round_s64(h, 20u);
+  h = drdc_fx_rshift_round_s64_inline(h, 20u);
   if ((h > DRDC_GEO_HEIGHT_MAX) || (h < -DRDC_GEO_HEIGHT_MAX)) {
     return DRDC_E_HEIGHT;
   }
@@ -329,18 +323,20 @@ static inline drdc_nas_t angle_nas(int64_t y, int64_t x)
   return geo_nas_from_rad(r);
 }
 
-/* geodetic of ECEF in Q27.36 (|x|, |y|, |z| < 2^61): Bowring's
- * iteration gives the latitude's direction and the height in a deeper
- * call; the two atan2 run from this shallow frame */
+/* geodetic of ECEF in Q27.36 (|x|, |y|, |z| < 2^61). The longitude
+ * first (atan2 is scale-free), then Bowring's iteration for the
+ * latitude's direction and the height, then the latitude's atan2: each
+ * deep call from a frame that keeps only the longitude and pointers */
 static drdc_status_t geodetic_q36(int64_t x, int64_t y, int64_t z,
                                   drdc_geo_point_t *out)
 {
+  drdc_nas_t lon = ((x == 0) && (y == 0)) ? 0 : angle_nas(y, x);
   drdc_status_t st = geodetic_direction(x, y, z, out);
 
   if (st == DRDC_OK) {
     /* nothing fails from here on: out holds the scratch direction */
     out->lat = angle_nas(out->lat, out->lon);
-    out->lon = ((x == 0) && (y == 0)) ? 0 : angle_nas(y, x);
+    out->lon = lon;
   }
   return st;
 }
@@ -348,6 +344,9 @@ static drdc_status_t geodetic_q36(int64_t x, int64_t y, int64_t z,
 drdc_status_t drdc_geo_from_ecef(const drdc_vec3_q47_16_t *ecef,
                                  drdc_geo_point_t *p)
 {
+  drdc_nas_t lon;
+  drdc_status_t st;
+
   if ((ecef == NULL) || (p == NULL)) {
     return DRDC_E_NULL;
   }
@@ -355,8 +354,17 @@ drdc_status_t drdc_geo_from_ecef(const drdc_vec3_q47_16_t *ecef,
       || (ecef_abs64(ecef->z) >= ECEF_COORD_MAX)) {
     return DRDC_E_HEIGHT;
   }
-  return geodetic_q36(ecef->x * Q36_PER_Q16, ecef->y * Q36_PER_Q16,
-                      ecef->z * Q36_PER_Q16, p);
+  /* as geodetic_q36(), reading the coordinates again after each call
+   * rather than keeping them: the longitude from the Q47.16 values (the
+   * same angle: atan2 scales its arguments exactly) */
+  lon = ((ecef->x == 0) && (ecef->y == 0)) ? 0 : angle_nas(ecef->y, ecef->x);
+  st = geodetic_direction(ecef->x * Q36_PER_Q16, ecef->y * Q36_PER_Q16,
+                          ecef->z * Q36_PER_Q16, p);
+  if (st == DRDC_OK) {
+    p->lat = angle_nas(p->lat, p->lon);
+    p->lon = lon;
+  }
+  return st;
 }
 
 /* ENU of p at ref, Q47.16; *e, *n, *u (the caller's) hold the Q27.36
@@ -446,13 +454,16 @@ drdc_status_t drdc_geo_to_ned(const drdc_geo_point_t *ref,
   return DRDC_OK;
 }
 
-/* geodetic of ENU (e, n, u in Q15.16 as int64) at a checked ref */
-static drdc_status_t from_enu_q16(const drdc_geo_point_t *ref, int64_t e,
-                                  int64_t n, int64_t u, drdc_geo_point_t *p)
+/* geodetic of ENU (ned false) or NED (ned true) v (Q15.16) at a checked
+ * ref: the offsets turned to ECEF axes (Q27.36), the ref's ECEF added,
+ * then as geodetic_q36() */
+static drdc_status_t from_local(const drdc_geo_point_t *ref,
+                                const drdc_vec3_q15_16_t *v, bool ned,
+                                drdc_geo_point_t *p)
 {
-  int64_t a = n * Q36_PER_Q16;
-  int64_t b = u * Q36_PER_Q16;
-  int64_t c = e * Q36_PER_Q16;
+  int64_t a = (int64_t)(ned ? v->x : v->y) * Q36_PER_Q16;
+  int64_t b = (int64_t)(ned ? -(int64_t)v->z : (int64_t)v->z) * Q36_PER_Q16;
+  int64_t c = (int64_t)(ned ? v->y : v->x) * Q36_PER_Q16;
 
   /* about east by -latitude: (north, up) -> (dz, the horizontal part
    * towards the ref's meridian plane r); about the axis by -longitude:
@@ -476,7 +487,7 @@ drdc_status_t drdc_geo_from_enu(const drdc_geo_point_t *ref,
   if (st != DRDC_OK) {
     return st;
   }
-  return from_enu_q16(ref, enu->x, enu->y, enu->z, p);
+  return from_local(ref, enu, false, p);
 }
 
 drdc_status_t drdc_geo_from_ned(const drdc_geo_point_t *ref,
@@ -492,5 +503,5 @@ drdc_status_t drdc_geo_from_ned(const drdc_geo_point_t *ref,
   if (st != DRDC_OK) {
     return st;
   }
-  return from_enu_q16(ref, ned->y, ned->x, -(int64_t)ned->z, p);
+  return from_local(ref, ned, true, p);
 }
