@@ -367,13 +367,22 @@ drdc_status_t drdc_geo_from_ecef(const drdc_vec3_q47_16_t *ecef,
   return st;
 }
 
-/* ENU of p at ref, Q47.16; *e, *n, *u (the caller's) hold the Q27.36
- * sums on the way, so this frame keeps no copies */
-static drdc_status_t enu_q16(const drdc_geo_point_t *ref,
-                             const drdc_geo_point_t *p, int64_t *e,
-                             int64_t *n, int64_t *u)
+static bool fits_q15_16(int64_t v)
+{
+  return (v <= (int64_t)INT32_MAX) && (v >= (int64_t)INT32_MIN);
+}
+
+/* ENU (ned false) or NED (ned true) of p at ref in Q15.16, the pointers
+ * checked: the ECEF difference (Q27.36) turned in place in one array,
+ * d[0] = dx, d[1] = dy, d[2] = dz; about the axis by the longitude:
+ * (dx, dy) -> (towards the ref's meridian plane t, east); about east by
+ * the latitude: (t, dz) -> (up, north). */
+static drdc_status_t plane_of(const drdc_geo_point_t *ref,
+                              const drdc_geo_point_t *p, bool ned,
+                              drdc_vec3_q15_16_t *out)
 {
   drdc_status_t st;
+  int64_t d[3] = { 0, 0, 0 };
 
   st = check_point(ref);
   if (st == DRDC_OK) {
@@ -382,82 +391,50 @@ static drdc_status_t enu_q16(const drdc_geo_point_t *ref,
   if (st != DRDC_OK) {
     return st;
   }
-  /* dx, dy, dz in *u, *e, *n */
-  *u = 0;
-  *e = 0;
-  *n = 0;
-  ecef_acc_q36(p, false, u, e, n);
-  ecef_acc_q36(ref, true, u, e, n);
-  /* about the axis by the longitude: (dx, dy) -> (towards the ref's
-   * meridian plane t, east); about east by the latitude: (t, dz) ->
-   * (up, north) */
-  turn(lon_rad(ref->lon), u, e);
-  turn(geo_rad_from_nas(ref->lat), u, n);
-  *e = drdc_fx_rshift_round_s64_inline(*e, 20u);
-  *n = drdc_fx_rshift_round_s64_inline(*n, 20u);
-  *u = drdc_fx_rshift_round_s64_inline(*u, 20u);
+  ecef_acc_q36(p, false, &d[0], &d[1], &d[2]);
+  ecef_acc_q36(ref, true, &d[0], &d[1], &d[2]);
+  turn(lon_rad(ref->lon), &d[0], &d[1]);
+  turn(geo_rad_from_nas(ref->lat), &d[0], &d[2]);
+  /* east, north, up (Q47.16); NED: north, east, down */
+  d[0] = drdc_fx_rshift_round_s64_inline(d[0], 20u);
+  d[1] = drdc_fx_rshift_round_s64_inline(d[1], 20u);
+  d[2] = drdc_fx_rshift_round_s64_inline(d[2], 20u);
+  if (ned) {
+    d[0] = -d[0];
+  }
+  if (!fits_q15_16(d[0]) || !fits_q15_16(d[1]) || !fits_q15_16(d[2])) {
+    return DRDC_E_OVERFLOW;
+  }
+  out->x = (drdc_q15_16_t)(ned ? d[2] : d[1]);
+  out->y = (drdc_q15_16_t)(ned ? d[1] : d[2]);
+  out->z = (drdc_q15_16_t)d[0];
   return DRDC_OK;
-}
-
-static bool fits_q15_16(int64_t v)
-{
-  return (v <= (int64_t)INT32_MAX) && (v >= (int64_t)INT32_MIN);
 }
 
 drdc_status_t drdc_geo_to_enu(const drdc_geo_point_t *ref,
                               const drdc_geo_point_t *p,
                               drdc_vec3_q15_16_t *enu)
 {
-  drdc_status_t st;
-  int64_t e = 0;
-  int64_t n = 0;
-  int64_t u = 0;
-
   if ((ref == NULL) || (p == NULL) || (enu == NULL)) {
     return DRDC_E_NULL;
   }
-  st = enu_q16(ref, p, &e, &n, &u);
-  if (st != DRDC_OK) {
-    return st;
-  }
-  if (!fits_q15_16(e) || !fits_q15_16(n) || !fits_q15_16(u)) {
-    return DRDC_E_OVERFLOW;
-  }
-  enu->x = (drdc_q15_16_t)e;
-  enu->y = (drdc_q15_16_t)n;
-  enu->z = (drdc_q15_16_t)u;
-  return DRDC_OK;
+  return plane_of(ref, p, false, enu);
 }
 
 drdc_status_t drdc_geo_to_ned(const drdc_geo_point_t *ref,
                               const drdc_geo_point_t *p,
                               drdc_vec3_q15_16_t *ned)
 {
-  drdc_status_t st;
-  int64_t e = 0;
-  int64_t n = 0;
-  int64_t u = 0;
-
   if ((ref == NULL) || (p == NULL) || (ned == NULL)) {
     return DRDC_E_NULL;
   }
-  st = enu_q16(ref, p, &e, &n, &u);
-  if (st != DRDC_OK) {
-    return st;
-  }
-  if (!fits_q15_16(e) || !fits_q15_16(n) || !fits_q15_16(-u)) {
-    return DRDC_E_OVERFLOW;
-  }
-  ned->x = (drdc_q15_16_t)n;
-  ned->y = (drdc_q15_16_t)e;
-  ned->z = (drdc_q15_16_t)(-u);
-  return DRDC_OK;
+  return plane_of(ref, p, true, ned);
 }
 
 /* geodetic of ENU (ned false) or NED (ned true) v (Q15.16) at a checked
  * ref: the offsets turned to ECEF axes (Q27.36), the ref's ECEF added,
  * then as geodetic_q36() */
-static drdc_status_t from_local(const drdc_geo_point_t *ref,
+static drdc_status_t point_of_plane(const drdc_geo_point_t *ref,
                                 const drdc_vec3_q15_16_t *v, bool ned,
                                 drdc_geo_point_t *p)
 {
@@ -487,7 +464,7 @@ drdc_status_t drdc_geo_from_enu(const drdc_geo_point_t *ref,
   if (st != DRDC_OK) {
     return st;
   }
-  return from_local(ref, enu, false, p);
+  return point_of_plane(ref, enu, false, p);
 }
 
 drdc_status_t drdc_geo_from_ned(const drdc_geo_point_t *ref,
@@ -503,5 +480,5 @@ drdc_status_t drdc_geo_from_ned(const drdc_geo_point_t *ref,
   if (st != DRDC_OK) {
     return st;
   }
-  return from_local(ref, ned, true, p);
+  return point_of_plane(ref, ned, true, p);
 }
