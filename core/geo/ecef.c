@@ -6,11 +6,15 @@
  *
  * Forward: N = a / sqrt(1 - e^2 sin^2 phi), X = (N + h) cos phi cos lam,
  * Y = (N + h) cos phi sin lam, Z = (N (1 - e^2) + h) sin phi. Inverse:
- * phi = atan2(Z + e^2 N sin phi, p) iterated 8 times from
- * atan2(Z, p (1 - e^2)) (the error shrinks by e^2 N / (N + h) <= 0.0067 a
- * step), h = p cos phi + Z sin phi - a sqrt(1 - e^2 sin^2 phi). Lengths
- * are carried in Q27.36 inside (20 more bits than Q47.16), so p = hypot(X,
- * Y) and the local rotations lose nothing to the output rounding.
+ * Bowring's iteration from the parametric latitude atan2(a Z, b p), two
+ * steps (three more than 50 km below the ellipsoid), then
+ * h = p cos phi + Z sin phi - a sqrt(1 - e^2 sin^2 phi). Square roots as
+ * reciprocal roots by Newton steps (rsqrt_q58()), so no Q5.58 division
+ * or square root is left. Lengths are carried in Q27.36 inside (20 more
+ * bits than Q47.16), so p = hypot(X, Y) and the local rotations lose
+ * nothing to the output rounding. The helpers are split so that each
+ * deep call (atan2, sin/cos, the roots) runs from a frame that keeps
+ * only what it needs (issue 8's stack goal).
  */
 #include <drdc/geo_ecef.h>
 
