@@ -6,11 +6,15 @@
  *
  * Forward: N = a / sqrt(1 - e^2 sin^2 phi), X = (N + h) cos phi cos lam,
  * Y = (N + h) cos phi sin lam, Z = (N (1 - e^2) + h) sin phi. Inverse:
- * phi = atan2(Z + e^2 N sin phi, p) iterated 8 times from
- * atan2(Z, p (1 - e^2)) (the error shrinks by e^2 N / (N + h) <= 0.0067 a
- * step), h = p cos phi + Z sin phi - a sqrt(1 - e^2 sin^2 phi). Lengths
- * are carried in Q27.36 inside (20 more bits than Q47.16), so p = hypot(X,
- * Y) and the local rotations lose nothing to the output rounding.
+ * Bowring's iteration from the parametric latitude atan2(a Z, b p), two
+ * steps (three more than 50 km below the ellipsoid), then
+ * h = p cos phi + Z sin phi - a sqrt(1 - e^2 sin^2 phi). Square roots as
+ * reciprocal roots by Newton steps (rsqrt_q58()), so no Q5.58 division
+ * or square root is left. Lengths are carried in Q27.36 inside (20 more
+ * bits than Q47.16), so p = hypot(X, Y) and the local rotations lose
+ * nothing to the output rounding. The helpers are split so that each
+ * deep call (atan2, sin/cos, the roots) runs from a frame that keeps
+ * only what it needs (issue 8's stack goal).
  */
 #include <drdc/geo_ecef.h>
 
@@ -45,54 +49,107 @@ static drdc_status_t check_point(const drdc_geo_point_t *p)
   return DRDC_OK;
 }
 
-/* sin/cos of latitude and longitude of a checked point */
-typedef struct trig4 {
-  int64_t sphi;
-  int64_t cphi;
-  int64_t slam;
-  int64_t clam;
-} trig4_t;
-
-static void point_trig(const drdc_geo_point_t *p, trig4_t *t)
+/* a longitude of a checked point (|lon| < 540 degrees) reduced by whole
+ * turns to [-180, 180), in radians: sin/cos are most accurate near 0 */
+static int64_t lon_rad(drdc_nas_t lon)
 {
-  /* |lon| < 540 degrees: reduce by whole turns to +-180 first */
-  drdc_nas_t lon = p->lon;
+  drdc_nas_t l = lon;
 
-  if (lon >= (180 * GEO_NAS_DEG)) {
-    lon = lon - (360 * GEO_NAS_DEG);
-  } else if (lon < (-180 * GEO_NAS_DEG)) {
-    lon = lon + (360 * GEO_NAS_DEG);
+  if (l >= (180 * GEO_NAS_DEG)) {
+    l = l - (360 * GEO_NAS_DEG);
+  } else if (l < (-180 * GEO_NAS_DEG)) {
+    l = l + (360 * GEO_NAS_DEG);
   } else {
     /* in range */
   }
-  geo_sincos(geo_rad_from_nas(p->lat), &t->sphi, &t->cphi);
-  geo_sincos(geo_rad_from_nas(lon), &t->slam, &t->clam);
+  return geo_rad_from_nas(l);
 }
 
-/* ECEF of a checked point in Q27.36 */
-static void ecef_q36(const drdc_geo_point_t *p, int64_t *x, int64_t *y,
-                     int64_t *z)
+/* The plane rotation by angle t (radians) in place: (a, b) <- (a cos t +
+ * b sin t, b cos t - a sin t). Both tangent-plane conversions are two of
+ * these (about the polar axis by the longitude, then about the east axis
+ * by the latitude), so no 3 x 3 matrix or set of four sin/cos lives on
+ * the stack. |a|, |b| < 2^61. */
+static void turn(int64_t t, int64_t *a, int64_t *b)
 {
-  trig4_t t;
-  int64_t w;
-  int64_t n;
-  int64_t h = p->height * Q36_PER_Q16;
+  int64_t s = 0;
+  int64_t c = 0;
+  int64_t a0 = *a;
 
-  point_trig(p, &t);
-  w = geo_sqrt(GEO_ONE - geo_mul(GEO_E2, geo_mul(t.sphi, t.sphi)));
-  n = geo_div(A_Q36, w);
-  *x = geo_mul(n + h, geo_mul(t.cphi, t.clam));
-  *y = geo_mul(n + h, geo_mul(t.cphi, t.slam));
-  *z = geo_mul(geo_mul(n, GEO_ONE - GEO_E2) + h, t.sphi);
+  geo_sincos(t, &s, &c);
+  *a = geo_mul(a0, c) + geo_mul(*b, s);
+  *b = geo_mul(*b, c) - geo_mul(a0, s);
+}
+
+/* 1 / sqrt(x) for x in [1/4, 2) (Q5.58, the result at most 2): a seed
+ * within 2^-15 relative from the Q1.30 root of drdc_fx_sqrt_q1_30() and a
+ * 32-bit quotient, then Newton steps y (3 - x y^2) / 2, each squaring
+ * the relative error (2^-29, then 2^-57 with the roundings). Three to
+ * four products a step; no 64-bit division (drdc_fx_rsqrt_q1_30() takes
+ * a 64-bit quotient, drdc_fx_sqrt_q5_58() two 128-bit ones). */
+static int64_t rsqrt_q58(int64_t x, unsigned steps)
+{
+  /* x >> 28 as Q1.30 (x >= 0): floor, so in [2^28, 2^31) */
+  drdc_q1_30_t s30 = 0;
+  uint32_t d;
+  int64_t y;
+  unsigned i;
+
+  (void)drdc_fx_sqrt_q1_30((drdc_q1_30_t)((uint64_t)x >> 28), &s30);
+  /* s30 in [2^29, 2^30.5): d = s 2^16 in [2^15, 2^16.5), and
+   * (2^32 - 1) / d = 2^16 / s within 2^-15 relative, Q15.16 */
+  d = (uint32_t)s30 >> 14;
+  d = 0xFFFFFFFFu / d;
+  y = (int64_t)d * INT64_C(4398046511104);
+  for (i = 0u; i < steps; i++) {
+    y = drdc_fx_rshift_round_s64_inline(
+      geo_mul(y, (3 * GEO_ONE) - geo_mul(x, geo_mul(y, y))), 1u);
+  }
+  return y;
+}
+
+/* *x, *y += or -= (N + h) cos phi (cos lam, sin lam): the longitude's
+ * part of ecef_acc_q36(), in its own frame */
+static void ecef_acc_lon(drdc_nas_t lon, int64_t nh, int64_t cphi, bool sub,
+                         int64_t *x, int64_t *y)
+{
+  int64_t slam = 0;
+  int64_t clam = 0;
+  int64_t v;
+
+  geo_sincos(lon_rad(lon), &slam, &clam);
+  v = geo_mul(nh, geo_mul(cphi, clam));
+  *x = sub ? (*x - v) : (*x + v);
+  v = geo_mul(nh, geo_mul(cphi, slam));
+  *y = sub ? (*y - v) : (*y + v);
+}
+
+/* ECEF of a checked point in Q27.36, added to (*x, *y, *z), or subtracted
+ * when sub (geo_mul() rounds symmetrically, so the difference of two
+ * points is exactly that of their coordinates) */
+static void ecef_acc_q36(const drdc_geo_point_t *p, bool sub, int64_t *x,
+                         int64_t *y, int64_t *z)
+{
+  int64_t sphi = 0;
+  int64_t cphi = 0;
+  int64_t n;
+  int64_t v;
+
+  geo_sincos(geo_rad_from_nas(p->lat), &sphi, &cphi);
+  /* N = a / w = a / sqrt(w^2), w^2 = 1 - e^2 sin^2 phi in [1 - e^2, 1]:
+   * no Q5.58 square root or quotient */
+  n = geo_mul(A_Q36,
+              rsqrt_q58(GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi)), 2u));
+  v = geo_mul(geo_mul(n, GEO_ONE - GEO_E2) + (p->height * Q36_PER_Q16),
+              sphi);
+  *z = sub ? (*z - v) : (*z + v);
+  ecef_acc_lon(p->lon, n + (p->height * Q36_PER_Q16), cphi, sub, x, y);
 }
 
 drdc_status_t drdc_geo_to_ecef(const drdc_geo_point_t *p,
                                drdc_vec3_q47_16_t *ecef)
 {
   drdc_status_t st;
-  int64_t x = 0;
-  int64_t y = 0;
-  int64_t z = 0;
 
   if ((p == NULL) || (ecef == NULL)) {
     return DRDC_E_NULL;
@@ -101,10 +158,15 @@ drdc_status_t drdc_geo_to_ecef(const drdc_geo_point_t *p,
   if (st != DRDC_OK) {
     return st;
   }
-  ecef_q36(p, &x, &y, &z);
-  ecef->x = drdc_fx_rshift_round_s64(x, 20u);
-  ecef->y = drdc_fx_rshift_round_s64(y, 20u);
-  ecef->z = drdc_fx_rshift_round_s64(z, 20u);
+  /* nothing fails from here on: the output holds the Q27.36 sums, then
+   * their Q47.16 rounding (no local copy on the stack) */
+  ecef->x = 0;
+  ecef->y = 0;
+  ecef->z = 0;
+  ecef_acc_q36(p, false, &ecef->x, &ecef->y, &ecef->z);
+  ecef->x = drdc_fx_rshift_round_s64_inline(ecef->x, 20u);
+  ecef->y = drdc_fx_rshift_round_s64_inline(ecef->y, 20u);
+  ecef->z = drdc_fx_rshift_round_s64_inline(ecef->z, 20u);
   return DRDC_OK;
 }
 
@@ -113,44 +175,182 @@ static int64_t ecef_abs64(int64_t v)
   return (v < 0) ? -v : v;
 }
 
-/* geodetic of ECEF in Q27.36 (|x|, |y|, |z| < 2^61) */
-static drdc_status_t geodetic_q36(int64_t x, int64_t y, int64_t z,
-                                  drdc_geo_point_t *out)
+/* (*a, *b) scaled by one power of two so the larger magnitude lies in
+ * [2^57, 2^58) (rounding right shift, or exact left shift), both then
+ * read as Q5.58 values of magnitude below 1; returns the shift: > 0
+ * right, < 0 left. |*a|, |*b| < 2^62, not both zero. */
+static int scale_legs(int64_t *a, int64_t *b)
 {
-  int64_t p = (int64_t)drdc_fx_hypot_s64(x, y);
-  int64_t phi;
-  int64_t sphi = 0;
-  int64_t cphi = 0;
-  int64_t w;
-  int64_t h;
-  unsigned i;
+  uint64_t ma = (uint64_t)ecef_abs64(*a);
+  uint64_t mb = (uint64_t)ecef_abs64(*b);
+  uint64_t m = (ma > mb) ? ma : mb;
+  unsigned n = 0u;
 
-  if ((p < (ECEF_CORE * Q36_PER_Q16)) && (ecef_abs64(z) < (ECEF_CORE * Q36_PER_Q16))) {
+  if (m >= (UINT64_C(1) << 58)) {
+    while ((m >> n) >= (UINT64_C(1) << 58)) {
+      n++;
+    }
+    *a = drdc_fx_rshift_round_s64_inline(*a, n);
+    *b = drdc_fx_rshift_round_s64_inline(*b, n);
+    return (int)n;
+  }
+  while ((m << n) < (UINT64_C(1) << 57)) {
+    n++;
+  }
+  *a = *a * (int64_t)(UINT64_C(1) << n);
+  *b = *b * (int64_t)(UINT64_C(1) << n);
+  return -(int)n;
+}
+
+/* The state of Bowring's iteration (Q27.36 lengths, or Q5.58 when (u, v)
+ * is a unit vector), one struct in the frame of geodetic_direction() that
+ * the helpers below reach by pointer, so no level keeps copies of it */
+typedef struct bowring {
+  int64_t p; /**< distance from the polar axis */
+  int64_t z; /**< distance from the equatorial plane */
+  int64_t u; /**< a direction: horizontal part */
+  int64_t v; /**< a direction: vertical part */
+} bowring_t;
+
+/* (b->u, b->v) <- (u, v) / hypot(u, v) (Q5.58, within 3 LSB), and
+ * returns hypot(u, v) (relative error within 2^-56: 1e-10 m at the
+ * Earth's radius). On the legs scaled to [2^57, 2^58) (a^2 + b^2 in
+ * [1/4, 2)): y = 1 / sqrt(a^2 + b^2), the unit vector (a y, b y), the
+ * length (a^2 + b^2) y scaled back. (u, v) != (0, 0), |u|, |v| < 2^61.
+ * A fifth of the cycles of drdc_fx_hypot_s64()'s exact 128-bit root and
+ * two Q5.58 quotients. */
+static int64_t normalise(bowring_t *b)
+{
+  int64_t a = b->u;
+  int64_t c = b->v;
+  int64_t q;
+  int64_t y;
+  int k = scale_legs(&a, &c);
+
+  q = geo_mul(a, a) + geo_mul(c, c);
+  y = rsqrt_q58(q, 2u);
+  b->u = geo_mul(a, y);
+  b->v = geo_mul(c, y);
+  q = geo_mul(q, y);
+  /* q < 2^58.5 and the length below 2^61.5: no overflow either way */
+  return (k >= 0) ? (q * (int64_t)(UINT64_C(1) << (unsigned)k))
+                  : drdc_fx_rshift_round_s64_inline(q, (unsigned)-k);
+}
+
+/* One step of Bowring's iteration at distance p from the axis and height
+ * z over the equator: the unit vector (b->u, b->v) (cos, sin) of the
+ * parametric latitude beta becomes (p - e^2 a cos^3 beta,
+ * z + e'^2 b sin^3 beta), the direction of the geodetic latitude. The
+ * step converges cubically (measured with mpmath: from beta_0 =
+ * atan2(a z, b p) the latitude is within 8e-9 rad after one step,
+ * 1.4e-19 after two for heights -10 km .. 10 000 km, 2e-25 after two for
+ * any point at least 6 300 km from the centre, 4e-27 after three for
+ * every accepted point). */
+static void bowring_step(bowring_t *b)
+{
+  b->u = b->p - geo_mul(GEO_E2A_Q36, geo_mul(geo_mul(b->u, b->u), b->u));
+  b->v = b->z + geo_mul(GEO_EP2B_Q36, geo_mul(geo_mul(b->v, b->v), b->v));
+}
+
+/* h = p cos phi + z sin phi - a sqrt(1 - e^2 sin^2 phi) (Q27.36) with
+ * (b->u, b->v) = (cos phi, sin phi); stationary in phi at the true
+ * latitude, so an error d of phi moves h by about N d^2 only. w =
+ * sqrt(w^2) as w^2 / sqrt(w^2), w^2 in [1 - e^2, 1]. */
+static int64_t height_q36(const bowring_t *b)
+{
+  int64_t w2 = GEO_ONE - geo_mul(GEO_E2, geo_mul(b->v, b->v));
+
+  return (geo_mul(b->p, b->u) + geo_mul(b->z, b->v))
+         - geo_mul(A_Q36, geo_mul(w2, rsqrt_q58(w2, 2u)));
+}
+
+/* Below this height (Q27.36: -50 km) the point is less than 6 300 km
+ * from the centre (b - 50 km > 6 300 km), and Bowring's iteration takes a
+ * third step. */
+#define DEEP_Q36 (INT64_C(-50000) * INT64_C(68719476736))
+
+/* The unit vector (cos phi, sin phi) of the geodetic latitude (Q5.58) and
+ * the height (Q47.16) of ECEF x, y, z in Q27.36 (|x|, |y|, |z| < 2^61).
+ * On DRDC_OK they are written to out as scratch: out->lon = cos phi,
+ * out->lat = sin phi, and the final out->height; nothing is written on
+ * error. */
+static drdc_status_t geodetic_direction(int64_t x, int64_t y, int64_t z,
+                                        drdc_geo_point_t *out)
+{
+  bowring_t b;
+  int64_t h;
+
+  b.p = 0;
+  b.z = z;
+  b.u = x;
+  b.v = y;
+  if ((x != 0) || (y != 0)) {
+    b.p = normalise(&b);
+  }
+  if ((b.p < (ECEF_CORE * Q36_PER_Q16))
+      && (ecef_abs64(z) < (ECEF_CORE * Q36_PER_Q16))) {
     return DRDC_E_HEIGHT;
   }
-  phi = geo_atan2(z, geo_mul(p, GEO_ONE - GEO_E2));
-  for (i = 0u; i < 8u; i++) {
-    geo_sincos(phi, &sphi, &cphi);
-    w = geo_sqrt(GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi)));
-    phi = geo_atan2(z + geo_mul(geo_div(A_Q36, w), geo_mul(GEO_E2, sphi)),
-                    p);
+  /* tan beta_0 = a z / (b p), then tan beta = (b / a) tan phi */
+  b.u = geo_mul(b.p, GEO_B_OVER_A);
+  b.v = z;
+  (void)normalise(&b);
+  bowring_step(&b);
+  b.v = geo_mul(b.v, GEO_B_OVER_A);
+  (void)normalise(&b);
+  bowring_step(&b);
+  (void)normalise(&b);
+  h = height_q36(&b);
+  if (h < DEEP_Q36) {
+    b.v = geo_mul(b.v, GEO_B_OVER_A);
+    (void)normalise(&b);
+    bowring_step(&b);
+    (void)normalise(&b);
+    h = height_q36(&b);
   }
-  geo_sincos(phi, &sphi, &cphi);
-  w = geo_sqrt(GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi)));
-  h = (geo_mul(p, cphi) + geo_mul(z, sphi)) - geo_mul(A_Q36, w);
-  h = drdc_fx_rshift_round_s64(h, 20u);
+  h = drdc_fx_rshift_round_s64_inline(h, 20u);
   if ((h > DRDC_GEO_HEIGHT_MAX) || (h < -DRDC_GEO_HEIGHT_MAX)) {
     return DRDC_E_HEIGHT;
   }
-  out->lat = geo_nas_from_rad(phi);
-  out->lon = ((x == 0) && (y == 0)) ? 0 : geo_nas_from_rad(geo_atan2(y, x));
+  out->lon = b.u;
+  out->lat = b.v;
   out->height = h;
   return DRDC_OK;
+}
+
+/* atan2(y, x) in nas */
+static inline drdc_nas_t angle_nas(int64_t y, int64_t x)
+{
+  int64_t r = 0;
+
+  (void)drdc_fx_atan2_q5_58(y, x, &r);
+  return geo_nas_from_rad(r);
+}
+
+/* geodetic of ECEF in Q27.36 (|x|, |y|, |z| < 2^61). The longitude
+ * first (atan2 is scale-free), then Bowring's iteration for the
+ * latitude's direction and the height, then the latitude's atan2: each
+ * deep call from a frame that keeps only the longitude and pointers */
+static drdc_status_t geodetic_q36(int64_t x, int64_t y, int64_t z,
+                                  drdc_geo_point_t *out)
+{
+  drdc_nas_t lon = ((x == 0) && (y == 0)) ? 0 : angle_nas(y, x);
+  drdc_status_t st = geodetic_direction(x, y, z, out);
+
+  if (st == DRDC_OK) {
+    /* nothing fails from here on: out holds the scratch direction */
+    out->lat = angle_nas(out->lat, out->lon);
+    out->lon = lon;
+  }
+  return st;
 }
 
 drdc_status_t drdc_geo_from_ecef(const drdc_vec3_q47_16_t *ecef,
                                  drdc_geo_point_t *p)
 {
+  drdc_nas_t lon;
+  drdc_status_t st;
+
   if ((ecef == NULL) || (p == NULL)) {
     return DRDC_E_NULL;
   }
@@ -158,26 +358,35 @@ drdc_status_t drdc_geo_from_ecef(const drdc_vec3_q47_16_t *ecef,
       || (ecef_abs64(ecef->z) >= ECEF_COORD_MAX)) {
     return DRDC_E_HEIGHT;
   }
-  return geodetic_q36(ecef->x * Q36_PER_Q16, ecef->y * Q36_PER_Q16,
-                      ecef->z * Q36_PER_Q16, p);
+  /* as geodetic_q36(), reading the coordinates again after each call
+   * rather than keeping them: the longitude from the Q47.16 values (the
+   * same angle: atan2 scales its arguments exactly) */
+  lon = ((ecef->x == 0) && (ecef->y == 0)) ? 0 : angle_nas(ecef->y, ecef->x);
+  st = geodetic_direction(ecef->x * Q36_PER_Q16, ecef->y * Q36_PER_Q16,
+                          ecef->z * Q36_PER_Q16, p);
+  if (st == DRDC_OK) {
+    p->lat = angle_nas(p->lat, p->lon);
+    p->lon = lon;
+  }
+  return st;
 }
 
-/* ENU of p at ref, Q47.16 */
-static drdc_status_t enu_q16(const drdc_geo_point_t *ref,
-                             const drdc_geo_point_t *p, int64_t *e,
-                             int64_t *n, int64_t *u)
+static bool fits_q15_16(int64_t v)
+{
+  return (v <= (int64_t)INT32_MAX) && (v >= (int64_t)INT32_MIN);
+}
+
+/* ENU (ned false) or NED (ned true) of p at ref in Q15.16, the pointers
+ * checked: the ECEF difference (Q27.36) turned in place in one array,
+ * d[0] = dx, d[1] = dy, d[2] = dz; about the axis by the longitude:
+ * (dx, dy) -> (towards the ref's meridian plane t, east); about east by
+ * the latitude: (t, dz) -> (up, north). */
+static drdc_status_t plane_of(const drdc_geo_point_t *ref,
+                              const drdc_geo_point_t *p, bool ned,
+                              drdc_vec3_q15_16_t *out)
 {
   drdc_status_t st;
-  trig4_t t;
-  int64_t x0 = 0;
-  int64_t y0 = 0;
-  int64_t z0 = 0;
-  int64_t x1 = 0;
-  int64_t y1 = 0;
-  int64_t z1 = 0;
-  int64_t dx;
-  int64_t dy;
-  int64_t dz;
+  int64_t d[3] = { 0, 0, 0 };
 
   st = check_point(ref);
   if (st == DRDC_OK) {
@@ -186,100 +395,64 @@ static drdc_status_t enu_q16(const drdc_geo_point_t *ref,
   if (st != DRDC_OK) {
     return st;
   }
-  ecef_q36(ref, &x0, &y0, &z0);
-  ecef_q36(p, &x1, &y1, &z1);
-  dx = x1 - x0;
-  dy = y1 - y0;
-  dz = z1 - z0;
-  point_trig(ref, &t);
-  *e = drdc_fx_rshift_round_s64(geo_mul(dy, t.clam) - geo_mul(dx, t.slam),
-                                20u);
-  *n = drdc_fx_rshift_round_s64(
-    (geo_mul(dz, t.cphi)
-     - geo_mul(geo_mul(dx, t.clam) + geo_mul(dy, t.slam), t.sphi)),
-    20u);
-  *u = drdc_fx_rshift_round_s64(
-    (geo_mul(dz, t.sphi)
-     + geo_mul(geo_mul(dx, t.clam) + geo_mul(dy, t.slam), t.cphi)),
-    20u);
+  ecef_acc_q36(p, false, &d[0], &d[1], &d[2]);
+  ecef_acc_q36(ref, true, &d[0], &d[1], &d[2]);
+  turn(lon_rad(ref->lon), &d[0], &d[1]);
+  turn(geo_rad_from_nas(ref->lat), &d[0], &d[2]);
+  /* east, north, up (Q47.16); NED: north, east, down */
+  d[0] = drdc_fx_rshift_round_s64_inline(d[0], 20u);
+  d[1] = drdc_fx_rshift_round_s64_inline(d[1], 20u);
+  d[2] = drdc_fx_rshift_round_s64_inline(d[2], 20u);
+  if (ned) {
+    d[0] = -d[0];
+  }
+  if (!fits_q15_16(d[0]) || !fits_q15_16(d[1]) || !fits_q15_16(d[2])) {
+    return DRDC_E_OVERFLOW;
+  }
+  out->x = (drdc_q15_16_t)(ned ? d[2] : d[1]);
+  out->y = (drdc_q15_16_t)(ned ? d[1] : d[2]);
+  out->z = (drdc_q15_16_t)d[0];
   return DRDC_OK;
-}
-
-static bool fits_q15_16(int64_t v)
-{
-  return (v <= (int64_t)INT32_MAX) && (v >= (int64_t)INT32_MIN);
 }
 
 drdc_status_t drdc_geo_to_enu(const drdc_geo_point_t *ref,
                               const drdc_geo_point_t *p,
                               drdc_vec3_q15_16_t *enu)
 {
-  drdc_status_t st;
-  int64_t e = 0;
-  int64_t n = 0;
-  int64_t u = 0;
-
   if ((ref == NULL) || (p == NULL) || (enu == NULL)) {
     return DRDC_E_NULL;
   }
-  st = enu_q16(ref, p, &e, &n, &u);
-  if (st != DRDC_OK) {
-    return st;
-  }
-  if (!fits_q15_16(e) || !fits_q15_16(n) || !fits_q15_16(u)) {
-    return DRDC_E_OVERFLOW;
-  }
-  enu->x = (drdc_q15_16_t)e;
-  enu->y = (drdc_q15_16_t)n;
-  enu->z = (drdc_q15_16_t)u;
-  return DRDC_OK;
+  return plane_of(ref, p, false, enu);
 }
 
 drdc_status_t drdc_geo_to_ned(const drdc_geo_point_t *ref,
                               const drdc_geo_point_t *p,
                               drdc_vec3_q15_16_t *ned)
 {
-  drdc_status_t st;
-  int64_t e = 0;
-  int64_t n = 0;
-  int64_t u = 0;
-
   if ((ref == NULL) || (p == NULL) || (ned == NULL)) {
     return DRDC_E_NULL;
   }
-  st = enu_q16(ref, p, &e, &n, &u);
-  if (st != DRDC_OK) {
-    return st;
-  }
-  if (!fits_q15_16(e) || !fits_q15_16(n) || !fits_q15_16(-u)) {
-    return DRDC_E_OVERFLOW;
-  }
-  ned->x = (drdc_q15_16_t)n;
-  ned->y = (drdc_q15_16_t)e;
-  ned->z = (drdc_q15_16_t)(-u);
-  return DRDC_OK;
+  return plane_of(ref, p, true, ned);
 }
 
-/* geodetic of ENU (e, n, u in Q15.16 as int64) at a checked ref */
-static drdc_status_t from_enu_q16(const drdc_geo_point_t *ref, int64_t e,
-                                  int64_t n, int64_t u, drdc_geo_point_t *p)
+/* geodetic of ENU (ned false) or NED (ned true) v (Q15.16) at a checked
+ * ref: the offsets turned to ECEF axes (Q27.36), the ref's ECEF added,
+ * then as geodetic_q36() */
+static drdc_status_t point_of_plane(const drdc_geo_point_t *ref,
+                                const drdc_vec3_q15_16_t *v, bool ned,
+                                drdc_geo_point_t *p)
 {
-  trig4_t t;
-  int64_t x0 = 0;
-  int64_t y0 = 0;
-  int64_t z0 = 0;
-  int64_t e36 = e * Q36_PER_Q16;
-  int64_t n36 = n * Q36_PER_Q16;
-  int64_t u36 = u * Q36_PER_Q16;
-  /* the horizontal part towards the ref's meridian plane */
-  int64_t r;
+  int64_t a = (int64_t)(ned ? v->x : v->y) * Q36_PER_Q16;
+  int64_t b = (int64_t)(ned ? -(int64_t)v->z : (int64_t)v->z) * Q36_PER_Q16;
+  int64_t c = (int64_t)(ned ? v->y : v->x) * Q36_PER_Q16;
 
-  ecef_q36(ref, &x0, &y0, &z0);
-  point_trig(ref, &t);
-  r = geo_mul(u36, t.cphi) - geo_mul(n36, t.sphi);
-  return geodetic_q36(x0 + (geo_mul(r, t.clam) - geo_mul(e36, t.slam)),
-                      y0 + (geo_mul(r, t.slam) + geo_mul(e36, t.clam)),
-                      z0 + (geo_mul(n36, t.cphi) + geo_mul(u36, t.sphi)), p);
+  /* about east by -latitude: (north, up) -> (dz, the horizontal part
+   * towards the ref's meridian plane r); about the axis by -longitude:
+   * (east, r) -> (dy, dx) */
+  turn(geo_rad_from_nas(ref->lat), &a, &b);
+  turn(lon_rad(ref->lon), &c, &b);
+  ecef_acc_q36(ref, false, &b, &c, &a);
+  return geodetic_q36(b, c, a, p);
 }
 
 drdc_status_t drdc_geo_from_enu(const drdc_geo_point_t *ref,
@@ -295,7 +468,7 @@ drdc_status_t drdc_geo_from_enu(const drdc_geo_point_t *ref,
   if (st != DRDC_OK) {
     return st;
   }
-  return from_enu_q16(ref, enu->x, enu->y, enu->z, p);
+  return point_of_plane(ref, enu, false, p);
 }
 
 drdc_status_t drdc_geo_from_ned(const drdc_geo_point_t *ref,
@@ -311,5 +484,5 @@ drdc_status_t drdc_geo_from_ned(const drdc_geo_point_t *ref,
   if (st != DRDC_OK) {
     return st;
   }
-  return from_enu_q16(ref, ned->y, ned->x, -(int64_t)ned->z, p);
+  return point_of_plane(ref, ned, true, p);
 }

@@ -102,6 +102,13 @@ def consts():
          "WGS-84 first eccentricity squared e^2 = f (2 - f),\n"
          " *  f = 1/298.257223563."),
         ("GEO_E", rnd(E * ONE), "WGS-84 first eccentricity e."),
+        ("GEO_B_OVER_A", rnd((1 - FL) * ONE),
+         "b / a = 1 - f (polar over equatorial radius)."),
+        ("GEO_E2A_Q36", rnd(E2 * A * mpmath.mpf(2) ** 36),
+         "e^2 a in metres, Q27.36 (Bowring's step, ecef.c)."),
+        ("GEO_EP2B_Q36", rnd(E2 / (1 - E2) * A * (1 - FL) * mpmath.mpf(2) ** 36),
+         "e'^2 b = e^2 a / sqrt(1 - e^2) in metres, Q27.36 (Bowring's\n"
+         " *  step, ecef.c)."),
         ("GEO_K0A_Q40", rnd(K0 * rect * mpmath.mpf(2) ** 40),
          "k0 A in metres, Q23.40: k0 = 0.9996 times the rectifying\n"
          " *  radius A = a / (1 + n) (1 + n^2/4 + n^4/64 + n^6/256),\n"

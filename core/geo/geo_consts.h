@@ -17,6 +17,13 @@
 #define GEO_E2 INT64_C(1929523662660924)
 /** WGS-84 first eccentricity e. */
 #define GEO_E INT64_C(23582776152997482)
+/** b / a = 1 - f (polar over equatorial radius). */
+#define GEO_B_OVER_A INT64_C(287263994272646107)
+/** e^2 a in metres, Q27.36 (Bowring's step, ecef.c). */
+#define GEO_E2A_Q36 INT64_C(2934161726282396)
+/** e'^2 b = e^2 a / sqrt(1 - e^2) in metres, Q27.36 (Bowring's
+ *  step, ecef.c). */
+#define GEO_EP2B_Q36 INT64_C(2944032509878881)
 /** k0 A in metres, Q23.40: k0 = 0.9996 times the rectifying
  *  radius A = a / (1 + n) (1 + n^2/4 + n^4/64 + n^6/256),
  *  a = 6 378 137 m. */

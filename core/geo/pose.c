@@ -199,29 +199,25 @@ static bool separation_ok(drdc_q47_16_t n)
   return (n <= DRDC_GEO_HEIGHT_MAX) && (n >= -DRDC_GEO_HEIGHT_MAX);
 }
 
-drdc_status_t drdc_pose_w_from_l(const drdc_WPose_t *ref,
-                                 drdc_q47_16_t geoid_separation,
-                                 const drdc_lPose_t *l, drdc_WPose_t *out)
+/* The rest of drdc_pose_w_from_l() once the offset is in NED: the
+ * position through drdc_geo_from_ned() at the reference's ellipsoidal
+ * point and the composed attitude, written only when both succeed. In
+ * its own frame, so the points and the quaternion are not on the stack
+ * during the caller's quaternion rotation. */
+static drdc_status_t w_from_ned(const drdc_WPose_t *ref,
+                                drdc_q47_16_t geoid_separation,
+                                const drdc_vec3_q15_16_t *ned,
+                                const drdc_quat_t *lq, drdc_WPose_t *out)
 {
   drdc_geo_point_t r;
   drdc_geo_point_t p = { 0, 0, 0 };
-  drdc_vec3_q15_16_t ned = { 0, 0, 0 };
   drdc_quat_t q = { 0, 0, 0, 0 };
   drdc_status_t st;
 
-  if ((ref == NULL) || (l == NULL) || (out == NULL)) {
-    return DRDC_E_NULL;
-  }
-  if (!separation_ok(geoid_separation)) {
-    return DRDC_E_HEIGHT;
-  }
   ellipsoidal(ref, geoid_separation, &r);
-  st = drdc_quat_rotate_q15_16(&ref->q, &l->p, &ned);
+  st = drdc_geo_from_ned(&r, ned, &p);
   if (st == DRDC_OK) {
-    st = drdc_geo_from_ned(&r, &ned, &p);
-  }
-  if (st == DRDC_OK) {
-    st = drdc_quat_compose(&ref->q, &l->q, &q);
+    st = drdc_quat_compose(&ref->q, lq, &q);
   }
   if (st != DRDC_OK) {
     return st;
@@ -236,16 +232,75 @@ drdc_status_t drdc_pose_w_from_l(const drdc_WPose_t *ref,
   return DRDC_OK;
 }
 
+drdc_status_t drdc_pose_w_from_l(const drdc_WPose_t *ref,
+                                 drdc_q47_16_t geoid_separation,
+                                 const drdc_lPose_t *l, drdc_WPose_t *out)
+{
+  drdc_vec3_q15_16_t ned = { 0, 0, 0 };
+  drdc_status_t st;
+
+  if ((ref == NULL) || (l == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  if (!separation_ok(geoid_separation)) {
+    return DRDC_E_HEIGHT;
+  }
+  st = drdc_quat_rotate_q15_16(&ref->q, &l->p, &ned);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  return w_from_ned(ref, geoid_separation, &ned, &l->q, out);
+}
+
+/* NED of w at ref (both ellipsoidal by the separation), in its own frame
+ * (the two points are not on the stack during the caller's rotation) */
+static drdc_status_t ned_of(const drdc_WPose_t *ref,
+                            drdc_q47_16_t geoid_separation,
+                            const drdc_WPose_t *w, drdc_vec3_q15_16_t *ned)
+{
+  drdc_geo_point_t r;
+  drdc_geo_point_t p;
+
+  ellipsoidal(ref, geoid_separation, &r);
+  ellipsoidal(w, geoid_separation, &p);
+  return drdc_geo_to_ned(&r, &p, ned);
+}
+
+/* The attitude part of {W} -> {l} once the offset is in NED: the
+ * offset turned into the reference's body axes (conjugate rotation) and
+ * the relative attitude; out written only on DRDC_OK (out->p by the last
+ * step that can fail). Shared by drdc_pose_l_from_w() and
+ * drdc_pose_le_from_we(). */
+static drdc_status_t l_from_ned(const drdc_quat_t *rq,
+                                const drdc_vec3_q15_16_t *ned,
+                                const drdc_quat_t *wq, drdc_lPose_t *out)
+{
+  drdc_quat_t inv = { 0, 0, 0, 0 };
+  drdc_quat_t q = { 0, 0, 0, 0 };
+  drdc_status_t st;
+
+  st = drdc_quat_conj(rq, &inv);
+  if (st == DRDC_OK) {
+    st = drdc_quat_compose(&inv, wq, &q);
+  }
+  if (st == DRDC_OK) {
+    st = drdc_quat_rotate_q15_16(&inv, ned, &out->p);
+  }
+  if (st != DRDC_OK) {
+    return st;
+  }
+  out->q.s = q.s;
+  out->q.x = q.x;
+  out->q.y = q.y;
+  out->q.z = q.z;
+  return DRDC_OK;
+}
+
 drdc_status_t drdc_pose_l_from_w(const drdc_WPose_t *ref,
                                  drdc_q47_16_t geoid_separation,
                                  const drdc_WPose_t *w, drdc_lPose_t *out)
 {
-  drdc_geo_point_t r;
-  drdc_geo_point_t p;
   drdc_vec3_q15_16_t ned = { 0, 0, 0 };
-  drdc_vec3_q15_16_t v = { 0, 0, 0 };
-  drdc_quat_t inv = { 0, 0, 0, 0 };
-  drdc_quat_t q = { 0, 0, 0, 0 };
   drdc_status_t st;
 
   if ((ref == NULL) || (w == NULL) || (out == NULL)) {
@@ -254,29 +309,11 @@ drdc_status_t drdc_pose_l_from_w(const drdc_WPose_t *ref,
   if (!separation_ok(geoid_separation)) {
     return DRDC_E_HEIGHT;
   }
-  ellipsoidal(ref, geoid_separation, &r);
-  ellipsoidal(w, geoid_separation, &p);
-  st = drdc_geo_to_ned(&r, &p, &ned);
-  if (st == DRDC_OK) {
-    st = drdc_quat_conj(&ref->q, &inv);
-  }
-  if (st == DRDC_OK) {
-    st = drdc_quat_rotate_q15_16(&inv, &ned, &v);
-  }
-  if (st == DRDC_OK) {
-    st = drdc_quat_compose(&inv, &w->q, &q);
-  }
+  st = ned_of(ref, geoid_separation, w, &ned);
   if (st != DRDC_OK) {
     return st;
   }
-  out->p.x = v.x;
-  out->p.y = v.y;
-  out->p.z = v.z;
-  out->q.s = q.s;
-  out->q.x = q.x;
-  out->q.y = q.y;
-  out->q.z = q.z;
-  return DRDC_OK;
+  return l_from_ned(&ref->q, &ned, &w->q, out);
 }
 
 /* the MGRS text of w's position at prec and the convergence there; text
@@ -496,30 +533,35 @@ drdc_status_t drdc_pose_we_from_le(const drdc_WePose_t *ref,
                                    const drdc_lePose_t *le,
                                    drdc_WePose_t *out)
 {
+  /* the reference as {W}, then overwritten by the result (w_from_ned()
+   * reads its ref before writing its out) */
   drdc_WPose_t r;
-  drdc_WPose_t w;
-  drdc_lPose_t l;
-  drdc_euler_t e = { 0u, 0u, 0u };
+  drdc_quat_t lq = { 0, 0, 0, 0 };
+  drdc_vec3_q15_16_t ned = { 0, 0, 0 };
   drdc_status_t st;
 
   if ((ref == NULL) || (le == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
+  if (!separation_ok(geoid_separation)) {
+    return DRDC_E_HEIGHT;
+  }
   w_from_we(ref, &r);
-  (void)drdc_pose_l_from_le(le, &l);
-  st = drdc_pose_w_from_l(&r, geoid_separation, &l, &w);
+  (void)drdc_quat_from_euler(&le->e, &lq);
+  st = drdc_quat_rotate_q15_16(&r.q, &le->p, &ned);
   if (st == DRDC_OK) {
-    st = drdc_euler_from_quat(&w.q, &e);
+    st = w_from_ned(&r, geoid_separation, &ned, &lq, &r);
+  }
+  if (st == DRDC_OK) {
+    /* the last step that can fail: out->e written only on DRDC_OK */
+    st = drdc_euler_from_quat(&r.q, &out->e);
   }
   if (st != DRDC_OK) {
     return st;
   }
-  out->longitude = w.longitude;
-  out->latitude = w.latitude;
-  out->height = w.height;
-  out->e.yaw = e.yaw;
-  out->e.pitch = e.pitch;
-  out->e.roll = e.roll;
+  out->longitude = r.longitude;
+  out->latitude = r.latitude;
+  out->height = r.height;
   return DRDC_OK;
 }
 
@@ -531,14 +573,21 @@ drdc_status_t drdc_pose_le_from_we(const drdc_WePose_t *ref,
   drdc_WPose_t r;
   drdc_WPose_t w;
   drdc_lPose_t l = { { 0, 0, 0 }, { 0, 0, 0, 0 } };
+  drdc_vec3_q15_16_t ned = { 0, 0, 0 };
   drdc_status_t st;
 
   if ((ref == NULL) || (we == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
+  if (!separation_ok(geoid_separation)) {
+    return DRDC_E_HEIGHT;
+  }
   w_from_we(ref, &r);
   w_from_we(we, &w);
-  st = drdc_pose_l_from_w(&r, geoid_separation, &w, &l);
+  st = ned_of(&r, geoid_separation, &w, &ned);
+  if (st == DRDC_OK) {
+    st = l_from_ned(&r.q, &ned, &w.q, &l);
+  }
   if (st != DRDC_OK) {
     return st;
   }

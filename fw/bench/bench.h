@@ -35,6 +35,10 @@ void bench_inputs_init(void);
 extern const bench_case_t bench_cases_time[];
 extern const bench_case_t bench_cases_fixed[];
 extern const bench_case_t bench_cases_orient[];
+/** An ECEF point (Q47.16 metres) near the Earth's surface from a 32-bit
+ *  input, made with integer sin/cos (cases_geo.c; the input of both
+ *  ecef_reverse cases). */
+void bench_ecef_point(uint32_t x, int64_t *ex, int64_t *ey, int64_t *ez);
 /** core/geo cases (cases_geo.c). */
 extern const bench_case_t bench_cases_geo[];
 extern const bench_case_t bench_cases_libfixmath[];

@@ -214,6 +214,50 @@ static double utm_forward(double lat, double lon)
   return (k0a * eta) + (k0a * xi) + gamma + k;
 }
 
+/* geodetic -> ECEF and Bowring's two steps back, as core/geo/ecef.c
+ * does them, in double (WGS-84) */
+static double ecef_forward(double lat, double lon, double h)
+{
+  const double a = 6378137.0, e2 = 6.69437999014e-3;
+  const double deg = 0.017453292519943295;
+  double sp = sin(lat * deg), cp = cos(lat * deg);
+  double n = a / sqrt(1.0 - (e2 * sp * sp));
+
+  return ((n + h) * cp * cos(lon * deg)) + ((n + h) * cp * sin(lon * deg))
+         + (((n * (1.0 - e2)) + h) * sp);
+}
+
+static double ecef_reverse(uint32_t x)
+{
+  const double a = 6378137.0, e2 = 6.69437999014e-3;
+  const double bova = 0.99664718933525254, e2a = e2 * a;
+  const double ep2b = e2 * a / 0.99664718933525254;
+  int64_t ex, ey, ez;
+  double x0, y0, z, p, u, v, r, c, s, h;
+  int i;
+
+  bench_ecef_point(x, &ex, &ey, &ez);
+  x0 = (double)ex / 65536.0;
+  y0 = (double)ey / 65536.0;
+  z = (double)ez / 65536.0;
+  p = hypot(x0, y0);
+  u = p * bova;
+  v = z;
+  for (i = 0; i < 2; i++) {
+    r = hypot(u, v);
+    c = u / r;
+    s = v / r;
+    u = p - (e2a * c * c * c);
+    v = z + (ep2b * s * s * s);
+    if (i == 0) {
+      v = v * bova;
+    }
+  }
+  r = hypot(u, v);
+  h = (p * u / r) + (z * v / r) - (a * sqrt(1.0 - (e2 * v * v / (r * r))));
+  return atan2(v, u) + atan2(y0, x0) + h;
+}
+
 BENCH_LOOP_DOUBLE(run_days_from_civil,
            days_from_civil(1900.0 + (double)(x % 200u), 1.0 + (double)((x >> 8) % 12u),
                            1.0 + (double)((x >> 16) % 28u)))
@@ -236,6 +280,11 @@ BENCH_LOOP_DOUBLE(run_mul, (double)(int32_t)x * (double)(int32_t)(x >> 7) / 6553
 BENCH_LOOP_DOUBLE(run_utm_forward,
                   utm_forward(((double)(x & 0xFFFFu) - 32768.0) * (8.8e9 / 3.6e12),
                               ((double)(x >> 16) - 32768.0) * (19.7e9 / 3.6e12)))
+BENCH_LOOP_DOUBLE(run_ecef_forward,
+                  ecef_forward(((double)(x & 0xFFFFu) - 32768.0) * (9.88e9 / 3.6e12),
+                               ((double)((x >> 16) & 0x7FFFu) - 16384.0) * (39.5e9 / 3.6e12),
+                               (double)(x >> 31) * 1e6 - 1e4 + (double)((x >> 8) & 0xFFu) * 40.0))
+BENCH_LOOP_DOUBLE(run_ecef_reverse, ecef_reverse(x))
 
 const bench_case_t bench_cases_double[] = {
   { "days_from_civil", "double", "run_days_from_civil", run_days_from_civil },
@@ -252,6 +301,8 @@ const bench_case_t bench_cases_double[] = {
   { "sqrt", "double", "run_sqrt", run_sqrt },
   { "mul_q15_16", "double", "run_mul", run_mul },
   { "utm_forward", "double", "run_utm_forward", run_utm_forward },
+  { "ecef_forward", "double", "run_ecef_forward", run_ecef_forward },
+  { "ecef_reverse", "double", "run_ecef_reverse", run_ecef_reverse },
   { 0, 0, 0, 0 },
 };
 #else
