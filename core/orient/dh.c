@@ -214,7 +214,7 @@ drdc_status_t drdc_dh_link_transform(drdc_dh_convention_t convention,
 static __attribute__((noinline)) int64_t mul_round(int64_t a, int64_t b,
                                                    unsigned n)
 {
-  return orient_mul_rshift_round(a, b, n);
+  return drdc_fx_mul_rshift_round(a, b, n);
 }
 
 /* Q2.61 value times a Q60 one, as Q2.61: one correct rounding (128-bit

@@ -209,28 +209,6 @@ drdc_status_t drdc_orient_impl_numerators(const drdc_quat_t *q,
                                           int64_t p[3][3], int64_t *n2);
 
 /* The wide-integer primitives that lived here are in fixed/
- * (<drdc/fixed_wide.h>, issue 3). The three orient names below remain,
- * forwarding without a change of result, for the files that still call
- * them (quat.c, dh.c, quat_interp.c) until they switch to the drdc_fx_
- * names. */
-
-/** drdc_fx_div_digit16(), under its former name. */
-static inline uint32_t orient_div_digit16(uint32_t *r, uint32_t u, uint32_t d)
-{
-  return drdc_fx_div_digit16(r, u, d);
-}
-
-/** drdc_fx_muldiv_round64(), under its former name. */
-static inline int64_t orient_muldiv_round64(int64_t a, int32_t b, int32_t c)
-{
-  return drdc_fx_muldiv_round64(a, b, c);
-}
-
-/** drdc_fx_mul_rshift_round(), under its former name. */
-static inline int64_t orient_mul_rshift_round(int64_t a, int64_t b,
-                                              unsigned n)
-{
-  return drdc_fx_mul_rshift_round(a, b, n);
-}
+ * (<drdc/fixed_wide.h>, issue 3). */
 
 #endif /* DRDC_ORIENT_IMPL_H */

@@ -198,8 +198,8 @@ static int32_t div_root(int32_t c, unsigned e, uint64_t root)
     quo += lo >> 31u;
   } else {
     /* num < 2^62 and quotient <= 2^30: the high word is below d */
-    uint32_t q1 = orient_div_digit16(&r, lo >> 16u, d);
-    uint32_t q0 = orient_div_digit16(&r, lo & 0xFFFFu, d);
+    uint32_t q1 = drdc_fx_div_digit16(&r, lo >> 16u, d);
+    uint32_t q0 = drdc_fx_div_digit16(&r, lo & 0xFFFFu, d);
 
     quo = (q1 << 16u) | q0;
     quo += (r >= (d - r)) ? 1u : 0u;

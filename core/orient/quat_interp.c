@@ -54,9 +54,9 @@ static void exp_axis(drdc_bam32_t h, const drdc_quat_t *vq, int32_t vn,
 
   drdc_fx_sincos_bam32(h, &s, &c);
   /* |v_i| <= vn: each quotient is within [-|s|, |s|]; |s v| <= 2^61 */
-  out->x = (drdc_q1_30_t)orient_muldiv_round64(s, vq->x, vn);
-  out->y = (drdc_q1_30_t)orient_muldiv_round64(s, vq->y, vn);
-  out->z = (drdc_q1_30_t)orient_muldiv_round64(s, vq->z, vn);
+  out->x = (drdc_q1_30_t)drdc_fx_muldiv_round64(s, vq->x, vn);
+  out->y = (drdc_q1_30_t)drdc_fx_muldiv_round64(s, vq->y, vn);
+  out->z = (drdc_q1_30_t)drdc_fx_muldiv_round64(s, vq->z, vn);
   out->s = c;
 }
 
@@ -195,9 +195,9 @@ static drdc_status_t log_rel(const drdc_quat_t *c, const drdc_quat_t *q,
   (void)drdc_fx_atan2_bam32(vn, d.s, &half); /* [0, 2^30] */
   /* half <= 2^30, |d| <= 2^30 + a few: products below 2^61, quotients
    * within [-half, half] */
-  w->x = (int32_t)orient_muldiv_round64((int64_t)half, d.x, vn);
-  w->y = (int32_t)orient_muldiv_round64((int64_t)half, d.y, vn);
-  w->z = (int32_t)orient_muldiv_round64((int64_t)half, d.z, vn);
+  w->x = (int32_t)drdc_fx_muldiv_round64((int64_t)half, d.x, vn);
+  w->y = (int32_t)drdc_fx_muldiv_round64((int64_t)half, d.y, vn);
+  w->z = (int32_t)drdc_fx_muldiv_round64((int64_t)half, d.z, vn);
   return DRDC_OK;
 }
 
