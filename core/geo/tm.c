@@ -383,18 +383,19 @@ static __attribute__((noinline)) void fwd_series(const tm_fwd_t *st,
 }
 
 /* the scale from the series' derivative p - i q (in out->gamma, out->k)
- * into out->k; the convergence's atan2(y, x) left in st->slam, st->clam
- * (1 when its series was used, 0 when the caller must take the full
- * atan2 from its own small frame) */
+ * into out->k; the convergence's atan2(y, x) arguments into st->slam,
+ * st->clam (no longer needed there), so that no int64_t is live across
+ * the calls. 1 when the convergence's series was used, 0 when the caller
+ * must take the full atan2 from its own small frame. */
 static __attribute__((noinline)) int fwd_gamma_k(tm_fwd_t *st,
                                                  geo_tm_t *out)
 {
   int64_t p = out->gamma;
   int64_t q = out->k;
   int64_t y = geo_mul(st->schi, st->slam);
-  int64_t x = geo_mul(st->clam, p) - geo_mul(y, q);
 
-  y = geo_mul(st->clam, q) + geo_mul(y, p);
+  st->slam = geo_mul(st->clam, q) + geo_mul(y, p);
+  st->clam = geo_mul(st->clam, p) - geo_mul(y, q);
   /* scale: k0 A/a sqrt(1 - e^2 sin^2 phi) (cos chi / cos phi) cosh eta'
    * times |p + i q|, the two roots as one */
   p = geo_mul(st->kfac, geo_mul(p, p) + geo_mul(q, q)) - GEO_ONE;
@@ -410,12 +411,11 @@ static __attribute__((noinline)) int fwd_gamma_k(tm_fwd_t *st,
    * standard zone, Svalbard's included) the series of atan of the
    * quotient, |y| <= x / 4 tested before dividing (so the quotient cannot
    * overflow and is at most 0.25); the full atan2 beyond */
-  if ((x > 0) && (y <= (x / 4)) && (y >= -(x / 4))) {
-    out->gamma = tm_atan(geo_div(y, x));
+  if ((st->clam > 0) && (st->slam <= (st->clam / 4))
+      && (st->slam >= -(st->clam / 4))) {
+    out->gamma = tm_atan(geo_div(st->slam, st->clam));
     return 1;
   }
-  st->slam = y;
-  st->clam = x;
   return 0;
 }
 
@@ -436,41 +436,44 @@ int geo_tm_forward(int64_t phi, int64_t lam, geo_tm_t *out)
   return 1;
 }
 
-/* xi' + i eta' = zeta - Krueger's beta series at zeta = xi + i eta, into
- * xe[0], xe[1] */
+/* xi' + i eta' = zeta - Krueger's beta series at zeta = xi + i eta,
+ * into *xip, *etap (the caller's outputs, its scratch until the end) */
 static __attribute__((noinline)) void rev_series(int64_t xi, int64_t eta,
-                                                 int64_t *xe)
+                                                 int64_t *xip, int64_t *etap)
 {
   tm_zeta_t z;
 
+  *xip = xi;
+  *etap = eta;
   geo_sincos(2 * xi, &z.r1, &z.i1);
   /* sinh and cosh of 2 eta from the series of sinh and cosh of eta
    * (|eta| <= 0.08 from the eastings' range): no exponential */
   z.r2 = tm_sinh(eta);
-  z.i2 = tm_cosh(eta);
+  z.i2 = tm_cosh(*etap);
   z.cr = 2 * geo_mul(z.r2, z.i2);
   z.i2 = geo_mul(z.i2, z.i2) + geo_mul(z.r2, z.r2);
   z.r2 = z.cr;
   zeta_set(&z);
   clenshaw(geo_beta, false, &z);
   krueger_sum(&z);
-  xe[0] = xi - z.sr;
-  xe[1] = eta - z.si;
+  *xip = *xip - z.sr;
+  *etap = *etap - z.si;
 }
 
+/* xi', eta' wait in *phi, *lam; chi = atan2(sin xi', sqrt(sinh^2 eta' +
+ * cos^2 xi')) too, before phi = chi + its series */
 void geo_tm_reverse(int64_t xi, int64_t eta, int64_t *phi, int64_t *lam)
 {
-  int64_t xe[2];
   int64_t sxip = 0;
   int64_t cxip = 0;
   int64_t shetap;
 
-  rev_series(xi, eta, xe);
-  geo_sincos(xe[0], &sxip, &cxip);
-  shetap = tm_sinh(xe[1]);
+  rev_series(xi, eta, phi, lam);
+  geo_sincos(*phi, &sxip, &cxip);
+  shetap = tm_sinh(*lam);
   *lam = geo_atan2(shetap, cxip);
-  xe[0] = geo_atan2(sxip, geo_sqrt(geo_mul(shetap, shetap)
-                                   + geo_mul(cxip, cxip)));
-  geo_sincos(xe[0], &sxip, &cxip);
-  *phi = xe[0] + geo_phi_series(sxip, cxip);
+  *phi = geo_atan2(sxip, geo_sqrt(geo_mul(shetap, shetap)
+                                  + geo_mul(cxip, cxip)));
+  geo_sincos(*phi, &sxip, &cxip);
+  *phi = *phi + geo_phi_series(sxip, cxip);
 }
