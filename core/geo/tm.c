@@ -426,12 +426,16 @@ int geo_tm_forward(int64_t phi, int64_t lam, geo_tm_t *out)
   if (fwd_sphere(phi, lam, &st, out) == 0) {
     return 0;
   }
+  /* the full atan2s write straight into out (0 first, as geo_atan2()
+   * gives when both arguments are zero): no result slot in this frame */
   if (fwd_xi(&st, out) == 0) {
-    out->xi = geo_atan2(st.schi, geo_mul(out->k, st.clam));
+    out->xi = 0;
+    (void)drdc_fx_atan2_q5_58(st.schi, geo_mul(out->k, st.clam), &out->xi);
   }
   fwd_series(&st, out);
   if (fwd_gamma_k(&st, out) == 0) {
-    out->gamma = geo_atan2(st.slam, st.clam);
+    out->gamma = 0;
+    (void)drdc_fx_atan2_q5_58(st.slam, st.clam, &out->gamma);
   }
   return 1;
 }
@@ -471,9 +475,13 @@ void geo_tm_reverse(int64_t xi, int64_t eta, int64_t *phi, int64_t *lam)
   rev_series(xi, eta, phi, lam);
   geo_sincos(*phi, &sxip, &cxip);
   shetap = tm_sinh(*lam);
-  *lam = geo_atan2(shetap, cxip);
-  *phi = geo_atan2(sxip, geo_sqrt(geo_mul(shetap, shetap)
-                                  + geo_mul(cxip, cxip)));
+  /* the atan2s write straight into the outputs (0 first, as
+   * geo_atan2() gives when both arguments are zero) */
+  *lam = 0;
+  (void)drdc_fx_atan2_q5_58(shetap, cxip, lam);
+  shetap = geo_sqrt(geo_mul(shetap, shetap) + geo_mul(cxip, cxip));
+  *phi = 0;
+  (void)drdc_fx_atan2_q5_58(sxip, shetap, phi);
   geo_sincos(*phi, &sxip, &cxip);
   *phi = *phi + geo_phi_series(sxip, cxip);
 }
