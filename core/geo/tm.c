@@ -109,13 +109,18 @@ static __attribute__((noinline)) void clenshaw(const int64_t *coef,
     int64_t c = deriv ? (coef[j - 1u] * (2 * (int64_t)j)) : coef[j - 1u];
     int64_t t;
 
-    /* the new b_j into c and t, then the slots shifted on */
-    c = ((c + tm_mul(ar, z->r1)) - tm_mul(ai, z->i1)) - z->r2;
-    t = (tm_mul(ar, z->i1) + tm_mul(ai, z->r1)) - z->i2;
-    z->r2 = z->r1;
-    z->i2 = z->i1;
-    z->r1 = c;
-    z->i1 = t;
+    /* the new b_j into the b_(j+2) slots one product at a time, then
+     * the slots swapped */
+    z->r2 = (c - z->r2) + tm_mul(ar, z->r1);
+    z->r2 = z->r2 - tm_mul(ai, z->i1);
+    z->i2 = tm_mul(ar, z->i1) - z->i2;
+    z->i2 = z->i2 + tm_mul(ai, z->r1);
+    t = z->r1;
+    z->r1 = z->r2;
+    z->r2 = t;
+    t = z->i1;
+    z->i1 = z->i2;
+    z->i2 = t;
   }
 }
 
