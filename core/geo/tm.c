@@ -60,60 +60,92 @@ static int64_t sine_series(const int64_t *coef, unsigned terms, int64_t s2,
  * b_j = c_j + A b_(j+1) - b_(j+2), sum c_j sin(2 j zeta) = sin(2 zeta) b_1
  * = dxi + i deta; with d_j = 2 j c_j the same recurrence gives the
  * derivative 1 + sum d_j cos(2 j zeta) = 1 + cos(2 zeta) b_1 - b_2
- * = p - i q (only when deriv). The sum is added to out->xi, out->eta;
- * p and q go to out->gamma and out->k (scratch of the caller's result,
- * so no second struct is on the stack). Inputs: sin, cos of 2 xi and sinh, cosh of
- * 2 eta. |A| <= 2 cosh(0.68) < 2.5 and |b_j| < 2e-3, so every product
- * stays far inside Q5.58 and the roundings add up to a few LSB. */
-/* one step of the complex Clenshaw recurrence: b_j = c + A b_(j+1) -
- * b_(j+2) with (r1, i1) = b_(j+1), (r2, i2) = b_(j+2), shifted on */
-static inline void clenshaw_step(int64_t ar, int64_t ai, int64_t c, int64_t *r1,
-                          int64_t *i1, int64_t *r2, int64_t *i2)
-{
-  int64_t r0 = ((c + tm_mul(ar, *r1)) - tm_mul(ai, *i1)) - *r2;
-  int64_t i0 = (tm_mul(ar, *i1) + tm_mul(ai, *r1)) - *i2;
+ * = p - i q (only when deriv). |A| <= 2 cosh(0.68) < 2.5 and |b_j| <
+ * 2e-3, so every product stays far inside Q5.58 and the roundings add up
+ * to a few LSB.
+ *
+ * Stack: on a 32-bit core each int64_t takes two registers, so the
+ * series' state lives in one struct owned by the caller (tm_zeta_t) and
+ * the recurrence runs in a small out-of-line helper that reaches it by
+ * pointer: no frame on the chain holds a second copy of it. */
+typedef struct tm_zeta {
+  int64_t cr; /* cos 2 zeta = cr + i ci */
+  int64_t ci;
+  int64_t sr; /* sin 2 zeta = sr + i si */
+  int64_t si;
+  int64_t r1; /* b_(j+1), b_(j+2): real and imaginary parts */
+  int64_t i1;
+  int64_t r2;
+  int64_t i2;
+} tm_zeta_t;
 
-  *r2 = *r1;
-  *i2 = *i1;
-  *r1 = r0;
-  *i1 = i0;
+/* z's sin and cos of 2 zeta from sin, cos of 2 xi and sinh, cosh of
+ * 2 eta, which the caller leaves in z->r1, i1, r2, i2 (the recurrence's
+ * slots, free until it starts): cos 2 zeta = c2 ch2 - i s2 sh2, sin 2
+ * zeta = s2 ch2 + i c2 sh2 */
+static __attribute__((noinline)) void zeta_set(tm_zeta_t *z)
+{
+  z->cr = geo_mul(z->i1, z->i2);
+  z->ci = -geo_mul(z->r1, z->r2);
+  z->sr = geo_mul(z->r1, z->i2);
+  z->si = geo_mul(z->i1, z->r2);
 }
 
-static void krueger(const int64_t *coef, int64_t s2, int64_t c2,
-                    int64_t sh2, int64_t ch2, bool deriv, geo_tm_t *out)
+/* the recurrence over coef[0..5] (times 2 j when deriv), from b = 0:
+ * b_1, b_2 left in z->r1, i1, r2, i2 (out of line: its few registers are
+ * the deepest frame of the chain) */
+static __attribute__((noinline)) void clenshaw(const int64_t *coef,
+                                               bool deriv, tm_zeta_t *z)
 {
-  /* cos 2 zeta = c2 ch2 - i s2 sh2, sin 2 zeta = s2 ch2 + i c2 sh2 */
-  int64_t cr = geo_mul(c2, ch2);
-  int64_t ci = -geo_mul(s2, sh2);
-  int64_t r1 = 0; /* b_(j+1), b_(j+2): real and imaginary parts */
-  int64_t i1 = 0;
-  int64_t r2 = 0;
-  int64_t i2 = 0;
+  int64_t ar = 2 * z->cr;
+  int64_t ai = 2 * z->ci;
   unsigned j;
 
-  /* the sine series, then (when asked) the derivative's: one series at
-   * a time keeps half the state live */
+  z->r1 = 0;
+  z->i1 = 0;
+  z->r2 = 0;
+  z->i2 = 0;
   for (j = GEO_KRUEGER_TERMS; j > 0u; j--) {
-    clenshaw_step(2 * cr, 2 * ci, coef[j - 1u], &r1, &i1, &r2, &i2);
+    int64_t c = deriv ? (coef[j - 1u] * (2 * (int64_t)j)) : coef[j - 1u];
+    int64_t t;
+
+    /* the new b_j into the b_(j+2) slots one product at a time, then
+     * the slots swapped */
+    z->r2 = (c - z->r2) + tm_mul(ar, z->r1);
+    z->r2 = z->r2 - tm_mul(ai, z->i1);
+    z->i2 = tm_mul(ar, z->i1) - z->i2;
+    z->i2 = z->i2 + tm_mul(ai, z->r1);
+    t = z->r1;
+    z->r1 = z->r2;
+    z->r2 = t;
+    t = z->i1;
+    z->i1 = z->i2;
+    z->i2 = t;
   }
-  r2 = geo_mul(s2, ch2); /* sin 2 zeta, real and imaginary part */
-  i2 = geo_mul(c2, sh2);
-  out->xi = out->xi + (geo_mul(r2, r1) - geo_mul(i2, i1));
-  out->eta = out->eta + (geo_mul(r2, i1) + geo_mul(i2, r1));
-  out->gamma = 0;
-  out->k = 0;
-  if (deriv) {
-    r1 = 0;
-    i1 = 0;
-    r2 = 0;
-    i2 = 0;
-    for (j = GEO_KRUEGER_TERMS; j > 0u; j--) {
-      clenshaw_step(2 * cr, 2 * ci, coef[j - 1u] * (2 * (int64_t)j), &r1,
-                    &i1, &r2, &i2);
-    }
-    out->gamma = (GEO_ONE + (geo_mul(cr, r1) - geo_mul(ci, i1))) - r2;
-    out->k = -((geo_mul(cr, i1) + geo_mul(ci, r1)) - i2);
-  }
+}
+
+/* After clenshaw() over the coefficients: the sum sin(2 zeta) b_1 =
+ * dxi + i deta into z->sr, z->si (the caller's struct carries the
+ * results, no second one is on the stack). */
+static __attribute__((noinline)) void krueger_sum(tm_zeta_t *z)
+{
+  int64_t d = geo_mul(z->sr, z->r1) - geo_mul(z->si, z->i1);
+
+  z->si = geo_mul(z->sr, z->i1) + geo_mul(z->si, z->r1);
+  z->sr = d;
+}
+
+/* After clenshaw() over 2 j times the coefficients: the derivative
+ * 1 + cos(2 zeta) b_1 - b_2 = p - i q, p into z->cr and q into z->ci. The
+ * series' stages call clenshaw() and these directly (one frame fewer on
+ * the chain than a wrapper would add). */
+static __attribute__((noinline)) void krueger_deriv(tm_zeta_t *z)
+{
+  int64_t d = (GEO_ONE + (geo_mul(z->cr, z->r1) - geo_mul(z->ci, z->i1)))
+              - z->r2;
+
+  z->ci = -((geo_mul(z->cr, z->i1) + geo_mul(z->ci, z->r1)) - z->i2);
+  z->cr = d;
 }
 
 /* coef[0] + x (coef[1] + x (... + x coef[n-1])) by Horner, n >= 1: the
@@ -202,8 +234,9 @@ static int64_t tm_atan(int64_t q)
  * d^2/6 + d^4/120) and cos d = 1 - d^2/2 + d^4/24 - d^6/720 (first omitted
  * terms d^7/5040 and d^8/40320 below 1e-20), then the addition theorems:
  * 11 products instead of a full sin/cos. */
-static void rotate_small(int64_t s, int64_t c, int64_t d, int64_t *s_out,
-                         int64_t *c_out)
+static __attribute__((noinline)) void rotate_small(int64_t s, int64_t c,
+                                                   int64_t d, int64_t *s_out,
+                                                   int64_t *c_out)
 {
   int64_t d2 = geo_mul(d, d);
   int64_t sd = geo_mul(d, GEO_ONE - geo_mul(d2, Q58_RECIP(6)
@@ -259,129 +292,201 @@ int64_t geo_phi_series(int64_t schi, int64_t cchi)
                      geo_mul(cchi, cchi) - geo_mul(schi, schi));
 }
 
-int geo_tm_forward(int64_t phi, int64_t lam, geo_tm_t *out)
-{
-  int64_t slam = 0;
-  int64_t clam = 0;
-  int64_t schi = 0;
-  int64_t cchi = 0;
-  int64_t chi;
-  int64_t ratio; /* cos chi / cos phi */
+/* What the forward projection keeps between its stages (in
+ * geo_tm_forward()'s frame, each stage a small out-of-line function that
+ * reaches it by pointer, so that the frames under the two atan2 calls
+ * and under the Krueger series stay small). cos chi and sinh eta' are
+ * needed only up to the series: they wait in out->k and out->gamma,
+ * which the series' derivative overwrites. */
+typedef struct tm_fwd {
+  int64_t schi;  /* sin chi, chi the conformal latitude */
+  int64_t slam;  /* sin and cos of the longitude from the meridian */
+  int64_t clam;
   int64_t kfac;  /* 1 - e^2 sin^2 phi */
+  int64_t ratio; /* cos chi / cos phi */
+  int64_t ch;    /* cosh eta' */
+} tm_fwd_t;
+
+/* chi and the sphere's eta': out->xi = chi (xi' - chi is added by
+ * fwd_xi()), out->eta = eta', out->k = cos chi, out->gamma = sinh eta';
+ * 0 beyond the series' domain */
+static __attribute__((noinline)) int fwd_sphere(int64_t phi, int64_t lam,
+                                                tm_fwd_t *st, geo_tm_t *out)
+{
+  int64_t sphi = 0;
+  int64_t cphi = 0;
+  int64_t chi;
   int64_t tanh_eta;
-  int64_t ch;
-  int64_t sh;
-  int64_t sxi;
-  int64_t cxi;
-  int64_t p;
-  int64_t q;
 
-  {
-    /* sin and cos phi are needed only here (their slots are reused) */
-    int64_t sphi = 0;
-    int64_t cphi = 0;
-
-    geo_sincos(phi, &sphi, &cphi);
-    chi = geo_chi_series(sphi, cphi);
-    rotate_small(sphi, cphi, chi, &schi, &cchi);
-    kfac = GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi));
-    /* the scale's cos chi / cos phi, its limit at the poles */
-    ratio = (cphi > 0) ? geo_div(cchi, cphi) : GEO_POLE_RATIO;
-  }
-  chi = phi + chi;
-  geo_sincos(lam, &slam, &clam);
-  tanh_eta = geo_mul(cchi, slam);
+  /* lam first and phi's values in the order of their last use: few
+   * int64_t live across each call */
+  geo_sincos(lam, &st->slam, &st->clam);
+  geo_sincos(phi, &sphi, &cphi);
+  chi = geo_chi_series(sphi, cphi);
+  rotate_small(sphi, cphi, chi, &st->schi, &out->k);
+  out->xi = phi + chi;
+  st->kfac = GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi));
+  /* the scale's cos chi / cos phi, its limit at the poles */
+  st->ratio = (cphi > 0) ? geo_div(out->k, cphi) : GEO_POLE_RATIO;
+  tanh_eta = geo_mul(out->k, st->slam);
   if ((tanh_eta > GEO_TM_MAX_TANH_ETA) || (tanh_eta < -GEO_TM_MAX_TANH_ETA)) {
     return 0;
   }
   out->eta = tm_atanh(tanh_eta);
-  /* sinh eta' = tanh eta' cosh eta'; and sin^2 chi + cos^2 chi cos^2 lam
-   * = 1 - tanh^2 eta' = 1 / cosh^2 eta', so sin xi' = sin chi cosh eta'
-   * and cos xi' = cos chi cos lam cosh eta': no exponential and no
-   * sin/cos of xi'. */
-  ch = tm_cosh(out->eta);
-  sh = geo_mul(tanh_eta, ch);
-  sxi = geo_mul(schi, ch);
-  cxi = geo_mul(geo_mul(cchi, clam), ch);
-  /* xi' = chi + atan(q), q = tan(xi' - chi) = sin chi cos chi (1 - cos
-   * lam) / (1 - cos^2 chi (1 - cos lam)) (the denominator >= 0.89 in the
-   * domain); far from the central meridian near the poles |q| exceeds
-   * tm_atan()'s 0.25 and the full atan2 takes over */
-  q = GEO_ONE - clam;
-  q = geo_div(geo_mul(geo_mul(schi, cchi), q),
-              GEO_ONE - geo_mul(geo_mul(cchi, cchi), q));
+  /* sinh eta' = tanh eta' cosh eta' (see fwd_series()) */
+  st->ch = tm_cosh(out->eta);
+  out->gamma = geo_mul(tanh_eta, st->ch);
+  return 1;
+}
+
+/* xi' = chi + atan(q), q = tan(xi' - chi) = sin chi cos chi (1 - cos
+ * lam) / (1 - cos^2 chi (1 - cos lam)) (the denominator >= 0.89 in the
+ * domain); far from the central meridian near the poles |q| exceeds
+ * tm_atan()'s 0.25: then 0, and the caller takes the full atan2 (from
+ * its own small frame). out->xi holds chi, out->k cos chi. */
+static __attribute__((noinline)) int fwd_xi(const tm_fwd_t *st,
+                                            geo_tm_t *out)
+{
+  int64_t q = GEO_ONE - st->clam;
+
+  q = geo_div(geo_mul(geo_mul(st->schi, out->k), q),
+              GEO_ONE - geo_mul(geo_mul(out->k, out->k), q));
   if ((q <= TM_ATAN_MAX) && (q >= -TM_ATAN_MAX)) {
-    out->xi = chi + tm_atan(q);
-  } else {
-    out->xi = geo_atan2(schi, geo_mul(cchi, clam));
+    out->xi = out->xi + tm_atan(q);
+    return 1;
   }
-  krueger(geo_alpha, 2 * geo_mul(sxi, cxi),
-          geo_mul(cxi, cxi) - geo_mul(sxi, sxi), 2 * geo_mul(sh, ch),
-          geo_mul(ch, ch) + geo_mul(sh, sh), true, out);
-  p = out->gamma;
-  q = out->k;
-  /* convergence: gamma' = arg(cos lam + i sin chi sin lam) of the sphere
-   * plus arg(p + i q) of the series' derivative, as the argument of the
-   * product (|gamma| < pi/2 + 0.01: no wrap) */
-  sxi = geo_mul(schi, slam);
-  cxi = geo_mul(clam, p) - geo_mul(sxi, q);
-  sxi = geo_mul(clam, q) + geo_mul(sxi, p);
-  /* within 14 degrees (every standard zone, Svalbard's included) the
-   * series of atan of the quotient, |y| <= x / 4 tested before dividing
-   * (so the quotient cannot overflow and is at most 0.25); the full atan2
-   * beyond */
-  if ((cxi > 0) && (sxi <= (cxi / 4)) && (sxi >= -(cxi / 4))) {
-    out->gamma = tm_atan(geo_div(sxi, cxi));
-  } else {
-    out->gamma = geo_atan2(sxi, cxi);
-  }
+  return 0;
+}
+
+/* Krueger's series at xi' + i eta': sin^2 chi + cos^2 chi cos^2 lam =
+ * 1 - tanh^2 eta' = 1 / cosh^2 eta', so sin xi' = sin chi cosh eta' and
+ * cos xi' = cos chi cos lam cosh eta': no exponential and no sin/cos of
+ * xi'. Adds the sum to out->xi, out->eta; p and q to out->gamma, out->k
+ * (which held sinh eta' and cos chi). */
+static __attribute__((noinline)) void fwd_series(const tm_fwd_t *st,
+                                                 geo_tm_t *out)
+{
+  tm_zeta_t z;
+
+  z.cr = geo_mul(st->schi, st->ch);                    /* sin xi' */
+  z.ci = geo_mul(geo_mul(out->k, st->clam), st->ch);   /* cos xi' */
+  z.r1 = 2 * geo_mul(z.cr, z.ci);
+  z.i1 = geo_mul(z.ci, z.ci) - geo_mul(z.cr, z.cr);
+  z.r2 = 2 * geo_mul(out->gamma, st->ch);
+  z.i2 = geo_mul(st->ch, st->ch) + geo_mul(out->gamma, out->gamma);
+  zeta_set(&z);
+  /* the sine series, then the derivative's: one series at a time keeps
+   * half the state live */
+  clenshaw(geo_alpha, false, &z);
+  krueger_sum(&z);
+  clenshaw(geo_alpha, true, &z);
+  krueger_deriv(&z);
+  out->xi = out->xi + z.sr;
+  out->eta = out->eta + z.si;
+  out->gamma = z.cr;
+  out->k = z.ci;
+}
+
+/* the scale from the series' derivative p - i q (in out->gamma, out->k)
+ * into out->k; the convergence's atan2(y, x) arguments into st->slam,
+ * st->clam (no longer needed there), so that no int64_t is live across
+ * the calls. 1 when the convergence's series was used, 0 when the caller
+ * must take the full atan2 from its own small frame. */
+static __attribute__((noinline)) int fwd_gamma_k(tm_fwd_t *st,
+                                                 geo_tm_t *out)
+{
+  int64_t p = out->gamma;
+  int64_t q = out->k;
+  int64_t y = geo_mul(st->schi, st->slam);
+
+  st->slam = geo_mul(st->clam, q) + geo_mul(y, p);
+  st->clam = geo_mul(st->clam, p) - geo_mul(y, q);
   /* scale: k0 A/a sqrt(1 - e^2 sin^2 phi) (cos chi / cos phi) cosh eta'
    * times |p + i q|, the two roots as one */
-  p = geo_mul(kfac, geo_mul(p, p) + geo_mul(q, q)) - GEO_ONE;
+  p = geo_mul(st->kfac, geo_mul(p, p) + geo_mul(q, q)) - GEO_ONE;
   if ((p <= TM_SQRT_MAX) && (p >= -TM_SQRT_MAX)) {
     p = tm_sqrt1p(p);
   } else {
     p = geo_sqrt(GEO_ONE + p);
   }
-  out->k = geo_mul(GEO_K0A_OVER_A, geo_mul(geo_mul(p, ratio), ch));
+  out->k = geo_mul(GEO_K0A_OVER_A, geo_mul(geo_mul(p, st->ratio), st->ch));
+  /* convergence: gamma' = arg(cos lam + i sin chi sin lam) of the sphere
+   * plus arg(p + i q) of the series' derivative, as the argument of the
+   * product (|gamma| < pi/2 + 0.01: no wrap). Within 14 degrees (every
+   * standard zone, Svalbard's included) the series of atan of the
+   * quotient, |y| <= x / 4 tested before dividing (so the quotient cannot
+   * overflow and is at most 0.25); the full atan2 beyond */
+  if ((st->clam > 0) && (st->slam <= (st->clam / 4))
+      && (st->slam >= -(st->clam / 4))) {
+    out->gamma = tm_atan(geo_div(st->slam, st->clam));
+    return 1;
+  }
+  return 0;
+}
+
+int geo_tm_forward(int64_t phi, int64_t lam, geo_tm_t *out)
+{
+  tm_fwd_t st;
+
+  if (fwd_sphere(phi, lam, &st, out) == 0) {
+    return 0;
+  }
+  /* the full atan2s write straight into out (0 first, as geo_atan2()
+   * gives when both arguments are zero): no result slot in this frame */
+  if (fwd_xi(&st, out) == 0) {
+    out->xi = 0;
+    (void)drdc_fx_atan2_q5_58(st.schi, geo_mul(out->k, st.clam), &out->xi);
+  }
+  fwd_series(&st, out);
+  if (fwd_gamma_k(&st, out) == 0) {
+    out->gamma = 0;
+    (void)drdc_fx_atan2_q5_58(st.slam, st.clam, &out->gamma);
+  }
   return 1;
 }
 
+/* xi' + i eta' = zeta - Krueger's beta series at zeta = xi + i eta,
+ * into *xip, *etap (the caller's outputs, its scratch until the end) */
+static __attribute__((noinline)) void rev_series(int64_t xi, int64_t eta,
+                                                 int64_t *xip, int64_t *etap)
+{
+  tm_zeta_t z;
+
+  *xip = xi;
+  *etap = eta;
+  geo_sincos(2 * xi, &z.r1, &z.i1);
+  /* sinh and cosh of 2 eta from the series of sinh and cosh of eta
+   * (|eta| <= 0.08 from the eastings' range): no exponential */
+  z.r2 = tm_sinh(eta);
+  z.i2 = tm_cosh(*etap);
+  z.cr = 2 * geo_mul(z.r2, z.i2);
+  z.i2 = geo_mul(z.i2, z.i2) + geo_mul(z.r2, z.r2);
+  z.r2 = z.cr;
+  zeta_set(&z);
+  clenshaw(geo_beta, false, &z);
+  krueger_sum(&z);
+  *xip = *xip - z.sr;
+  *etap = *etap - z.si;
+}
+
+/* xi', eta' wait in *phi, *lam; chi = atan2(sin xi', sqrt(sinh^2 eta' +
+ * cos^2 xi')) too, before phi = chi + its series */
 void geo_tm_reverse(int64_t xi, int64_t eta, int64_t *phi, int64_t *lam)
 {
-  geo_tm_t kr;
-  int64_t xip;
-  int64_t etap;
   int64_t sxip = 0;
   int64_t cxip = 0;
   int64_t shetap;
-  int64_t sh1;
-  int64_t schi = 0;
-  int64_t cchi = 0;
-  int64_t chi;
-  int64_t s2 = 0;
-  int64_t c2 = 0;
-  int64_t sh2 = 0;
-  int64_t ch2 = 0;
 
-  geo_sincos(2 * xi, &s2, &c2);
-  /* sinh and cosh of 2 eta from the series of sinh and cosh of eta
-   * (|eta| <= 0.08 from the eastings' range): no exponential */
-  sh2 = tm_sinh(eta);
-  ch2 = tm_cosh(eta);
-  sh1 = 2 * geo_mul(sh2, ch2);
-  ch2 = geo_mul(ch2, ch2) + geo_mul(sh2, sh2);
-  sh2 = sh1;
-  kr.xi = 0;
-  kr.eta = 0;
-  krueger(geo_beta, s2, c2, sh2, ch2, false, &kr);
-  xip = xi - kr.xi;
-  etap = eta - kr.eta;
-  geo_sincos(xip, &sxip, &cxip);
-  shetap = tm_sinh(etap);
-  *lam = geo_atan2(shetap, cxip);
-  chi = geo_atan2(sxip, geo_sqrt(geo_mul(shetap, shetap)
-                                 + geo_mul(cxip, cxip)));
-  geo_sincos(chi, &schi, &cchi);
-  *phi = chi + geo_phi_series(schi, cchi);
+  rev_series(xi, eta, phi, lam);
+  geo_sincos(*phi, &sxip, &cxip);
+  shetap = tm_sinh(*lam);
+  /* the atan2s write straight into the outputs (0 first, as
+   * geo_atan2() gives when both arguments are zero) */
+  *lam = 0;
+  (void)drdc_fx_atan2_q5_58(shetap, cxip, lam);
+  shetap = geo_sqrt(geo_mul(shetap, shetap) + geo_mul(cxip, cxip));
+  *phi = 0;
+  (void)drdc_fx_atan2_q5_58(sxip, shetap, phi);
+  geo_sincos(*phi, &sxip, &cxip);
+  *phi = *phi + geo_phi_series(sxip, cxip);
 }

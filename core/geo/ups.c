@@ -31,28 +31,24 @@ int geo_ups_forward(int64_t phi, int64_t lam, bool north, int64_t *x,
   int64_t cphi = 0;
   int64_t schi = 0;
   int64_t cchi = 0;
-  int64_t slam = 0;
-  int64_t clam = 0;
-  int64_t chi;
   int64_t t;
-  int64_t ratio;
-  int64_t kk;
 
   geo_sincos(p, &sphi, &cphi);
-  chi = p + geo_chi_series(sphi, cphi);
-  geo_sincos(chi, &schi, &cchi);
+  p = p + geo_chi_series(sphi, cphi);
+  geo_sincos(p, &schi, &cchi);
   if (schi < UPS_MIN_SIN_CHI) {
     return 0;
   }
-  geo_sincos(lam, &slam, &clam);
-  t = geo_div(cchi, GEO_ONE + schi);
-  *x = geo_mul(t, slam);
-  *y = north ? -geo_mul(t, clam) : geo_mul(t, clam);
+  /* from here the outputs are the scratch (sin and cos lam in *y and *k
+   * until x and y are made): few int64_t live across each call */
   *gamma = north ? lam : -lam;
-  ratio = geo_cos_ratio(sphi);
-  kk = geo_sqrt(GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi)));
-  kk = geo_div(geo_mul(geo_mul(GEO_UPS_2K0_OVER_C, ratio), kk), GEO_ONE + schi);
-  *k = kk;
+  t = geo_div(cchi, GEO_ONE + schi);
+  geo_sincos(lam, y, k);
+  *x = geo_mul(t, *y);
+  *y = north ? -geo_mul(t, *k) : geo_mul(t, *k);
+  *k = geo_sqrt(GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi)));
+  *k = geo_div(geo_mul(geo_mul(GEO_UPS_2K0_OVER_C, geo_cos_ratio(sphi)), *k),
+               GEO_ONE + schi);
   return 1;
 }
 
@@ -74,24 +70,31 @@ int64_t geo_ups_angle(drdc_q47_16_t v)
 void geo_ups_reverse(drdc_q47_16_t x, drdc_q47_16_t y, bool north,
                      int64_t *phi, int64_t *lam)
 {
-  /* the polar distance (hypot of the metres in Q36) and the longitude
-   * straight from the exact metres: next to the pole a Q5.58 angle would
-   * keep too few bits, and a Q47.16 hypot would cost 7.6 um */
-  int64_t t = geo_muldiv((int64_t)drdc_fx_hypot_s64(x * INT64_C(1048576),
-                                                     y * INT64_C(1048576)),
-                         TWO_POW_61, GEO_UPS_K_Q39);
-  int64_t chi = geo_atan2(GEO_ONE - geo_mul(t, t), 2 * t);
   int64_t sc = 0;
   int64_t cc = 0;
-  int64_t p;
+  int64_t t;
 
-  geo_sincos(chi, &sc, &cc);
-  p = chi + geo_phi_series(sc, cc);
-  *phi = north ? p : -p;
+  /* the longitude first (x and y are dead after it), the atan2s straight
+   * into the outputs (0 first, as geo_atan2() gives when both arguments
+   * are zero): few values live across the deep calls */
   if ((x == 0) && (y == 0)) {
     /* GeographicLib's atan2(+0, -0) at the north pole */
     *lam = north ? GEO_PI : 0;
   } else {
-    *lam = geo_atan2(x, north ? -y : y);
+    *lam = 0;
+    (void)drdc_fx_atan2_q5_58(x, north ? -y : y, lam);
+  }
+  /* the polar distance (hypot of the metres in Q36) and the longitude
+   * straight from the exact metres: next to the pole a Q5.58 angle would
+   * keep too few bits, and a Q47.16 hypot would cost 7.6 um */
+  t = geo_muldiv((int64_t)drdc_fx_hypot_s64(x * INT64_C(1048576),
+                                            y * INT64_C(1048576)),
+                 TWO_POW_61, GEO_UPS_K_Q39);
+  *phi = 0;
+  (void)drdc_fx_atan2_q5_58(GEO_ONE - geo_mul(t, t), 2 * t, phi);
+  geo_sincos(*phi, &sc, &cc);
+  *phi = *phi + geo_phi_series(sc, cc);
+  if (!north) {
+    *phi = -*phi;
   }
 }

@@ -353,10 +353,9 @@ drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
                                 drdc_nas_t *lon, drdc_nas_t *convergence,
                                 drdc_q5_58_t *scale)
 {
-  drdc_q47_16_t y;
-  int64_t phi = 0;
-  int64_t lam = 0;
-  drdc_nas_t dlon;
+  /* phi and lam of the reverse wait in tm's own slots (xi, eta) until
+   * the forward overwrites them: one struct is the whole frame's data
+   * on the deepest path */
   geo_tm_t tm;
 
   if ((in == NULL) || (lat == NULL) || (lon == NULL)) {
@@ -377,16 +376,20 @@ drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
                    || (in->northing > UTM_N_SOUTH_MAX))) {
     return DRDC_E_NORTHING;
   }
-  y = in->north ? in->northing : (in->northing - UTM_FALSE_NORTHING_SOUTH);
-  geo_tm_reverse(angle_from_metres(y),
-                 angle_from_metres(in->easting - UTM_FALSE_EASTING), &phi,
-                 &lam);
-  dlon = geo_nas_from_rad(lam);
-  *lat = geo_nas_from_rad(phi);
-  *lon = lon_normalize(central_meridian(in->zone) + dlon);
+  tm.xi = 0;
+  tm.eta = 0;
+  geo_tm_reverse(angle_from_metres(in->north
+                                       ? in->northing
+                                       : (in->northing
+                                          - UTM_FALSE_NORTHING_SOUTH)),
+                 angle_from_metres(in->easting - UTM_FALSE_EASTING), &tm.xi,
+                 &tm.eta);
+  *lat = geo_nas_from_rad(tm.xi);
+  *lon = lon_normalize(central_meridian(in->zone)
+                       + geo_nas_from_rad(tm.eta));
   if ((convergence != NULL) || (scale != NULL)) {
     /* in the range checked above |dlon| < 30 degrees: never fails */
-    (void)geo_tm_forward(phi, lam, &tm);
+    (void)geo_tm_forward(tm.xi, tm.eta, &tm);
     if (convergence != NULL) {
       *convergence = geo_nas_from_rad(tm.gamma);
     }
