@@ -229,7 +229,6 @@ drdc_status_t drdc_fx_sqrt_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
   int64_t v = x;
   int64_t y;
   unsigned k = 0u;
-  unsigned i;
 
   if (out == NULL) {
     return DRDC_E_NULL;
@@ -251,9 +250,8 @@ drdc_status_t drdc_fx_sqrt_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
   /* Newton: each step squares the relative error; the rounded integer
    * root is within 2^-15 relative for v >= 2^28, so two steps reach
    * 2^-60 */
-  for (i = 0u; i < 2u; i++) {
-    y = drdc_fx_rshift_round_s64_inline(y + quotient(v, y), 1u);
-  }
+  y = drdc_fx_rshift_round_s64_inline(y + quotient(v, y), 1u);
+  y = drdc_fx_rshift_round_s64_inline(y + quotient(v, y), 1u);
   *out = (k == 0u) ? y : drdc_fx_rshift_round_s64_inline(y, k);
   return DRDC_OK;
 }
