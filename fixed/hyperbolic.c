@@ -169,26 +169,74 @@ static unsigned top_bit(uint64_t v)
   return p;
 }
 
+/* x 2^62 / d rounded to nearest (ties up), 0 when the quotient does
+ * not fit 64 bits, given rcp = drdc_fx_reciprocal_3by2() of d normalised:
+ * fx_div_round_u128() of (x 2^62, d) bit for bit. A leaf, out of line
+ * so that its registers are not saved under any call (#3: worst-case
+ * stack). */
+static __attribute__((noinline)) uint64_t div_q62_rcp(uint64_t x, uint64_t d,
+                                                      uint32_t rcp)
+{
+  unsigned s;
+  uint64_t v;
+  uint64_t un32;
+  uint64_t un10;
+  uint64_t r = 0;
+  uint64_t quo;
+
+  if ((x >> 2) >= d) {
+    return 0; /* quotient >= 2^64 */
+  }
+  s = (unsigned)__builtin_clzll(d); /* d > x / 4 >= 0 */
+  v = d << s;
+  if (s == 0u) {
+    un32 = x >> 2;
+  } else {
+    unsigned back = 64u - s;
+
+    un32 = ((x >> 2) << s) | ((x << 62) >> back);
+  }
+  un10 = (x << 62) << s;
+  quo = (uint64_t)drdc_fx_div_3by2((uint32_t)(un32 >> 32), (uint32_t)un32,
+                                   (uint32_t)(un10 >> 32), v, rcp, &r)
+        << 32;
+  quo |= drdc_fx_div_3by2((uint32_t)(r >> 32), (uint32_t)r, (uint32_t)un10,
+                          v, rcp, &r);
+  r = r >> s;
+  if (r >= (d - r)) {
+    if (quo == UINT64_MAX) {
+      return 0;
+    }
+    quo++;
+  }
+  return quo;
+}
+
+/* x 2^62 / d as div_q62_rcp(), d > 0: the reciprocal first, with only x
+ * and d live across its call */
+static inline uint64_t div_q62(uint64_t x, uint64_t d)
+{
+  uint64_t v = d << (unsigned)__builtin_clzll(d);
+
+  return div_q62_rcp(x, d,
+                     drdc_fx_reciprocal_3by2((uint32_t)(v >> 32), (uint32_t)v));
+}
+
 /* ln(num / den) = e ln 2 + 2 atanh(s), for num, den > 0: writes e and
  * s (Q62 magnitude, sign in *s_neg). */
-static void log_parts(uint64_t num, uint64_t den, int32_t *e, uint64_t *s,
-                      int *s_neg)
+static inline __attribute__((always_inline)) void
+log_parts(uint64_t num, uint64_t den, int32_t *e, uint64_t *s, int *s_neg)
 {
   unsigned pn = top_bit(num);
   unsigned pd = top_bit(den);
   unsigned num_shift = 63u - pn;
   unsigned den_shift = 63u - pd;
-  uint64_t nn = num << num_shift; /* both normalised to [2^63, 2^64) */
-  uint64_t dn = den << den_shift;
-  fx_u128_t q;
-  uint64_t m = 0;
+  uint64_t m;
   uint64_t diff;
 
   *e = (int32_t)pn - (int32_t)pd;
-  /* m = nn / dn in Q62, in (1/2, 2): nn 2^62 / dn */
-  q.hi = nn >> 2;
-  q.lo = nn << 62;
-  (void)fx_div_round_u128(q, dn, &m);
+  /* m = nn / dn in Q62, in (1/2, 2), both normalised to [2^63, 2^64) */
+  m = div_q62(num << num_shift, den << den_shift);
   if (m < SQRTH_Q62) {
     m <<= 1;
     *e -= 1;
@@ -200,9 +248,7 @@ static void log_parts(uint64_t num, uint64_t den, int32_t *e, uint64_t *s,
   }
   *s_neg = m < ONE_Q62;
   diff = *s_neg ? (ONE_Q62 - m) : (m - ONE_Q62);
-  q.hi = diff >> 2;
-  q.lo = diff << 62;
-  (void)fx_div_round_u128(q, m + ONE_Q62, s);
+  *s = div_q62(diff, m + ONE_Q62);
 }
 
 /* (e ln 2 + 2 atanh(s)) / 2^half rounded to Q58, given at = atanh(s) in
@@ -226,10 +272,65 @@ static uint64_t log_q58(int32_t e, uint64_t at, int s_neg, unsigned half)
   return acc.lo;
 }
 
+/* *out = atanh(s) / 16 rounded (Q62 -> Q58), negated when neg != 0:
+ * |s| <= 0.1716 in Q62 */
+static __attribute__((noinline)) drdc_status_t series_out(uint64_t s, int neg,
+                                                          drdc_q5_58_t *out)
+{
+  uint64_t r = (atanh_series_q62(s) + 8u) >> 4;
+
+  *out = (neg != 0) ? -(int64_t)r : (int64_t)r;
+  return DRDC_OK;
+}
+
+/* *out = atanh(x) (asinh == 0, |x| < 1) or asinh(x) (asinh != 0) by the
+ * logarithm: the large-argument branch of each, inlined (with log_parts())
+ * into the public function so that no frame of its own stacks between it
+ * and the divisions and the series (#3: worst-case stack) */
+static inline __attribute__((always_inline)) drdc_status_t
+log_out(drdc_q5_58_t x, int asinh, drdc_q5_58_t *out)
+{
+  uint64_t ax = fx_abs64(x);
+  int32_t e = 0;
+  uint64_t s = 0;
+  int s_neg = 0;
+  uint64_t num;
+  uint64_t den;
+  unsigned half;
+  uint64_t r;
+
+  if (asinh != 0) {
+    /* y = |x| + sqrt(x^2 + 1) in Q58, halved so it fits 64 bits */
+    uint64_t h = drdc_fx_hypot_s64(x, INT64_C(1) << 58);
+
+    num = (ax >> 1) + (h >> 1) + (ax & h & 1u);
+    den = UINT64_C(1) << 57;
+    half = 0u;
+  } else {
+    /* atanh(x) = ln((1 + x) / (1 - x)) / 2, both exact in Q58 */
+    num = (UINT64_C(1) << 58) + ax;
+    den = (UINT64_C(1) << 58) - ax;
+    half = 1u;
+  }
+  log_parts(num, den, &e, &s, &s_neg);
+  r = log_q58(e, atanh_series_q62(s), s_neg, half);
+  *out = (x < 0) ? -(int64_t)r : (int64_t)r;
+  return DRDC_OK;
+}
+
+/* x / sqrt(1 + x^2) in Q62 (magnitude): the atanh argument of asinh(x)
+ * for |x| <= 3 - 2 sqrt 2, out of line so that its calls do not stack
+ * under the series (#3) */
+static __attribute__((noinline)) uint64_t asinh_series_arg(drdc_q5_58_t x)
+{
+  uint64_t h = drdc_fx_hypot_s64(x, INT64_C(1) << 58); /* Q58 */
+
+  return div_q62(fx_abs64(x), h);
+}
+
 drdc_status_t drdc_fx_atanh_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
 {
   uint64_t ax = fx_abs64(x);
-  uint64_t r;
 
   if (out == NULL) {
     return DRDC_E_NULL;
@@ -238,50 +339,18 @@ drdc_status_t drdc_fx_atanh_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
     return DRDC_E_DOMAIN;
   }
   if (ax <= (uint64_t)ATANH_SERIES_MAX) {
-    r = (atanh_series_q62(ax << 4) + 8u) >> 4;
-  } else {
-    int32_t e = 0;
-    uint64_t s = 0;
-    int s_neg = 0;
-
-    /* atanh(x) = ln((1 + x) / (1 - x)) / 2, both exact in Q58 */
-    log_parts((UINT64_C(1) << 58) + ax, (UINT64_C(1) << 58) - ax, &e, &s,
-              &s_neg);
-    r = log_q58(e, atanh_series_q62(s), s_neg, 1u);
+    return series_out(ax << 4, x < 0, out);
   }
-  *out = (x < 0) ? -(int64_t)r : (int64_t)r;
-  return DRDC_OK;
+  return log_out(x, 0, out);
 }
 
 drdc_status_t drdc_fx_asinh_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
 {
-  uint64_t ax = fx_abs64(x);
-  uint64_t r;
-
   if (out == NULL) {
     return DRDC_E_NULL;
   }
-  if (ax <= (uint64_t)ATANH_SERIES_MAX) {
-    /* asinh(x) = atanh(x / sqrt(1 + x^2)): the quotient in Q62 */
-    uint64_t h = drdc_fx_hypot_s64(x, INT64_C(1) << 58); /* Q58 */
-    fx_u128_t q;
-    uint64_t t = 0;
-
-    q.hi = ax >> 2;
-    q.lo = ax << 62;
-    (void)fx_div_round_u128(q, h, &t); /* x / sqrt(1 + x^2), Q62 */
-    r = (atanh_series_q62(t) + 8u) >> 4;
-  } else {
-    int32_t e = 0;
-    uint64_t s = 0;
-    int s_neg = 0;
-    /* y = |x| + sqrt(x^2 + 1) in Q58, halved so it fits 64 bits */
-    uint64_t h = drdc_fx_hypot_s64(x, INT64_C(1) << 58);
-
-    log_parts((ax >> 1) + (h >> 1) + (ax & h & 1u), UINT64_C(1) << 57, &e,
-              &s, &s_neg);
-    r = log_q58(e, atanh_series_q62(s), s_neg, 0u);
+  if (fx_abs64(x) <= (uint64_t)ATANH_SERIES_MAX) {
+    return series_out(asinh_series_arg(x), x < 0, out);
   }
-  *out = (x < 0) ? -(int64_t)r : (int64_t)r;
-  return DRDC_OK;
+  return log_out(x, 1, out);
 }
