@@ -37,11 +37,76 @@ static int64_t mul(int64_t a, int64_t b)
   return ((a < 0) != (b < 0)) ? -(int64_t)m : (int64_t)m;
 }
 
+/* a 2^58 / b, rounded (ties away from zero); 0 when the quotient
+ * overflows, given b != 0 and rcp = drdc_fx_reciprocal_3by2() of |b|
+ * normalised: fx_div_round_u128() of |a| 2^58 by |b| with the sign, bit
+ * for bit. A leaf, out of line, so that its registers are saved under no
+ * call (#3: worst-case stack). */
+static __attribute__((noinline)) int64_t quotient_rcp(int64_t a, int64_t b,
+                                                      uint32_t rcp)
+{
+  uint64_t ma = fx_abs64(a);
+  uint64_t mb = fx_abs64(b);
+  unsigned s;
+  unsigned back;
+  uint64_t v;
+  uint64_t un32;
+  uint64_t un10;
+  uint64_t r = 0;
+  uint64_t q;
+
+  if ((ma >> 6) >= mb) {
+    return 0; /* quotient >= 2^64 */
+  }
+  s = (unsigned)__builtin_clzll(mb);
+  back = 64u - s;
+  v = mb << s;
+  if (s == 0u) {
+    un32 = ma >> 6;
+  } else {
+    un32 = ((ma >> 6) << s) | ((ma << 58) >> back);
+  }
+  un10 = (ma << 58) << s;
+  q = (uint64_t)drdc_fx_div_3by2((uint32_t)(un32 >> 32), (uint32_t)un32,
+                                 (uint32_t)(un10 >> 32), v, rcp, &r)
+      << 32;
+  q |= drdc_fx_div_3by2((uint32_t)(r >> 32), (uint32_t)r, (uint32_t)un10, v,
+                        rcp, &r);
+  r = r >> s;
+  if (r >= (mb - r)) {
+    if (q == UINT64_MAX) {
+      return 0;
+    }
+    q++;
+  }
+  if ((a != 0) && ((a < 0) != (b < 0))) {
+    return (q > (UINT64_C(1) << 63)) ? 0
+           : ((q == (UINT64_C(1) << 63)) ? (-INT64_MAX - 1) : -(int64_t)q);
+  }
+  return (q > (uint64_t)INT64_MAX) ? 0 : (int64_t)q;
+}
+
 /* a 2^58 / b, rounded (ties away from zero); 0 when b == 0 or the
  * quotient overflows: the result of drdc_fx_muldiv_s64(a, 2^58, b), bit
- * for bit, without its two call levels (their frames were the deepest
- * part of the stack of atan2 and sqrt) */
-static int64_t quotient(int64_t a, int64_t b)
+ * for bit, without its two call levels. The reciprocal of the divisor
+ * first, with only a and b live across its call. */
+static inline int64_t quotient(int64_t a, int64_t b)
+{
+  uint64_t v;
+
+  if (b == 0) {
+    return 0;
+  }
+  v = fx_abs64(b) << (unsigned)__builtin_clzll(fx_abs64(b));
+  return quotient_rcp(a, b,
+                      drdc_fx_reciprocal_3by2((uint32_t)(v >> 32), (uint32_t)v));
+}
+
+/* a 2^58 / b, rounded (ties away from zero); 0 when b == 0 or the
+ * quotient overflows: the result of drdc_fx_muldiv_s64(a, 2^58, b), bit
+ * for bit, without its two call levels; in one piece, the fastest for
+ * drdc_fx_div_q5_58(), whose stack it does not put over 128 B */
+static int64_t quotient_fused(int64_t a, int64_t b)
 {
   uint64_t ma = fx_abs64(a);
   fx_u128_t n;
@@ -73,10 +138,10 @@ drdc_status_t drdc_fx_div_q5_58(drdc_q5_58_t a, drdc_q5_58_t b,
   if (b == 0) {
     return DRDC_E_DIVIDE_BY_ZERO;
   }
-  /* quotient() gives 0 exactly when the quotient is 0 or overflows: the
-   * overflow is told apart by a non-zero dividend (|a / b| >= 2^-59
+  /* quotient_fused() gives 0 exactly when the quotient is 0 or
+   * overflows: the overflow is told apart by a non-zero dividend (|a / b| >= 2^-59
    * rounds to at least 1 LSB unless |a| < |b| / 2^59) */
-  r = quotient(a, b);
+  r = quotient_fused(a, b);
   if ((r == 0) && (fx_abs64(a) > (fx_abs64(b) >> 59))) {
     return DRDC_E_OVERFLOW;
   }
@@ -84,8 +149,11 @@ drdc_status_t drdc_fx_div_q5_58(drdc_q5_58_t a, drdc_q5_58_t b,
   return DRDC_OK;
 }
 
-drdc_status_t drdc_fx_sincos_q5_58(drdc_q5_58_t x, drdc_q5_58_t *s,
-                                   drdc_q5_58_t *c)
+/* sin and cos of x (Q5.58 radians, |x| <= 16): the body of
+ * drdc_fx_sincos_q5_58(), inlined into atan2 so that its frame does not
+ * stack on atan2's (#3) */
+static inline __attribute__((always_inline)) void
+sincos_kernel(drdc_q5_58_t x, drdc_q5_58_t *s, drdc_q5_58_t *c)
 {
   /* (-1)^i / (2i+1)! and (-1)^i / (2i)! in Q5.58, i = 0..9: on |r| <= pi/4
    * the first omitted terms are below 1e-19. */
@@ -111,20 +179,20 @@ drdc_status_t drdc_fx_sincos_q5_58(drdc_q5_58_t x, drdc_q5_58_t *s,
   int64_t quadrant;
   unsigned i;
 
-  if ((s == NULL) || (c == NULL)) {
-    return DRDC_E_NULL;
-  }
   /* x = k pi/2 + r, |r| <= pi/4 (plus a few LSB): k from a product with
    * 2/pi (no division); |k| <= 20, so k pi/2 stays within int64_t */
   k = drdc_fx_rshift_round_s64_inline(mul(x, Q5_58_TWO_OVER_PI), 58u);
   r = x - (k * DRDC_Q5_58_HALF_PI);
   r2 = mul(r, r);
   quadrant = ((k % 4) + 4) % 4;
+  /* one polynomial at a time: fewer values live across the products */
   for (i = 9u; i > 0u; i--) {
     ps = sin_coef[i - 1u] + mul(ps, r2);
-    pc = cos_coef[i - 1u] + mul(pc, r2);
   }
   ps = mul(ps, r);
+  for (i = 9u; i > 0u; i--) {
+    pc = cos_coef[i - 1u] + mul(pc, r2);
+  }
   if (quadrant == 0) {
     *s = ps;
     *c = pc;
@@ -138,6 +206,15 @@ drdc_status_t drdc_fx_sincos_q5_58(drdc_q5_58_t x, drdc_q5_58_t *s,
     *s = -pc;
     *c = ps;
   }
+}
+
+drdc_status_t drdc_fx_sincos_q5_58(drdc_q5_58_t x, drdc_q5_58_t *s,
+                                   drdc_q5_58_t *c)
+{
+  if ((s == NULL) || (c == NULL)) {
+    return DRDC_E_NULL;
+  }
+  sincos_kernel(x, s, c);
   return DRDC_OK;
 }
 
@@ -209,7 +286,7 @@ drdc_status_t drdc_fx_atan2_q5_58(int64_t y, int64_t x, drdc_q5_58_t *out)
   theta = mul(theta * BAM_TO_Q58, DRDC_Q5_58_PI);
   /* the remaining angle d has tan d = (y cos t - x sin t) / (x cos t +
    * y sin t); |d| < 2e-9 so atan(q) = q - q^3/3 is q to 3e-27 */
-  (void)drdc_fx_sincos_q5_58(theta, &sn, &cs);
+  sincos_kernel(theta, &sn, &cs);
   num = mul(yn, cs) - mul(xn, sn);
   den = mul(xn, cs) + mul(yn, sn);
   theta = theta + quotient(num, den);
