@@ -218,8 +218,8 @@ static inline uint64_t div_q62(uint64_t x, uint64_t d)
 {
   uint64_t v = d << (unsigned)__builtin_clzll(d);
 
-  return div_q62_rcp(x, d,
-                     drdc_fx_reciprocal_3by2((uint32_t)(v >> 32), (uint32_t)v));
+  return div_q62_rcp(
+      x, d, drdc_fx_reciprocal_3by2((uint32_t)(v >> 32), (uint32_t)v));
 }
 
 /* ln(num / den) = e ln 2 + 2 atanh(s), for num, den > 0: writes e and

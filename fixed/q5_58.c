@@ -98,8 +98,8 @@ static inline int64_t quotient(int64_t a, int64_t b)
     return 0;
   }
   v = fx_abs64(b) << (unsigned)__builtin_clzll(fx_abs64(b));
-  return quotient_rcp(a, b,
-                      drdc_fx_reciprocal_3by2((uint32_t)(v >> 32), (uint32_t)v));
+  return quotient_rcp(
+      a, b, drdc_fx_reciprocal_3by2((uint32_t)(v >> 32), (uint32_t)v));
 }
 
 /* a 2^58 / b, rounded (ties away from zero); 0 when b == 0 or the
@@ -139,8 +139,8 @@ drdc_status_t drdc_fx_div_q5_58(drdc_q5_58_t a, drdc_q5_58_t b,
     return DRDC_E_DIVIDE_BY_ZERO;
   }
   /* quotient_fused() gives 0 exactly when the quotient is 0 or
-   * overflows: the overflow is told apart by a non-zero dividend (|a / b| >= 2^-59
-   * rounds to at least 1 LSB unless |a| < |b| / 2^59) */
+   * overflows: the overflow is told apart by a non-zero dividend
+   * (|a / b| >= 2^-59 rounds to at least 1 LSB unless |a| < |b| / 2^59) */
   r = quotient_fused(a, b);
   if ((r == 0) && (fx_abs64(a) > (fx_abs64(b) >> 59))) {
     return DRDC_E_OVERFLOW;
@@ -186,10 +186,12 @@ sincos_kernel(drdc_q5_58_t x, drdc_q5_58_t *s, drdc_q5_58_t *c)
   r2 = mul(r, r);
   quadrant = ((k % 4) + 4) % 4;
   /* one polynomial at a time: fewer values live across the products */
+#pragma GCC unroll 9
   for (i = 9u; i > 0u; i--) {
     ps = sin_coef[i - 1u] + mul(ps, r2);
   }
   ps = mul(ps, r);
+#pragma GCC unroll 9
   for (i = 9u; i > 0u; i--) {
     pc = cos_coef[i - 1u] + mul(pc, r2);
   }
