@@ -68,10 +68,12 @@ static inline uint32_t round_q60_bits(int64_t v, uint32_t *ovf)
  * [-2^61, 2^61), a negated one within (-2^61, 2^61], and each part below
  * has a negated term whose own product is above -2^61 (it would need a
  * part of a of -2^30): every sum of four, and every partial sum, is in
- * (-2^63, 2^63), exact in int64_t without checks. Out of line
- * (noinline), as quat_mul_wide(): drdc_quat_mul() tail-calls one or the
- * other, so the worst-case stack is the larger frame, not their sum. */
-static __attribute__((noinline)) drdc_status_t
+ * (-2^63, 2^63), exact in int64_t without checks. Inlined into
+ * drdc_quat_mul(), so the parts of a loaded for the range test are
+ * reused and no second call is paid on the common path; the rare
+ * quat_mul_wide() is tail-called before this frame is set up, so the
+ * worst-case stack is the larger frame, not their sum. */
+static inline __attribute__((always_inline)) drdc_status_t
 quat_mul_unit(const drdc_quat_t *a, const drdc_quat_t *b, drdc_quat_t *out)
 {
   const int64_t as = a->s;

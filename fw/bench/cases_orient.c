@@ -31,22 +31,37 @@ static uint32_t quat_mul(uint32_t x)
   return (uint32_t)(r.s ^ r.x ^ r.y ^ r.z);
 }
 
-/* The floor: 16 products accumulated in int64 and shifted back, as an
- * engineer writes it by hand (truncating, no overflow check). */
+/* The floor: the product as an engineer writes it by hand, behind the
+ * same interface as drdc_quat_mul() (operands and result through
+ * pointers, not inlined into the loop, so both pay the same call and
+ * memory round trip): the 16 products accumulated in int64 and shifted
+ * back, truncating, without checks or rounding. */
+static __attribute__((noinline)) void
+quat_mul_hand(const drdc_quat_t *a, const drdc_quat_t *b, drdc_quat_t *out)
+{
+  int64_t s = ((int64_t)a->s * b->s) - ((int64_t)a->x * b->x)
+              - ((int64_t)a->y * b->y) - ((int64_t)a->z * b->z);
+  int64_t i = ((int64_t)a->s * b->x) + ((int64_t)a->x * b->s)
+              + ((int64_t)a->y * b->z) - ((int64_t)a->z * b->y);
+  int64_t j = ((int64_t)a->s * b->y) - ((int64_t)a->x * b->z)
+              + ((int64_t)a->y * b->s) + ((int64_t)a->z * b->x);
+  int64_t k = ((int64_t)a->s * b->z) + ((int64_t)a->x * b->y)
+              - ((int64_t)a->y * b->x) + ((int64_t)a->z * b->s);
+
+  out->s = (int32_t)(s >> 30);
+  out->x = (int32_t)(i >> 30);
+  out->y = (int32_t)(j >> 30);
+  out->z = (int32_t)(k >> 30);
+}
+
 static uint32_t quat_mul_by_hand(uint32_t x)
 {
   drdc_quat_t a = quat_of(x);
   drdc_quat_t b = quat_of(x * 2654435761u);
-  int64_t s = ((int64_t)a.s * b.s) - ((int64_t)a.x * b.x)
-              - ((int64_t)a.y * b.y) - ((int64_t)a.z * b.z);
-  int64_t i = ((int64_t)a.s * b.x) + ((int64_t)a.x * b.s)
-              + ((int64_t)a.y * b.z) - ((int64_t)a.z * b.y);
-  int64_t j = ((int64_t)a.s * b.y) - ((int64_t)a.x * b.z)
-              + ((int64_t)a.y * b.s) + ((int64_t)a.z * b.x);
-  int64_t k = ((int64_t)a.s * b.z) + ((int64_t)a.x * b.y)
-              - ((int64_t)a.y * b.x) + ((int64_t)a.z * b.s);
+  drdc_quat_t r = { 0, 0, 0, 0 };
 
-  return (uint32_t)((uint64_t)(s ^ i ^ j ^ k) >> 30);
+  quat_mul_hand(&a, &b, &r);
+  return (uint32_t)(r.s ^ r.x ^ r.y ^ r.z);
 }
 
 static uint32_t quat_rotate(uint32_t x)

@@ -123,10 +123,11 @@ typedef struct drdc_vec3_q47_16 {
  * exact Python-integer products (55 cases incl. overflow); q * conj(q) of
  * a normalised q is 1 within 2 LSB.
  *
- * Cost (`./waf bench`, docs/performance.md): 1.3 times the cycles of a
- * hand-written 16 multiply-accumulate product with truncating shifts on
- * Cortex-M3, 1.9 times on PowerPC e500 (the rounding and the overflow
- * checks); soft-float double takes about 20 times as long on Cortex-M3.
+ * Cost (`./waf bench`, docs/performance.md): 1.39 times the cycles of a
+ * hand-written 16 multiply-accumulate product with truncating shifts and
+ * the same signature on Cortex-M3, 1.45 times on PowerPC e500 (the
+ * rounding, the range test and the overflow checks); soft-float double
+ * takes about 20 times as long on Cortex-M3.
  *
  * @code
  * drdc_quat_t yaw90 = { 759250125, 0, 0, 759250125 }, r;
