@@ -499,22 +499,22 @@ drdc_status_t drdc_pose_l_from_le(const drdc_lePose_t *le, drdc_lPose_t *out)
 
 drdc_status_t drdc_pose_le_from_l(const drdc_lPose_t *l, drdc_lePose_t *out)
 {
-  drdc_euler_t e = { 0u, 0u, 0u };
   drdc_status_t st;
 
   if ((l == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = drdc_euler_from_quat(&l->q, &e);
+  /* the angles straight into out: drdc_euler_from_quat() writes them
+   * only on DRDC_OK and is the one step that can fail, so out stays
+   * unchanged on error, and no copy of them is in this frame (which
+   * sits on top of the whole chain of drdc_euler_from_quat()) */
+  st = drdc_euler_from_quat(&l->q, &out->e);
   if (st != DRDC_OK) {
     return st;
   }
   out->p.x = l->p.x;
   out->p.y = l->p.y;
   out->p.z = l->p.z;
-  out->e.yaw = e.yaw;
-  out->e.pitch = e.pitch;
-  out->e.roll = e.roll;
   return DRDC_OK;
 }
 
