@@ -203,8 +203,9 @@ static int scale_legs(int64_t *a, int64_t *b)
 }
 
 /* The state of Bowring's iteration (Q27.36 lengths, or Q5.58 when (u, v)
- * is a unit vector), one struct in the frame of geodetic_direction() that
- * the helpers below reach by pointer, so no level keeps copies of it */
+ * is a unit vector), one struct in the frame of the caller of
+ * geodetic_direction() (which also fills it with the ECEF point) that the
+ * helpers below reach by pointer, so no level keeps copies of it */
 typedef struct bowring {
   int64_t p; /**< distance from the polar axis */
   int64_t z; /**< distance from the equatorial plane */
@@ -221,16 +222,16 @@ typedef struct bowring {
  * two Q5.58 quotients. */
 static int64_t normalise(bowring_t *b)
 {
-  int64_t a = b->u;
-  int64_t c = b->v;
   int64_t q;
   int64_t y;
-  int k = scale_legs(&a, &c);
+  /* the legs scaled in place: no copy of them in this frame, which is
+   * on the deepest chain of the inverse */
+  int k = scale_legs(&b->u, &b->v);
 
-  q = geo_mul(a, a) + geo_mul(c, c);
+  q = geo_mul(b->u, b->u) + geo_mul(b->v, b->v);
   y = rsqrt_q58(q, 2u);
-  b->u = geo_mul(a, y);
-  b->v = geo_mul(c, y);
+  b->u = geo_mul(b->u, y);
+  b->v = geo_mul(b->v, y);
   q = geo_mul(q, y);
   /* q < 2^58.5 and the length below 2^61.5: no overflow either way */
   return (k >= 0) ? (q * (int64_t)(UINT64_C(1) << (unsigned)k))
@@ -270,50 +271,46 @@ static int64_t height_q36(const bowring_t *b)
 #define DEEP_Q36 (INT64_C(-50000) * INT64_C(68719476736))
 
 /* The unit vector (cos phi, sin phi) of the geodetic latitude (Q5.58) and
- * the height (Q47.16) of ECEF x, y, z in Q27.36 (|x|, |y|, |z| < 2^61).
- * On DRDC_OK they are written to out as scratch: out->lon = cos phi,
+ * the height (Q47.16) of the ECEF point x = b->u, y = b->v, z = b->z in
+ * Q27.36 (|x|, |y|, |z| < 2^61; b is the caller's, its scratch from here
+ * on). On DRDC_OK they are written to out as scratch: out->lon = cos phi,
  * out->lat = sin phi, and the final out->height; nothing is written on
  * error. */
-static drdc_status_t geodetic_direction(int64_t x, int64_t y, int64_t z,
-                                        drdc_geo_point_t *out)
+static drdc_status_t geodetic_direction(bowring_t *b, drdc_geo_point_t *out)
 {
-  bowring_t b;
   int64_t h;
 
-  b.p = 0;
-  b.z = z;
-  b.u = x;
-  b.v = y;
-  if ((x != 0) || (y != 0)) {
-    b.p = normalise(&b);
+  b->p = 0;
+  if ((b->u != 0) || (b->v != 0)) {
+    b->p = normalise(b);
   }
-  if ((b.p < (ECEF_CORE * Q36_PER_Q16))
-      && (ecef_abs64(z) < (ECEF_CORE * Q36_PER_Q16))) {
+  if ((b->p < (ECEF_CORE * Q36_PER_Q16))
+      && (ecef_abs64(b->z) < (ECEF_CORE * Q36_PER_Q16))) {
     return DRDC_E_HEIGHT;
   }
   /* tan beta_0 = a z / (b p), then tan beta = (b / a) tan phi */
-  b.u = geo_mul(b.p, GEO_B_OVER_A);
-  b.v = z;
-  (void)normalise(&b);
-  bowring_step(&b);
-  b.v = geo_mul(b.v, GEO_B_OVER_A);
-  (void)normalise(&b);
-  bowring_step(&b);
-  (void)normalise(&b);
-  h = height_q36(&b);
+  b->u = geo_mul(b->p, GEO_B_OVER_A);
+  b->v = b->z;
+  (void)normalise(b);
+  bowring_step(b);
+  b->v = geo_mul(b->v, GEO_B_OVER_A);
+  (void)normalise(b);
+  bowring_step(b);
+  (void)normalise(b);
+  h = height_q36(b);
   if (h < DEEP_Q36) {
-    b.v = geo_mul(b.v, GEO_B_OVER_A);
-    (void)normalise(&b);
-    bowring_step(&b);
-    (void)normalise(&b);
-    h = height_q36(&b);
+    b->v = geo_mul(b->v, GEO_B_OVER_A);
+    (void)normalise(b);
+    bowring_step(b);
+    (void)normalise(b);
+    h = height_q36(b);
   }
   h = drdc_fx_rshift_round_s64_inline(h, 20u);
   if ((h > DRDC_GEO_HEIGHT_MAX) || (h < -DRDC_GEO_HEIGHT_MAX)) {
     return DRDC_E_HEIGHT;
   }
-  out->lon = b.u;
-  out->lat = b.v;
+  out->lon = b->u;
+  out->lat = b->v;
   out->height = h;
   return DRDC_OK;
 }
@@ -327,15 +324,15 @@ static inline drdc_nas_t angle_nas(int64_t y, int64_t x)
   return geo_nas_from_rad(r);
 }
 
-/* geodetic of ECEF in Q27.36 (|x|, |y|, |z| < 2^61). The longitude
- * first (atan2 is scale-free), then Bowring's iteration for the
- * latitude's direction and the height, then the latitude's atan2: each
- * deep call from a frame that keeps only the longitude and pointers */
-static drdc_status_t geodetic_q36(int64_t x, int64_t y, int64_t z,
-                                  drdc_geo_point_t *out)
+/* geodetic of the ECEF point in b (Q27.36, as geodetic_direction()
+ * takes it). The longitude first (atan2 is scale-free), then Bowring's
+ * iteration for the latitude's direction and the height, then the
+ * latitude's atan2: each deep call from a frame that keeps only the
+ * longitude and pointers */
+static drdc_status_t geodetic_q36(bowring_t *b, drdc_geo_point_t *out)
 {
-  drdc_nas_t lon = ((x == 0) && (y == 0)) ? 0 : angle_nas(y, x);
-  drdc_status_t st = geodetic_direction(x, y, z, out);
+  drdc_nas_t lon = ((b->u == 0) && (b->v == 0)) ? 0 : angle_nas(b->v, b->u);
+  drdc_status_t st = geodetic_direction(b, out);
 
   if (st == DRDC_OK) {
     /* nothing fails from here on: out holds the scratch direction */
@@ -348,6 +345,7 @@ static drdc_status_t geodetic_q36(int64_t x, int64_t y, int64_t z,
 drdc_status_t drdc_geo_from_ecef(const drdc_vec3_q47_16_t *ecef,
                                  drdc_geo_point_t *p)
 {
+  bowring_t b;
   drdc_nas_t lon;
   drdc_status_t st;
 
@@ -362,8 +360,10 @@ drdc_status_t drdc_geo_from_ecef(const drdc_vec3_q47_16_t *ecef,
    * rather than keeping them: the longitude from the Q47.16 values (the
    * same angle: atan2 scales its arguments exactly) */
   lon = ((ecef->x == 0) && (ecef->y == 0)) ? 0 : angle_nas(ecef->y, ecef->x);
-  st = geodetic_direction(ecef->x * Q36_PER_Q16, ecef->y * Q36_PER_Q16,
-                          ecef->z * Q36_PER_Q16, p);
+  b.u = ecef->x * Q36_PER_Q16;
+  b.v = ecef->y * Q36_PER_Q16;
+  b.z = ecef->z * Q36_PER_Q16;
+  st = geodetic_direction(&b, p);
   if (st == DRDC_OK) {
     p->lat = angle_nas(p->lat, p->lon);
     p->lon = lon;
@@ -435,24 +435,37 @@ drdc_status_t drdc_geo_to_ned(const drdc_geo_point_t *ref,
   return plane_of(ref, p, true, ned);
 }
 
-/* geodetic of ENU (ned false) or NED (ned true) v (Q15.16) at a checked
- * ref: the offsets turned to ECEF axes (Q27.36), the ref's ECEF added,
- * then as geodetic_q36() */
-static drdc_status_t point_of_plane(const drdc_geo_point_t *ref,
-                                const drdc_vec3_q15_16_t *v, bool ned,
-                                drdc_geo_point_t *p)
+/* ECEF (Q27.36) of ENU (ned false) or NED (ned true) v (Q15.16) at a
+ * checked ref into b->u, b->v, b->z (x, y, z): the offsets turned to ECEF
+ * axes in b's slots, the ref's ECEF added. Out of line, so that its
+ * sin/cos and roots run beside, not above, the inverse's chain. */
+static __attribute__((noinline)) void ecef_of_plane(
+  const drdc_geo_point_t *ref, const drdc_vec3_q15_16_t *v, bool ned,
+  bowring_t *b)
 {
-  int64_t a = (int64_t)(ned ? v->x : v->y) * Q36_PER_Q16;
-  int64_t b = (int64_t)(ned ? -(int64_t)v->z : (int64_t)v->z) * Q36_PER_Q16;
-  int64_t c = (int64_t)(ned ? v->y : v->x) * Q36_PER_Q16;
-
+  /* north, up, east */
+  b->z = (int64_t)(ned ? v->x : v->y) * Q36_PER_Q16;
+  b->u = (int64_t)(ned ? -(int64_t)v->z : (int64_t)v->z) * Q36_PER_Q16;
+  b->v = (int64_t)(ned ? v->y : v->x) * Q36_PER_Q16;
   /* about east by -latitude: (north, up) -> (dz, the horizontal part
    * towards the ref's meridian plane r); about the axis by -longitude:
    * (east, r) -> (dy, dx) */
-  turn(geo_rad_from_nas(ref->lat), &a, &b);
-  turn(lon_rad(ref->lon), &c, &b);
-  ecef_acc_q36(ref, false, &b, &c, &a);
-  return geodetic_q36(b, c, a, p);
+  turn(geo_rad_from_nas(ref->lat), &b->z, &b->u);
+  turn(lon_rad(ref->lon), &b->v, &b->u);
+  ecef_acc_q36(ref, false, &b->u, &b->v, &b->z);
+}
+
+/* geodetic of ENU (ned false) or NED (ned true) v (Q15.16) at a checked
+ * ref: ecef_of_plane(), then geodetic_q36(); the one bowring_t of the
+ * chain lives here */
+static drdc_status_t point_of_plane(const drdc_geo_point_t *ref,
+                                    const drdc_vec3_q15_16_t *v, bool ned,
+                                    drdc_geo_point_t *p)
+{
+  bowring_t b;
+
+  ecef_of_plane(ref, v, ned, &b);
+  return geodetic_q36(&b, p);
 }
 
 drdc_status_t drdc_geo_from_enu(const drdc_geo_point_t *ref,
