@@ -61,8 +61,17 @@ extern const int64_t geo_beta[GEO_KRUEGER_TERMS];
  *  without its checks and pointer); the hot loops of tm.c inline it. */
 int64_t geo_mul(int64_t a, int64_t b);
 
-/** a 2^58 / b, rounded; b != 0 and the quotient within int64_t. */
-int64_t geo_div(int64_t a, int64_t b);
+/** a 2^58 / b, rounded; b != 0 and the quotient within int64_t: the
+ *  callers keep it so, so it never fails. Inline: an out-of-line wrapper
+ *  would put its own frame (32 bytes) on top of drdc_fx_div_q5_58()'s on
+ *  the deepest chains of the projections (issue 8's stack goal). */
+static inline int64_t geo_div(int64_t a, int64_t b)
+{
+  int64_t r = 0;
+
+  (void)drdc_fx_div_q5_58(a, b, &r);
+  return r;
+}
 
 /** a b / c, rounded; c != 0 and the quotient within int64_t. */
 int64_t geo_muldiv(int64_t a, int64_t b, int64_t c);
