@@ -81,7 +81,6 @@ drdc_status_t drdc_pose_wutm_from_w(const drdc_WPose_t *w, int32_t zone,
 {
   drdc_geo_utm_t u;
   drdc_nas_t gamma = 0;
-  drdc_quat_t q;
   drdc_status_t st;
 
   if ((w == NULL) || (out == NULL)) {
@@ -89,7 +88,9 @@ drdc_status_t drdc_pose_wutm_from_w(const drdc_WPose_t *w, int32_t zone,
   }
   st = drdc_geo_to_utm(w->latitude, w->longitude, zone, &u, &gamma, NULL);
   if (st == DRDC_OK) {
-    st = turn_about_down(&w->q, -gamma, &q);
+    /* the last step that can fail writes straight into out (only on
+     * DRDC_OK): no quaternion copy in this frame above the UTM chain */
+    st = turn_about_down(&w->q, -gamma, &out->q);
   }
   if (st != DRDC_OK) {
     return st;
@@ -99,10 +100,6 @@ drdc_status_t drdc_pose_wutm_from_w(const drdc_WPose_t *w, int32_t zone,
   out->utm.easting = u.easting;
   out->utm.northing = u.northing;
   out->height = w->height;
-  out->q.s = q.s;
-  out->q.x = q.x;
-  out->q.y = q.y;
-  out->q.z = q.z;
   return DRDC_OK;
 }
 
@@ -112,7 +109,6 @@ drdc_status_t drdc_pose_w_from_wutm(const drdc_WUTMPose_t *u,
   drdc_nas_t lat = 0;
   drdc_nas_t lon = 0;
   drdc_nas_t gamma = 0;
-  drdc_quat_t q;
   drdc_status_t st;
 
   if ((u == NULL) || (out == NULL)) {
@@ -120,7 +116,9 @@ drdc_status_t drdc_pose_w_from_wutm(const drdc_WUTMPose_t *u,
   }
   st = drdc_geo_from_utm(&u->utm, &lat, &lon, &gamma, NULL);
   if (st == DRDC_OK) {
-    st = turn_about_down(&u->q, gamma, &q);
+    /* the last step that can fail, straight into out (as in
+     * drdc_pose_wutm_from_w()) */
+    st = turn_about_down(&u->q, gamma, &out->q);
   }
   if (st != DRDC_OK) {
     return st;
@@ -128,31 +126,25 @@ drdc_status_t drdc_pose_w_from_wutm(const drdc_WUTMPose_t *u,
   out->latitude = lat;
   out->longitude = lon;
   out->height = u->height;
-  out->q.s = q.s;
-  out->q.x = q.x;
-  out->q.y = q.y;
-  out->q.z = q.z;
   return DRDC_OK;
 }
 
 drdc_status_t drdc_pose_weutm_from_we(const drdc_WePose_t *w, int32_t zone,
                                       drdc_WeUTMPose_t *out)
 {
-  drdc_geo_utm_t u;
   drdc_nas_t gamma = 0;
   drdc_status_t st;
 
   if ((w == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = drdc_geo_to_utm(w->latitude, w->longitude, zone, &u, &gamma, NULL);
+  /* the one step that can fail writes out->utm only on DRDC_OK: no copy
+   * of it in this frame above the UTM chain */
+  st = drdc_geo_to_utm(w->latitude, w->longitude, zone, &out->utm, &gamma,
+                       NULL);
   if (st != DRDC_OK) {
     return st;
   }
-  out->utm.zone = u.zone;
-  out->utm.north = u.north;
-  out->utm.easting = u.easting;
-  out->utm.northing = u.northing;
   out->height = w->height;
   out->e.yaw = w->e.yaw - drdc_pose_bam_from_convergence(gamma);
   out->e.pitch = w->e.pitch;
@@ -163,20 +155,19 @@ drdc_status_t drdc_pose_weutm_from_we(const drdc_WePose_t *w, int32_t zone,
 drdc_status_t drdc_pose_we_from_weutm(const drdc_WeUTMPose_t *u,
                                       drdc_WePose_t *out)
 {
-  drdc_nas_t lat = 0;
-  drdc_nas_t lon = 0;
   drdc_nas_t gamma = 0;
   drdc_status_t st;
 
   if ((u == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = drdc_geo_from_utm(&u->utm, &lat, &lon, &gamma, NULL);
+  /* the one step that can fail writes the position only on DRDC_OK:
+   * straight into out */
+  st = drdc_geo_from_utm(&u->utm, &out->latitude, &out->longitude, &gamma,
+                         NULL);
   if (st != DRDC_OK) {
     return st;
   }
-  out->latitude = lat;
-  out->longitude = lon;
   out->height = u->height;
   out->e.yaw = u->e.yaw + drdc_pose_bam_from_convergence(gamma);
   out->e.pitch = u->e.pitch;
