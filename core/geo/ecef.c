@@ -35,7 +35,7 @@
  *  geodetic position: 1 000 km. */
 #define ECEF_CORE (INT64_C(1000000) * INT64_C(65536))
 
-static drdc_status_t check_point(const drdc_geo_point_t *p)
+drdc_status_t geo_check_point(const drdc_geo_point_t *p)
 {
   if ((p->lat > (90 * GEO_NAS_DEG)) || (p->lat < (-90 * GEO_NAS_DEG))) {
     return DRDC_E_LATITUDE;
@@ -82,23 +82,27 @@ static void turn(int64_t t, int64_t *a, int64_t *b)
 }
 
 /* 1 / sqrt(x) for x in [1/4, 2) (Q5.58, the result at most 2): a seed
- * within 2^-15 relative from the Q1.30 root of drdc_fx_sqrt_q1_30() and a
- * 32-bit quotient, then Newton steps y (3 - x y^2) / 2, each squaring
- * the relative error (2^-29, then 2^-57 with the roundings). Three to
- * four products a step; no 64-bit division (drdc_fx_rsqrt_q1_30() takes
- * a 64-bit quotient, drdc_fx_sqrt_q5_58() two 128-bit ones). */
+ * within 2^-15 relative from the Q1.30 root of x and a 32-bit quotient,
+ * then Newton steps y (3 - x y^2) / 2, each squaring the relative error
+ * (2^-29, then 2^-57 with the roundings). Three to four products a step;
+ * no 64-bit division (drdc_fx_rsqrt_q1_30() takes a 64-bit quotient,
+ * drdc_fx_sqrt_q5_58() two 128-bit ones). The Q1.30 root is
+ * drdc_fx_sqrt_q1_30()'s own expression, the integer root of the Q1.30
+ * value times 2^30, taken from drdc_fx_sqrt_u64() directly: the same
+ * bits without a result slot or a wrapper frame on the deepest chain of
+ * every ECEF and tangent-plane conversion. */
 static int64_t rsqrt_q58(int64_t x, unsigned steps)
 {
-  /* x >> 28 as Q1.30 (x >= 0): floor, so in [2^28, 2^31) */
-  drdc_q1_30_t s30 = 0;
+  /* x >> 28 as Q1.30 (x >= 0): floor, so in [2^28, 2^31), and its root
+   * (rounded, as drdc_fx_sqrt_q1_30() gives it) in [2^29, 2^30.5) */
+  uint32_t s30 = (uint32_t)drdc_fx_sqrt_u64(((uint64_t)x >> 28) << 30);
   uint32_t d;
   int64_t y;
   unsigned i;
 
-  (void)drdc_fx_sqrt_q1_30((drdc_q1_30_t)((uint64_t)x >> 28), &s30);
-  /* s30 in [2^29, 2^30.5): d = s 2^16 in [2^15, 2^16.5), and
-   * (2^32 - 1) / d = 2^16 / s within 2^-15 relative, Q15.16 */
-  d = (uint32_t)s30 >> 14;
+  /* d = s 2^16 in [2^15, 2^16.5), and (2^32 - 1) / d = 2^16 / s within
+   * 2^-15 relative, Q15.16 */
+  d = s30 >> 14;
   d = 0xFFFFFFFFu / d;
   y = (int64_t)d * INT64_C(4398046511104);
   for (i = 0u; i < steps; i++) {
@@ -108,42 +112,37 @@ static int64_t rsqrt_q58(int64_t x, unsigned steps)
   return y;
 }
 
-/* *x, *y += or -= (N + h) cos phi (cos lam, sin lam): the longitude's
- * part of ecef_acc_q36(), in its own frame */
-static void ecef_acc_lon(drdc_nas_t lon, int64_t nh, int64_t cphi, bool sub,
-                         int64_t *x, int64_t *y)
-{
-  int64_t slam = 0;
-  int64_t clam = 0;
-  int64_t v;
-
-  geo_sincos(lon_rad(lon), &slam, &clam);
-  v = geo_mul(nh, geo_mul(cphi, clam));
-  *x = sub ? (*x - v) : (*x + v);
-  v = geo_mul(nh, geo_mul(cphi, slam));
-  *y = sub ? (*y - v) : (*y + v);
-}
-
 /* ECEF of a checked point in Q27.36, added to (*x, *y, *z), or subtracted
  * when sub (geo_mul() rounds symmetrically, so the difference of two
- * points is exactly that of their coordinates) */
-static void ecef_acc_q36(const drdc_geo_point_t *p, bool sub, int64_t *x,
-                         int64_t *y, int64_t *z)
+ * points is exactly that of their coordinates). The sin and cos of the
+ * latitude, then those of the longitude, share one pair of slots, and
+ * only cos phi and N + h are kept across the second sin/cos: the frame
+ * under the roots and sin/cos of every tangent-plane chain stays small. */
+void geo_ecef_acc_q36(const drdc_geo_point_t *p, bool sub, int64_t *x,
+                      int64_t *y, int64_t *z)
 {
-  int64_t sphi = 0;
-  int64_t cphi = 0;
+  int64_t sc[2] = { 0, 0 };
+  int64_t cphi;
   int64_t n;
   int64_t v;
 
-  geo_sincos(geo_rad_from_nas(p->lat), &sphi, &cphi);
+  geo_sincos(geo_rad_from_nas(p->lat), &sc[0], &sc[1]);
   /* N = a / w = a / sqrt(w^2), w^2 = 1 - e^2 sin^2 phi in [1 - e^2, 1]:
    * no Q5.58 square root or quotient */
   n = geo_mul(A_Q36,
-              rsqrt_q58(GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi)), 2u));
+              rsqrt_q58(GEO_ONE - geo_mul(GEO_E2, geo_mul(sc[0], sc[0])),
+                        2u));
   v = geo_mul(geo_mul(n, GEO_ONE - GEO_E2) + (p->height * Q36_PER_Q16),
-              sphi);
+              sc[0]);
   *z = sub ? (*z - v) : (*z + v);
-  ecef_acc_lon(p->lon, n + (p->height * Q36_PER_Q16), cphi, sub, x, y);
+  /* x, y += or -= (N + h) cos phi (cos lam, sin lam) */
+  cphi = sc[1];
+  n = n + (p->height * Q36_PER_Q16);
+  geo_sincos(lon_rad(p->lon), &sc[0], &sc[1]);
+  v = geo_mul(n, geo_mul(cphi, sc[1]));
+  *x = sub ? (*x - v) : (*x + v);
+  v = geo_mul(n, geo_mul(cphi, sc[0]));
+  *y = sub ? (*y - v) : (*y + v);
 }
 
 drdc_status_t drdc_geo_to_ecef(const drdc_geo_point_t *p,
@@ -154,7 +153,7 @@ drdc_status_t drdc_geo_to_ecef(const drdc_geo_point_t *p,
   if ((p == NULL) || (ecef == NULL)) {
     return DRDC_E_NULL;
   }
-  st = check_point(p);
+  st = geo_check_point(p);
   if (st != DRDC_OK) {
     return st;
   }
@@ -163,7 +162,7 @@ drdc_status_t drdc_geo_to_ecef(const drdc_geo_point_t *p,
   ecef->x = 0;
   ecef->y = 0;
   ecef->z = 0;
-  ecef_acc_q36(p, false, &ecef->x, &ecef->y, &ecef->z);
+  geo_ecef_acc_q36(p, false, &ecef->x, &ecef->y, &ecef->z);
   ecef->x = drdc_fx_rshift_round_s64_inline(ecef->x, 20u);
   ecef->y = drdc_fx_rshift_round_s64_inline(ecef->y, 20u);
   ecef->z = drdc_fx_rshift_round_s64_inline(ecef->z, 20u);
@@ -376,27 +375,13 @@ static bool fits_q15_16(int64_t v)
   return (v <= (int64_t)INT32_MAX) && (v >= (int64_t)INT32_MIN);
 }
 
-/* ENU (ned false) or NED (ned true) of p at ref in Q15.16, the pointers
- * checked: the ECEF difference (Q27.36) turned in place in one array,
- * d[0] = dx, d[1] = dy, d[2] = dz; about the axis by the longitude:
- * (dx, dy) -> (towards the ref's meridian plane t, east); about east by
- * the latitude: (t, dz) -> (up, north). */
-static drdc_status_t plane_of(const drdc_geo_point_t *ref,
-                              const drdc_geo_point_t *p, bool ned,
-                              drdc_vec3_q15_16_t *out)
+/* The ECEF difference d (Q27.36: d[0] = dx, d[1] = dy, d[2] = dz) turned
+ * in place; about the axis by the longitude: (dx, dy) -> (towards the
+ * ref's meridian plane t, east); about east by the latitude: (t, dz) ->
+ * (up, north). */
+drdc_status_t geo_plane_turn(const drdc_geo_point_t *ref, bool ned,
+                             int64_t d[3], drdc_vec3_q15_16_t *out)
 {
-  drdc_status_t st;
-  int64_t d[3] = { 0, 0, 0 };
-
-  st = check_point(ref);
-  if (st == DRDC_OK) {
-    st = check_point(p);
-  }
-  if (st != DRDC_OK) {
-    return st;
-  }
-  ecef_acc_q36(p, false, &d[0], &d[1], &d[2]);
-  ecef_acc_q36(ref, true, &d[0], &d[1], &d[2]);
   turn(lon_rad(ref->lon), &d[0], &d[1]);
   turn(geo_rad_from_nas(ref->lat), &d[0], &d[2]);
   /* east, north, up (Q47.16); NED: north, east, down */
@@ -413,6 +398,28 @@ static drdc_status_t plane_of(const drdc_geo_point_t *ref,
   out->y = (drdc_q15_16_t)(ned ? d[1] : d[2]);
   out->z = (drdc_q15_16_t)d[0];
   return DRDC_OK;
+}
+
+/* ENU (ned false) or NED (ned true) of p at ref in Q15.16, the pointers
+ * checked: the ECEF difference (Q27.36) in one array, then
+ * geo_plane_turn() */
+static drdc_status_t plane_of(const drdc_geo_point_t *ref,
+                              const drdc_geo_point_t *p, bool ned,
+                              drdc_vec3_q15_16_t *out)
+{
+  drdc_status_t st;
+  int64_t d[3] = { 0, 0, 0 };
+
+  st = geo_check_point(ref);
+  if (st == DRDC_OK) {
+    st = geo_check_point(p);
+  }
+  if (st != DRDC_OK) {
+    return st;
+  }
+  geo_ecef_acc_q36(p, false, &d[0], &d[1], &d[2]);
+  geo_ecef_acc_q36(ref, true, &d[0], &d[1], &d[2]);
+  return geo_plane_turn(ref, ned, d, out);
 }
 
 drdc_status_t drdc_geo_to_enu(const drdc_geo_point_t *ref,
@@ -452,7 +459,7 @@ static __attribute__((noinline)) void ecef_of_plane(
    * (east, r) -> (dy, dx) */
   turn(geo_rad_from_nas(ref->lat), &b->z, &b->u);
   turn(lon_rad(ref->lon), &b->v, &b->u);
-  ecef_acc_q36(ref, false, &b->u, &b->v, &b->z);
+  geo_ecef_acc_q36(ref, false, &b->u, &b->v, &b->z);
 }
 
 /* geodetic of ENU (ned false) or NED (ned true) v (Q15.16) at a checked
@@ -477,7 +484,7 @@ drdc_status_t drdc_geo_from_enu(const drdc_geo_point_t *ref,
   if ((ref == NULL) || (enu == NULL) || (p == NULL)) {
     return DRDC_E_NULL;
   }
-  st = check_point(ref);
+  st = geo_check_point(ref);
   if (st != DRDC_OK) {
     return st;
   }
@@ -493,7 +500,7 @@ drdc_status_t drdc_geo_from_ned(const drdc_geo_point_t *ref,
   if ((ref == NULL) || (ned == NULL) || (p == NULL)) {
     return DRDC_E_NULL;
   }
-  st = check_point(ref);
+  st = geo_check_point(ref);
   if (st != DRDC_OK) {
     return st;
   }

@@ -24,6 +24,7 @@
 #include <drdc/fixed_q5_58.h>
 #include <drdc/fixed_types.h>
 #include <drdc/geo.h>
+#include <drdc/geo_ecef.h>
 #include <drdc/types.h>
 
 #include "geo_consts.h"
@@ -200,5 +201,28 @@ drdc_status_t geo_utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
 drdc_status_t geo_mgrs_format_bits(const drdc_geo_utm_t *u, unsigned frac_bits,
                                    drdc_nas_t lat, int32_t prec, char *text,
                                    size_t size);
+
+/** The checks of drdc_geo_to_ecef() on a point: DRDC_E_LATITUDE,
+ *  DRDC_E_LONGITUDE or DRDC_E_HEIGHT out of range, else DRDC_OK. */
+drdc_status_t geo_check_point(const drdc_geo_point_t *p);
+
+/**
+ * The ECEF coordinates of a checked point in Q27.36 (2^-36 m) added to
+ * *x, *y, *z, or subtracted from them when sub: the difference of two
+ * points is exactly that of their coordinates. The tangent-plane
+ * conversions of ecef.c and pose.c accumulate one point at a time, so
+ * that only one point and the three sums are on the stack.
+ */
+void geo_ecef_acc_q36(const drdc_geo_point_t *p, bool sub, int64_t *x,
+                      int64_t *y, int64_t *z);
+
+/**
+ * ENU (ned false) or NED (ned true) in Q15.16 of the ECEF difference
+ * d = p - ref (Q27.36, from geo_ecef_acc_q36(); turned in place, scratch)
+ * at the checked ref. Returns DRDC_E_OVERFLOW (out unchanged) when a part
+ * is outside Q15.16, else DRDC_OK.
+ */
+drdc_status_t geo_plane_turn(const drdc_geo_point_t *ref, bool ned,
+                             int64_t d[3], drdc_vec3_q15_16_t *out);
 
 #endif /* DRDC_GEO_IMPL_H */

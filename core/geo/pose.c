@@ -243,26 +243,44 @@ drdc_status_t drdc_pose_w_from_l(const drdc_WPose_t *ref,
   return w_from_ned(ref, geoid_separation, &ned, &l->q, out);
 }
 
-/* NED of w at ref (both ellipsoidal by the separation), in its own frame
- * (the two points are not on the stack during the caller's rotation) */
-static drdc_status_t ned_of(const drdc_WPose_t *ref,
-                            drdc_q47_16_t geoid_separation,
-                            const drdc_WPose_t *w, drdc_vec3_q15_16_t *ned)
+/* NED of w at ref (both ellipsoidal by the separation): drdc_geo_to_ned()
+ * in its stages (the same checks in the same order, the same sums), with
+ * one point on the stack, filled with each point in turn, beside the
+ * ECEF difference. Out of line: neither is on the stack during the
+ * caller's rotation. */
+static __attribute__((noinline)) drdc_status_t ned_of(
+  const drdc_WPose_t *ref, drdc_q47_16_t geoid_separation,
+  const drdc_WPose_t *w, drdc_vec3_q15_16_t *ned)
 {
-  drdc_geo_point_t r;
-  drdc_geo_point_t p;
+  drdc_geo_point_t pt;
+  int64_t d[3] = { 0, 0, 0 };
+  drdc_status_t st;
 
-  ellipsoidal(ref, geoid_separation, &r);
-  ellipsoidal(w, geoid_separation, &p);
-  return drdc_geo_to_ned(&r, &p, ned);
+  ellipsoidal(ref, geoid_separation, &pt);
+  st = geo_check_point(&pt);
+  if (st == DRDC_OK) {
+    ellipsoidal(w, geoid_separation, &pt);
+    st = geo_check_point(&pt);
+  }
+  if (st != DRDC_OK) {
+    return st;
+  }
+  /* pt holds w's point: the difference w - ref */
+  geo_ecef_acc_q36(&pt, false, &d[0], &d[1], &d[2]);
+  ellipsoidal(ref, geoid_separation, &pt);
+  geo_ecef_acc_q36(&pt, true, &d[0], &d[1], &d[2]);
+  return geo_plane_turn(&pt, true, d, ned);
 }
 
 /* The attitude part of {W} -> {l} once the offset is in NED: the
  * offset turned into the reference's body axes (conjugate rotation) and
  * the relative attitude; out written only on DRDC_OK (out->p by the last
  * step that can fail). Shared by drdc_pose_l_from_w() and
- * drdc_pose_le_from_we(). */
-static drdc_status_t l_from_ned(const drdc_quat_t *rq,
+ * drdc_pose_le_from_we(), and inlined into them: its two quaternions
+ * then share the caller's frame with the offset, and the rotation's
+ * chain starts one frame higher. */
+static inline __attribute__((always_inline)) drdc_status_t l_from_ned(
+  const drdc_quat_t *rq,
                                 const drdc_vec3_q15_16_t *ned,
                                 const drdc_quat_t *wq, drdc_lPose_t *out)
 {
