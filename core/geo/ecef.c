@@ -35,7 +35,10 @@
  *  geodetic position: 1 000 km. */
 #define ECEF_CORE (INT64_C(1000000) * INT64_C(65536))
 
-drdc_status_t geo_check_point(const drdc_geo_point_t *p)
+/* out of line (one copy for its six callers): a leaf, called before any
+ * deep chain starts */
+__attribute__((noinline)) drdc_status_t geo_check_point(
+  const drdc_geo_point_t *p)
 {
   if ((p->lat > (90 * GEO_NAS_DEG)) || (p->lat < (-90 * GEO_NAS_DEG))) {
     return DRDC_E_LATITUDE;

@@ -276,11 +276,8 @@ static __attribute__((noinline)) drdc_status_t ned_of(
  * offset turned into the reference's body axes (conjugate rotation) and
  * the relative attitude; out written only on DRDC_OK (out->p by the last
  * step that can fail). Shared by drdc_pose_l_from_w() and
- * drdc_pose_le_from_we(), and inlined into them: its two quaternions
- * then share the caller's frame with the offset, and the rotation's
- * chain starts one frame higher. */
-static inline __attribute__((always_inline)) drdc_status_t l_from_ned(
-  const drdc_quat_t *rq,
+ * drdc_pose_le_from_we(). */
+static drdc_status_t l_from_ned(const drdc_quat_t *rq,
                                 const drdc_vec3_q15_16_t *ned,
                                 const drdc_quat_t *wq, drdc_lPose_t *out)
 {
