@@ -68,6 +68,18 @@ static int64_t lon_rad(drdc_nas_t lon)
   return geo_rad_from_nas(l);
 }
 
+/* (a, b) <- (a c + b s, b c - a s) for c = cos t, s = sin t: the
+ * products of turn(), out of line so that the two old values and a sum
+ * it keeps across them are not on the stack under the sin/cos */
+static __attribute__((noinline)) void turn_apply(const int64_t sc[2],
+                                                 int64_t *a, int64_t *b)
+{
+  int64_t a0 = *a;
+
+  *a = geo_mul(a0, sc[1]) + geo_mul(*b, sc[0]);
+  *b = geo_mul(*b, sc[1]) - geo_mul(a0, sc[0]);
+}
+
 /* The plane rotation by angle t (radians) in place: (a, b) <- (a cos t +
  * b sin t, b cos t - a sin t). Both tangent-plane conversions are two of
  * these (about the polar axis by the longitude, then about the east axis
@@ -75,13 +87,10 @@ static int64_t lon_rad(drdc_nas_t lon)
  * the stack. |a|, |b| < 2^61. */
 static void turn(int64_t t, int64_t *a, int64_t *b)
 {
-  int64_t s = 0;
-  int64_t c = 0;
-  int64_t a0 = *a;
+  int64_t sc[2] = { 0, 0 };
 
-  geo_sincos(t, &s, &c);
-  *a = geo_mul(a0, c) + geo_mul(*b, s);
-  *b = geo_mul(*b, c) - geo_mul(a0, s);
+  geo_sincos(t, &sc[0], &sc[1]);
+  turn_apply(sc, a, b);
 }
 
 /* 1 / sqrt(x) for x in [1/4, 2) (Q5.58, the result at most 2): a seed

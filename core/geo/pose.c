@@ -246,11 +246,15 @@ drdc_status_t drdc_pose_w_from_l(const drdc_WPose_t *ref,
 /* NED of w at ref (both ellipsoidal by the separation): drdc_geo_to_ned()
  * in its stages (the same checks in the same order, the same sums), with
  * one point on the stack, filled with each point in turn, beside the
- * ECEF difference. Out of line: neither is on the stack during the
- * caller's rotation. */
+ * ECEF difference; then the conjugate of ref's attitude into *inv, which
+ * turns the offset into ref's body axes. Out of line: neither the point
+ * nor the difference is on the stack during the caller's rotation, and
+ * the caller keeps no pointer to ref across this call (the 64-bit
+ * separation first: on Cortex-M3 the arguments then leave one word
+ * fewer on the caller's stack). */
 static __attribute__((noinline)) drdc_status_t ned_of(
-  const drdc_WPose_t *ref, drdc_q47_16_t geoid_separation,
-  const drdc_WPose_t *w, drdc_vec3_q15_16_t *ned)
+  drdc_q47_16_t geoid_separation, const drdc_WPose_t *ref,
+  const drdc_WPose_t *w, drdc_vec3_q15_16_t *ned, drdc_quat_t *inv)
 {
   drdc_geo_point_t pt;
   int64_t d[3] = { 0, 0, 0 };
@@ -269,28 +273,30 @@ static __attribute__((noinline)) drdc_status_t ned_of(
   geo_ecef_acc_q36(&pt, false, &d[0], &d[1], &d[2]);
   ellipsoidal(ref, geoid_separation, &pt);
   geo_ecef_acc_q36(&pt, true, &d[0], &d[1], &d[2]);
-  return geo_plane_turn(&pt, true, d, ned);
+  st = geo_plane_turn(&pt, true, d, ned);
+  if (st == DRDC_OK) {
+    st = drdc_quat_conj(&ref->q, inv);
+  }
+  return st;
 }
 
-/* The attitude part of {W} -> {l} once the offset is in NED: the
- * offset turned into the reference's body axes (conjugate rotation) and
- * the relative attitude; out written only on DRDC_OK (out->p by the last
- * step that can fail). Shared by drdc_pose_l_from_w() and
- * drdc_pose_le_from_we(). */
-static drdc_status_t l_from_ned(const drdc_quat_t *rq,
-                                const drdc_vec3_q15_16_t *ned,
-                                const drdc_quat_t *wq, drdc_lPose_t *out)
+/* The attitude part of {W} -> {l} once the offset is in NED and the
+ * reference's attitude conjugated (ned_of()): the offset turned into the
+ * reference's body axes and the relative attitude; out written only on
+ * DRDC_OK (out->p by the last step that can fail). inv may be &out->q:
+ * it is read before out->q is written. drdc_pose_le_from_we()'s; out of
+ * line, so that its quaternion is not in that function's large frame.
+ * drdc_pose_l_from_w() does the same with no quaternion of its own. */
+static __attribute__((noinline)) drdc_status_t l_from_ned(
+  const drdc_quat_t *inv, const drdc_vec3_q15_16_t *ned,
+  const drdc_quat_t *wq, drdc_lPose_t *out)
 {
-  drdc_quat_t inv = { 0, 0, 0, 0 };
   drdc_quat_t q = { 0, 0, 0, 0 };
   drdc_status_t st;
 
-  st = drdc_quat_conj(rq, &inv);
+  st = drdc_quat_compose(inv, wq, &q);
   if (st == DRDC_OK) {
-    st = drdc_quat_compose(&inv, wq, &q);
-  }
-  if (st == DRDC_OK) {
-    st = drdc_quat_rotate_q15_16(&inv, ned, &out->p);
+    st = drdc_quat_rotate_q15_16(inv, ned, &out->p);
   }
   if (st != DRDC_OK) {
     return st;
@@ -302,11 +308,25 @@ static drdc_status_t l_from_ned(const drdc_quat_t *rq,
   return DRDC_OK;
 }
 
+/* The status of drdc_pose_l_from_w() when its rotation failed with rot:
+ * the attitude's error first, as l_from_ned() gives it (the relative
+ * attitude is composed into inv, no longer needed, for its status
+ * alone). Out of line, so that no status is kept across a call in the
+ * caller's frame. */
+static __attribute__((noinline)) drdc_status_t first_error(
+  drdc_quat_t *inv, const drdc_quat_t *wq, drdc_status_t rot)
+{
+  drdc_status_t st = drdc_quat_compose(inv, wq, inv);
+
+  return (st != DRDC_OK) ? st : rot;
+}
+
 drdc_status_t drdc_pose_l_from_w(const drdc_WPose_t *ref,
                                  drdc_q47_16_t geoid_separation,
                                  const drdc_WPose_t *w, drdc_lPose_t *out)
 {
   drdc_vec3_q15_16_t ned = { 0, 0, 0 };
+  drdc_quat_t inv = { 0, 0, 0, 0 };
   drdc_status_t st;
 
   if ((ref == NULL) || (w == NULL) || (out == NULL)) {
@@ -315,11 +335,27 @@ drdc_status_t drdc_pose_l_from_w(const drdc_WPose_t *ref,
   if (!separation_ok(geoid_separation)) {
     return DRDC_E_HEIGHT;
   }
-  st = ned_of(ref, geoid_separation, w, &ned);
+  st = ned_of(geoid_separation, ref, w, &ned, &inv);
   if (st != DRDC_OK) {
     return st;
   }
-  return l_from_ned(&ref->q, &ned, &w->q, out);
+  /* l_from_ned() with one quaternion on the stack instead of two, so
+   * that the rotation's chain starts from this small frame: the offset
+   * turned in place first, then the relative attitude straight into
+   * out->q (drdc_quat_compose() writes only on DRDC_OK and is then the
+   * last step that can fail) */
+  st = drdc_quat_rotate_q15_16(&inv, &ned, &ned);
+  if (st != DRDC_OK) {
+    return first_error(&inv, &w->q, st);
+  }
+  st = drdc_quat_compose(&inv, &w->q, &out->q);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  out->p.x = ned.x;
+  out->p.y = ned.y;
+  out->p.z = ned.z;
+  return DRDC_OK;
 }
 
 /* the MGRS text of w's position at prec and the convergence there; text
@@ -590,9 +626,11 @@ drdc_status_t drdc_pose_le_from_we(const drdc_WePose_t *ref,
   }
   w_from_we(ref, &r);
   w_from_we(we, &w);
-  st = ned_of(&r, geoid_separation, &w, &ned);
+  /* the conjugate attitude waits in l.q, which l_from_ned() reads
+   * before it writes its result there */
+  st = ned_of(geoid_separation, &r, &w, &ned, &l.q);
   if (st == DRDC_OK) {
-    st = l_from_ned(&r.q, &ned, &w.q, &l);
+    st = l_from_ned(&l.q, &ned, &w.q, &l);
   }
   if (st != DRDC_OK) {
     return st;
