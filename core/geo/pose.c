@@ -382,15 +382,14 @@ static drdc_status_t mgrs_and_gamma(drdc_nas_t lat, drdc_nas_t lon,
   return st;
 }
 
-/* the position of an MGRS text (its cell's centre) and the convergence
- * there */
-static drdc_status_t mgrs_centre(const char *text, drdc_nas_t *lat,
-                                 drdc_nas_t *lon, drdc_nas_t *gamma)
+/* the centre of an MGRS text's cell (DRDC_GEO_MGRS_SIZE bytes at most),
+ * written only on DRDC_OK. Out of line, so that the corner the decoder
+ * also writes is not on the stack under drdc_geo_from_utm(). */
+static __attribute__((noinline)) drdc_status_t mgrs_cell_centre(
+  const char *text, drdc_geo_utm_t *centre)
 {
   drdc_geo_utm_t corner;
-  drdc_geo_utm_t centre;
   size_t n = 0u;
-  drdc_status_t st;
 
   /* the decoder must not read beyond the array */
   while ((n < DRDC_GEO_MGRS_SIZE) && (text[n] != '\0')) {
@@ -399,7 +398,18 @@ static drdc_status_t mgrs_centre(const char *text, drdc_nas_t *lat,
   if (n == DRDC_GEO_MGRS_SIZE) {
     return DRDC_E_MGRS;
   }
-  st = drdc_geo_mgrs_decode(text, &corner, &centre, NULL);
+  return drdc_geo_mgrs_decode(text, &corner, centre, NULL);
+}
+
+/* the position of an MGRS text (its cell's centre) and the convergence
+ * there; lat and lon written only on DRDC_OK */
+static drdc_status_t mgrs_centre(const char *text, drdc_nas_t *lat,
+                                 drdc_nas_t *lon, drdc_nas_t *gamma)
+{
+  drdc_geo_utm_t centre;
+  drdc_status_t st;
+
+  st = mgrs_cell_centre(text, &centre);
   if (st == DRDC_OK) {
     st = drdc_geo_from_utm(&centre, lat, lon, gamma, NULL);
   }
@@ -451,7 +461,6 @@ drdc_status_t drdc_pose_w_from_wmgrs(const drdc_WMGRSPose_t *m,
   drdc_nas_t lat = 0;
   drdc_nas_t lon = 0;
   drdc_nas_t gamma = 0;
-  drdc_quat_t q = { 0, 0, 0, 0 };
   drdc_status_t st;
 
   if ((m == NULL) || (out == NULL)) {
@@ -459,7 +468,9 @@ drdc_status_t drdc_pose_w_from_wmgrs(const drdc_WMGRSPose_t *m,
   }
   st = mgrs_centre(m->mgrs, &lat, &lon, &gamma);
   if (st == DRDC_OK) {
-    st = turn_about_down(&m->q, gamma, &q);
+    /* the last step that can fail, straight into out (as in
+     * drdc_pose_w_from_wutm()) */
+    st = turn_about_down(&m->q, gamma, &out->q);
   }
   if (st != DRDC_OK) {
     return st;
@@ -467,10 +478,6 @@ drdc_status_t drdc_pose_w_from_wmgrs(const drdc_WMGRSPose_t *m,
   out->latitude = lat;
   out->longitude = lon;
   out->height = m->height;
-  out->q.s = q.s;
-  out->q.x = q.x;
-  out->q.y = q.y;
-  out->q.z = q.z;
   return DRDC_OK;
 }
 
@@ -500,20 +507,18 @@ drdc_status_t drdc_pose_wemgrs_from_we(const drdc_WePose_t *w, int32_t prec,
 drdc_status_t drdc_pose_we_from_wemgrs(const drdc_WeMGRSPose_t *m,
                                        drdc_WePose_t *out)
 {
-  drdc_nas_t lat = 0;
-  drdc_nas_t lon = 0;
   drdc_nas_t gamma = 0;
   drdc_status_t st;
 
   if ((m == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = mgrs_centre(m->mgrs, &lat, &lon, &gamma);
+  /* the one step that can fail writes the position only on DRDC_OK:
+   * straight into out */
+  st = mgrs_centre(m->mgrs, &out->latitude, &out->longitude, &gamma);
   if (st != DRDC_OK) {
     return st;
   }
-  out->latitude = lat;
-  out->longitude = lon;
   out->height = m->height;
   out->e.yaw = m->e.yaw + drdc_pose_bam_from_convergence(gamma);
   out->e.pitch = m->e.pitch;
