@@ -35,8 +35,8 @@
  *  geodetic position: 1 000 km. */
 #define ECEF_CORE (INT64_C(1000000) * INT64_C(65536))
 
-/* out of line (one copy for its six callers): a leaf, called before any
- * deep chain starts */
+/* out of line (one copy for the five functions of ecef.c and pose.c that
+ * check points): a leaf, called before any deep chain starts */
 __attribute__((noinline)) drdc_status_t geo_check_point(
   const drdc_geo_point_t *p)
 {

@@ -86,7 +86,7 @@ drdc_status_t drdc_pose_wutm_from_w(const drdc_WPose_t *w, int32_t zone,
   if ((w == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = drdc_geo_to_utm(w->latitude, w->longitude, zone, &u, &gamma, NULL);
+  st = geo_to_utm(w->latitude, w->longitude, zone, &u, &gamma, NULL);
   if (st == DRDC_OK) {
     /* the last step that can fail writes straight into out (only on
      * DRDC_OK): no quaternion copy in this frame above the UTM chain */
@@ -140,8 +140,7 @@ drdc_status_t drdc_pose_weutm_from_we(const drdc_WePose_t *w, int32_t zone,
   }
   /* the one step that can fail writes out->utm only on DRDC_OK: no copy
    * of it in this frame above the UTM chain */
-  st = drdc_geo_to_utm(w->latitude, w->longitude, zone, &out->utm, &gamma,
-                       NULL);
+  st = geo_to_utm(w->latitude, w->longitude, zone, &out->utm, &gamma, NULL);
   if (st != DRDC_OK) {
     return st;
   }
