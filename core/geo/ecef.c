@@ -35,7 +35,10 @@
  *  geodetic position: 1 000 km. */
 #define ECEF_CORE (INT64_C(1000000) * INT64_C(65536))
 
-static drdc_status_t check_point(const drdc_geo_point_t *p)
+/* out of line (one copy for the five functions of ecef.c and pose.c that
+ * check points): a leaf, called before any deep chain starts */
+__attribute__((noinline)) drdc_status_t geo_check_point(
+  const drdc_geo_point_t *p)
 {
   if ((p->lat > (90 * GEO_NAS_DEG)) || (p->lat < (-90 * GEO_NAS_DEG))) {
     return DRDC_E_LATITUDE;
@@ -65,6 +68,18 @@ static int64_t lon_rad(drdc_nas_t lon)
   return geo_rad_from_nas(l);
 }
 
+/* (a, b) <- (a c + b s, b c - a s) for c = cos t, s = sin t: the
+ * products of turn(), out of line so that the two old values and a sum
+ * it keeps across them are not on the stack under the sin/cos */
+static __attribute__((noinline)) void turn_apply(const int64_t sc[2],
+                                                 int64_t *a, int64_t *b)
+{
+  int64_t a0 = *a;
+
+  *a = geo_mul(a0, sc[1]) + geo_mul(*b, sc[0]);
+  *b = geo_mul(*b, sc[1]) - geo_mul(a0, sc[0]);
+}
+
 /* The plane rotation by angle t (radians) in place: (a, b) <- (a cos t +
  * b sin t, b cos t - a sin t). Both tangent-plane conversions are two of
  * these (about the polar axis by the longitude, then about the east axis
@@ -72,33 +87,34 @@ static int64_t lon_rad(drdc_nas_t lon)
  * the stack. |a|, |b| < 2^61. */
 static void turn(int64_t t, int64_t *a, int64_t *b)
 {
-  int64_t s = 0;
-  int64_t c = 0;
-  int64_t a0 = *a;
+  int64_t sc[2] = { 0, 0 };
 
-  geo_sincos(t, &s, &c);
-  *a = geo_mul(a0, c) + geo_mul(*b, s);
-  *b = geo_mul(*b, c) - geo_mul(a0, s);
+  geo_sincos(t, &sc[0], &sc[1]);
+  turn_apply(sc, a, b);
 }
 
 /* 1 / sqrt(x) for x in [1/4, 2) (Q5.58, the result at most 2): a seed
- * within 2^-15 relative from the Q1.30 root of drdc_fx_sqrt_q1_30() and a
- * 32-bit quotient, then Newton steps y (3 - x y^2) / 2, each squaring
- * the relative error (2^-29, then 2^-57 with the roundings). Three to
- * four products a step; no 64-bit division (drdc_fx_rsqrt_q1_30() takes
- * a 64-bit quotient, drdc_fx_sqrt_q5_58() two 128-bit ones). */
+ * within 2^-15 relative from the Q1.30 root of x and a 32-bit quotient,
+ * then Newton steps y (3 - x y^2) / 2, each squaring the relative error
+ * (2^-29, then 2^-57 with the roundings). Three to four products a step;
+ * no 64-bit division (drdc_fx_rsqrt_q1_30() takes a 64-bit quotient,
+ * drdc_fx_sqrt_q5_58() two 128-bit ones). The Q1.30 root is
+ * drdc_fx_sqrt_q1_30()'s own expression, the integer root of the Q1.30
+ * value times 2^30, taken from drdc_fx_sqrt_u64() directly: the same
+ * bits without a result slot or a wrapper frame on the deepest chain of
+ * every ECEF and tangent-plane conversion. */
 static int64_t rsqrt_q58(int64_t x, unsigned steps)
 {
-  /* x >> 28 as Q1.30 (x >= 0): floor, so in [2^28, 2^31) */
-  drdc_q1_30_t s30 = 0;
+  /* x >> 28 as Q1.30 (x >= 0): floor, so in [2^28, 2^31), and its root
+   * (rounded, as drdc_fx_sqrt_q1_30() gives it) in [2^29, 2^30.5) */
+  uint32_t s30 = (uint32_t)drdc_fx_sqrt_u64(((uint64_t)x >> 28) << 30);
   uint32_t d;
   int64_t y;
   unsigned i;
 
-  (void)drdc_fx_sqrt_q1_30((drdc_q1_30_t)((uint64_t)x >> 28), &s30);
-  /* s30 in [2^29, 2^30.5): d = s 2^16 in [2^15, 2^16.5), and
-   * (2^32 - 1) / d = 2^16 / s within 2^-15 relative, Q15.16 */
-  d = (uint32_t)s30 >> 14;
+  /* d = s 2^16 in [2^15, 2^16.5), and (2^32 - 1) / d = 2^16 / s within
+   * 2^-15 relative, Q15.16 */
+  d = s30 >> 14;
   d = 0xFFFFFFFFu / d;
   y = (int64_t)d * INT64_C(4398046511104);
   for (i = 0u; i < steps; i++) {
@@ -108,42 +124,37 @@ static int64_t rsqrt_q58(int64_t x, unsigned steps)
   return y;
 }
 
-/* *x, *y += or -= (N + h) cos phi (cos lam, sin lam): the longitude's
- * part of ecef_acc_q36(), in its own frame */
-static void ecef_acc_lon(drdc_nas_t lon, int64_t nh, int64_t cphi, bool sub,
-                         int64_t *x, int64_t *y)
-{
-  int64_t slam = 0;
-  int64_t clam = 0;
-  int64_t v;
-
-  geo_sincos(lon_rad(lon), &slam, &clam);
-  v = geo_mul(nh, geo_mul(cphi, clam));
-  *x = sub ? (*x - v) : (*x + v);
-  v = geo_mul(nh, geo_mul(cphi, slam));
-  *y = sub ? (*y - v) : (*y + v);
-}
-
 /* ECEF of a checked point in Q27.36, added to (*x, *y, *z), or subtracted
  * when sub (geo_mul() rounds symmetrically, so the difference of two
- * points is exactly that of their coordinates) */
-static void ecef_acc_q36(const drdc_geo_point_t *p, bool sub, int64_t *x,
-                         int64_t *y, int64_t *z)
+ * points is exactly that of their coordinates). The sin and cos of the
+ * latitude, then those of the longitude, share one pair of slots, and
+ * only cos phi and N + h are kept across the second sin/cos: the frame
+ * under the roots and sin/cos of every tangent-plane chain stays small. */
+void geo_ecef_acc_q36(const drdc_geo_point_t *p, bool sub, int64_t *x,
+                      int64_t *y, int64_t *z)
 {
-  int64_t sphi = 0;
-  int64_t cphi = 0;
+  int64_t sc[2] = { 0, 0 };
+  int64_t cphi;
   int64_t n;
   int64_t v;
 
-  geo_sincos(geo_rad_from_nas(p->lat), &sphi, &cphi);
+  geo_sincos(geo_rad_from_nas(p->lat), &sc[0], &sc[1]);
   /* N = a / w = a / sqrt(w^2), w^2 = 1 - e^2 sin^2 phi in [1 - e^2, 1]:
    * no Q5.58 square root or quotient */
   n = geo_mul(A_Q36,
-              rsqrt_q58(GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi)), 2u));
+              rsqrt_q58(GEO_ONE - geo_mul(GEO_E2, geo_mul(sc[0], sc[0])),
+                        2u));
   v = geo_mul(geo_mul(n, GEO_ONE - GEO_E2) + (p->height * Q36_PER_Q16),
-              sphi);
+              sc[0]);
   *z = sub ? (*z - v) : (*z + v);
-  ecef_acc_lon(p->lon, n + (p->height * Q36_PER_Q16), cphi, sub, x, y);
+  /* x, y += or -= (N + h) cos phi (cos lam, sin lam) */
+  cphi = sc[1];
+  n = n + (p->height * Q36_PER_Q16);
+  geo_sincos(lon_rad(p->lon), &sc[0], &sc[1]);
+  v = geo_mul(n, geo_mul(cphi, sc[1]));
+  *x = sub ? (*x - v) : (*x + v);
+  v = geo_mul(n, geo_mul(cphi, sc[0]));
+  *y = sub ? (*y - v) : (*y + v);
 }
 
 drdc_status_t drdc_geo_to_ecef(const drdc_geo_point_t *p,
@@ -154,7 +165,7 @@ drdc_status_t drdc_geo_to_ecef(const drdc_geo_point_t *p,
   if ((p == NULL) || (ecef == NULL)) {
     return DRDC_E_NULL;
   }
-  st = check_point(p);
+  st = geo_check_point(p);
   if (st != DRDC_OK) {
     return st;
   }
@@ -163,7 +174,7 @@ drdc_status_t drdc_geo_to_ecef(const drdc_geo_point_t *p,
   ecef->x = 0;
   ecef->y = 0;
   ecef->z = 0;
-  ecef_acc_q36(p, false, &ecef->x, &ecef->y, &ecef->z);
+  geo_ecef_acc_q36(p, false, &ecef->x, &ecef->y, &ecef->z);
   ecef->x = drdc_fx_rshift_round_s64_inline(ecef->x, 20u);
   ecef->y = drdc_fx_rshift_round_s64_inline(ecef->y, 20u);
   ecef->z = drdc_fx_rshift_round_s64_inline(ecef->z, 20u);
@@ -203,8 +214,9 @@ static int scale_legs(int64_t *a, int64_t *b)
 }
 
 /* The state of Bowring's iteration (Q27.36 lengths, or Q5.58 when (u, v)
- * is a unit vector), one struct in the frame of geodetic_direction() that
- * the helpers below reach by pointer, so no level keeps copies of it */
+ * is a unit vector), one struct in the frame of the caller of
+ * geodetic_direction() (which also fills it with the ECEF point) that the
+ * helpers below reach by pointer, so no level keeps copies of it */
 typedef struct bowring {
   int64_t p; /**< distance from the polar axis */
   int64_t z; /**< distance from the equatorial plane */
@@ -221,16 +233,16 @@ typedef struct bowring {
  * two Q5.58 quotients. */
 static int64_t normalise(bowring_t *b)
 {
-  int64_t a = b->u;
-  int64_t c = b->v;
   int64_t q;
   int64_t y;
-  int k = scale_legs(&a, &c);
+  /* the legs scaled in place: no copy of them in this frame, which is
+   * on the deepest chain of the inverse */
+  int k = scale_legs(&b->u, &b->v);
 
-  q = geo_mul(a, a) + geo_mul(c, c);
+  q = geo_mul(b->u, b->u) + geo_mul(b->v, b->v);
   y = rsqrt_q58(q, 2u);
-  b->u = geo_mul(a, y);
-  b->v = geo_mul(c, y);
+  b->u = geo_mul(b->u, y);
+  b->v = geo_mul(b->v, y);
   q = geo_mul(q, y);
   /* q < 2^58.5 and the length below 2^61.5: no overflow either way */
   return (k >= 0) ? (q * (int64_t)(UINT64_C(1) << (unsigned)k))
@@ -270,50 +282,46 @@ static int64_t height_q36(const bowring_t *b)
 #define DEEP_Q36 (INT64_C(-50000) * INT64_C(68719476736))
 
 /* The unit vector (cos phi, sin phi) of the geodetic latitude (Q5.58) and
- * the height (Q47.16) of ECEF x, y, z in Q27.36 (|x|, |y|, |z| < 2^61).
- * On DRDC_OK they are written to out as scratch: out->lon = cos phi,
+ * the height (Q47.16) of the ECEF point x = b->u, y = b->v, z = b->z in
+ * Q27.36 (|x|, |y|, |z| < 2^61; b is the caller's, its scratch from here
+ * on). On DRDC_OK they are written to out as scratch: out->lon = cos phi,
  * out->lat = sin phi, and the final out->height; nothing is written on
  * error. */
-static drdc_status_t geodetic_direction(int64_t x, int64_t y, int64_t z,
-                                        drdc_geo_point_t *out)
+static drdc_status_t geodetic_direction(bowring_t *b, drdc_geo_point_t *out)
 {
-  bowring_t b;
   int64_t h;
 
-  b.p = 0;
-  b.z = z;
-  b.u = x;
-  b.v = y;
-  if ((x != 0) || (y != 0)) {
-    b.p = normalise(&b);
+  b->p = 0;
+  if ((b->u != 0) || (b->v != 0)) {
+    b->p = normalise(b);
   }
-  if ((b.p < (ECEF_CORE * Q36_PER_Q16))
-      && (ecef_abs64(z) < (ECEF_CORE * Q36_PER_Q16))) {
+  if ((b->p < (ECEF_CORE * Q36_PER_Q16))
+      && (ecef_abs64(b->z) < (ECEF_CORE * Q36_PER_Q16))) {
     return DRDC_E_HEIGHT;
   }
   /* tan beta_0 = a z / (b p), then tan beta = (b / a) tan phi */
-  b.u = geo_mul(b.p, GEO_B_OVER_A);
-  b.v = z;
-  (void)normalise(&b);
-  bowring_step(&b);
-  b.v = geo_mul(b.v, GEO_B_OVER_A);
-  (void)normalise(&b);
-  bowring_step(&b);
-  (void)normalise(&b);
-  h = height_q36(&b);
+  b->u = geo_mul(b->p, GEO_B_OVER_A);
+  b->v = b->z;
+  (void)normalise(b);
+  bowring_step(b);
+  b->v = geo_mul(b->v, GEO_B_OVER_A);
+  (void)normalise(b);
+  bowring_step(b);
+  (void)normalise(b);
+  h = height_q36(b);
   if (h < DEEP_Q36) {
-    b.v = geo_mul(b.v, GEO_B_OVER_A);
-    (void)normalise(&b);
-    bowring_step(&b);
-    (void)normalise(&b);
-    h = height_q36(&b);
+    b->v = geo_mul(b->v, GEO_B_OVER_A);
+    (void)normalise(b);
+    bowring_step(b);
+    (void)normalise(b);
+    h = height_q36(b);
   }
   h = drdc_fx_rshift_round_s64_inline(h, 20u);
   if ((h > DRDC_GEO_HEIGHT_MAX) || (h < -DRDC_GEO_HEIGHT_MAX)) {
     return DRDC_E_HEIGHT;
   }
-  out->lon = b.u;
-  out->lat = b.v;
+  out->lon = b->u;
+  out->lat = b->v;
   out->height = h;
   return DRDC_OK;
 }
@@ -327,15 +335,15 @@ static inline drdc_nas_t angle_nas(int64_t y, int64_t x)
   return geo_nas_from_rad(r);
 }
 
-/* geodetic of ECEF in Q27.36 (|x|, |y|, |z| < 2^61). The longitude
- * first (atan2 is scale-free), then Bowring's iteration for the
- * latitude's direction and the height, then the latitude's atan2: each
- * deep call from a frame that keeps only the longitude and pointers */
-static drdc_status_t geodetic_q36(int64_t x, int64_t y, int64_t z,
-                                  drdc_geo_point_t *out)
+/* geodetic of the ECEF point in b (Q27.36, as geodetic_direction()
+ * takes it). The longitude first (atan2 is scale-free), then Bowring's
+ * iteration for the latitude's direction and the height, then the
+ * latitude's atan2: each deep call from a frame that keeps only the
+ * longitude and pointers */
+static drdc_status_t geodetic_q36(bowring_t *b, drdc_geo_point_t *out)
 {
-  drdc_nas_t lon = ((x == 0) && (y == 0)) ? 0 : angle_nas(y, x);
-  drdc_status_t st = geodetic_direction(x, y, z, out);
+  drdc_nas_t lon = ((b->u == 0) && (b->v == 0)) ? 0 : angle_nas(b->v, b->u);
+  drdc_status_t st = geodetic_direction(b, out);
 
   if (st == DRDC_OK) {
     /* nothing fails from here on: out holds the scratch direction */
@@ -348,6 +356,7 @@ static drdc_status_t geodetic_q36(int64_t x, int64_t y, int64_t z,
 drdc_status_t drdc_geo_from_ecef(const drdc_vec3_q47_16_t *ecef,
                                  drdc_geo_point_t *p)
 {
+  bowring_t b;
   drdc_nas_t lon;
   drdc_status_t st;
 
@@ -362,8 +371,10 @@ drdc_status_t drdc_geo_from_ecef(const drdc_vec3_q47_16_t *ecef,
    * rather than keeping them: the longitude from the Q47.16 values (the
    * same angle: atan2 scales its arguments exactly) */
   lon = ((ecef->x == 0) && (ecef->y == 0)) ? 0 : angle_nas(ecef->y, ecef->x);
-  st = geodetic_direction(ecef->x * Q36_PER_Q16, ecef->y * Q36_PER_Q16,
-                          ecef->z * Q36_PER_Q16, p);
+  b.u = ecef->x * Q36_PER_Q16;
+  b.v = ecef->y * Q36_PER_Q16;
+  b.z = ecef->z * Q36_PER_Q16;
+  st = geodetic_direction(&b, p);
   if (st == DRDC_OK) {
     p->lat = angle_nas(p->lat, p->lon);
     p->lon = lon;
@@ -376,27 +387,13 @@ static bool fits_q15_16(int64_t v)
   return (v <= (int64_t)INT32_MAX) && (v >= (int64_t)INT32_MIN);
 }
 
-/* ENU (ned false) or NED (ned true) of p at ref in Q15.16, the pointers
- * checked: the ECEF difference (Q27.36) turned in place in one array,
- * d[0] = dx, d[1] = dy, d[2] = dz; about the axis by the longitude:
- * (dx, dy) -> (towards the ref's meridian plane t, east); about east by
- * the latitude: (t, dz) -> (up, north). */
-static drdc_status_t plane_of(const drdc_geo_point_t *ref,
-                              const drdc_geo_point_t *p, bool ned,
-                              drdc_vec3_q15_16_t *out)
+/* The ECEF difference d (Q27.36: d[0] = dx, d[1] = dy, d[2] = dz) turned
+ * in place; about the axis by the longitude: (dx, dy) -> (towards the
+ * ref's meridian plane t, east); about east by the latitude: (t, dz) ->
+ * (up, north). */
+drdc_status_t geo_plane_turn(const drdc_geo_point_t *ref, bool ned,
+                             int64_t d[3], drdc_vec3_q15_16_t *out)
 {
-  drdc_status_t st;
-  int64_t d[3] = { 0, 0, 0 };
-
-  st = check_point(ref);
-  if (st == DRDC_OK) {
-    st = check_point(p);
-  }
-  if (st != DRDC_OK) {
-    return st;
-  }
-  ecef_acc_q36(p, false, &d[0], &d[1], &d[2]);
-  ecef_acc_q36(ref, true, &d[0], &d[1], &d[2]);
   turn(lon_rad(ref->lon), &d[0], &d[1]);
   turn(geo_rad_from_nas(ref->lat), &d[0], &d[2]);
   /* east, north, up (Q47.16); NED: north, east, down */
@@ -413,6 +410,28 @@ static drdc_status_t plane_of(const drdc_geo_point_t *ref,
   out->y = (drdc_q15_16_t)(ned ? d[1] : d[2]);
   out->z = (drdc_q15_16_t)d[0];
   return DRDC_OK;
+}
+
+/* ENU (ned false) or NED (ned true) of p at ref in Q15.16, the pointers
+ * checked: the ECEF difference (Q27.36) in one array, then
+ * geo_plane_turn() */
+static drdc_status_t plane_of(const drdc_geo_point_t *ref,
+                              const drdc_geo_point_t *p, bool ned,
+                              drdc_vec3_q15_16_t *out)
+{
+  drdc_status_t st;
+  int64_t d[3] = { 0, 0, 0 };
+
+  st = geo_check_point(ref);
+  if (st == DRDC_OK) {
+    st = geo_check_point(p);
+  }
+  if (st != DRDC_OK) {
+    return st;
+  }
+  geo_ecef_acc_q36(p, false, &d[0], &d[1], &d[2]);
+  geo_ecef_acc_q36(ref, true, &d[0], &d[1], &d[2]);
+  return geo_plane_turn(ref, ned, d, out);
 }
 
 drdc_status_t drdc_geo_to_enu(const drdc_geo_point_t *ref,
@@ -435,24 +454,37 @@ drdc_status_t drdc_geo_to_ned(const drdc_geo_point_t *ref,
   return plane_of(ref, p, true, ned);
 }
 
-/* geodetic of ENU (ned false) or NED (ned true) v (Q15.16) at a checked
- * ref: the offsets turned to ECEF axes (Q27.36), the ref's ECEF added,
- * then as geodetic_q36() */
-static drdc_status_t point_of_plane(const drdc_geo_point_t *ref,
-                                const drdc_vec3_q15_16_t *v, bool ned,
-                                drdc_geo_point_t *p)
+/* ECEF (Q27.36) of ENU (ned false) or NED (ned true) v (Q15.16) at a
+ * checked ref into b->u, b->v, b->z (x, y, z): the offsets turned to ECEF
+ * axes in b's slots, the ref's ECEF added. Out of line, so that its
+ * sin/cos and roots run beside, not above, the inverse's chain. */
+static __attribute__((noinline)) void ecef_of_plane(
+  const drdc_geo_point_t *ref, const drdc_vec3_q15_16_t *v, bool ned,
+  bowring_t *b)
 {
-  int64_t a = (int64_t)(ned ? v->x : v->y) * Q36_PER_Q16;
-  int64_t b = (int64_t)(ned ? -(int64_t)v->z : (int64_t)v->z) * Q36_PER_Q16;
-  int64_t c = (int64_t)(ned ? v->y : v->x) * Q36_PER_Q16;
-
+  /* north, up, east */
+  b->z = (int64_t)(ned ? v->x : v->y) * Q36_PER_Q16;
+  b->u = (int64_t)(ned ? -(int64_t)v->z : (int64_t)v->z) * Q36_PER_Q16;
+  b->v = (int64_t)(ned ? v->y : v->x) * Q36_PER_Q16;
   /* about east by -latitude: (north, up) -> (dz, the horizontal part
    * towards the ref's meridian plane r); about the axis by -longitude:
    * (east, r) -> (dy, dx) */
-  turn(geo_rad_from_nas(ref->lat), &a, &b);
-  turn(lon_rad(ref->lon), &c, &b);
-  ecef_acc_q36(ref, false, &b, &c, &a);
-  return geodetic_q36(b, c, a, p);
+  turn(geo_rad_from_nas(ref->lat), &b->z, &b->u);
+  turn(lon_rad(ref->lon), &b->v, &b->u);
+  geo_ecef_acc_q36(ref, false, &b->u, &b->v, &b->z);
+}
+
+/* geodetic of ENU (ned false) or NED (ned true) v (Q15.16) at a checked
+ * ref: ecef_of_plane(), then geodetic_q36(); the one bowring_t of the
+ * chain lives here */
+static drdc_status_t point_of_plane(const drdc_geo_point_t *ref,
+                                    const drdc_vec3_q15_16_t *v, bool ned,
+                                    drdc_geo_point_t *p)
+{
+  bowring_t b;
+
+  ecef_of_plane(ref, v, ned, &b);
+  return geodetic_q36(&b, p);
 }
 
 drdc_status_t drdc_geo_from_enu(const drdc_geo_point_t *ref,
@@ -464,7 +496,7 @@ drdc_status_t drdc_geo_from_enu(const drdc_geo_point_t *ref,
   if ((ref == NULL) || (enu == NULL) || (p == NULL)) {
     return DRDC_E_NULL;
   }
-  st = check_point(ref);
+  st = geo_check_point(ref);
   if (st != DRDC_OK) {
     return st;
   }
@@ -480,7 +512,7 @@ drdc_status_t drdc_geo_from_ned(const drdc_geo_point_t *ref,
   if ((ref == NULL) || (ned == NULL) || (p == NULL)) {
     return DRDC_E_NULL;
   }
-  st = check_point(ref);
+  st = geo_check_point(ref);
   if (st != DRDC_OK) {
     return st;
   }

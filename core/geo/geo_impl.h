@@ -24,6 +24,7 @@
 #include <drdc/fixed_q5_58.h>
 #include <drdc/fixed_types.h>
 #include <drdc/geo.h>
+#include <drdc/geo_ecef.h>
 #include <drdc/types.h>
 
 #include "geo_consts.h"
@@ -61,8 +62,17 @@ extern const int64_t geo_beta[GEO_KRUEGER_TERMS];
  *  without its checks and pointer); the hot loops of tm.c inline it. */
 int64_t geo_mul(int64_t a, int64_t b);
 
-/** a 2^58 / b, rounded; b != 0 and the quotient within int64_t. */
-int64_t geo_div(int64_t a, int64_t b);
+/** a 2^58 / b, rounded; b != 0 and the quotient within int64_t: the
+ *  callers keep it so, so it never fails. Inline: an out-of-line wrapper
+ *  would put its own frame (32 bytes) on top of drdc_fx_div_q5_58()'s on
+ *  the deepest chains of the projections (issue 8's stack goal). */
+static inline int64_t geo_div(int64_t a, int64_t b)
+{
+  int64_t r = 0;
+
+  (void)drdc_fx_div_q5_58(a, b, &r);
+  return r;
+}
 
 /** a b / c, rounded; c != 0 and the quotient within int64_t. */
 int64_t geo_muldiv(int64_t a, int64_t b, int64_t c);
@@ -183,6 +193,23 @@ drdc_status_t geo_utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
                               drdc_q5_58_t *scale);
 
 /**
+ * drdc_geo_to_utm() itself, inline: the pose conversions call it without
+ * the public function's frame on top of the projection's chain. A zone
+ * code above the zones is DRDC_E_ZONE (after the checks that come
+ * first), never a request for the Q28.36 result.
+ */
+static inline drdc_status_t geo_to_utm(drdc_nas_t lat, drdc_nas_t lon,
+                                       int32_t zone, drdc_geo_utm_t *out,
+                                       drdc_nas_t *convergence,
+                                       drdc_q5_58_t *scale)
+{
+  return geo_utm_forward(lat, lon,
+                         (zone > DRDC_GEO_ZONE_MAX) ? (DRDC_GEO_ZONE_MAX + 1)
+                                                    : zone,
+                         out, convergence, scale);
+}
+
+/**
  * geo_mgrs_format() of a position whose easting and northing carry
  * frac_bits fraction bits (16: Q47.16; 36: geo_utm_forward() with
  * GEO_ZONE_Q36): the digits
@@ -191,5 +218,28 @@ drdc_status_t geo_utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
 drdc_status_t geo_mgrs_format_bits(const drdc_geo_utm_t *u, unsigned frac_bits,
                                    drdc_nas_t lat, int32_t prec, char *text,
                                    size_t size);
+
+/** The checks of drdc_geo_to_ecef() on a point: DRDC_E_LATITUDE,
+ *  DRDC_E_LONGITUDE or DRDC_E_HEIGHT out of range, else DRDC_OK. */
+drdc_status_t geo_check_point(const drdc_geo_point_t *p);
+
+/**
+ * The ECEF coordinates of a checked point in Q27.36 (2^-36 m) added to
+ * *x, *y, *z, or subtracted from them when sub: the difference of two
+ * points is exactly that of their coordinates. The tangent-plane
+ * conversions of ecef.c and pose.c accumulate one point at a time, so
+ * that only one point and the three sums are on the stack.
+ */
+void geo_ecef_acc_q36(const drdc_geo_point_t *p, bool sub, int64_t *x,
+                      int64_t *y, int64_t *z);
+
+/**
+ * ENU (ned false) or NED (ned true) in Q15.16 of the ECEF difference
+ * d = p - ref (Q27.36, from geo_ecef_acc_q36(); turned in place, scratch)
+ * at the checked ref. Returns DRDC_E_OVERFLOW (out unchanged) when a part
+ * is outside Q15.16, else DRDC_OK.
+ */
+drdc_status_t geo_plane_turn(const drdc_geo_point_t *ref, bool ned,
+                             int64_t d[3], drdc_vec3_q15_16_t *out);
 
 #endif /* DRDC_GEO_IMPL_H */

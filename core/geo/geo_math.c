@@ -23,15 +23,6 @@ int64_t geo_muldiv(int64_t a, int64_t b, int64_t c)
   return r;
 }
 
-int64_t geo_div(int64_t a, int64_t b)
-{
-  int64_t r = 0;
-
-  /* callers keep b != 0 and the quotient in range: never fails */
-  (void)drdc_fx_div_q5_58(a, b, &r);
-  return r;
-}
-
 int64_t geo_floor_div(int64_t a, int64_t b)
 {
   int64_t q = a / b;

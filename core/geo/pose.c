@@ -81,15 +81,16 @@ drdc_status_t drdc_pose_wutm_from_w(const drdc_WPose_t *w, int32_t zone,
 {
   drdc_geo_utm_t u;
   drdc_nas_t gamma = 0;
-  drdc_quat_t q;
   drdc_status_t st;
 
   if ((w == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = drdc_geo_to_utm(w->latitude, w->longitude, zone, &u, &gamma, NULL);
+  st = geo_to_utm(w->latitude, w->longitude, zone, &u, &gamma, NULL);
   if (st == DRDC_OK) {
-    st = turn_about_down(&w->q, -gamma, &q);
+    /* the last step that can fail writes straight into out (only on
+     * DRDC_OK): no quaternion copy in this frame above the UTM chain */
+    st = turn_about_down(&w->q, -gamma, &out->q);
   }
   if (st != DRDC_OK) {
     return st;
@@ -99,10 +100,6 @@ drdc_status_t drdc_pose_wutm_from_w(const drdc_WPose_t *w, int32_t zone,
   out->utm.easting = u.easting;
   out->utm.northing = u.northing;
   out->height = w->height;
-  out->q.s = q.s;
-  out->q.x = q.x;
-  out->q.y = q.y;
-  out->q.z = q.z;
   return DRDC_OK;
 }
 
@@ -112,7 +109,6 @@ drdc_status_t drdc_pose_w_from_wutm(const drdc_WUTMPose_t *u,
   drdc_nas_t lat = 0;
   drdc_nas_t lon = 0;
   drdc_nas_t gamma = 0;
-  drdc_quat_t q;
   drdc_status_t st;
 
   if ((u == NULL) || (out == NULL)) {
@@ -120,7 +116,9 @@ drdc_status_t drdc_pose_w_from_wutm(const drdc_WUTMPose_t *u,
   }
   st = drdc_geo_from_utm(&u->utm, &lat, &lon, &gamma, NULL);
   if (st == DRDC_OK) {
-    st = turn_about_down(&u->q, gamma, &q);
+    /* the last step that can fail, straight into out (as in
+     * drdc_pose_wutm_from_w()) */
+    st = turn_about_down(&u->q, gamma, &out->q);
   }
   if (st != DRDC_OK) {
     return st;
@@ -128,31 +126,24 @@ drdc_status_t drdc_pose_w_from_wutm(const drdc_WUTMPose_t *u,
   out->latitude = lat;
   out->longitude = lon;
   out->height = u->height;
-  out->q.s = q.s;
-  out->q.x = q.x;
-  out->q.y = q.y;
-  out->q.z = q.z;
   return DRDC_OK;
 }
 
 drdc_status_t drdc_pose_weutm_from_we(const drdc_WePose_t *w, int32_t zone,
                                       drdc_WeUTMPose_t *out)
 {
-  drdc_geo_utm_t u;
   drdc_nas_t gamma = 0;
   drdc_status_t st;
 
   if ((w == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = drdc_geo_to_utm(w->latitude, w->longitude, zone, &u, &gamma, NULL);
+  /* the one step that can fail writes out->utm only on DRDC_OK: no copy
+   * of it in this frame above the UTM chain */
+  st = geo_to_utm(w->latitude, w->longitude, zone, &out->utm, &gamma, NULL);
   if (st != DRDC_OK) {
     return st;
   }
-  out->utm.zone = u.zone;
-  out->utm.north = u.north;
-  out->utm.easting = u.easting;
-  out->utm.northing = u.northing;
   out->height = w->height;
   out->e.yaw = w->e.yaw - drdc_pose_bam_from_convergence(gamma);
   out->e.pitch = w->e.pitch;
@@ -163,20 +154,19 @@ drdc_status_t drdc_pose_weutm_from_we(const drdc_WePose_t *w, int32_t zone,
 drdc_status_t drdc_pose_we_from_weutm(const drdc_WeUTMPose_t *u,
                                       drdc_WePose_t *out)
 {
-  drdc_nas_t lat = 0;
-  drdc_nas_t lon = 0;
   drdc_nas_t gamma = 0;
   drdc_status_t st;
 
   if ((u == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = drdc_geo_from_utm(&u->utm, &lat, &lon, &gamma, NULL);
+  /* the one step that can fail writes the position only on DRDC_OK:
+   * straight into out */
+  st = drdc_geo_from_utm(&u->utm, &out->latitude, &out->longitude, &gamma,
+                         NULL);
   if (st != DRDC_OK) {
     return st;
   }
-  out->latitude = lat;
-  out->longitude = lon;
   out->height = u->height;
   out->e.yaw = u->e.yaw + drdc_pose_bam_from_convergence(gamma);
   out->e.pitch = u->e.pitch;
@@ -252,39 +242,60 @@ drdc_status_t drdc_pose_w_from_l(const drdc_WPose_t *ref,
   return w_from_ned(ref, geoid_separation, &ned, &l->q, out);
 }
 
-/* NED of w at ref (both ellipsoidal by the separation), in its own frame
- * (the two points are not on the stack during the caller's rotation) */
-static drdc_status_t ned_of(const drdc_WPose_t *ref,
-                            drdc_q47_16_t geoid_separation,
-                            const drdc_WPose_t *w, drdc_vec3_q15_16_t *ned)
+/* NED of w at ref (both ellipsoidal by the separation): drdc_geo_to_ned()
+ * in its stages (the same checks in the same order, the same sums), with
+ * one point on the stack, filled with each point in turn, beside the
+ * ECEF difference; then the conjugate of ref's attitude into *inv, which
+ * turns the offset into ref's body axes. Out of line: neither the point
+ * nor the difference is on the stack during the caller's rotation, and
+ * the caller keeps no pointer to ref across this call (the 64-bit
+ * separation first: on Cortex-M3 the arguments then leave one word
+ * fewer on the caller's stack). */
+static __attribute__((noinline)) drdc_status_t ned_of(
+  drdc_q47_16_t geoid_separation, const drdc_WPose_t *ref,
+  const drdc_WPose_t *w, drdc_vec3_q15_16_t *ned, drdc_quat_t *inv)
 {
-  drdc_geo_point_t r;
-  drdc_geo_point_t p;
+  drdc_geo_point_t pt;
+  int64_t d[3] = { 0, 0, 0 };
+  drdc_status_t st;
 
-  ellipsoidal(ref, geoid_separation, &r);
-  ellipsoidal(w, geoid_separation, &p);
-  return drdc_geo_to_ned(&r, &p, ned);
+  ellipsoidal(ref, geoid_separation, &pt);
+  st = geo_check_point(&pt);
+  if (st == DRDC_OK) {
+    ellipsoidal(w, geoid_separation, &pt);
+    st = geo_check_point(&pt);
+  }
+  if (st != DRDC_OK) {
+    return st;
+  }
+  /* pt holds w's point: the difference w - ref */
+  geo_ecef_acc_q36(&pt, false, &d[0], &d[1], &d[2]);
+  ellipsoidal(ref, geoid_separation, &pt);
+  geo_ecef_acc_q36(&pt, true, &d[0], &d[1], &d[2]);
+  st = geo_plane_turn(&pt, true, d, ned);
+  if (st == DRDC_OK) {
+    st = drdc_quat_conj(&ref->q, inv);
+  }
+  return st;
 }
 
-/* The attitude part of {W} -> {l} once the offset is in NED: the
- * offset turned into the reference's body axes (conjugate rotation) and
- * the relative attitude; out written only on DRDC_OK (out->p by the last
- * step that can fail). Shared by drdc_pose_l_from_w() and
- * drdc_pose_le_from_we(). */
-static drdc_status_t l_from_ned(const drdc_quat_t *rq,
-                                const drdc_vec3_q15_16_t *ned,
-                                const drdc_quat_t *wq, drdc_lPose_t *out)
+/* The attitude part of {W} -> {l} once the offset is in NED and the
+ * reference's attitude conjugated (ned_of()): the offset turned into the
+ * reference's body axes and the relative attitude; out written only on
+ * DRDC_OK (out->p by the last step that can fail). inv may be &out->q:
+ * it is read before out->q is written. drdc_pose_le_from_we()'s; out of
+ * line, so that its quaternion is not in that function's large frame.
+ * drdc_pose_l_from_w() does the same with no quaternion of its own. */
+static __attribute__((noinline)) drdc_status_t l_from_ned(
+  const drdc_quat_t *inv, const drdc_vec3_q15_16_t *ned,
+  const drdc_quat_t *wq, drdc_lPose_t *out)
 {
-  drdc_quat_t inv = { 0, 0, 0, 0 };
   drdc_quat_t q = { 0, 0, 0, 0 };
   drdc_status_t st;
 
-  st = drdc_quat_conj(rq, &inv);
+  st = drdc_quat_compose(inv, wq, &q);
   if (st == DRDC_OK) {
-    st = drdc_quat_compose(&inv, wq, &q);
-  }
-  if (st == DRDC_OK) {
-    st = drdc_quat_rotate_q15_16(&inv, ned, &out->p);
+    st = drdc_quat_rotate_q15_16(inv, ned, &out->p);
   }
   if (st != DRDC_OK) {
     return st;
@@ -296,11 +307,25 @@ static drdc_status_t l_from_ned(const drdc_quat_t *rq,
   return DRDC_OK;
 }
 
+/* The status of drdc_pose_l_from_w() when its rotation failed with rot:
+ * the attitude's error first, as l_from_ned() gives it (the relative
+ * attitude is composed into inv, no longer needed, for its status
+ * alone). Out of line, so that no status is kept across a call in the
+ * caller's frame. */
+static __attribute__((noinline)) drdc_status_t first_error(
+  drdc_quat_t *inv, const drdc_quat_t *wq, drdc_status_t rot)
+{
+  drdc_status_t st = drdc_quat_compose(inv, wq, inv);
+
+  return (st != DRDC_OK) ? st : rot;
+}
+
 drdc_status_t drdc_pose_l_from_w(const drdc_WPose_t *ref,
                                  drdc_q47_16_t geoid_separation,
                                  const drdc_WPose_t *w, drdc_lPose_t *out)
 {
   drdc_vec3_q15_16_t ned = { 0, 0, 0 };
+  drdc_quat_t inv = { 0, 0, 0, 0 };
   drdc_status_t st;
 
   if ((ref == NULL) || (w == NULL) || (out == NULL)) {
@@ -309,11 +334,27 @@ drdc_status_t drdc_pose_l_from_w(const drdc_WPose_t *ref,
   if (!separation_ok(geoid_separation)) {
     return DRDC_E_HEIGHT;
   }
-  st = ned_of(ref, geoid_separation, w, &ned);
+  st = ned_of(geoid_separation, ref, w, &ned, &inv);
   if (st != DRDC_OK) {
     return st;
   }
-  return l_from_ned(&ref->q, &ned, &w->q, out);
+  /* l_from_ned() with one quaternion on the stack instead of two, so
+   * that the rotation's chain starts from this small frame: the offset
+   * turned in place first, then the relative attitude straight into
+   * out->q (drdc_quat_compose() writes only on DRDC_OK and is then the
+   * last step that can fail) */
+  st = drdc_quat_rotate_q15_16(&inv, &ned, &ned);
+  if (st != DRDC_OK) {
+    return first_error(&inv, &w->q, st);
+  }
+  st = drdc_quat_compose(&inv, &w->q, &out->q);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  out->p.x = ned.x;
+  out->p.y = ned.y;
+  out->p.z = ned.z;
+  return DRDC_OK;
 }
 
 /* the MGRS text of w's position at prec and the convergence there; text
@@ -340,15 +381,14 @@ static drdc_status_t mgrs_and_gamma(drdc_nas_t lat, drdc_nas_t lon,
   return st;
 }
 
-/* the position of an MGRS text (its cell's centre) and the convergence
- * there */
-static drdc_status_t mgrs_centre(const char *text, drdc_nas_t *lat,
-                                 drdc_nas_t *lon, drdc_nas_t *gamma)
+/* the centre of an MGRS text's cell (DRDC_GEO_MGRS_SIZE bytes at most),
+ * written only on DRDC_OK. Out of line, so that the corner the decoder
+ * also writes is not on the stack under drdc_geo_from_utm(). */
+static __attribute__((noinline)) drdc_status_t mgrs_cell_centre(
+  const char *text, drdc_geo_utm_t *centre)
 {
   drdc_geo_utm_t corner;
-  drdc_geo_utm_t centre;
   size_t n = 0u;
-  drdc_status_t st;
 
   /* the decoder must not read beyond the array */
   while ((n < DRDC_GEO_MGRS_SIZE) && (text[n] != '\0')) {
@@ -357,7 +397,18 @@ static drdc_status_t mgrs_centre(const char *text, drdc_nas_t *lat,
   if (n == DRDC_GEO_MGRS_SIZE) {
     return DRDC_E_MGRS;
   }
-  st = drdc_geo_mgrs_decode(text, &corner, &centre, NULL);
+  return drdc_geo_mgrs_decode(text, &corner, centre, NULL);
+}
+
+/* the position of an MGRS text (its cell's centre) and the convergence
+ * there; lat and lon written only on DRDC_OK */
+static drdc_status_t mgrs_centre(const char *text, drdc_nas_t *lat,
+                                 drdc_nas_t *lon, drdc_nas_t *gamma)
+{
+  drdc_geo_utm_t centre;
+  drdc_status_t st;
+
+  st = mgrs_cell_centre(text, &centre);
   if (st == DRDC_OK) {
     st = drdc_geo_from_utm(&centre, lat, lon, gamma, NULL);
   }
@@ -409,7 +460,6 @@ drdc_status_t drdc_pose_w_from_wmgrs(const drdc_WMGRSPose_t *m,
   drdc_nas_t lat = 0;
   drdc_nas_t lon = 0;
   drdc_nas_t gamma = 0;
-  drdc_quat_t q = { 0, 0, 0, 0 };
   drdc_status_t st;
 
   if ((m == NULL) || (out == NULL)) {
@@ -417,7 +467,9 @@ drdc_status_t drdc_pose_w_from_wmgrs(const drdc_WMGRSPose_t *m,
   }
   st = mgrs_centre(m->mgrs, &lat, &lon, &gamma);
   if (st == DRDC_OK) {
-    st = turn_about_down(&m->q, gamma, &q);
+    /* the last step that can fail, straight into out (as in
+     * drdc_pose_w_from_wutm()) */
+    st = turn_about_down(&m->q, gamma, &out->q);
   }
   if (st != DRDC_OK) {
     return st;
@@ -425,10 +477,6 @@ drdc_status_t drdc_pose_w_from_wmgrs(const drdc_WMGRSPose_t *m,
   out->latitude = lat;
   out->longitude = lon;
   out->height = m->height;
-  out->q.s = q.s;
-  out->q.x = q.x;
-  out->q.y = q.y;
-  out->q.z = q.z;
   return DRDC_OK;
 }
 
@@ -458,20 +506,18 @@ drdc_status_t drdc_pose_wemgrs_from_we(const drdc_WePose_t *w, int32_t prec,
 drdc_status_t drdc_pose_we_from_wemgrs(const drdc_WeMGRSPose_t *m,
                                        drdc_WePose_t *out)
 {
-  drdc_nas_t lat = 0;
-  drdc_nas_t lon = 0;
   drdc_nas_t gamma = 0;
   drdc_status_t st;
 
   if ((m == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = mgrs_centre(m->mgrs, &lat, &lon, &gamma);
+  /* the one step that can fail writes the position only on DRDC_OK:
+   * straight into out */
+  st = mgrs_centre(m->mgrs, &out->latitude, &out->longitude, &gamma);
   if (st != DRDC_OK) {
     return st;
   }
-  out->latitude = lat;
-  out->longitude = lon;
   out->height = m->height;
   out->e.yaw = m->e.yaw + drdc_pose_bam_from_convergence(gamma);
   out->e.pitch = m->e.pitch;
@@ -499,22 +545,22 @@ drdc_status_t drdc_pose_l_from_le(const drdc_lePose_t *le, drdc_lPose_t *out)
 
 drdc_status_t drdc_pose_le_from_l(const drdc_lPose_t *l, drdc_lePose_t *out)
 {
-  drdc_euler_t e = { 0u, 0u, 0u };
   drdc_status_t st;
 
   if ((l == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = drdc_euler_from_quat(&l->q, &e);
+  /* the angles straight into out: drdc_euler_from_quat() writes them
+   * only on DRDC_OK and is the one step that can fail, so out stays
+   * unchanged on error, and no copy of them is in this frame (which
+   * sits on top of the whole chain of drdc_euler_from_quat()) */
+  st = drdc_euler_from_quat(&l->q, &out->e);
   if (st != DRDC_OK) {
     return st;
   }
   out->p.x = l->p.x;
   out->p.y = l->p.y;
   out->p.z = l->p.z;
-  out->e.yaw = e.yaw;
-  out->e.pitch = e.pitch;
-  out->e.roll = e.roll;
   return DRDC_OK;
 }
 
@@ -584,9 +630,11 @@ drdc_status_t drdc_pose_le_from_we(const drdc_WePose_t *ref,
   }
   w_from_we(ref, &r);
   w_from_we(we, &w);
-  st = ned_of(&r, geoid_separation, &w, &ned);
+  /* the conjugate attitude waits in l.q, which l_from_ned() reads
+   * before it writes its result there */
+  st = ned_of(geoid_separation, &r, &w, &ned, &l.q);
   if (st == DRDC_OK) {
-    st = l_from_ned(&r.q, &ned, &w.q, &l);
+    st = l_from_ned(&l.q, &ned, &w.q, &l);
   }
   if (st != DRDC_OK) {
     return st;

@@ -341,12 +341,7 @@ drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
                               drdc_geo_utm_t *out, drdc_nas_t *convergence,
                               drdc_q5_58_t *scale)
 {
-  /* a zone code above the zones is DRDC_E_ZONE (after the checks that
-   * come first), never a request for the fine result */
-  return geo_utm_forward(lat, lon,
-                         (zone > DRDC_GEO_ZONE_MAX) ? (DRDC_GEO_ZONE_MAX + 1)
-                                                    : zone,
-                         out, convergence, scale);
+  return geo_to_utm(lat, lon, zone, out, convergence, scale);
 }
 
 drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
