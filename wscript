@@ -37,9 +37,8 @@ CODEGEN = ["-O2", "-g", "-ffunction-sections", "-fdata-sections"]
 # each one's flags were measured to keep every function's worst-case stack
 # where it was at -O2. Every library file not listed is a hot path or
 # fixed tables, and keeps plain -O2, or is cold but each kind below grew
-# one of its functions' stack or its code: core/orient/dh.c,
-# core/time/iso8601.c, core/jaus/pose_body.c, core/jaus/pose_stamp.c,
-# core/units/scale.c, core/units/table.c.
+# one of its functions' stack or its code: core/jaus/pose_body.c,
+# core/jaus/pose_stamp.c, core/units/table.c.
 FOR_FLASH = {
     # -Os; GCC keeps the last -O.
     "size": ["-Os"],
@@ -49,6 +48,14 @@ FOR_FLASH = {
     # -O2's inlining, so the same frames, without the block copies of
     # -O2's block layout and loop header copying.
     "compact": ["-freorder-blocks-algorithm=simple", "-fno-tree-ch"],
+    # and without partial redundancy elimination, which copies
+    # expressions into the branches that lack them
+    "compact-no-pre": ["-freorder-blocks-algorithm=simple", "-fno-tree-ch",
+                       "-fno-tree-pre"],
+    # and small helpers called rather than copied into each caller, where
+    # that costs no stack (the digit helpers of ISO 8601 text)
+    "compact-calls": ["-freorder-blocks-algorithm=simple", "-fno-tree-ch",
+                      "-fno-inline-small-functions"],
 }
 # On PowerPC, -Os saves and restores registers through libgcc's
 # _savegpr_*/_restgpr_* routines, calls out of the library that the
@@ -64,21 +71,23 @@ FLASH_OPTIMISED = {
     "core/nmea/zda.c": "size",
     "core/jaus/date_stamp.c": "size", "core/jaus/global_pose.c": "size",
     "core/jaus/local_pose.c": "compact", "core/jaus/scaled.c": "compact",
-    "core/time/jaus_stamp.c": "size",
+    "core/time/jaus_stamp.c": "size", "core/time/iso8601.c": "compact-calls",
     # unit conversion at the edge: table search and rational scale
     "core/units/convert.c": "size", "core/units/find.c": "size",
-    "core/units/rational.c": "compact",
+    "core/units/rational.c": "compact-no-pre",
+    "core/units/scale.c": "compact-no-pre",
     # time off the GPS/UTC path: RTEMS and Unix epochs, weekday, calculus
     "core/time/rtems.c": "size", "core/time/unix.c": "compact",
     "core/time/weekday.c": "compact", "core/time/calculus.c": "compact",
     # orientation beyond multiply, rotate and Euler: axis-angle,
-    # interpolation, frame swaps, 4x4 transforms
+    # interpolation, frame swaps, 4x4 transforms, DH chains
     "core/orient/axis_angle.c": "size", "core/orient/quat_interp.c": "size",
     "core/orient/frames.c": "compact", "core/orient/transform.c": "compact",
+    "core/orient/dh.c": "compact-no-pre",
     # fixed point without a speed goal
     "fixed/tan.c": "size-inline", "fixed/status.c": "size",
     "fixed/fix16_interop.c": "size", "fixed/convert.c": "compact",
-    "fixed/div.c": "compact", "fixed/hyperbolic.c": "compact",
+    "fixed/div.c": "compact-no-pre", "fixed/hyperbolic.c": "compact-no-pre",
     "fixed/hypot.c": "compact", "fixed/rsqrt.c": "compact",
 }
 SANITIZE = ["-fsanitize=address,undefined", "-fno-sanitize-recover=all",
