@@ -31,6 +31,79 @@ WARNINGS = ["-std=c99", "-Wall", "-Wextra", "-Wconversion",
             "-Wstrict-prototypes", "-Wundef", "-Werror"]
 # Code generation of every file, ours and third-party.
 CODEGEN = ["-O2", "-g", "-ffunction-sections", "-fdata-sections"]
+# Every library file, on top of CODEGEN (issue #8, flash): no padding to
+# align function entries (Cortex-M3: 160 B of the library). Cycles under
+# QEMU are the same to the instruction; on a real Cortex-M3 a 32-bit first
+# instruction on a half-word boundary may cost one fetch per call.
+LIBRARY_CODEGEN = ["-fno-align-functions"]
+# Library files compiled for flash instead of speed (issue #8), on top of
+# CODEGEN. No speed goal of docs/performance.md runs through these files:
+# the call graphs of the functions with a goal reach none of them (sinh
+# and atanh_q5_58 are timed, without a goal). Each file's kind was chosen
+# by measurement: the smallest that keeps every function's worst-case
+# stack (tools/footprint.py) at or under its -O2 value on both targets.
+# Every library file not listed is a hot path or a table and keeps plain
+# -O2, or is cold but each kind below grew a stack or its code:
+# core/jaus/pose_body.c, core/jaus/pose_stamp.c, core/units/table.c.
+FOR_FLASH = {
+    # -Os; GCC keeps the last -O.
+    "size": ["-Os"],
+    # -Os that still inlines helpers of up to 30 insns: plain -Os would
+    # call them out of line, one frame deeper.
+    "size-inline": ["-Os", "--param=max-inline-insns-size=30"],
+    # -O2's inlining, so the same frames, without the block copies of
+    # -O2's block layout and loop header copying.
+    "compact": ["-freorder-blocks-algorithm=simple", "-fno-tree-ch"],
+    # and without partial redundancy elimination, which copies
+    # expressions into the branches that lack them
+    "compact-no-pre": ["-freorder-blocks-algorithm=simple", "-fno-tree-ch",
+                       "-fno-tree-pre"],
+    # and without jump threading either, which copies blocks to skip a
+    # test whose outcome a path already knows
+    "compact-no-threading": ["-freorder-blocks-algorithm=simple",
+                             "-fno-tree-ch", "-fno-tree-pre",
+                             "-fno-thread-jumps"],
+    # and small helpers called rather than copied into each caller, where
+    # that costs no stack (the digit helpers of ISO 8601 text)
+    "compact-calls": ["-freorder-blocks-algorithm=simple", "-fno-tree-ch",
+                      "-fno-inline-small-functions"],
+}
+# On PowerPC, -Os saves and restores registers through libgcc's
+# _savegpr_*/_restgpr_* routines, calls out of the library that the
+# integer-only check rejects: there the "size" kinds fall back to a compact
+# one (measured like the others: no stack growth).
+FOR_FLASH_POWERPC = {"size": "compact", "size-inline": "compact-no-threading"}
+FLASH_OPTIMISED = {
+    # text in and out: NMEA sentences, JAUS messages, a few per second
+    "core/nmea/decimal.c": "size", "core/nmea/fields.c": "size-inline",
+    "core/nmea/frame.c": "size", "core/nmea/gga.c": "size",
+    "core/nmea/gns.c": "size", "core/nmea/gst.c": "size",
+    "core/nmea/parse.c": "compact", "core/nmea/precision.c": "size",
+    "core/nmea/rmc.c": "compact", "core/nmea/utc.c": "size",
+    "core/nmea/zda.c": "size",
+    "core/jaus/date_stamp.c": "size", "core/jaus/global_pose.c": "size",
+    "core/jaus/local_pose.c": "compact-no-threading",
+    "core/jaus/scaled.c": "compact",
+    "core/time/jaus_stamp.c": "size", "core/time/iso8601.c": "compact-calls",
+    # unit conversion at the edge: table search and rational scale
+    "core/units/convert.c": "size", "core/units/find.c": "size",
+    "core/units/rational.c": "compact-no-threading",
+    "core/units/scale.c": "compact-no-pre",
+    # time off the GPS/UTC path: RTEMS and Unix epochs, weekday, calculus
+    "core/time/rtems.c": "size", "core/time/unix.c": "compact",
+    "core/time/weekday.c": "compact", "core/time/calculus.c": "compact",
+    # orientation beyond multiply, rotate and Euler: axis-angle,
+    # interpolation, frame swaps, 4x4 transforms, DH chains
+    "core/orient/axis_angle.c": "size", "core/orient/quat_interp.c": "size",
+    "core/orient/frames.c": "compact", "core/orient/transform.c": "compact",
+    "core/orient/dh.c": "compact-no-pre",
+    # fixed point without a speed goal
+    "fixed/tan.c": "size-inline", "fixed/status.c": "size",
+    "fixed/fix16_interop.c": "size", "fixed/convert.c": "compact",
+    "fixed/div.c": "compact-no-threading",
+    "fixed/hyperbolic.c": "compact-no-pre",
+    "fixed/hypot.c": "compact", "fixed/rsqrt.c": "compact",
+}
 SANITIZE = ["-fsanitize=address,undefined", "-fno-sanitize-recover=all",
             "-fno-omit-frame-pointer"]
 
@@ -193,11 +266,30 @@ def _glob(bld, pattern):
 def build_library(bld, cflags):
     """libdrdc.a, its headers and drdc.pc, installed under the variant's
     LIBDIR and INCLUDEDIR. Each object gets a call graph with stack usage
-    (.ci) for the footprint report (tools/footprint.py)."""
-    bld.stlib(source=_glob(bld, "fixed/**/*.c") + _glob(bld, "core/**/*.c"),
-              target="drdc", name="libdrdc",
-              cflags=cflags + (["-fcallgraph-info=su"]
-                               if bld.env.CC_NAME == "gcc" else []),
+    (.ci) for the footprint report (tools/footprint.py). The files of
+    FLASH_OPTIMISED are compiled apart with their flags, into the same
+    archive."""
+    gcc = bld.env.CC_NAME == "gcc"
+    lib_cflags = cflags + LIBRARY_CODEGEN + (["-fcallgraph-info=su"]
+                                             if gcc else [])
+    sources = _glob(bld, "fixed/**/*.c") + _glob(bld, "core/**/*.c")
+    for_flash = []
+    for kind in sorted(FOR_FLASH):
+        files = [f for f, k in sorted(FLASH_OPTIMISED.items()) if k == kind]
+        nodes = [bld.path.find_node(f) for f in files]
+        if None in nodes:
+            bld.fatal("FLASH_OPTIMISED: no file " + files[nodes.index(None)])
+        for_flash += nodes
+        # idx=1: objects named x.c.1.o, as those of the library's own task
+        flags = FOR_FLASH[FOR_FLASH_POWERPC.get(kind, kind)
+                          if bld.env.DEST_CPU == "powerpc" else kind]
+        bld.objects(source=nodes, target="drdc_" + kind,
+                    # GCC's flags; clang (the fuzz build) keeps its own
+                    cflags=lib_cflags + (flags if gcc else []),
+                    includes=["fixed/include", "core/include"], idx=1)
+    bld.stlib(source=[n for n in sources if n not in for_flash],
+              target="drdc", name="libdrdc", idx=1, cflags=lib_cflags,
+              use=["drdc_" + kind for kind in sorted(FOR_FLASH)],
               includes=["fixed/include", "core/include"],
               export_includes=["fixed/include", "core/include"],
               install_path="${LIBDIR}")

@@ -52,12 +52,16 @@ void drdc_fx_sincos_bam32(drdc_bam32_t a, drdc_q1_30_t *s, drdc_q1_30_t *c)
   }
 }
 
-drdc_q1_30_t drdc_fx_sin_bam32(drdc_bam32_t a)
+/* Not inlined into cos below, which would copy the kernel again. */
+__attribute__((noinline)) drdc_q1_30_t drdc_fx_sin_bam32(drdc_bam32_t a)
 {
   return sin_of(a >> 30, a & (FX_BAM_QUARTER - 1u));
 }
 
+/* cos(a) = sin(a + 2^30), bit for bit: the next quadrant q + 1 mirrors
+ * where q does not and is negative for q = 1, 2, as cos_of. A tail call,
+ * so one copy of the kernel serves both (issue #8, flash). */
 drdc_q1_30_t drdc_fx_cos_bam32(drdc_bam32_t a)
 {
-  return cos_of(a >> 30, a & (FX_BAM_QUARTER - 1u));
+  return drdc_fx_sin_bam32(a + FX_BAM_QUARTER);
 }
