@@ -392,7 +392,11 @@ def build(bld):
             "".join(n.abspath() + "\n" for n in task.inputs)),
         source=list(runner.link_task.inputs),
         target="fw/test-runner/objects.txt")
-    image("fw/demo/demo", _glob(bld, "fw/demo/*.c"), "libdrdc bsp")
+    # the demo's link map: what of the library an application really links
+    # (tools/footprint.py, docs/performance.md)
+    demo_map = bld.path.find_or_declare("fw/demo/demo.map").abspath()
+    image("fw/demo/demo", _glob(bld, "fw/demo/*.c"), "libdrdc bsp",
+          linkflags=[] if t["qemu"] == "host" else ["-Wl,-Map=" + demo_map])
     if t["qemu"] != "host":
         # soft-float double baselines where the toolchain has soft-float
         image("fw/bench/bench", _glob(bld, "fw/bench/*.c"),

@@ -220,6 +220,16 @@ def write_docs(report, docs):
             lines.append("| %s | %s | %d | %d | %d | %d | %d |" % (
                 target, module, s["text"], s["rodata"], s["data"], s["bss"],
                 flash({"library": s})))
+    lines += ["", "What an application links of it: the demo firmware (fw/demo: NMEA",
+              "GGA/RMC, time scales, poses {W}/{We}/{We-UTM}/{l}, MGRS, JAUS Report",
+              "Global Pose) takes, after `--gc-sections`, from its link map:", "",
+              "| target | image | .text | .rodata | .data | .bss | flash |",
+              "|---|---|---:|---:|---:|---:|---:|"]
+    for target, fp in sorted(report["footprint"].items()):
+        s = fp["linked"]["sections"]
+        lines.append("| %s | %s | %d | %d | %d | %d | %d |" % (
+            target, fp["linked"]["image"], s["text"], s["rodata"], s["data"],
+            s["bss"], flash({"library": s})))
     lines += ["", "## Largest symbols of libdrdc.a", "",
               "The 20 largest functions and constant tables of each target (`nm -S`;",
               "`T`/`t` code, `R`/`r` constant data, lower case: file-local). Code",

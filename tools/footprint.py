@@ -62,15 +62,48 @@ def section_sizes(target, path):
         parts = line.split()
         if len(parts) < 2 or not parts[1].isdigit():
             continue
-        name = parts[0]
-        for sec in SECTIONS:
-            if name == "." + sec or name.startswith("." + sec + ".") or \
-                    (sec == "rodata" and name.startswith(".sdata2")) or \
-                    (sec == "data" and name.startswith(".sdata")) or \
-                    (sec == "bss" and name.startswith(".sbss")):
-                sizes[sec] += int(parts[1])
-                break
+        sec = section_kind(parts[0])
+        if sec:
+            sizes[sec] += int(parts[1])
     return sizes
+
+
+def section_kind(name):
+    """Which of SECTIONS an input section of that name belongs to, or None."""
+    for sec in SECTIONS:
+        if name == "." + sec or name.startswith("." + sec + ".") or \
+                (sec == "rodata" and name.startswith(".sdata2")) or \
+                (sec == "data" and name.startswith(".sdata")) or \
+                (sec == "bss" and name.startswith(".sbss")):
+            return sec
+    return None
+
+
+# an input section in a GNU ld map: name (alone on the line before when
+# long), address, size, and the object it comes from
+MAP_SECTION = re.compile(r"^ (\.\S+)?\s+0x[0-9a-f]+\s+0x([0-9a-f]+) (\S+)$")
+
+
+def linked(build, target, image="fw/demo/demo"):
+    """Sections of libdrdc.a that the image really links (after
+    --gc-sections), from its link map: what the library costs an
+    application, against the whole archive of footprint()."""
+    sizes = dict.fromkeys(SECTIONS, 0)
+    with open(os.path.join(build, target, image + ".map")) as f:
+        text = f.read()
+    # the list before this line is of discarded sections
+    text = text[text.index("Linker script and memory map"):]
+    name = None
+    for line in text.splitlines():
+        m = MAP_SECTION.match(line)
+        if not m:
+            name = line.strip() if line.startswith(" .") else None
+            continue
+        sec = section_kind(m.group(1) or name or "")
+        if sec and "libdrdc.a(" in m.group(3):
+            sizes[sec] += int(m.group(2), 16)
+        name = None
+    return {"image": image, "sections": sizes}
 
 
 def call_graph(paths):
@@ -141,7 +174,7 @@ def footprint(build, target):
         except RecursionError as e:
             stack[fn] = {"bytes": None, "recursion": str(e)}
     return {"library": library, "modules": modules, "stack": stack,
-            "symbols": symbols(target, objs)}
+            "symbols": symbols(target, objs), "linked": linked(build, target)}
 
 
 def main():
