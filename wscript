@@ -69,10 +69,8 @@ FOR_FLASH = {
                       "-fno-inline-small-functions"],
 }
 # On PowerPC, -Os saves and restores registers through libgcc's
-# _savegpr_*/_restgpr_* routines, calls out of the library that the
-# integer-only check rejects: there the "size" kinds fall back to a compact
-# one (measured like the others: no stack growth).
-FOR_FLASH_POWERPC = {"size": "compact", "size-inline": "compact-no-threading"}
+# _savegpr_*/_restgpr_* sequences (tools/intcheck.py allows them): 4 KB
+# less than the compact kinds there, and no stack grew.
 FLASH_OPTIMISED = {
     # text in and out: NMEA sentences, JAUS messages, a few per second
     "core/nmea/decimal.c": "size", "core/nmea/fields.c": "size-inline",
@@ -281,8 +279,7 @@ def build_library(bld, cflags):
             bld.fatal("FLASH_OPTIMISED: no file " + files[nodes.index(None)])
         for_flash += nodes
         # idx=1: objects named x.c.1.o, as those of the library's own task
-        flags = FOR_FLASH[FOR_FLASH_POWERPC.get(kind, kind)
-                          if bld.env.DEST_CPU == "powerpc" else kind]
+        flags = FOR_FLASH[kind]
         bld.objects(source=nodes, target="drdc_" + kind,
                     # GCC's flags; clang (the fuzz build) keeps its own
                     cflags=lib_cflags + (flags if gcc else []),

@@ -46,6 +46,12 @@ INTEGER_HELPERS = {
     "__aeabi_ldivmod", "__aeabi_uldivmod", "__aeabi_idiv", "__aeabi_uidiv",
     "__aeabi_idivmod", "__aeabi_uidivmod", "__aeabi_llsl", "__aeabi_llsr",
     "__aeabi_lasr", "__aeabi_lmul", "__aeabi_lcmp", "__aeabi_ulcmp",
+} | {
+    # PowerPC -Os: prologues and epilogues that store and load the
+    # callee-saved registers r14..r31 through one shared sequence of
+    # stw/lwz (libgcc's crtsavres), in the caller's own frame
+    "_%sgpr_%d%s" % (op, reg, tail) for op in ("save", "rest")
+    for reg in range(14, 32) for tail in ("", "_x")
 }
 SOFT_FLOAT = re.compile(r"^__(aeabi_[dfi]\w*|\w*[sdtx]f\d?|float\w*|fix\w*|"
                         r"extend\w*|trunc\w*|unord\w*|pow\w+|mul[sdt]c3|div[sdt]c3)$")
