@@ -313,21 +313,22 @@ typedef struct tm_fwd {
 static __attribute__((noinline)) int fwd_sphere(int64_t phi, int64_t lam,
                                                 tm_fwd_t *st, geo_tm_t *out)
 {
-  int64_t sphi = 0;
-  int64_t cphi = 0;
   int64_t chi;
   int64_t tanh_eta;
 
-  /* lam first and phi's values in the order of their last use: few
-   * int64_t live across each call */
+  /* sin phi and cos phi wait in out->eta and out->gamma (free until
+   * eta' and sinh eta' are known), phi in out->xi: only chi, then
+   * tanh eta', is live in this frame across a call */
+  out->xi = phi;
   geo_sincos(lam, &st->slam, &st->clam);
-  geo_sincos(phi, &sphi, &cphi);
-  chi = geo_chi_series(sphi, cphi);
-  rotate_small(sphi, cphi, chi, &st->schi, &out->k);
-  out->xi = phi + chi;
-  st->kfac = GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi));
+  geo_sincos(phi, &out->eta, &out->gamma);
+  chi = geo_chi_series(out->eta, out->gamma);
+  out->xi = out->xi + chi;
+  rotate_small(out->eta, out->gamma, chi, &st->schi, &out->k);
+  st->kfac = GEO_ONE - geo_mul(GEO_E2, geo_mul(out->eta, out->eta));
   /* the scale's cos chi / cos phi, its limit at the poles */
-  st->ratio = (cphi > 0) ? geo_div(out->k, cphi) : GEO_POLE_RATIO;
+  st->ratio = (out->gamma > 0) ? geo_div(out->k, out->gamma)
+                               : GEO_POLE_RATIO;
   tanh_eta = geo_mul(out->k, st->slam);
   if ((tanh_eta > GEO_TM_MAX_TANH_ETA) || (tanh_eta < -GEO_TM_MAX_TANH_ETA)) {
     return 0;
@@ -358,6 +359,22 @@ static __attribute__((noinline)) int fwd_xi(const tm_fwd_t *st,
   return 0;
 }
 
+/* z's sin and cos of 2 zeta at xi' + i eta' (see fwd_series()), out of
+ * line: its products' temporaries are not in the frame that holds z
+ * under the recurrence */
+static __attribute__((noinline)) void fwd_zeta(const tm_fwd_t *st,
+                                               const geo_tm_t *out,
+                                               tm_zeta_t *z)
+{
+  z->cr = geo_mul(st->schi, st->ch);                    /* sin xi' */
+  z->ci = geo_mul(geo_mul(out->k, st->clam), st->ch);   /* cos xi' */
+  z->r1 = 2 * geo_mul(z->cr, z->ci);
+  z->i1 = geo_mul(z->ci, z->ci) - geo_mul(z->cr, z->cr);
+  z->r2 = 2 * geo_mul(out->gamma, st->ch);
+  z->i2 = geo_mul(st->ch, st->ch) + geo_mul(out->gamma, out->gamma);
+  zeta_set(z);
+}
+
 /* Krueger's series at xi' + i eta': sin^2 chi + cos^2 chi cos^2 lam =
  * 1 - tanh^2 eta' = 1 / cosh^2 eta', so sin xi' = sin chi cosh eta' and
  * cos xi' = cos chi cos lam cosh eta': no exponential and no sin/cos of
@@ -368,13 +385,7 @@ static __attribute__((noinline)) void fwd_series(const tm_fwd_t *st,
 {
   tm_zeta_t z;
 
-  z.cr = geo_mul(st->schi, st->ch);                    /* sin xi' */
-  z.ci = geo_mul(geo_mul(out->k, st->clam), st->ch);   /* cos xi' */
-  z.r1 = 2 * geo_mul(z.cr, z.ci);
-  z.i1 = geo_mul(z.ci, z.ci) - geo_mul(z.cr, z.cr);
-  z.r2 = 2 * geo_mul(out->gamma, st->ch);
-  z.i2 = geo_mul(st->ch, st->ch) + geo_mul(out->gamma, out->gamma);
-  zeta_set(&z);
+  fwd_zeta(st, out, &z);
   /* the sine series, then the derivative's: one series at a time keeps
    * half the state live */
   clenshaw(geo_alpha, false, &z);
