@@ -67,28 +67,29 @@ static int64_t sine_series(const int64_t *coef, unsigned terms, int64_t s2,
  * Stack: on a 32-bit core each int64_t takes two registers, so the
  * series' state lives in one struct owned by the caller (tm_zeta_t) and
  * the recurrence runs in a small out-of-line helper that reaches it by
- * pointer: no frame on the chain holds a second copy of it. */
+ * pointer: no frame on the chain holds a second copy of it. sin 2 zeta,
+ * idle during the recurrence, waits in two slots the caller names (the
+ * forward projection's output slots that are free then). */
 typedef struct tm_zeta {
   int64_t cr; /* cos 2 zeta = cr + i ci */
   int64_t ci;
-  int64_t sr; /* sin 2 zeta = sr + i si */
-  int64_t si;
   int64_t r1; /* b_(j+1), b_(j+2): real and imaginary parts */
   int64_t i1;
   int64_t r2;
   int64_t i2;
 } tm_zeta_t;
 
-/* z's sin and cos of 2 zeta from sin, cos of 2 xi and sinh, cosh of
- * 2 eta, which the caller leaves in z->r1, i1, r2, i2 (the recurrence's
- * slots, free until it starts): cos 2 zeta = c2 ch2 - i s2 sh2, sin 2
- * zeta = s2 ch2 + i c2 sh2 */
-static __attribute__((noinline)) void zeta_set(tm_zeta_t *z)
+/* cos 2 zeta into z and sin 2 zeta = *sr + i *si from sin, cos of 2 xi
+ * and sinh, cosh of 2 eta, which the caller leaves in z->r1, i1, r2, i2
+ * (the recurrence's slots, free until it starts): cos 2 zeta = c2 ch2 -
+ * i s2 sh2, sin 2 zeta = s2 ch2 + i c2 sh2 */
+static __attribute__((noinline)) void zeta_set(tm_zeta_t *z, int64_t *sr,
+                                               int64_t *si)
 {
   z->cr = geo_mul(z->i1, z->i2);
   z->ci = -geo_mul(z->r1, z->r2);
-  z->sr = geo_mul(z->r1, z->i2);
-  z->si = geo_mul(z->i1, z->r2);
+  *sr = geo_mul(z->r1, z->i2);
+  *si = geo_mul(z->i1, z->r2);
 }
 
 /* the recurrence over coef[0..5] (times 2 j when deriv), from b = 0:
@@ -125,14 +126,15 @@ static __attribute__((noinline)) void clenshaw(const int64_t *coef,
 }
 
 /* After clenshaw() over the coefficients: the sum sin(2 zeta) b_1 =
- * dxi + i deta into z->sr, z->si (the caller's struct carries the
- * results, no second one is on the stack). */
-static __attribute__((noinline)) void krueger_sum(tm_zeta_t *z)
+ * dxi + i deta into *sr, *si, which held sin 2 zeta (zeta_set()): no
+ * second copy is on the stack. */
+static __attribute__((noinline)) void krueger_sum(const tm_zeta_t *z,
+                                                  int64_t *sr, int64_t *si)
 {
-  int64_t d = geo_mul(z->sr, z->r1) - geo_mul(z->si, z->i1);
+  int64_t d = geo_mul(*sr, z->r1) - geo_mul(*si, z->i1);
 
-  z->si = geo_mul(z->sr, z->i1) + geo_mul(z->si, z->r1);
-  z->sr = d;
+  *si = geo_mul(*sr, z->i1) + geo_mul(*si, z->r1);
+  *sr = d;
 }
 
 /* After clenshaw() over 2 j times the coefficients: the derivative
@@ -359,12 +361,11 @@ static __attribute__((noinline)) int fwd_xi(const tm_fwd_t *st,
   return 0;
 }
 
-/* z's sin and cos of 2 zeta at xi' + i eta' (see fwd_series()), out of
- * line: its products' temporaries are not in the frame that holds z
- * under the recurrence */
+/* cos 2 zeta at xi' + i eta' into z, sin 2 zeta into out->gamma and
+ * out->k (see fwd_series()); out of line: its products' temporaries are
+ * not in the frame that holds z under the recurrence */
 static __attribute__((noinline)) void fwd_zeta(const tm_fwd_t *st,
-                                               const geo_tm_t *out,
-                                               tm_zeta_t *z)
+                                               geo_tm_t *out, tm_zeta_t *z)
 {
   z->cr = geo_mul(st->schi, st->ch);                    /* sin xi' */
   z->ci = geo_mul(geo_mul(out->k, st->clam), st->ch);   /* cos xi' */
@@ -372,7 +373,8 @@ static __attribute__((noinline)) void fwd_zeta(const tm_fwd_t *st,
   z->i1 = geo_mul(z->ci, z->ci) - geo_mul(z->cr, z->cr);
   z->r2 = 2 * geo_mul(out->gamma, st->ch);
   z->i2 = geo_mul(st->ch, st->ch) + geo_mul(out->gamma, out->gamma);
-  zeta_set(z);
+  /* sinh eta' and cos chi are used up: sin 2 zeta into their slots */
+  zeta_set(z, &out->gamma, &out->k);
 }
 
 /* Krueger's series at xi' + i eta': sin^2 chi + cos^2 chi cos^2 lam =
@@ -389,44 +391,56 @@ static __attribute__((noinline)) void fwd_series(const tm_fwd_t *st,
   /* the sine series, then the derivative's: one series at a time keeps
    * half the state live */
   clenshaw(geo_alpha, false, &z);
-  krueger_sum(&z);
+  krueger_sum(&z, &out->gamma, &out->k);
+  out->xi = out->xi + out->gamma;
+  out->eta = out->eta + out->k;
   clenshaw(geo_alpha, true, &z);
   krueger_deriv(&z);
-  out->xi = out->xi + z.sr;
-  out->eta = out->eta + z.si;
   out->gamma = z.cr;
   out->k = z.ci;
 }
 
-/* the scale from the series' derivative p - i q (in out->gamma, out->k)
- * into out->k; the convergence's atan2(y, x) arguments into st->slam,
- * st->clam (no longer needed there), so that no int64_t is live across
- * the calls. 1 when the convergence's series was used, 0 when the caller
- * must take the full atan2 from its own small frame. */
-static __attribute__((noinline)) int fwd_gamma_k(tm_fwd_t *st,
-                                                 geo_tm_t *out)
+/* the scale from the series' derivative p - i q (in out->gamma,
+ * out->k) into out->k: k0 A/a sqrt(1 - e^2 sin^2 phi) (cos chi / cos
+ * phi) cosh eta' times |p + i q|, the two roots as one. Out of line, so
+ * that the root's chain starts from a frame that keeps one value. */
+static __attribute__((noinline)) void fwd_scale(const tm_fwd_t *st,
+                                                geo_tm_t *out)
 {
-  int64_t p = out->gamma;
-  int64_t q = out->k;
-  int64_t y = geo_mul(st->schi, st->slam);
+  int64_t p = geo_mul(st->kfac, geo_mul(out->gamma, out->gamma)
+                                    + geo_mul(out->k, out->k))
+              - GEO_ONE;
 
-  st->slam = geo_mul(st->clam, q) + geo_mul(y, p);
-  st->clam = geo_mul(st->clam, p) - geo_mul(y, q);
-  /* scale: k0 A/a sqrt(1 - e^2 sin^2 phi) (cos chi / cos phi) cosh eta'
-   * times |p + i q|, the two roots as one */
-  p = geo_mul(st->kfac, geo_mul(p, p) + geo_mul(q, q)) - GEO_ONE;
   if ((p <= TM_SQRT_MAX) && (p >= -TM_SQRT_MAX)) {
     p = tm_sqrt1p(p);
   } else {
     p = geo_sqrt(GEO_ONE + p);
   }
   out->k = geo_mul(GEO_K0A_OVER_A, geo_mul(geo_mul(p, st->ratio), st->ch));
-  /* convergence: gamma' = arg(cos lam + i sin chi sin lam) of the sphere
-   * plus arg(p + i q) of the series' derivative, as the argument of the
-   * product (|gamma| < pi/2 + 0.01: no wrap). Within 14 degrees (every
-   * standard zone, Svalbard's included) the series of atan of the
-   * quotient, |y| <= x / 4 tested before dividing (so the quotient cannot
-   * overflow and is at most 0.25); the full atan2 beyond */
+}
+
+/* the convergence's atan2(y, x) arguments into st->slam, st->clam (no
+ * longer needed there) from p, q in out->gamma, out->k, before
+ * fwd_scale() overwrites q */
+static __attribute__((noinline)) void fwd_conv_args(tm_fwd_t *st,
+                                                   const geo_tm_t *out)
+{
+  int64_t y = geo_mul(st->schi, st->slam);
+
+  st->slam = geo_mul(st->clam, out->k) + geo_mul(y, out->gamma);
+  st->clam = geo_mul(st->clam, out->gamma) - geo_mul(y, out->k);
+}
+
+/* convergence: gamma' = arg(cos lam + i sin chi sin lam) of the sphere
+ * plus arg(p + i q) of the series' derivative, as the argument of the
+ * product (|gamma| < pi/2 + 0.01: no wrap), into out->gamma. Within 14
+ * degrees (every standard zone, Svalbard's included) the series of atan
+ * of the quotient, |y| <= x / 4 tested before dividing (so the quotient
+ * cannot overflow and is at most 0.25): 1; beyond, 0, and the caller
+ * takes the full atan2 from its own small frame. */
+static __attribute__((noinline)) int fwd_gamma(const tm_fwd_t *st,
+                                               geo_tm_t *out)
+{
   if ((st->clam > 0) && (st->slam <= (st->clam / 4))
       && (st->slam >= -(st->clam / 4))) {
     out->gamma = tm_atan(geo_div(st->slam, st->clam));
@@ -449,7 +463,11 @@ int geo_tm_forward(int64_t phi, int64_t lam, geo_tm_t *out)
     (void)drdc_fx_atan2_q5_58(st.schi, geo_mul(out->k, st.clam), &out->xi);
   }
   fwd_series(&st, out);
-  if (fwd_gamma_k(&st, out) == 0) {
+  /* the stages one after the other from this frame, each with few
+   * values live: no stage's frame is on top of another's */
+  fwd_conv_args(&st, out);
+  fwd_scale(&st, out);
+  if (fwd_gamma(&st, out) == 0) {
     out->gamma = 0;
     (void)drdc_fx_atan2_q5_58(st.slam, st.clam, &out->gamma);
   }
@@ -462,6 +480,8 @@ static __attribute__((noinline)) void rev_series(int64_t xi, int64_t eta,
                                                  int64_t *xip, int64_t *etap)
 {
   tm_zeta_t z;
+  int64_t sr;
+  int64_t si;
 
   *xip = xi;
   *etap = eta;
@@ -473,11 +493,11 @@ static __attribute__((noinline)) void rev_series(int64_t xi, int64_t eta,
   z.cr = 2 * geo_mul(z.r2, z.i2);
   z.i2 = geo_mul(z.i2, z.i2) + geo_mul(z.r2, z.r2);
   z.r2 = z.cr;
-  zeta_set(&z);
+  zeta_set(&z, &sr, &si);
   clenshaw(geo_beta, false, &z);
-  krueger_sum(&z);
-  *xip = *xip - z.sr;
-  *etap = *etap - z.si;
+  krueger_sum(&z, &sr, &si);
+  *xip = *xip - sr;
+  *etap = *etap - si;
 }
 
 /* xi', eta' wait in *phi, *lam; chi = atan2(sin xi', sqrt(sinh^2 eta' +
