@@ -34,8 +34,8 @@ static inline int64_t tm_mul(int64_t a, int64_t b)
  * recurrence (the Chebyshev polynomials of the second kind, |U_n| <= n+1)
  * amplifies them to a few LSB at most. Trailing zero coefficients are
  * skipped (exact zeros). */
-static int64_t sine_series(const int64_t *coef, unsigned terms, int64_t s2,
-                           int64_t c2)
+static inline __attribute__((always_inline)) int64_t
+sine_series(const int64_t *coef, unsigned terms, int64_t s2, int64_t c2)
 {
   int64_t a = 2 * c2;
   int64_t b1 = 0;
@@ -71,8 +71,7 @@ static int64_t sine_series(const int64_t *coef, unsigned terms, int64_t s2,
  * idle during the recurrence, waits in two slots the caller names (the
  * forward projection's output slots that are free then). */
 typedef struct tm_zeta {
-  int64_t cr; /* cos 2 zeta = cr + i ci */
-  int64_t ci;
+  int64_t c2[2]; /* cos 2 zeta = c2[0] + i c2[1] */
   int64_t r1; /* b_(j+1), b_(j+2): real and imaginary parts */
   int64_t i1;
   int64_t r2;
@@ -83,11 +82,11 @@ typedef struct tm_zeta {
  * and sinh, cosh of 2 eta, which the caller leaves in z->r1, i1, r2, i2
  * (the recurrence's slots, free until it starts): cos 2 zeta = c2 ch2 -
  * i s2 sh2, sin 2 zeta = s2 ch2 + i c2 sh2 */
-static __attribute__((noinline)) void zeta_set(tm_zeta_t *z, int64_t *sr,
-                                               int64_t *si)
+static inline __attribute__((always_inline)) void
+zeta_set(tm_zeta_t *z, int64_t *sr, int64_t *si)
 {
-  z->cr = geo_mul(z->i1, z->i2);
-  z->ci = -geo_mul(z->r1, z->r2);
+  z->c2[0] = geo_mul(z->i1, z->i2);
+  z->c2[1] = -geo_mul(z->r1, z->r2);
   *sr = geo_mul(z->r1, z->i2);
   *si = geo_mul(z->i1, z->r2);
 }
@@ -96,10 +95,9 @@ static __attribute__((noinline)) void zeta_set(tm_zeta_t *z, int64_t *sr,
  * b_1, b_2 left in z->r1, i1, r2, i2 (out of line: its few registers are
  * the deepest frame of the chain) */
 static __attribute__((noinline)) void clenshaw(const int64_t *coef,
-                                               bool deriv, tm_zeta_t *z)
+                                               bool deriv, tm_zeta_t *z,
+                                               const int64_t c2[2])
 {
-  int64_t ar = 2 * z->cr;
-  int64_t ai = 2 * z->ci;
   unsigned j;
 
   z->r1 = 0;
@@ -112,10 +110,10 @@ static __attribute__((noinline)) void clenshaw(const int64_t *coef,
 
     /* the new b_j into the b_(j+2) slots one product at a time, then
      * the slots swapped */
-    z->r2 = (c - z->r2) + tm_mul(ar, z->r1);
-    z->r2 = z->r2 - tm_mul(ai, z->i1);
-    z->i2 = tm_mul(ar, z->i1) - z->i2;
-    z->i2 = z->i2 + tm_mul(ai, z->r1);
+    z->r2 = (c - z->r2) + tm_mul(2 * c2[0], z->r1);
+    z->r2 = z->r2 - tm_mul(2 * c2[1], z->i1);
+    z->i2 = tm_mul(2 * c2[0], z->i1) - z->i2;
+    z->i2 = z->i2 + tm_mul(2 * c2[1], z->r1);
     t = z->r1;
     z->r1 = z->r2;
     z->r2 = t;
@@ -138,16 +136,16 @@ static __attribute__((noinline)) void krueger_sum(const tm_zeta_t *z,
 }
 
 /* After clenshaw() over 2 j times the coefficients: the derivative
- * 1 + cos(2 zeta) b_1 - b_2 = p - i q, p into z->cr and q into z->ci. The
+ * 1 + cos(2 zeta) b_1 - b_2 = p - i q, p into z->c2[0] and q into z->c2[1]. The
  * series' stages call clenshaw() and these directly (one frame fewer on
  * the chain than a wrapper would add). */
 static __attribute__((noinline)) void krueger_deriv(tm_zeta_t *z)
 {
-  int64_t d = (GEO_ONE + (geo_mul(z->cr, z->r1) - geo_mul(z->ci, z->i1)))
+  int64_t d = (GEO_ONE + (geo_mul(z->c2[0], z->r1) - geo_mul(z->c2[1], z->i1)))
               - z->r2;
 
-  z->ci = -((geo_mul(z->cr, z->i1) + geo_mul(z->ci, z->r1)) - z->i2);
-  z->cr = d;
+  z->c2[1] = -((geo_mul(z->c2[0], z->i1) + geo_mul(z->c2[1], z->r1)) - z->i2);
+  z->c2[0] = d;
 }
 
 /* coef[0] + x (coef[1] + x (... + x coef[n-1])) by Horner, n >= 1: the
@@ -260,7 +258,7 @@ static __attribute__((noinline)) void rotate_small(int64_t s, int64_t c,
  * term is below 2e-21 and the 10 rounded products add about 1 LSB. The
  * point scale needs sqrt((1 - e^2 sin^2 phi) (p^2 + q^2)), whose argument
  * lies within 1 - 0.0113 .. 1 + 0.0046 in the whole domain. */
-static int64_t tm_sqrt1p(int64_t u)
+static __attribute__((noinline)) int64_t tm_sqrt1p(int64_t u)
 {
   static const int64_t coef[10] = {
     INT64_C(1) << 58,          INT64_C(1) << 57,         -(INT64_C(1) << 55),
@@ -280,18 +278,11 @@ int64_t geo_cos_ratio(int64_t s)
   return geo_div(2 * e, (GEO_ONE + s) + geo_mul(GEO_ONE - s, geo_mul(e, e)));
 }
 
-int64_t geo_chi_series(int64_t sphi, int64_t cphi)
+int64_t geo_lat_series(const int64_t *coef, int64_t s, int64_t c)
 {
-  return sine_series(geo_chi_from_phi, GEO_CHI_TERMS,
-                     2 * geo_mul(sphi, cphi),
-                     geo_mul(cphi, cphi) - geo_mul(sphi, sphi));
-}
-
-int64_t geo_phi_series(int64_t schi, int64_t cchi)
-{
-  return sine_series(geo_phi_from_chi, GEO_CHI_TERMS,
-                     2 * geo_mul(schi, cchi),
-                     geo_mul(cchi, cchi) - geo_mul(schi, schi));
+  /* the recurrence inline: one frame under the projections' stages */
+  return sine_series(coef, GEO_CHI_TERMS, 2 * geo_mul(s, c),
+                     geo_mul(c, c) - geo_mul(s, s));
 }
 
 /* What the forward projection keeps between its stages (in
@@ -328,9 +319,8 @@ static __attribute__((noinline)) int fwd_sphere(int64_t phi, int64_t lam,
   out->xi = out->xi + chi;
   rotate_small(out->eta, out->gamma, chi, &st->schi, &out->k);
   st->kfac = GEO_ONE - geo_mul(GEO_E2, geo_mul(out->eta, out->eta));
-  /* the scale's cos chi / cos phi, its limit at the poles */
-  st->ratio = (out->gamma > 0) ? geo_div(out->k, out->gamma)
-                               : GEO_POLE_RATIO;
+  /* cos phi waits in st->ratio for fwd_ratio() */
+  st->ratio = out->gamma;
   tanh_eta = geo_mul(out->k, st->slam);
   if ((tanh_eta > GEO_TM_MAX_TANH_ETA) || (tanh_eta < -GEO_TM_MAX_TANH_ETA)) {
     return 0;
@@ -340,6 +330,15 @@ static __attribute__((noinline)) int fwd_sphere(int64_t phi, int64_t lam,
   st->ch = tm_cosh(out->eta);
   out->gamma = geo_mul(tanh_eta, st->ch);
   return 1;
+}
+
+/* the scale's cos chi / cos phi (cos chi in out->k, cos phi in
+ * st->ratio, from fwd_sphere()) into st->ratio, its limit at the poles:
+ * the division's chain from a frame of its own */
+static __attribute__((noinline)) void fwd_ratio(tm_fwd_t *st,
+                                                const geo_tm_t *out)
+{
+  st->ratio = (st->ratio > 0) ? geo_div(out->k, st->ratio) : GEO_POLE_RATIO;
 }
 
 /* xi' = chi + atan(q), q = tan(xi' - chi) = sin chi cos chi (1 - cos
@@ -367,10 +366,10 @@ static __attribute__((noinline)) int fwd_xi(const tm_fwd_t *st,
 static __attribute__((noinline)) void fwd_zeta(const tm_fwd_t *st,
                                                geo_tm_t *out, tm_zeta_t *z)
 {
-  z->cr = geo_mul(st->schi, st->ch);                    /* sin xi' */
-  z->ci = geo_mul(geo_mul(out->k, st->clam), st->ch);   /* cos xi' */
-  z->r1 = 2 * geo_mul(z->cr, z->ci);
-  z->i1 = geo_mul(z->ci, z->ci) - geo_mul(z->cr, z->cr);
+  z->c2[0] = geo_mul(st->schi, st->ch);                    /* sin xi' */
+  z->c2[1] = geo_mul(geo_mul(out->k, st->clam), st->ch);   /* cos xi' */
+  z->r1 = 2 * geo_mul(z->c2[0], z->c2[1]);
+  z->i1 = geo_mul(z->c2[1], z->c2[1]) - geo_mul(z->c2[0], z->c2[0]);
   z->r2 = 2 * geo_mul(out->gamma, st->ch);
   z->i2 = geo_mul(st->ch, st->ch) + geo_mul(out->gamma, out->gamma);
   /* sinh eta' and cos chi are used up: sin 2 zeta into their slots */
@@ -390,14 +389,14 @@ static __attribute__((noinline)) void fwd_series(const tm_fwd_t *st,
   fwd_zeta(st, out, &z);
   /* the sine series, then the derivative's: one series at a time keeps
    * half the state live */
-  clenshaw(geo_alpha, false, &z);
+  clenshaw(geo_alpha, false, &z, z.c2);
   krueger_sum(&z, &out->gamma, &out->k);
   out->xi = out->xi + out->gamma;
   out->eta = out->eta + out->k;
-  clenshaw(geo_alpha, true, &z);
+  clenshaw(geo_alpha, true, &z, z.c2);
   krueger_deriv(&z);
-  out->gamma = z.cr;
-  out->k = z.ci;
+  out->gamma = z.c2[0];
+  out->k = z.c2[1];
 }
 
 /* the scale from the series' derivative p - i q (in out->gamma,
@@ -449,29 +448,76 @@ static __attribute__((noinline)) int fwd_gamma(const tm_fwd_t *st,
   return 0;
 }
 
+/* the forward projection's stages in the caller's frame, on its state
+ * (inline, so that no frame of its own lies between the caller and the
+ * stages) */
+static inline __attribute__((always_inline)) int
+tm_forward_stages(int64_t phi, int64_t lam, tm_fwd_t *st, geo_tm_t *out)
+{
+  if (fwd_sphere(phi, lam, st, out) == 0) {
+    return 0;
+  }
+  fwd_ratio(st, out);
+  /* the full atan2s write straight into out (0 first, as geo_atan2()
+   * gives when both arguments are zero): no result slot in this frame */
+  if (fwd_xi(st, out) == 0) {
+    out->xi = 0;
+    (void)drdc_fx_atan2_q5_58(st->schi, geo_mul(out->k, st->clam), &out->xi);
+  }
+  fwd_series(st, out);
+  /* the stages one after the other from this frame, each with few
+   * values live: no stage's frame is on top of another's */
+  fwd_conv_args(st, out);
+  fwd_scale(st, out);
+  if (fwd_gamma(st, out) == 0) {
+    out->gamma = 0;
+    (void)drdc_fx_atan2_q5_58(st->slam, st->clam, &out->gamma);
+  }
+  return 1;
+}
+
 int geo_tm_forward(int64_t phi, int64_t lam, geo_tm_t *out)
 {
   tm_fwd_t st;
 
-  if (fwd_sphere(phi, lam, &st, out) == 0) {
-    return 0;
+  return tm_forward_stages(phi, lam, &st, out);
+}
+
+/* Here rather than in utm.c: the stages run from this frame, which holds
+ * the stages' state and the result, with no geo_tm_forward() frame
+ * between (issue 8's stack goal). The checks and statuses are those of
+ * the range checks of utm.c. */
+drdc_status_t drdc_geo_tm_forward(drdc_nas_t lat, drdc_nas_t dlon,
+                                  drdc_q47_16_t *x, drdc_q47_16_t *y,
+                                  drdc_nas_t *convergence,
+                                  drdc_q5_58_t *scale)
+{
+  geo_tm_t tm;
+  tm_fwd_t st;
+
+  if ((x == NULL) || (y == NULL)) {
+    return DRDC_E_NULL;
   }
-  /* the full atan2s write straight into out (0 first, as geo_atan2()
-   * gives when both arguments are zero): no result slot in this frame */
-  if (fwd_xi(&st, out) == 0) {
-    out->xi = 0;
-    (void)drdc_fx_atan2_q5_58(st.schi, geo_mul(out->k, st.clam), &out->xi);
+  if ((lat > (90 * GEO_NAS_DEG)) || (lat < (-90 * GEO_NAS_DEG))) {
+    return DRDC_E_LATITUDE;
   }
-  fwd_series(&st, out);
-  /* the stages one after the other from this frame, each with few
-   * values live: no stage's frame is on top of another's */
-  fwd_conv_args(&st, out);
-  fwd_scale(&st, out);
-  if (fwd_gamma(&st, out) == 0) {
-    out->gamma = 0;
-    (void)drdc_fx_atan2_q5_58(st.slam, st.clam, &out->gamma);
+  if ((dlon > (90 * GEO_NAS_DEG)) || (dlon < (-90 * GEO_NAS_DEG))) {
+    return DRDC_E_LONGITUDE;
   }
-  return 1;
+  if (tm_forward_stages(geo_rad_from_nas(lat), geo_rad_from_nas(dlon), &st,
+                        &tm)
+      == 0) {
+    return DRDC_E_RANGE;
+  }
+  *x = geo_metres_from_angle(tm.eta);
+  *y = geo_metres_from_angle(tm.xi);
+  if (convergence != NULL) {
+    *convergence = geo_nas_from_rad(tm.gamma);
+  }
+  if (scale != NULL) {
+    *scale = tm.k;
+  }
+  return DRDC_OK;
 }
 
 /* xi' + i eta' = zeta - Krueger's beta series at zeta = xi + i eta,
@@ -490,11 +536,11 @@ static __attribute__((noinline)) void rev_series(int64_t xi, int64_t eta,
    * (|eta| <= 0.08 from the eastings' range): no exponential */
   z.r2 = tm_sinh(eta);
   z.i2 = tm_cosh(*etap);
-  z.cr = 2 * geo_mul(z.r2, z.i2);
+  z.c2[0] = 2 * geo_mul(z.r2, z.i2);
   z.i2 = geo_mul(z.i2, z.i2) + geo_mul(z.r2, z.r2);
-  z.r2 = z.cr;
+  z.r2 = z.c2[0];
   zeta_set(&z, &sr, &si);
-  clenshaw(geo_beta, false, &z);
+  clenshaw(geo_beta, false, &z, z.c2);
   krueger_sum(&z, &sr, &si);
   *xip = *xip - sr;
   *etap = *etap - si;
