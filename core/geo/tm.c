@@ -93,7 +93,11 @@ zeta_set(tm_zeta_t *z, int64_t *sr, int64_t *si)
 
 /* the recurrence over coef[0..5] (times 2 j when deriv), from b = 0:
  * b_1, b_2 left in z->r1, i1, r2, i2 (out of line: its few registers are
- * the deepest frame of the chain) */
+ * the deepest frame of the chain). cos 2 zeta comes as c2 = z->c2 by a
+ * pointer of its own: the compiler cannot tell that the stores to z's
+ * slots leave it unchanged, so it reads A = 2 cos 2 zeta at each product
+ * instead of holding it in four registers across the loop (which a
+ * 32-bit core spills: 16 bytes more frame on either target). */
 static __attribute__((noinline)) void clenshaw(const int64_t *coef,
                                                bool deriv, tm_zeta_t *z,
                                                const int64_t c2[2])
@@ -136,8 +140,8 @@ static __attribute__((noinline)) void krueger_sum(const tm_zeta_t *z,
 }
 
 /* After clenshaw() over 2 j times the coefficients: the derivative
- * 1 + cos(2 zeta) b_1 - b_2 = p - i q, p into z->c2[0] and q into z->c2[1]. The
- * series' stages call clenshaw() and these directly (one frame fewer on
+ * 1 + cos(2 zeta) b_1 - b_2 = p - i q, p into z->c2[0] and q into
+ * z->c2[1]. The series' stages call clenshaw() and these directly (one frame fewer on
  * the chain than a wrapper would add). */
 static __attribute__((noinline)) void krueger_deriv(tm_zeta_t *z)
 {
@@ -285,8 +289,9 @@ int64_t geo_lat_series(const int64_t *coef, int64_t s, int64_t c)
                      geo_mul(c, c) - geo_mul(s, s));
 }
 
-/* What the forward projection keeps between its stages (in
- * geo_tm_forward()'s frame, each stage a small out-of-line function that
+/* What the forward projection keeps between its stages (in the frame of
+ * geo_tm_forward() or drdc_geo_tm_forward(), which run the stages by
+ * tm_forward_stages(); each stage a small out-of-line function that
  * reaches it by pointer, so that the frames under the two atan2 calls
  * and under the Krueger series stay small). cos chi and sinh eta' are
  * needed only up to the series: they wait in out->k and out->gamma,
@@ -296,13 +301,14 @@ typedef struct tm_fwd {
   int64_t slam;  /* sin and cos of the longitude from the meridian */
   int64_t clam;
   int64_t kfac;  /* 1 - e^2 sin^2 phi */
-  int64_t ratio; /* cos chi / cos phi */
+  int64_t ratio; /* cos chi / cos phi (cos phi until fwd_ratio()) */
   int64_t ch;    /* cosh eta' */
 } tm_fwd_t;
 
 /* chi and the sphere's eta': out->xi = chi (xi' - chi is added by
- * fwd_xi()), out->eta = eta', out->k = cos chi, out->gamma = sinh eta';
- * 0 beyond the series' domain */
+ * fwd_xi()), out->eta = eta', out->k = cos chi, out->gamma = sinh eta',
+ * st->ratio = cos phi (fwd_ratio() divides); 0 beyond the series'
+ * domain */
 static __attribute__((noinline)) int fwd_sphere(int64_t phi, int64_t lam,
                                                 tm_fwd_t *st, geo_tm_t *out)
 {
