@@ -102,31 +102,6 @@ static inline int64_t quotient(int64_t a, int64_t b)
       a, b, drdc_fx_reciprocal_3by2((uint32_t)(v >> 32), (uint32_t)v));
 }
 
-/* a 2^58 / b, rounded (ties away from zero); 0 when b == 0 or the
- * quotient overflows: the result of drdc_fx_muldiv_s64(a, 2^58, b), bit
- * for bit, without its two call levels; in one piece, the fastest for
- * drdc_fx_div_q5_58(), whose stack it does not put over 128 B */
-static int64_t quotient_fused(int64_t a, int64_t b)
-{
-  uint64_t ma = fx_abs64(a);
-  fx_u128_t n;
-  uint64_t q = 0;
-
-  if (b == 0) {
-    return 0;
-  }
-  n.hi = ma >> 6;
-  n.lo = ma << 58;
-  if (fx_div_round_u128(n, fx_abs64(b), &q) != 0) {
-    return 0;
-  }
-  if ((a != 0) && ((a < 0) != (b < 0))) {
-    return (q > (UINT64_C(1) << 63)) ? 0
-           : ((q == (UINT64_C(1) << 63)) ? (-INT64_MAX - 1) : -(int64_t)q);
-  }
-  return (q > (uint64_t)INT64_MAX) ? 0 : (int64_t)q;
-}
-
 drdc_status_t drdc_fx_div_q5_58(drdc_q5_58_t a, drdc_q5_58_t b,
                                 drdc_q5_58_t *out)
 {
@@ -138,10 +113,10 @@ drdc_status_t drdc_fx_div_q5_58(drdc_q5_58_t a, drdc_q5_58_t b,
   if (b == 0) {
     return DRDC_E_DIVIDE_BY_ZERO;
   }
-  /* quotient_fused() gives 0 exactly when the quotient is 0 or
+  /* quotient() gives 0 exactly when the quotient is 0 or
    * overflows: the overflow is told apart by a non-zero dividend
    * (|a / b| >= 2^-59 rounds to at least 1 LSB unless |a| < |b| / 2^59) */
-  r = quotient_fused(a, b);
+  r = quotient(a, b);
   if ((r == 0) && (fx_abs64(a) > (fx_abs64(b) >> 59))) {
     return DRDC_E_OVERFLOW;
   }

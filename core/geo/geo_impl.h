@@ -128,6 +128,16 @@ typedef struct geo_tm {
  */
 int geo_tm_forward(int64_t phi, int64_t lam, geo_tm_t *out);
 
+/** 2^62, the divisor that takes k0 A (Q40) times an angle (Q58) to
+ *  metres in Q36. */
+#define GEO_TWO_POW_62 INT64_C(4611686018427387904)
+
+/** An angle on the sphere of radius k0 A (Q5.58, the xi and eta of
+ *  geo_tm_forward()) -> metres (Q47.16): the Q28.36 metres (rounded)
+ *  rounded again. Calls drdc_fx_muldiv_s64() itself (the bits of
+ *  geo_muldiv()), so that no wrapper frame is on its chain. */
+drdc_q47_16_t geo_metres_from_angle(int64_t a);
+
 /** Inverse of geo_tm_forward(): xi, eta (|eta| <= 0.34) -> phi, lam. */
 void geo_tm_reverse(int64_t xi, int64_t eta, int64_t *phi, int64_t *lam);
 
@@ -135,11 +145,22 @@ void geo_tm_reverse(int64_t xi, int64_t eta, int64_t *phi, int64_t *lam);
  *  poles: 2 E / ((1 + s) + (1 - s) E^2) with E = exp(e atanh(e s)). */
 int64_t geo_cos_ratio(int64_t s);
 
+/** sum coef[j] sin(2 (j+1) x), j < GEO_CHI_TERMS, from s = sin x and
+ *  c = cos x: the series between the geodetic and the conformal
+ *  latitude, one copy for both directions. */
+int64_t geo_lat_series(const int64_t *coef, int64_t s, int64_t c);
+
 /** chi - phi of the conformal latitude from sin phi, cos phi. */
-int64_t geo_chi_series(int64_t sphi, int64_t cphi);
+static inline int64_t geo_chi_series(int64_t sphi, int64_t cphi)
+{
+  return geo_lat_series(geo_chi_from_phi, sphi, cphi);
+}
 
 /** phi - chi from sin chi, cos chi. */
-int64_t geo_phi_series(int64_t schi, int64_t cchi);
+static inline int64_t geo_phi_series(int64_t schi, int64_t cchi)
+{
+  return geo_lat_series(geo_phi_from_chi, schi, cchi);
+}
 
 /**
  * Polar stereographic (UPS, k0 = 0.994) of phi, lam (radians) on the

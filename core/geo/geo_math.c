@@ -23,6 +23,16 @@ int64_t geo_muldiv(int64_t a, int64_t b, int64_t c)
   return r;
 }
 
+drdc_q47_16_t geo_metres_from_angle(int64_t a)
+{
+  int64_t r = 0;
+
+  /* the projection's angles keep the Q36 metres within int64_t (as for
+   * geo_muldiv()): never fails */
+  (void)drdc_fx_muldiv_s64(a, GEO_K0A_Q40, GEO_TWO_POW_62, &r);
+  return drdc_fx_rshift_round_s64_inline(r, 20u);
+}
+
 int64_t geo_floor_div(int64_t a, int64_t b)
 {
   int64_t q = a / b;

@@ -279,34 +279,6 @@ static __attribute__((noinline)) drdc_status_t ned_of(
   return st;
 }
 
-/* The attitude part of {W} -> {l} once the offset is in NED and the
- * reference's attitude conjugated (ned_of()): the offset turned into the
- * reference's body axes and the relative attitude; out written only on
- * DRDC_OK (out->p by the last step that can fail). inv may be &out->q:
- * it is read before out->q is written. drdc_pose_le_from_we()'s; out of
- * line, so that its quaternion is not in that function's large frame.
- * drdc_pose_l_from_w() does the same with no quaternion of its own. */
-static __attribute__((noinline)) drdc_status_t l_from_ned(
-  const drdc_quat_t *inv, const drdc_vec3_q15_16_t *ned,
-  const drdc_quat_t *wq, drdc_lPose_t *out)
-{
-  drdc_quat_t q = { 0, 0, 0, 0 };
-  drdc_status_t st;
-
-  st = drdc_quat_compose(inv, wq, &q);
-  if (st == DRDC_OK) {
-    st = drdc_quat_rotate_q15_16(inv, ned, &out->p);
-  }
-  if (st != DRDC_OK) {
-    return st;
-  }
-  out->q.s = q.s;
-  out->q.x = q.x;
-  out->q.y = q.y;
-  out->q.z = q.z;
-  return DRDC_OK;
-}
-
 /* The status of drdc_pose_l_from_w() when its rotation failed with rot:
  * the attitude's error first, as l_from_ned() gives it (the relative
  * attitude is composed into inv, no longer needed, for its status
@@ -611,16 +583,71 @@ drdc_status_t drdc_pose_we_from_le(const drdc_WePose_t *ref,
   return DRDC_OK;
 }
 
+/* the ellipsoidal point of a {We} pose */
+static void ellipsoidal_we(const drdc_WePose_t *we, drdc_q47_16_t n,
+                           drdc_geo_point_t *p)
+{
+  p->lat = we->latitude;
+  p->lon = we->longitude;
+  p->height = we->height + n;
+}
+
+/* ned_of() for two {We} poses, read in place (no {W} copy of either on
+ * the stack): the same checks, sums and statuses; the conjugate of the
+ * quaternion of ref's angles into *inv. */
+static __attribute__((noinline)) drdc_status_t ned_of_we(
+  drdc_q47_16_t geoid_separation, const drdc_WePose_t *ref,
+  const drdc_WePose_t *we, drdc_vec3_q15_16_t *ned, drdc_quat_t *inv)
+{
+  drdc_geo_point_t pt;
+  int64_t d[3] = { 0, 0, 0 };
+  drdc_status_t st;
+
+  ellipsoidal_we(ref, geoid_separation, &pt);
+  st = geo_check_point(&pt);
+  if (st == DRDC_OK) {
+    ellipsoidal_we(we, geoid_separation, &pt);
+    st = geo_check_point(&pt);
+  }
+  if (st != DRDC_OK) {
+    return st;
+  }
+  geo_ecef_acc_q36(&pt, false, &d[0], &d[1], &d[2]);
+  ellipsoidal_we(ref, geoid_separation, &pt);
+  geo_ecef_acc_q36(&pt, true, &d[0], &d[1], &d[2]);
+  st = geo_plane_turn(&pt, true, d, ned);
+  if (st == DRDC_OK) {
+    (void)drdc_quat_from_euler(&ref->e, inv);
+    st = drdc_quat_conj(inv, inv);
+  }
+  return st;
+}
+
+/* *inv composed in place with the quaternion of the angles e: the
+ * relative attitude of drdc_pose_le_from_we(), in its own frame (the
+ * second quaternion is not on the caller's stack under the rotation) */
+static __attribute__((noinline)) drdc_status_t compose_euler(
+  drdc_quat_t *inv, const drdc_euler_t *e)
+{
+  drdc_quat_t q = { 0, 0, 0, 0 };
+
+  (void)drdc_quat_from_euler(e, &q);
+  return drdc_quat_compose(inv, &q, inv);
+}
+
+/* drdc_pose_l_from_w() of the two poses as {W}, then
+ * drdc_pose_le_from_l(), with one local pose on the stack: the offset
+ * and the conjugate reference attitude wait in l, the offset is turned
+ * in place, then the relative attitude composed in place (the statuses
+ * in the order of drdc_pose_l_from_w(): the attitude's first) */
 drdc_status_t drdc_pose_le_from_we(const drdc_WePose_t *ref,
                                    drdc_q47_16_t geoid_separation,
                                    const drdc_WePose_t *we,
                                    drdc_lePose_t *out)
 {
-  drdc_WPose_t r;
-  drdc_WPose_t w;
   drdc_lPose_t l = { { 0, 0, 0 }, { 0, 0, 0, 0 } };
-  drdc_vec3_q15_16_t ned = { 0, 0, 0 };
   drdc_status_t st;
+  drdc_status_t rot;
 
   if ((ref == NULL) || (we == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
@@ -628,13 +655,14 @@ drdc_status_t drdc_pose_le_from_we(const drdc_WePose_t *ref,
   if (!separation_ok(geoid_separation)) {
     return DRDC_E_HEIGHT;
   }
-  w_from_we(ref, &r);
-  w_from_we(we, &w);
-  /* the conjugate attitude waits in l.q, which l_from_ned() reads
-   * before it writes its result there */
-  st = ned_of(geoid_separation, &r, &w, &ned, &l.q);
+  st = ned_of_we(geoid_separation, ref, we, &l.p, &l.q);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  rot = drdc_quat_rotate_q15_16(&l.q, &l.p, &l.p);
+  st = compose_euler(&l.q, &we->e);
   if (st == DRDC_OK) {
-    st = l_from_ned(&l.q, &ned, &w.q, &l);
+    st = rot;
   }
   if (st != DRDC_OK) {
     return st;

@@ -34,8 +34,8 @@ static inline int64_t tm_mul(int64_t a, int64_t b)
  * recurrence (the Chebyshev polynomials of the second kind, |U_n| <= n+1)
  * amplifies them to a few LSB at most. Trailing zero coefficients are
  * skipped (exact zeros). */
-static int64_t sine_series(const int64_t *coef, unsigned terms, int64_t s2,
-                           int64_t c2)
+static inline __attribute__((always_inline)) int64_t
+sine_series(const int64_t *coef, unsigned terms, int64_t s2, int64_t c2)
 {
   int64_t a = 2 * c2;
   int64_t b1 = 0;
@@ -67,38 +67,41 @@ static int64_t sine_series(const int64_t *coef, unsigned terms, int64_t s2,
  * Stack: on a 32-bit core each int64_t takes two registers, so the
  * series' state lives in one struct owned by the caller (tm_zeta_t) and
  * the recurrence runs in a small out-of-line helper that reaches it by
- * pointer: no frame on the chain holds a second copy of it. */
+ * pointer: no frame on the chain holds a second copy of it. sin 2 zeta,
+ * idle during the recurrence, waits in two slots the caller names (the
+ * forward projection's output slots that are free then). */
 typedef struct tm_zeta {
-  int64_t cr; /* cos 2 zeta = cr + i ci */
-  int64_t ci;
-  int64_t sr; /* sin 2 zeta = sr + i si */
-  int64_t si;
+  int64_t c2[2]; /* cos 2 zeta = c2[0] + i c2[1] */
   int64_t r1; /* b_(j+1), b_(j+2): real and imaginary parts */
   int64_t i1;
   int64_t r2;
   int64_t i2;
 } tm_zeta_t;
 
-/* z's sin and cos of 2 zeta from sin, cos of 2 xi and sinh, cosh of
- * 2 eta, which the caller leaves in z->r1, i1, r2, i2 (the recurrence's
- * slots, free until it starts): cos 2 zeta = c2 ch2 - i s2 sh2, sin 2
- * zeta = s2 ch2 + i c2 sh2 */
-static __attribute__((noinline)) void zeta_set(tm_zeta_t *z)
+/* cos 2 zeta into z and sin 2 zeta = *sr + i *si from sin, cos of 2 xi
+ * and sinh, cosh of 2 eta, which the caller leaves in z->r1, i1, r2, i2
+ * (the recurrence's slots, free until it starts): cos 2 zeta = c2 ch2 -
+ * i s2 sh2, sin 2 zeta = s2 ch2 + i c2 sh2 */
+static inline __attribute__((always_inline)) void
+zeta_set(tm_zeta_t *z, int64_t *sr, int64_t *si)
 {
-  z->cr = geo_mul(z->i1, z->i2);
-  z->ci = -geo_mul(z->r1, z->r2);
-  z->sr = geo_mul(z->r1, z->i2);
-  z->si = geo_mul(z->i1, z->r2);
+  z->c2[0] = geo_mul(z->i1, z->i2);
+  z->c2[1] = -geo_mul(z->r1, z->r2);
+  *sr = geo_mul(z->r1, z->i2);
+  *si = geo_mul(z->i1, z->r2);
 }
 
 /* the recurrence over coef[0..5] (times 2 j when deriv), from b = 0:
  * b_1, b_2 left in z->r1, i1, r2, i2 (out of line: its few registers are
- * the deepest frame of the chain) */
+ * the deepest frame of the chain). cos 2 zeta comes as c2 = z->c2 by a
+ * pointer of its own: the compiler cannot tell that the stores to z's
+ * slots leave it unchanged, so it reads A = 2 cos 2 zeta at each product
+ * instead of holding it in four registers across the loop (which a
+ * 32-bit core spills: 16 bytes more frame on either target). */
 static __attribute__((noinline)) void clenshaw(const int64_t *coef,
-                                               bool deriv, tm_zeta_t *z)
+                                               bool deriv, tm_zeta_t *z,
+                                               const int64_t c2[2])
 {
-  int64_t ar = 2 * z->cr;
-  int64_t ai = 2 * z->ci;
   unsigned j;
 
   z->r1 = 0;
@@ -111,10 +114,10 @@ static __attribute__((noinline)) void clenshaw(const int64_t *coef,
 
     /* the new b_j into the b_(j+2) slots one product at a time, then
      * the slots swapped */
-    z->r2 = (c - z->r2) + tm_mul(ar, z->r1);
-    z->r2 = z->r2 - tm_mul(ai, z->i1);
-    z->i2 = tm_mul(ar, z->i1) - z->i2;
-    z->i2 = z->i2 + tm_mul(ai, z->r1);
+    z->r2 = (c - z->r2) + tm_mul(2 * c2[0], z->r1);
+    z->r2 = z->r2 - tm_mul(2 * c2[1], z->i1);
+    z->i2 = tm_mul(2 * c2[0], z->i1) - z->i2;
+    z->i2 = z->i2 + tm_mul(2 * c2[1], z->r1);
     t = z->r1;
     z->r1 = z->r2;
     z->r2 = t;
@@ -125,27 +128,28 @@ static __attribute__((noinline)) void clenshaw(const int64_t *coef,
 }
 
 /* After clenshaw() over the coefficients: the sum sin(2 zeta) b_1 =
- * dxi + i deta into z->sr, z->si (the caller's struct carries the
- * results, no second one is on the stack). */
-static __attribute__((noinline)) void krueger_sum(tm_zeta_t *z)
+ * dxi + i deta into *sr, *si, which held sin 2 zeta (zeta_set()): no
+ * second copy is on the stack. */
+static __attribute__((noinline)) void krueger_sum(const tm_zeta_t *z,
+                                                  int64_t *sr, int64_t *si)
 {
-  int64_t d = geo_mul(z->sr, z->r1) - geo_mul(z->si, z->i1);
+  int64_t d = geo_mul(*sr, z->r1) - geo_mul(*si, z->i1);
 
-  z->si = geo_mul(z->sr, z->i1) + geo_mul(z->si, z->r1);
-  z->sr = d;
+  *si = geo_mul(*sr, z->i1) + geo_mul(*si, z->r1);
+  *sr = d;
 }
 
 /* After clenshaw() over 2 j times the coefficients: the derivative
- * 1 + cos(2 zeta) b_1 - b_2 = p - i q, p into z->cr and q into z->ci. The
- * series' stages call clenshaw() and these directly (one frame fewer on
+ * 1 + cos(2 zeta) b_1 - b_2 = p - i q, p into z->c2[0] and q into
+ * z->c2[1]. The series' stages call clenshaw() and these directly (one frame fewer on
  * the chain than a wrapper would add). */
 static __attribute__((noinline)) void krueger_deriv(tm_zeta_t *z)
 {
-  int64_t d = (GEO_ONE + (geo_mul(z->cr, z->r1) - geo_mul(z->ci, z->i1)))
+  int64_t d = (GEO_ONE + (geo_mul(z->c2[0], z->r1) - geo_mul(z->c2[1], z->i1)))
               - z->r2;
 
-  z->ci = -((geo_mul(z->cr, z->i1) + geo_mul(z->ci, z->r1)) - z->i2);
-  z->cr = d;
+  z->c2[1] = -((geo_mul(z->c2[0], z->i1) + geo_mul(z->c2[1], z->r1)) - z->i2);
+  z->c2[0] = d;
 }
 
 /* coef[0] + x (coef[1] + x (... + x coef[n-1])) by Horner, n >= 1: the
@@ -258,7 +262,7 @@ static __attribute__((noinline)) void rotate_small(int64_t s, int64_t c,
  * term is below 2e-21 and the 10 rounded products add about 1 LSB. The
  * point scale needs sqrt((1 - e^2 sin^2 phi) (p^2 + q^2)), whose argument
  * lies within 1 - 0.0113 .. 1 + 0.0046 in the whole domain. */
-static int64_t tm_sqrt1p(int64_t u)
+static __attribute__((noinline)) int64_t tm_sqrt1p(int64_t u)
 {
   static const int64_t coef[10] = {
     INT64_C(1) << 58,          INT64_C(1) << 57,         -(INT64_C(1) << 55),
@@ -278,22 +282,16 @@ int64_t geo_cos_ratio(int64_t s)
   return geo_div(2 * e, (GEO_ONE + s) + geo_mul(GEO_ONE - s, geo_mul(e, e)));
 }
 
-int64_t geo_chi_series(int64_t sphi, int64_t cphi)
+int64_t geo_lat_series(const int64_t *coef, int64_t s, int64_t c)
 {
-  return sine_series(geo_chi_from_phi, GEO_CHI_TERMS,
-                     2 * geo_mul(sphi, cphi),
-                     geo_mul(cphi, cphi) - geo_mul(sphi, sphi));
+  /* the recurrence inline: one frame under the projections' stages */
+  return sine_series(coef, GEO_CHI_TERMS, 2 * geo_mul(s, c),
+                     geo_mul(c, c) - geo_mul(s, s));
 }
 
-int64_t geo_phi_series(int64_t schi, int64_t cchi)
-{
-  return sine_series(geo_phi_from_chi, GEO_CHI_TERMS,
-                     2 * geo_mul(schi, cchi),
-                     geo_mul(cchi, cchi) - geo_mul(schi, schi));
-}
-
-/* What the forward projection keeps between its stages (in
- * geo_tm_forward()'s frame, each stage a small out-of-line function that
+/* What the forward projection keeps between its stages (in the frame of
+ * geo_tm_forward() or drdc_geo_tm_forward(), which run the stages by
+ * tm_forward_stages(); each stage a small out-of-line function that
  * reaches it by pointer, so that the frames under the two atan2 calls
  * and under the Krueger series stay small). cos chi and sinh eta' are
  * needed only up to the series: they wait in out->k and out->gamma,
@@ -303,31 +301,32 @@ typedef struct tm_fwd {
   int64_t slam;  /* sin and cos of the longitude from the meridian */
   int64_t clam;
   int64_t kfac;  /* 1 - e^2 sin^2 phi */
-  int64_t ratio; /* cos chi / cos phi */
+  int64_t ratio; /* cos chi / cos phi (cos phi until fwd_ratio()) */
   int64_t ch;    /* cosh eta' */
 } tm_fwd_t;
 
 /* chi and the sphere's eta': out->xi = chi (xi' - chi is added by
- * fwd_xi()), out->eta = eta', out->k = cos chi, out->gamma = sinh eta';
- * 0 beyond the series' domain */
+ * fwd_xi()), out->eta = eta', out->k = cos chi, out->gamma = sinh eta',
+ * st->ratio = cos phi (fwd_ratio() divides); 0 beyond the series'
+ * domain */
 static __attribute__((noinline)) int fwd_sphere(int64_t phi, int64_t lam,
                                                 tm_fwd_t *st, geo_tm_t *out)
 {
-  int64_t sphi = 0;
-  int64_t cphi = 0;
   int64_t chi;
   int64_t tanh_eta;
 
-  /* lam first and phi's values in the order of their last use: few
-   * int64_t live across each call */
+  /* sin phi and cos phi wait in out->eta and out->gamma (free until
+   * eta' and sinh eta' are known), phi in out->xi: only chi, then
+   * tanh eta', is live in this frame across a call */
+  out->xi = phi;
   geo_sincos(lam, &st->slam, &st->clam);
-  geo_sincos(phi, &sphi, &cphi);
-  chi = geo_chi_series(sphi, cphi);
-  rotate_small(sphi, cphi, chi, &st->schi, &out->k);
-  out->xi = phi + chi;
-  st->kfac = GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi));
-  /* the scale's cos chi / cos phi, its limit at the poles */
-  st->ratio = (cphi > 0) ? geo_div(out->k, cphi) : GEO_POLE_RATIO;
+  geo_sincos(phi, &out->eta, &out->gamma);
+  chi = geo_chi_series(out->eta, out->gamma);
+  out->xi = out->xi + chi;
+  rotate_small(out->eta, out->gamma, chi, &st->schi, &out->k);
+  st->kfac = GEO_ONE - geo_mul(GEO_E2, geo_mul(out->eta, out->eta));
+  /* cos phi waits in st->ratio for fwd_ratio() */
+  st->ratio = out->gamma;
   tanh_eta = geo_mul(out->k, st->slam);
   if ((tanh_eta > GEO_TM_MAX_TANH_ETA) || (tanh_eta < -GEO_TM_MAX_TANH_ETA)) {
     return 0;
@@ -337,6 +336,15 @@ static __attribute__((noinline)) int fwd_sphere(int64_t phi, int64_t lam,
   st->ch = tm_cosh(out->eta);
   out->gamma = geo_mul(tanh_eta, st->ch);
   return 1;
+}
+
+/* the scale's cos chi / cos phi (cos chi in out->k, cos phi in
+ * st->ratio, from fwd_sphere()) into st->ratio, its limit at the poles:
+ * the division's chain from a frame of its own */
+static __attribute__((noinline)) void fwd_ratio(tm_fwd_t *st,
+                                                const geo_tm_t *out)
+{
+  st->ratio = (st->ratio > 0) ? geo_div(out->k, st->ratio) : GEO_POLE_RATIO;
 }
 
 /* xi' = chi + atan(q), q = tan(xi' - chi) = sin chi cos chi (1 - cos
@@ -358,6 +366,22 @@ static __attribute__((noinline)) int fwd_xi(const tm_fwd_t *st,
   return 0;
 }
 
+/* cos 2 zeta at xi' + i eta' into z, sin 2 zeta into out->gamma and
+ * out->k (see fwd_series()); out of line: its products' temporaries are
+ * not in the frame that holds z under the recurrence */
+static __attribute__((noinline)) void fwd_zeta(const tm_fwd_t *st,
+                                               geo_tm_t *out, tm_zeta_t *z)
+{
+  z->c2[0] = geo_mul(st->schi, st->ch);                    /* sin xi' */
+  z->c2[1] = geo_mul(geo_mul(out->k, st->clam), st->ch);   /* cos xi' */
+  z->r1 = 2 * geo_mul(z->c2[0], z->c2[1]);
+  z->i1 = geo_mul(z->c2[1], z->c2[1]) - geo_mul(z->c2[0], z->c2[0]);
+  z->r2 = 2 * geo_mul(out->gamma, st->ch);
+  z->i2 = geo_mul(st->ch, st->ch) + geo_mul(out->gamma, out->gamma);
+  /* sinh eta' and cos chi are used up: sin 2 zeta into their slots */
+  zeta_set(z, &out->gamma, &out->k);
+}
+
 /* Krueger's series at xi' + i eta': sin^2 chi + cos^2 chi cos^2 lam =
  * 1 - tanh^2 eta' = 1 / cosh^2 eta', so sin xi' = sin chi cosh eta' and
  * cos xi' = cos chi cos lam cosh eta': no exponential and no sin/cos of
@@ -368,54 +392,60 @@ static __attribute__((noinline)) void fwd_series(const tm_fwd_t *st,
 {
   tm_zeta_t z;
 
-  z.cr = geo_mul(st->schi, st->ch);                    /* sin xi' */
-  z.ci = geo_mul(geo_mul(out->k, st->clam), st->ch);   /* cos xi' */
-  z.r1 = 2 * geo_mul(z.cr, z.ci);
-  z.i1 = geo_mul(z.ci, z.ci) - geo_mul(z.cr, z.cr);
-  z.r2 = 2 * geo_mul(out->gamma, st->ch);
-  z.i2 = geo_mul(st->ch, st->ch) + geo_mul(out->gamma, out->gamma);
-  zeta_set(&z);
+  fwd_zeta(st, out, &z);
   /* the sine series, then the derivative's: one series at a time keeps
    * half the state live */
-  clenshaw(geo_alpha, false, &z);
-  krueger_sum(&z);
-  clenshaw(geo_alpha, true, &z);
+  clenshaw(geo_alpha, false, &z, z.c2);
+  krueger_sum(&z, &out->gamma, &out->k);
+  out->xi = out->xi + out->gamma;
+  out->eta = out->eta + out->k;
+  clenshaw(geo_alpha, true, &z, z.c2);
   krueger_deriv(&z);
-  out->xi = out->xi + z.sr;
-  out->eta = out->eta + z.si;
-  out->gamma = z.cr;
-  out->k = z.ci;
+  out->gamma = z.c2[0];
+  out->k = z.c2[1];
 }
 
-/* the scale from the series' derivative p - i q (in out->gamma, out->k)
- * into out->k; the convergence's atan2(y, x) arguments into st->slam,
- * st->clam (no longer needed there), so that no int64_t is live across
- * the calls. 1 when the convergence's series was used, 0 when the caller
- * must take the full atan2 from its own small frame. */
-static __attribute__((noinline)) int fwd_gamma_k(tm_fwd_t *st,
-                                                 geo_tm_t *out)
+/* the scale from the series' derivative p - i q (in out->gamma,
+ * out->k) into out->k: k0 A/a sqrt(1 - e^2 sin^2 phi) (cos chi / cos
+ * phi) cosh eta' times |p + i q|, the two roots as one. Out of line, so
+ * that the root's chain starts from a frame that keeps one value. */
+static __attribute__((noinline)) void fwd_scale(const tm_fwd_t *st,
+                                                geo_tm_t *out)
 {
-  int64_t p = out->gamma;
-  int64_t q = out->k;
-  int64_t y = geo_mul(st->schi, st->slam);
+  int64_t p = geo_mul(st->kfac, geo_mul(out->gamma, out->gamma)
+                                    + geo_mul(out->k, out->k))
+              - GEO_ONE;
 
-  st->slam = geo_mul(st->clam, q) + geo_mul(y, p);
-  st->clam = geo_mul(st->clam, p) - geo_mul(y, q);
-  /* scale: k0 A/a sqrt(1 - e^2 sin^2 phi) (cos chi / cos phi) cosh eta'
-   * times |p + i q|, the two roots as one */
-  p = geo_mul(st->kfac, geo_mul(p, p) + geo_mul(q, q)) - GEO_ONE;
   if ((p <= TM_SQRT_MAX) && (p >= -TM_SQRT_MAX)) {
     p = tm_sqrt1p(p);
   } else {
     p = geo_sqrt(GEO_ONE + p);
   }
   out->k = geo_mul(GEO_K0A_OVER_A, geo_mul(geo_mul(p, st->ratio), st->ch));
-  /* convergence: gamma' = arg(cos lam + i sin chi sin lam) of the sphere
-   * plus arg(p + i q) of the series' derivative, as the argument of the
-   * product (|gamma| < pi/2 + 0.01: no wrap). Within 14 degrees (every
-   * standard zone, Svalbard's included) the series of atan of the
-   * quotient, |y| <= x / 4 tested before dividing (so the quotient cannot
-   * overflow and is at most 0.25); the full atan2 beyond */
+}
+
+/* the convergence's atan2(y, x) arguments into st->slam, st->clam (no
+ * longer needed there) from p, q in out->gamma, out->k, before
+ * fwd_scale() overwrites q */
+static __attribute__((noinline)) void fwd_conv_args(tm_fwd_t *st,
+                                                   const geo_tm_t *out)
+{
+  int64_t y = geo_mul(st->schi, st->slam);
+
+  st->slam = geo_mul(st->clam, out->k) + geo_mul(y, out->gamma);
+  st->clam = geo_mul(st->clam, out->gamma) - geo_mul(y, out->k);
+}
+
+/* convergence: gamma' = arg(cos lam + i sin chi sin lam) of the sphere
+ * plus arg(p + i q) of the series' derivative, as the argument of the
+ * product (|gamma| < pi/2 + 0.01: no wrap), into out->gamma. Within 14
+ * degrees (every standard zone, Svalbard's included) the series of atan
+ * of the quotient, |y| <= x / 4 tested before dividing (so the quotient
+ * cannot overflow and is at most 0.25): 1; beyond, 0, and the caller
+ * takes the full atan2 from its own small frame. */
+static __attribute__((noinline)) int fwd_gamma(const tm_fwd_t *st,
+                                               geo_tm_t *out)
+{
   if ((st->clam > 0) && (st->slam <= (st->clam / 4))
       && (st->slam >= -(st->clam / 4))) {
     out->gamma = tm_atan(geo_div(st->slam, st->clam));
@@ -424,25 +454,76 @@ static __attribute__((noinline)) int fwd_gamma_k(tm_fwd_t *st,
   return 0;
 }
 
+/* the forward projection's stages in the caller's frame, on its state
+ * (inline, so that no frame of its own lies between the caller and the
+ * stages) */
+static inline __attribute__((always_inline)) int
+tm_forward_stages(int64_t phi, int64_t lam, tm_fwd_t *st, geo_tm_t *out)
+{
+  if (fwd_sphere(phi, lam, st, out) == 0) {
+    return 0;
+  }
+  fwd_ratio(st, out);
+  /* the full atan2s write straight into out (0 first, as geo_atan2()
+   * gives when both arguments are zero): no result slot in this frame */
+  if (fwd_xi(st, out) == 0) {
+    out->xi = 0;
+    (void)drdc_fx_atan2_q5_58(st->schi, geo_mul(out->k, st->clam), &out->xi);
+  }
+  fwd_series(st, out);
+  /* the stages one after the other from this frame, each with few
+   * values live: no stage's frame is on top of another's */
+  fwd_conv_args(st, out);
+  fwd_scale(st, out);
+  if (fwd_gamma(st, out) == 0) {
+    out->gamma = 0;
+    (void)drdc_fx_atan2_q5_58(st->slam, st->clam, &out->gamma);
+  }
+  return 1;
+}
+
 int geo_tm_forward(int64_t phi, int64_t lam, geo_tm_t *out)
 {
   tm_fwd_t st;
 
-  if (fwd_sphere(phi, lam, &st, out) == 0) {
-    return 0;
+  return tm_forward_stages(phi, lam, &st, out);
+}
+
+/* Here rather than in utm.c: the stages run from this frame, which holds
+ * the stages' state and the result, with no geo_tm_forward() frame
+ * between (issue 8's stack goal). The checks and statuses are those of
+ * the range checks of utm.c. */
+drdc_status_t drdc_geo_tm_forward(drdc_nas_t lat, drdc_nas_t dlon,
+                                  drdc_q47_16_t *x, drdc_q47_16_t *y,
+                                  drdc_nas_t *convergence,
+                                  drdc_q5_58_t *scale)
+{
+  geo_tm_t tm;
+  tm_fwd_t st;
+
+  if ((x == NULL) || (y == NULL)) {
+    return DRDC_E_NULL;
   }
-  /* the full atan2s write straight into out (0 first, as geo_atan2()
-   * gives when both arguments are zero): no result slot in this frame */
-  if (fwd_xi(&st, out) == 0) {
-    out->xi = 0;
-    (void)drdc_fx_atan2_q5_58(st.schi, geo_mul(out->k, st.clam), &out->xi);
+  if ((lat > (90 * GEO_NAS_DEG)) || (lat < (-90 * GEO_NAS_DEG))) {
+    return DRDC_E_LATITUDE;
   }
-  fwd_series(&st, out);
-  if (fwd_gamma_k(&st, out) == 0) {
-    out->gamma = 0;
-    (void)drdc_fx_atan2_q5_58(st.slam, st.clam, &out->gamma);
+  if ((dlon > (90 * GEO_NAS_DEG)) || (dlon < (-90 * GEO_NAS_DEG))) {
+    return DRDC_E_LONGITUDE;
   }
-  return 1;
+  if (tm_forward_stages(geo_rad_from_nas(lat), geo_rad_from_nas(dlon), &st,
+                        &tm)
+      == 0) {
+    return DRDC_E_RANGE;
+  }
+  *x = geo_metres_from_angle(tm.eta);
+  *y = geo_metres_from_angle(tm.xi);
+  if (convergence != NULL) {
+    *convergence = geo_nas_from_rad(tm.gamma);
+  }
+  if (scale != NULL) {
+    *scale = tm.k;
+  }
+  return DRDC_OK;
 }
 
 /* xi' + i eta' = zeta - Krueger's beta series at zeta = xi + i eta,
@@ -451,6 +532,8 @@ static __attribute__((noinline)) void rev_series(int64_t xi, int64_t eta,
                                                  int64_t *xip, int64_t *etap)
 {
   tm_zeta_t z;
+  int64_t sr;
+  int64_t si;
 
   *xip = xi;
   *etap = eta;
@@ -459,14 +542,14 @@ static __attribute__((noinline)) void rev_series(int64_t xi, int64_t eta,
    * (|eta| <= 0.08 from the eastings' range): no exponential */
   z.r2 = tm_sinh(eta);
   z.i2 = tm_cosh(*etap);
-  z.cr = 2 * geo_mul(z.r2, z.i2);
+  z.c2[0] = 2 * geo_mul(z.r2, z.i2);
   z.i2 = geo_mul(z.i2, z.i2) + geo_mul(z.r2, z.r2);
-  z.r2 = z.cr;
-  zeta_set(&z);
-  clenshaw(geo_beta, false, &z);
-  krueger_sum(&z);
-  *xip = *xip - z.sr;
-  *etap = *etap - z.si;
+  z.r2 = z.c2[0];
+  zeta_set(&z, &sr, &si);
+  clenshaw(geo_beta, false, &z, z.c2);
+  krueger_sum(&z, &sr, &si);
+  *xip = *xip - sr;
+  *etap = *etap - si;
 }
 
 /* xi', eta' wait in *phi, *lam; chi = atan2(sin xi', sqrt(sinh^2 eta' +

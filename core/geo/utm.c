@@ -45,9 +45,6 @@
 /* Every zone code from here up asks geo_utm_forward() for Q28.36. */
 #define ZONE_FINE_MIN (GEO_ZONE_Q36 + DRDC_GEO_ZONE_STANDARD)
 
-/* 2^62, the divisor that takes k0 A (Q40) times an angle (Q58) to Q36. */
-#define TWO_POW_62 INT64_C(4611686018427387904)
-
 static drdc_status_t check_lat_lon(drdc_nas_t lat, drdc_nas_t lon)
 {
   if ((lat > (90 * GEO_NAS_DEG)) || (lat < (-90 * GEO_NAS_DEG))) {
@@ -123,20 +120,13 @@ static drdc_nas_t central_meridian(int32_t zone)
  * rounded: 2^-36 m = 15 pm, far below the series' own error) */
 static int64_t q36_from_angle(int64_t a)
 {
-  return geo_muldiv(a, GEO_K0A_Q40, TWO_POW_62);
-}
-
-/* an angle on the sphere of radius k0 A (Q5.58) -> metres (Q47.16): the
- * Q28.36 metres rounded */
-static drdc_q47_16_t metres_from_angle(int64_t a)
-{
-  return drdc_fx_rshift_round_s64(q36_from_angle(a), 20u);
+  return geo_muldiv(a, GEO_K0A_Q40, GEO_TWO_POW_62);
 }
 
 /* metres (Q47.16, |v| < 2^43) -> angle on the sphere of radius k0 A */
 static int64_t angle_from_metres(drdc_q47_16_t v)
 {
-  return geo_muldiv(v * INT64_C(1048576), TWO_POW_62, GEO_K0A_Q40);
+  return geo_muldiv(v * INT64_C(1048576), GEO_TWO_POW_62, GEO_K0A_Q40);
 }
 
 /* forward of validated lat and dlon (|dlon| <= 180 degrees) */
@@ -149,38 +139,6 @@ static inline drdc_status_t tm_forward_nas(drdc_nas_t lat, drdc_nas_t dlon,
   if (geo_tm_forward(geo_rad_from_nas(lat), geo_rad_from_nas(dlon), tm)
       == 0) {
     return DRDC_E_RANGE;
-  }
-  return DRDC_OK;
-}
-
-drdc_status_t drdc_geo_tm_forward(drdc_nas_t lat, drdc_nas_t dlon,
-                                  drdc_q47_16_t *x, drdc_q47_16_t *y,
-                                  drdc_nas_t *convergence,
-                                  drdc_q5_58_t *scale)
-{
-  geo_tm_t tm;
-  drdc_status_t st;
-
-  if ((x == NULL) || (y == NULL)) {
-    return DRDC_E_NULL;
-  }
-  if ((lat > (90 * GEO_NAS_DEG)) || (lat < (-90 * GEO_NAS_DEG))) {
-    return DRDC_E_LATITUDE;
-  }
-  if ((dlon > (90 * GEO_NAS_DEG)) || (dlon < (-90 * GEO_NAS_DEG))) {
-    return DRDC_E_LONGITUDE;
-  }
-  st = tm_forward_nas(lat, dlon, &tm);
-  if (st != DRDC_OK) {
-    return st;
-  }
-  *x = metres_from_angle(tm.eta);
-  *y = metres_from_angle(tm.xi);
-  if (convergence != NULL) {
-    *convergence = geo_nas_from_rad(tm.gamma);
-  }
-  if (scale != NULL) {
-    *scale = tm.k;
   }
   return DRDC_OK;
 }

@@ -117,18 +117,69 @@ static drdc_status_t euler_from_elements(const int64_t p[3][3], int64_t one,
   return st;
 }
 
+/* Element (i, j) of the exact Q60 numerators of R(c) for the scaled
+ * quaternion c, the value drdc_orient_impl_numerators() gives (exact
+ * integers: the same bits whatever the order of the sums). One at a time
+ * and out of line: drdc_euler_from_quat() keeps no 3x3 matrix of int64_t
+ * on the stack under its atan2 calls (issue 8's stack goal). */
+static __attribute__((noinline)) int64_t numerator(const int32_t c[4],
+                                                   unsigned i, unsigned j)
+{
+  int64_t a;
+  int64_t b;
+
+  if (i == j) {
+    /* (ss + dd) - (the other two squares), d the part of axis i */
+    a = (int64_t)c[1u + i] * c[1u + i];
+    b = (((int64_t)c[1] * c[1]) + ((int64_t)c[2] * c[2])
+         + ((int64_t)c[3] * c[3])) - ((int64_t)c[0] * c[0]);
+    return (2 * a) - b;
+  }
+  /* 2 (c_i c_j +- s c_k), k the third axis; plus below the diagonal in
+   * the cyclic order (1 0), (2 1), (0 2) */
+  a = (int64_t)c[1u + i] * c[1u + j];
+  b = (int64_t)c[0] * c[4u - i - j];
+  return 2 * ((((j + 3u - i) % 3u) == 2u) ? (a + b) : (a - b));
+}
+
+/* As euler_from_elements() on the numerators of the scaled quaternion,
+ * each element computed where it is used, so that only the scaled
+ * quaternion, cos(pitch) and the angles are live across the calls. */
 drdc_status_t drdc_euler_from_quat(const drdc_quat_t *q, drdc_euler_t *out)
 {
-  int64_t p[3][3];
-  int64_t n2;
+  orient_scaled_quat_t sq;
+  drdc_euler_t e;
+  uint64_t h;
   drdc_status_t st;
 
   if ((q == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = drdc_orient_impl_numerators(q, p, &n2);
+  st = drdc_orient_impl_scale(q, &sq);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  h = drdc_fx_hypot62(numerator(sq.c, 0u, 0u), numerator(sq.c, 1u, 0u));
+  st = drdc_orient_impl_atan2_s64(-numerator(sq.c, 2u, 0u), (int64_t)h,
+                                  &e.pitch);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  if (h < ((uint64_t)sq.n2 >> DRDC_ORIENT_GIMBAL_COS_LOG2)) {
+    /* gimbal lock, as in euler_from_elements() */
+    e.roll = 0u;
+    st = drdc_orient_impl_atan2_s64(-numerator(sq.c, 0u, 1u),
+                                    numerator(sq.c, 1u, 1u), &e.yaw);
+  } else {
+    st = drdc_orient_impl_atan2_s64(numerator(sq.c, 1u, 0u),
+                                    numerator(sq.c, 0u, 0u), &e.yaw);
+    if (st == DRDC_OK) {
+      st = drdc_orient_impl_atan2_s64(numerator(sq.c, 2u, 1u),
+                                      numerator(sq.c, 2u, 2u), &e.roll);
+    }
+  }
   if (st == DRDC_OK) {
-    st = euler_from_elements(p, n2, out);
+    *out = e;
   }
   return st;
 }

@@ -145,28 +145,22 @@ drdc_status_t drdc_fx_div_q5_58(drdc_q5_58_t a, drdc_q5_58_t b,
 static inline drdc_q5_58_t drdc_fx_mul_q5_58_unchecked(drdc_q5_58_t a,
                                                        drdc_q5_58_t b)
 {
-  const uint64_t low32 = 0xFFFFFFFFu;
-  const uint64_t half = UINT64_C(1) << 57;
   uint64_t ma = (a < 0) ? (UINT64_C(0) - (uint64_t)a) : (uint64_t)a;
   uint64_t mb = (b < 0) ? (UINT64_C(0) - (uint64_t)b) : (uint64_t)b;
-  uint64_t a0 = ma & low32;
-  uint64_t a1 = ma >> 32;
-  uint64_t b0 = mb & low32;
-  uint64_t b1 = mb >> 32;
-  uint64_t p00 = a0 * b0;
-  uint64_t p01 = a0 * b1;
-  uint64_t p10 = a1 * b0;
-  /* middle column: at most 3 (2^32 - 1) < 2^34, no overflow */
-  uint64_t mid = (p00 >> 32) + (p01 & low32) + (p10 & low32);
-  uint64_t lo = (mid << 32) | (p00 & low32);
-  uint64_t hi = (a1 * b1) + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
-  uint64_t m;
+  uint32_t a0 = (uint32_t)ma;
+  uint32_t a1 = (uint32_t)(ma >> 32);
+  uint32_t b0 = (uint32_t)mb;
+  uint32_t b1 = (uint32_t)(mb >> 32);
+  /* bits 32..95 of the magnitudes' product column by column, each sum
+   * below 2^64: (2^32 - 1) + (2^32 - 1)^2 + 2^25 < 2^64. Bits 0..31 of
+   * a0 b0 cannot carry into bit 57, where the rounding half 2^25 (of the
+   * second word) is added. */
+  uint64_t t = (((uint64_t)a0 * b0) >> 32) + ((uint64_t)a0 * b1);
+  uint64_t u = (uint64_t)(uint32_t)t + ((uint64_t)a1 * b0)
+               + (UINT64_C(1) << 25);
+  uint64_t hi = ((uint64_t)a1 * b1) + (t >> 32) + (u >> 32);
+  uint64_t m = (hi << 6) | ((uint64_t)(uint32_t)u >> 26);
 
-  lo = lo + half;
-  if (lo < half) {
-    hi = hi + 1u;
-  }
-  m = (hi << 6) | (lo >> 58);
   return ((a < 0) != (b < 0)) ? (drdc_q5_58_t)(UINT64_C(0) - m)
                               : (drdc_q5_58_t)m;
 }
