@@ -14,53 +14,6 @@
 
 #include "orient_impl.h"
 
-/** Exact Q60 numerators of the matrix of the scaled quaternion c; the
- *  matrix of c / |c| is p / n2. |p| <= n2 <= 2^62. Each pair of products
- *  is formed next to the two elements that use it, so that few 64-bit
- *  values are live at once (a small stack frame). */
-static void numerators(const int32_t c[4], int64_t p[3][3])
-{
-  const int32_t s = c[0];
-  const int32_t x = c[1];
-  const int32_t y = c[2];
-  const int32_t z = c[3];
-  int64_t a;
-  int64_t b;
-
-  a = ((int64_t)s * s) - ((int64_t)y * y); /* ss - yy */
-  b = ((int64_t)x * x) - ((int64_t)z * z); /* xx - zz */
-  p[0][0] = a + b;                         /* (ss + xx) - (yy + zz) */
-  p[2][2] = a - b;                         /* (ss + zz) - (xx + yy) */
-  a = ((int64_t)s * s) - ((int64_t)x * x); /* ss - xx */
-  b = ((int64_t)y * y) - ((int64_t)z * z); /* yy - zz */
-  p[1][1] = a + b;                         /* (ss + yy) - (xx + zz) */
-  a = (int64_t)x * y;
-  b = (int64_t)s * z;
-  p[0][1] = 2 * (a - b);
-  p[1][0] = 2 * (a + b);
-  a = (int64_t)x * z;
-  b = (int64_t)s * y;
-  p[0][2] = 2 * (a + b);
-  p[2][0] = 2 * (a - b);
-  a = (int64_t)y * z;
-  b = (int64_t)s * x;
-  p[1][2] = 2 * (a - b);
-  p[2][1] = 2 * (a + b);
-}
-
-drdc_status_t drdc_orient_impl_numerators(const drdc_quat_t *q,
-                                          int64_t p[3][3], int64_t *n2)
-{
-  orient_scaled_quat_t sq;
-  drdc_status_t st = drdc_orient_impl_scale(q, &sq);
-
-  if (st == DRDC_OK) {
-    numerators(sq.c, p);
-    *n2 = sq.n2;
-  }
-  return st;
-}
-
 drdc_status_t drdc_dcm_from_quat(const drdc_quat_t *q, drdc_dcm_t *out)
 {
   orient_scaled_quat_t sq;

@@ -116,9 +116,9 @@ static inline uint32_t orient_q60_round_bits(int64_t v, uint32_t *ovf)
   return (uint32_t)(u >> 30u);
 }
 
-/** Row i of the exact Q60 numerators of R(c) (the values of
- * drdc_orient_impl_numerators()), one row at a time so that the whole
- * matrix never sits on the stack. */
+/** Row i of the exact Q60 numerators p of R(c) for the scaled quaternion
+ * c (R(c / |c|) = p / n2, |p| <= n2 <= 2^62), one row at a time so that
+ * the whole matrix never sits on the stack. */
 void drdc_orient_impl_numerator_row(const int32_t c[4], unsigned i,
                                     int64_t row[3]);
 
@@ -201,12 +201,6 @@ static inline void orient_half_sincos_mag(drdc_bam32_t a, orient_half_t *out)
  *  precision left, then drdc_fx_atan2_bam32(). DRDC_E_DOMAIN for (0, 0). */
 drdc_status_t drdc_orient_impl_atan2_s64(int64_t y, int64_t x,
                                          drdc_bam32_t *out);
-
-/** Exact Q60 numerators p of the rotation matrix of q (prescaled) and
- *  their common denominator n2: R = p / n2, |p| <= n2 <= 2^62.
- *  DRDC_E_DOMAIN for the zero quaternion. */
-drdc_status_t drdc_orient_impl_numerators(const drdc_quat_t *q,
-                                          int64_t p[3][3], int64_t *n2);
 
 /* The wide-integer primitives that lived here are in fixed/
  * (<drdc/fixed_wide.h>, issue 3). */
