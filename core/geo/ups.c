@@ -27,28 +27,27 @@ int geo_ups_forward(int64_t phi, int64_t lam, bool north, int64_t *x,
                     int64_t *y, int64_t *gamma, int64_t *k)
 {
   int64_t p = north ? phi : -phi;
-  int64_t sphi = 0;
-  int64_t cphi = 0;
-  int64_t schi = 0;
-  int64_t cchi = 0;
   int64_t t;
 
-  geo_sincos(p, &sphi, &cphi);
-  p = p + geo_chi_series(sphi, cphi);
-  geo_sincos(p, &schi, &cchi);
-  if (schi < UPS_MIN_SIN_CHI) {
+  /* the outputs are the scratch from the start (the callers' own
+   * scratch, which they drop on 0): sin phi in *x until the scale's
+   * root, cos phi and then chi in *y, the convergence's lam in *gamma,
+   * the scale's factors in *k; only p, then t, is live across a call
+   * in this frame */
+  *gamma = north ? lam : -lam;
+  geo_sincos(p, x, y);
+  *y = p + geo_chi_series(*x, *y);
+  *k = geo_mul(GEO_UPS_2K0_OVER_C, geo_cos_ratio(*x));
+  *k = geo_mul(*k, geo_sqrt(GEO_ONE - geo_mul(GEO_E2, geo_mul(*x, *x))));
+  geo_sincos(*y, x, y); /* sin chi, cos chi */
+  if (*x < UPS_MIN_SIN_CHI) {
     return 0;
   }
-  /* from here the outputs are the scratch (sin and cos lam in *y and *k
-   * until x and y are made): few int64_t live across each call */
-  *gamma = north ? lam : -lam;
-  t = geo_div(cchi, GEO_ONE + schi);
-  geo_sincos(lam, y, k);
-  *x = geo_mul(t, *y);
-  *y = north ? -geo_mul(t, *k) : geo_mul(t, *k);
-  *k = geo_sqrt(GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi)));
-  *k = geo_div(geo_mul(geo_mul(GEO_UPS_2K0_OVER_C, geo_cos_ratio(sphi)), *k),
-               GEO_ONE + schi);
+  *k = geo_div(*k, GEO_ONE + *x);
+  t = geo_div(*y, GEO_ONE + *x);
+  geo_sincos(north ? *gamma : -*gamma, x, y); /* sin lam, cos lam */
+  *x = geo_mul(t, *x);
+  *y = north ? -geo_mul(t, *y) : geo_mul(t, *y);
   return 1;
 }
 
