@@ -164,14 +164,15 @@ static inline int64_t geo_phi_series(int64_t schi, int64_t cchi)
 
 /**
  * Polar stereographic (UPS, k0 = 0.994) of phi, lam (radians) on the
- * north or south sheet: x, y as angles of the sphere of radius
- * 2 k0 a / c (geo_ups_metres() makes metres), convergence gamma
- * (radians) and scale k. Returns 0 when the point is too far on the
- * other hemisphere (sin chi < -0.9), else 1; the outputs are its scratch
- * (they hold intermediate values after 0: the callers pass scratch).
+ * north or south sheet into out: x, y (out->xi, out->eta) as angles of
+ * the sphere of radius 2 k0 a / c (geo_ups_metres() makes metres),
+ * convergence out->gamma (radians) and scale out->k; one pointer, so that
+ * no caller's frame holds outgoing arguments for four. Returns 0 when the
+ * point is too far on the other hemisphere (sin chi < -0.9), else 1; out
+ * is its scratch (it holds intermediate values after 0: the callers pass
+ * scratch).
  */
-int geo_ups_forward(int64_t phi, int64_t lam, bool north, int64_t *x,
-                    int64_t *y, int64_t *gamma, int64_t *k);
+int geo_ups_forward(int64_t phi, int64_t lam, bool north, geo_tm_t *out);
 
 /** Inverse of geo_ups_forward(): x, y from the pole in metres (Q47.16,
  *  |x|, |y| < 2 000 km) -> phi, lam (radians). */

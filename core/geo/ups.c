@@ -23,31 +23,33 @@
  *  the UPS ranges end near chi = 65 degrees). */
 #define UPS_MIN_SIN_CHI (-GEO_ONE + (GEO_ONE / 10))
 
-int geo_ups_forward(int64_t phi, int64_t lam, bool north, int64_t *x,
-                    int64_t *y, int64_t *gamma, int64_t *k)
+int geo_ups_forward(int64_t phi, int64_t lam, bool north, geo_tm_t *out)
 {
   int64_t p = north ? phi : -phi;
   int64_t t;
 
-  /* the outputs are the scratch from the start (the callers' own
-   * scratch, which they drop on 0): sin phi in *x until the scale's
-   * root, cos phi and then chi in *y, the convergence's lam in *gamma,
-   * the scale's factors in *k; only p, then t, is live across a call
-   * in this frame */
-  *gamma = north ? lam : -lam;
-  geo_sincos(p, x, y);
-  *y = p + geo_chi_series(*x, *y);
-  *k = geo_mul(GEO_UPS_2K0_OVER_C, geo_cos_ratio(*x));
-  *k = geo_mul(*k, geo_sqrt(GEO_ONE - geo_mul(GEO_E2, geo_mul(*x, *x))));
-  geo_sincos(*y, x, y); /* sin chi, cos chi */
-  if (*x < UPS_MIN_SIN_CHI) {
+  /* out is the scratch from the start (the callers' own scratch, which
+   * they drop on 0): sin phi in out->xi until the scale's root, cos phi
+   * and then chi in out->eta, the convergence's lam in out->gamma, the
+   * scale's factors in out->k; only p, then t, is live across a call in
+   * this frame */
+  out->gamma = north ? lam : -lam;
+  geo_sincos(p, &out->xi, &out->eta);
+  out->eta = p + geo_chi_series(out->xi, out->eta);
+  out->k = geo_mul(GEO_UPS_2K0_OVER_C, geo_cos_ratio(out->xi));
+  out->k = geo_mul(out->k, geo_sqrt(GEO_ONE - geo_mul(GEO_E2,
+                                                      geo_mul(out->xi,
+                                                              out->xi))));
+  geo_sincos(out->eta, &out->xi, &out->eta); /* sin chi, cos chi */
+  if (out->xi < UPS_MIN_SIN_CHI) {
     return 0;
   }
-  *k = geo_div(*k, GEO_ONE + *x);
-  t = geo_div(*y, GEO_ONE + *x);
-  geo_sincos(north ? *gamma : -*gamma, x, y); /* sin lam, cos lam */
-  *x = geo_mul(t, *x);
-  *y = north ? -geo_mul(t, *y) : geo_mul(t, *y);
+  out->k = geo_div(out->k, GEO_ONE + out->xi);
+  t = geo_div(out->eta, GEO_ONE + out->xi);
+  /* sin lam, cos lam */
+  geo_sincos(north ? out->gamma : -out->gamma, &out->xi, &out->eta);
+  out->xi = geo_mul(t, out->xi);
+  out->eta = north ? -geo_mul(t, out->eta) : geo_mul(t, out->eta);
   return 1;
 }
 

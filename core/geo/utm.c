@@ -162,8 +162,8 @@ static drdc_status_t ups_forward(drdc_nas_t lat, drdc_nas_t lon, bool fine,
   drdc_q47_16_t n;
 
   if (geo_ups_forward(geo_rad_from_nas(lat),
-                      geo_rad_from_nas(lon_normalize(lon)), north, &tm->xi,
-                      &tm->eta, &tm->gamma, &tm->k) == 0) {
+                      geo_rad_from_nas(lon_normalize(lon)), north, tm)
+      == 0) {
     return DRDC_E_RANGE;
   }
   /* Q28.36 offsets in tm's slots; the Q47.16 metres for the checks */
@@ -211,8 +211,7 @@ static drdc_status_t ups_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat,
     int64_t lam = tm->k;
 
     /* within the UPS ranges sin chi > 0.5: never fails */
-    (void)geo_ups_forward(phi, lam, in->north, &tm->xi, &tm->eta,
-                          &tm->gamma, &tm->k);
+    (void)geo_ups_forward(phi, lam, in->north, tm);
     if (convergence != NULL) {
       *convergence = geo_nas_from_rad(tm->gamma);
     }
