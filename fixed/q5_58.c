@@ -104,6 +104,18 @@ static inline int64_t quotient(int64_t a, int64_t b)
   return (q > (uint64_t)INT64_MAX) ? 0 : (int64_t)q;
 }
 
+/* quotient() for a >= 0 and b > 0 (Newton's steps of the root): no
+ * signs to keep across the calls */
+static inline int64_t quotient_pos(int64_t a, int64_t b)
+{
+  uint64_t v = (uint64_t)b << (unsigned)__builtin_clzll((uint64_t)b);
+  uint64_t q = quotient_mag((uint64_t)a, (uint64_t)b,
+                            drdc_fx_reciprocal_3by2((uint32_t)(v >> 32),
+                                                    (uint32_t)v));
+
+  return (q > (uint64_t)INT64_MAX) ? 0 : (int64_t)q;
+}
+
 drdc_status_t drdc_fx_div_q5_58(drdc_q5_58_t a, drdc_q5_58_t b,
                                 drdc_q5_58_t *out)
 {
@@ -318,8 +330,8 @@ drdc_status_t drdc_fx_sqrt_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
   /* Newton: each step squares the relative error; the rounded integer
    * root is within 2^-15 relative for v >= 2^28, so two steps reach
    * 2^-60 */
-  y = drdc_fx_rshift_round_s64_inline(y + quotient(v, y), 1u);
-  y = drdc_fx_rshift_round_s64_inline(y + quotient(v, y), 1u);
+  y = drdc_fx_rshift_round_s64_inline(y + quotient_pos(v, y), 1u);
+  y = drdc_fx_rshift_round_s64_inline(y + quotient_pos(v, y), 1u);
   *out = (k == 0u) ? y : drdc_fx_rshift_round_s64_inline(y, k);
   return DRDC_OK;
 }
