@@ -138,8 +138,10 @@ int geo_tm_forward(int64_t phi, int64_t lam, geo_tm_t *out);
  *  geo_muldiv()), so that no wrapper frame is on its chain. */
 drdc_q47_16_t geo_metres_from_angle(int64_t a);
 
-/** Inverse of geo_tm_forward(): xi, eta (|eta| <= 0.34) -> phi, lam. */
-void geo_tm_reverse(int64_t xi, int64_t eta, int64_t *phi, int64_t *lam);
+/** Inverse of geo_tm_forward(): xi, eta (|eta| <= 0.34) -> phi, lam into
+ *  tm->xi, tm->eta; tm->gamma and tm->k are its scratch (one struct of
+ *  the caller's frame holds every intermediate the stages share). */
+void geo_tm_reverse(int64_t xi, int64_t eta, geo_tm_t *tm);
 
 /** cos(chi) / cos(phi) from s = sin(phi), well conditioned up to the
  *  poles: 2 E / ((1 + s) + (1 - s) E^2) with E = exp(e atanh(e s)). */

@@ -421,12 +421,16 @@ static __attribute__((noinline)) void fwd_scale(const tm_fwd_t *st,
                                     + geo_mul(out->k, out->k))
               - GEO_ONE;
 
+  /* the root into out->k (0 first, as geo_sqrt() gives on failure): no
+   * result slot in this frame */
   if ((p <= TM_SQRT_MAX) && (p >= -TM_SQRT_MAX)) {
-    p = tm_sqrt1p(p);
+    out->k = tm_sqrt1p(p);
   } else {
-    p = geo_sqrt(GEO_ONE + p);
+    out->k = 0;
+    (void)drdc_fx_sqrt_q5_58(GEO_ONE + p, &out->k);
   }
-  out->k = geo_mul(GEO_K0A_OVER_A, geo_mul(geo_mul(p, st->ratio), st->ch));
+  out->k = geo_mul(GEO_K0A_OVER_A,
+                   geo_mul(geo_mul(out->k, st->ratio), st->ch));
 }
 
 /* the convergence's atan2(y, x) arguments into st->slam, st->clam (no
@@ -532,49 +536,49 @@ drdc_status_t drdc_geo_tm_forward(drdc_nas_t lat, drdc_nas_t dlon,
 }
 
 /* xi' + i eta' = zeta - Krueger's beta series at zeta = xi + i eta,
- * into *xip, *etap (the caller's outputs, its scratch until the end) */
+ * into tm->xi, tm->eta (the caller's outputs, its scratch until the
+ * end); sin 2 zeta and then the sum wait in tm->gamma, tm->k, free until
+ * the caller's forward: no slot of this frame has its address taken but
+ * the recurrence's */
 static __attribute__((noinline)) void rev_series(int64_t xi, int64_t eta,
-                                                 int64_t *xip, int64_t *etap)
+                                                 geo_tm_t *tm)
 {
   tm_zeta_t z;
-  int64_t sr;
-  int64_t si;
 
-  *xip = xi;
-  *etap = eta;
+  tm->xi = xi;
+  tm->eta = eta;
   geo_sincos(2 * xi, &z.r1, &z.i1);
   /* sinh and cosh of 2 eta from the series of sinh and cosh of eta
    * (|eta| <= 0.08 from the eastings' range): no exponential */
   z.r2 = tm_sinh(eta);
-  z.i2 = tm_cosh(*etap);
+  z.i2 = tm_cosh(tm->eta);
   z.c2[0] = 2 * geo_mul(z.r2, z.i2);
   z.i2 = geo_mul(z.i2, z.i2) + geo_mul(z.r2, z.r2);
   z.r2 = z.c2[0];
-  zeta_set(&z, &sr, &si);
+  zeta_set(&z, &tm->gamma, &tm->k);
   clenshaw(geo_beta, false, &z, z.c2);
-  krueger_sum(&z, &sr, &si);
-  *xip = *xip - sr;
-  *etap = *etap - si;
+  krueger_sum(&z, &tm->gamma, &tm->k);
+  tm->xi = tm->xi - tm->gamma;
+  tm->eta = tm->eta - tm->k;
 }
 
-/* xi', eta' wait in *phi, *lam; chi = atan2(sin xi', sqrt(sinh^2 eta' +
- * cos^2 xi')) too, before phi = chi + its series */
-void geo_tm_reverse(int64_t xi, int64_t eta, int64_t *phi, int64_t *lam)
+/* xi', eta' wait in tm->xi, tm->eta, sin xi' and cos xi' in tm->gamma,
+ * tm->k; chi = atan2(sin xi', sqrt(sinh^2 eta' + cos^2 xi')) in tm->xi
+ * too, before phi = chi + its series */
+void geo_tm_reverse(int64_t xi, int64_t eta, geo_tm_t *tm)
 {
-  int64_t sxip = 0;
-  int64_t cxip = 0;
   int64_t shetap;
 
-  rev_series(xi, eta, phi, lam);
-  geo_sincos(*phi, &sxip, &cxip);
-  shetap = tm_sinh(*lam);
+  rev_series(xi, eta, tm);
+  geo_sincos(tm->xi, &tm->gamma, &tm->k);
+  shetap = tm_sinh(tm->eta);
   /* the atan2s write straight into the outputs (0 first, as
    * geo_atan2() gives when both arguments are zero) */
-  *lam = 0;
-  (void)drdc_fx_atan2_q5_58(shetap, cxip, lam);
-  shetap = geo_sqrt(geo_mul(shetap, shetap) + geo_mul(cxip, cxip));
-  *phi = 0;
-  (void)drdc_fx_atan2_q5_58(sxip, shetap, phi);
-  geo_sincos(*phi, &sxip, &cxip);
-  *phi = *phi + geo_phi_series(sxip, cxip);
+  tm->eta = 0;
+  (void)drdc_fx_atan2_q5_58(shetap, tm->k, &tm->eta);
+  shetap = geo_sqrt(geo_mul(shetap, shetap) + geo_mul(tm->k, tm->k));
+  tm->xi = 0;
+  (void)drdc_fx_atan2_q5_58(tm->gamma, shetap, &tm->xi);
+  geo_sincos(tm->xi, &tm->gamma, &tm->k);
+  tm->xi = tm->xi + geo_phi_series(tm->gamma, tm->k);
 }

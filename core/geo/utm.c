@@ -334,8 +334,7 @@ drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
                                        ? in->northing
                                        : (in->northing
                                           - UTM_FALSE_NORTHING_SOUTH)),
-                 angle_from_metres(in->easting - UTM_FALSE_EASTING), &tm.xi,
-                 &tm.eta);
+                 angle_from_metres(in->easting - UTM_FALSE_EASTING), &tm);
   *lat = geo_nas_from_rad(tm.xi);
   *lon = lon_normalize(central_meridian(in->zone)
                        + geo_nas_from_rad(tm.eta));
