@@ -149,6 +149,11 @@ drdc_status_t drdc_fx_div_q5_58(drdc_q5_58_t a, drdc_q5_58_t b,
   return DRDC_OK;
 }
 
+drdc_q5_58_t drdc_fx_div_q5_58_unchecked(drdc_q5_58_t a, drdc_q5_58_t b)
+{
+  return quotient(a, b);
+}
+
 /* sin and cos of x (Q5.58 radians, |x| <= 16): the body of
  * drdc_fx_sincos_q5_58(), inlined into atan2 so that its frame does not
  * stack on atan2's (#3) */

@@ -66,12 +66,11 @@ int64_t geo_mul(int64_t a, int64_t b);
  *  callers keep it so, so it never fails. Inline: an out-of-line wrapper
  *  would put its own frame (32 bytes) on top of drdc_fx_div_q5_58()'s on
  *  the deepest chains of the projections (issue 8's stack goal). */
+/* the quotient in registers (no result slot in the caller's frame); 0
+ * where drdc_fx_div_q5_58() fails, as before */
 static inline int64_t geo_div(int64_t a, int64_t b)
 {
-  int64_t r = 0;
-
-  (void)drdc_fx_div_q5_58(a, b, &r);
-  return r;
+  return drdc_fx_div_q5_58_unchecked(a, b);
 }
 
 /** a b / c, rounded; c != 0 and the quotient within int64_t. */
