@@ -122,10 +122,12 @@ typedef struct geo_tm {
 /**
  * Transverse Mercator (Krueger series, 6th order) of latitude phi and
  * longitude from the central meridian lam (radians, |phi| <= pi/2,
- * |lam| <= pi/2). Returns 0 when the point is beyond the series' domain
- * (cos(chi) |sin(lam)| > tanh(0.34)), else 1 with *out written.
+ * |lam| <= pi/2) in out->xi, out->eta (the arguments in the struct: no
+ * caller holds outgoing stack arguments). Returns 0 when the point is
+ * beyond the series' domain (cos(chi) |sin(lam)| > tanh(0.34)), else 1
+ * with *out written.
  */
-int geo_tm_forward(int64_t phi, int64_t lam, geo_tm_t *out);
+int geo_tm_forward(geo_tm_t *out);
 
 /** 2^62, the divisor that takes k0 A (Q40) times an angle (Q58) to
  *  metres in Q36. */
@@ -137,10 +139,10 @@ int geo_tm_forward(int64_t phi, int64_t lam, geo_tm_t *out);
  *  geo_muldiv()), so that no wrapper frame is on its chain. */
 drdc_q47_16_t geo_metres_from_angle(int64_t a);
 
-/** Inverse of geo_tm_forward(): xi, eta (|eta| <= 0.34) -> phi, lam into
- *  tm->xi, tm->eta; tm->gamma and tm->k are its scratch (one struct of
+/** Inverse of geo_tm_forward(): xi, eta (|eta| <= 0.34) in tm->xi,
+ *  tm->eta -> phi, lam in the same slots; tm->gamma and tm->k are its scratch (one struct of
  *  the caller's frame holds every intermediate the stages share). */
-void geo_tm_reverse(int64_t xi, int64_t eta, geo_tm_t *tm);
+void geo_tm_reverse(geo_tm_t *tm);
 
 /** cos(chi) / cos(phi) from s = sin(phi), well conditioned up to the
  *  poles: 2 E / ((1 + s) + (1 - s) E^2) with E = exp(e atanh(e s)). */
@@ -164,8 +166,9 @@ static inline int64_t geo_phi_series(int64_t schi, int64_t cchi)
 }
 
 /**
- * Polar stereographic (UPS, k0 = 0.994) of phi, lam (radians) on the
- * north or south sheet into out: x, y (out->xi, out->eta) as angles of
+ * Polar stereographic (UPS, k0 = 0.994) of phi, lam (radians, in out->xi,
+ * out->eta as geo_tm_forward() takes them) on the north or south sheet
+ * into out: x, y (out->xi, out->eta) as angles of
  * the sphere of radius 2 k0 a / c (geo_ups_metres() makes metres),
  * convergence out->gamma (radians) and scale out->k; one pointer, so that
  * no caller's frame holds outgoing arguments for four. Returns 0 when the
@@ -173,7 +176,7 @@ static inline int64_t geo_phi_series(int64_t schi, int64_t cchi)
  * is its scratch (it holds intermediate values after 0: the callers pass
  * scratch).
  */
-int geo_ups_forward(int64_t phi, int64_t lam, bool north, geo_tm_t *out);
+int geo_ups_forward(bool north, geo_tm_t *out);
 
 /** Inverse of geo_ups_forward(): x, y from the pole in metres (Q47.16,
  *  |x|, |y| < 2 000 km) -> phi, lam (radians). */

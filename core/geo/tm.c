@@ -310,12 +310,11 @@ typedef struct tm_fwd {
   int64_t ch;    /* cosh eta' */
 } tm_fwd_t;
 
-/* chi and the sphere's eta': out->xi = chi (xi' - chi is added by
- * fwd_xi()), out->eta = eta', out->k = cos chi, out->gamma = sinh eta',
- * st->ratio = cos phi (fwd_ratio() divides); 0 beyond the series'
- * domain */
-static __attribute__((noinline)) int fwd_sphere(int64_t phi, int64_t lam,
-                                                tm_fwd_t *st, geo_tm_t *out)
+/* chi and the sphere's eta' from phi, lam in out->xi, out->eta: out->xi
+ * = chi (xi' - chi is added by fwd_xi()), out->eta = eta', out->k = cos
+ * chi, out->gamma = sinh eta', st->ratio = cos phi (fwd_ratio()
+ * divides); 0 beyond the series' domain */
+static __attribute__((noinline)) int fwd_sphere(tm_fwd_t *st, geo_tm_t *out)
 {
   int64_t chi;
   int64_t tanh_eta;
@@ -323,9 +322,8 @@ static __attribute__((noinline)) int fwd_sphere(int64_t phi, int64_t lam,
   /* sin phi and cos phi wait in out->eta and out->gamma (free until
    * eta' and sinh eta' are known), phi in out->xi: only chi, then
    * tanh eta', is live in this frame across a call */
-  out->xi = phi;
-  geo_sincos(lam, &st->slam, &st->clam);
-  geo_sincos(phi, &out->eta, &out->gamma);
+  geo_sincos(out->eta, &st->slam, &st->clam);
+  geo_sincos(out->xi, &out->eta, &out->gamma);
   chi = geo_chi_series(out->eta, out->gamma);
   out->xi = out->xi + chi;
   rotate_small(out->eta, out->gamma, chi, &st->schi, &out->k);
@@ -467,9 +465,9 @@ static __attribute__((noinline)) int fwd_gamma(const tm_fwd_t *st,
  * (inline, so that no frame of its own lies between the caller and the
  * stages) */
 static inline __attribute__((always_inline)) int
-tm_forward_stages(int64_t phi, int64_t lam, tm_fwd_t *st, geo_tm_t *out)
+tm_forward_stages(tm_fwd_t *st, geo_tm_t *out)
 {
-  if (fwd_sphere(phi, lam, st, out) == 0) {
+  if (fwd_sphere(st, out) == 0) {
     return 0;
   }
   fwd_ratio(st, out);
@@ -491,11 +489,11 @@ tm_forward_stages(int64_t phi, int64_t lam, tm_fwd_t *st, geo_tm_t *out)
   return 1;
 }
 
-int geo_tm_forward(int64_t phi, int64_t lam, geo_tm_t *out)
+int geo_tm_forward(geo_tm_t *out)
 {
   tm_fwd_t st;
 
-  return tm_forward_stages(phi, lam, &st, out);
+  return tm_forward_stages(&st, out);
 }
 
 /* Here rather than in utm.c: the stages run from this frame, which holds
@@ -519,9 +517,9 @@ drdc_status_t drdc_geo_tm_forward(drdc_nas_t lat, drdc_nas_t dlon,
   if ((dlon > (90 * GEO_NAS_DEG)) || (dlon < (-90 * GEO_NAS_DEG))) {
     return DRDC_E_LONGITUDE;
   }
-  if (tm_forward_stages(geo_rad_from_nas(lat), geo_rad_from_nas(dlon), &st,
-                        &tm)
-      == 0) {
+  tm.xi = geo_rad_from_nas(lat);
+  tm.eta = geo_rad_from_nas(dlon);
+  if (tm_forward_stages(&st, &tm) == 0) {
     return DRDC_E_RANGE;
   }
   *x = geo_metres_from_angle(tm.eta);
@@ -535,22 +533,19 @@ drdc_status_t drdc_geo_tm_forward(drdc_nas_t lat, drdc_nas_t dlon,
   return DRDC_OK;
 }
 
-/* xi' + i eta' = zeta - Krueger's beta series at zeta = xi + i eta,
- * into tm->xi, tm->eta (the caller's outputs, its scratch until the
- * end); sin 2 zeta and then the sum wait in tm->gamma, tm->k, free until
+/* xi' + i eta' = zeta - Krueger's beta series at zeta = xi + i eta
+ * (in tm->xi, tm->eta), into tm->xi, tm->eta (the caller's outputs, its
+ * scratch until the end); sin 2 zeta and then the sum wait in tm->gamma, tm->k, free until
  * the caller's forward: no slot of this frame has its address taken but
  * the recurrence's */
-static __attribute__((noinline)) void rev_series(int64_t xi, int64_t eta,
-                                                 geo_tm_t *tm)
+static __attribute__((noinline)) void rev_series(geo_tm_t *tm)
 {
   tm_zeta_t z;
 
-  tm->xi = xi;
-  tm->eta = eta;
-  geo_sincos(2 * xi, &z.r1, &z.i1);
+  geo_sincos(2 * tm->xi, &z.r1, &z.i1);
   /* sinh and cosh of 2 eta from the series of sinh and cosh of eta
    * (|eta| <= 0.08 from the eastings' range): no exponential */
-  z.r2 = tm_sinh(eta);
+  z.r2 = tm_sinh(tm->eta);
   z.i2 = tm_cosh(tm->eta);
   z.c2[0] = 2 * geo_mul(z.r2, z.i2);
   z.i2 = geo_mul(z.i2, z.i2) + geo_mul(z.r2, z.r2);
@@ -565,11 +560,11 @@ static __attribute__((noinline)) void rev_series(int64_t xi, int64_t eta,
 /* xi', eta' wait in tm->xi, tm->eta, sin xi' and cos xi' in tm->gamma,
  * tm->k; chi = atan2(sin xi', sqrt(sinh^2 eta' + cos^2 xi')) in tm->xi
  * too, before phi = chi + its series */
-void geo_tm_reverse(int64_t xi, int64_t eta, geo_tm_t *tm)
+void geo_tm_reverse(geo_tm_t *tm)
 {
   int64_t shetap;
 
-  rev_series(xi, eta, tm);
+  rev_series(tm);
   geo_sincos(tm->xi, &tm->gamma, &tm->k);
   shetap = tm_sinh(tm->eta);
   /* the atan2s write straight into the outputs (0 first, as

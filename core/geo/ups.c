@@ -23,9 +23,9 @@
  *  the UPS ranges end near chi = 65 degrees). */
 #define UPS_MIN_SIN_CHI (-GEO_ONE + (GEO_ONE / 10))
 
-int geo_ups_forward(int64_t phi, int64_t lam, bool north, geo_tm_t *out)
+int geo_ups_forward(bool north, geo_tm_t *out)
 {
-  int64_t p = north ? phi : -phi;
+  int64_t p = north ? out->xi : -out->xi;
   int64_t t;
 
   /* out is the scratch from the start (the callers' own scratch, which
@@ -33,7 +33,7 @@ int geo_ups_forward(int64_t phi, int64_t lam, bool north, geo_tm_t *out)
    * and then chi in out->eta, the convergence's lam in out->gamma, the
    * scale's factors in out->k; only p, then t, is live across a call in
    * this frame */
-  out->gamma = north ? lam : -lam;
+  out->gamma = north ? out->eta : -out->eta;
   geo_sincos(p, &out->xi, &out->eta);
   out->eta = p + geo_chi_series(out->xi, out->eta);
   out->k = geo_mul(GEO_UPS_2K0_OVER_C, geo_cos_ratio(out->xi));

@@ -136,8 +136,9 @@ static inline drdc_status_t tm_forward_nas(drdc_nas_t lat, drdc_nas_t dlon,
   if ((dlon > (90 * GEO_NAS_DEG)) || (dlon < (-90 * GEO_NAS_DEG))) {
     return DRDC_E_RANGE;
   }
-  if (geo_tm_forward(geo_rad_from_nas(lat), geo_rad_from_nas(dlon), tm)
-      == 0) {
+  tm->xi = geo_rad_from_nas(lat);
+  tm->eta = geo_rad_from_nas(dlon);
+  if (geo_tm_forward(tm) == 0) {
     return DRDC_E_RANGE;
   }
   return DRDC_OK;
@@ -161,9 +162,9 @@ static drdc_status_t ups_forward(drdc_nas_t lat, drdc_nas_t lon, bool fine,
   drdc_q47_16_t e;
   drdc_q47_16_t n;
 
-  if (geo_ups_forward(geo_rad_from_nas(lat),
-                      geo_rad_from_nas(lon_normalize(lon)), north, tm)
-      == 0) {
+  tm->xi = geo_rad_from_nas(lat);
+  tm->eta = geo_rad_from_nas(lon_normalize(lon));
+  if (geo_ups_forward(north, tm) == 0) {
     return DRDC_E_RANGE;
   }
   /* Q28.36 offsets in tm's slots; the Q47.16 metres for the checks */
@@ -198,20 +199,18 @@ static drdc_status_t ups_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat,
   if (!ups_in_range(in->north, in->northing)) {
     return DRDC_E_NORTHING;
   }
-  /* phi and lam in tm->gamma and tm->k until the forward below */
-  tm->gamma = 0;
-  tm->k = 0;
+  /* phi and lam in tm->xi and tm->eta, where the forward below takes
+   * them */
+  tm->xi = 0;
+  tm->eta = 0;
   geo_ups_reverse(in->easting - UPS_FALSE_ORIGIN,
-                  in->northing - UPS_FALSE_ORIGIN, in->north, &tm->gamma,
-                  &tm->k);
-  *lat = geo_nas_from_rad(tm->gamma);
-  *lon = geo_nas_from_rad(tm->k);
+                  in->northing - UPS_FALSE_ORIGIN, in->north, &tm->xi,
+                  &tm->eta);
+  *lat = geo_nas_from_rad(tm->xi);
+  *lon = geo_nas_from_rad(tm->eta);
   if ((convergence != NULL) || (scale != NULL)) {
-    int64_t phi = tm->gamma;
-    int64_t lam = tm->k;
-
     /* within the UPS ranges sin chi > 0.5: never fails */
-    (void)geo_ups_forward(phi, lam, in->north, tm);
+    (void)geo_ups_forward(in->north, tm);
     if (convergence != NULL) {
       *convergence = geo_nas_from_rad(tm->gamma);
     }
@@ -328,19 +327,17 @@ drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
                    || (in->northing > UTM_N_SOUTH_MAX))) {
     return DRDC_E_NORTHING;
   }
-  tm.xi = 0;
-  tm.eta = 0;
-  geo_tm_reverse(angle_from_metres(in->north
-                                       ? in->northing
-                                       : (in->northing
-                                          - UTM_FALSE_NORTHING_SOUTH)),
-                 angle_from_metres(in->easting - UTM_FALSE_EASTING), &tm);
+  tm.xi = angle_from_metres(in->north ? in->northing
+                                      : (in->northing
+                                         - UTM_FALSE_NORTHING_SOUTH));
+  tm.eta = angle_from_metres(in->easting - UTM_FALSE_EASTING);
+  geo_tm_reverse(&tm);
   *lat = geo_nas_from_rad(tm.xi);
   *lon = lon_normalize(central_meridian(in->zone)
                        + geo_nas_from_rad(tm.eta));
   if ((convergence != NULL) || (scale != NULL)) {
     /* in the range checked above |dlon| < 30 degrees: never fails */
-    (void)geo_tm_forward(tm.xi, tm.eta, &tm);
+    (void)geo_tm_forward(&tm);
     if (convergence != NULL) {
       *convergence = geo_nas_from_rad(tm.gamma);
     }
