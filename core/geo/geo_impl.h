@@ -179,9 +179,10 @@ static inline int64_t geo_phi_series(int64_t schi, int64_t cchi)
 int geo_ups_forward(bool north, geo_tm_t *out);
 
 /** Inverse of geo_ups_forward(): x, y from the pole in metres (Q47.16,
- *  |x|, |y| < 2 000 km) -> phi, lam (radians). */
-void geo_ups_reverse(drdc_q47_16_t x, drdc_q47_16_t y, bool north,
-                     int64_t *phi, int64_t *lam);
+ *  |x|, |y| < 2 000 km) in tm->xi, tm->eta -> phi, lam (radians) in the
+ *  same slots; tm->gamma and tm->k are its scratch. No 64-bit argument:
+ *  nothing on the caller's stack for the call. */
+void geo_ups_reverse(bool north, geo_tm_t *tm);
 
 /** UPS angle -> metres (Q47.16). */
 drdc_q47_16_t geo_ups_metres(int64_t a);

@@ -68,34 +68,33 @@ int64_t geo_ups_angle(drdc_q47_16_t v)
   return geo_muldiv(v * INT64_C(1048576), TWO_POW_61, GEO_UPS_K_Q39);
 }
 
-void geo_ups_reverse(drdc_q47_16_t x, drdc_q47_16_t y, bool north,
-                     int64_t *phi, int64_t *lam)
+void geo_ups_reverse(bool north, geo_tm_t *tm)
 {
-  int64_t sc = 0;
-  int64_t cc = 0;
   int64_t t;
 
-  /* the longitude first (x and y are dead after it), the atan2s straight
-   * into the outputs (0 first, as geo_atan2() gives when both arguments
-   * are zero): few values live across the deep calls */
-  if ((x == 0) && (y == 0)) {
+  /* the longitude first, the atan2s straight into the slots (0 first, as
+   * geo_atan2() gives when both arguments are zero): few values live
+   * across the deep calls. x, y wait in tm->xi, tm->eta until the polar
+   * distance, lam in tm->k until then */
+  if ((tm->xi == 0) && (tm->eta == 0)) {
     /* GeographicLib's atan2(+0, -0) at the north pole */
-    *lam = north ? GEO_PI : 0;
+    tm->k = north ? GEO_PI : 0;
   } else {
-    *lam = 0;
-    (void)drdc_fx_atan2_q5_58(x, north ? -y : y, lam);
+    tm->k = 0;
+    (void)drdc_fx_atan2_q5_58(tm->xi, north ? -tm->eta : tm->eta, &tm->k);
   }
   /* the polar distance (hypot of the metres in Q36) and the longitude
    * straight from the exact metres: next to the pole a Q5.58 angle would
    * keep too few bits, and a Q47.16 hypot would cost 7.6 um */
-  t = geo_muldiv((int64_t)drdc_fx_hypot_s64(x * INT64_C(1048576),
-                                            y * INT64_C(1048576)),
+  t = geo_muldiv((int64_t)drdc_fx_hypot_s64(tm->xi * INT64_C(1048576),
+                                            tm->eta * INT64_C(1048576)),
                  TWO_POW_61, GEO_UPS_K_Q39);
-  *phi = 0;
-  (void)drdc_fx_atan2_q5_58(GEO_ONE - geo_mul(t, t), 2 * t, phi);
-  geo_sincos(*phi, &sc, &cc);
-  *phi = *phi + geo_phi_series(sc, cc);
+  tm->eta = tm->k;
+  tm->xi = 0;
+  (void)drdc_fx_atan2_q5_58(GEO_ONE - geo_mul(t, t), 2 * t, &tm->xi);
+  geo_sincos(tm->xi, &tm->gamma, &tm->k);
+  tm->xi = tm->xi + geo_phi_series(tm->gamma, tm->k);
   if (!north) {
-    *phi = -*phi;
+    tm->xi = -tm->xi;
   }
 }

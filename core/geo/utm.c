@@ -117,14 +117,17 @@ static drdc_nas_t central_meridian(int32_t zone)
 }
 
 /* an angle on the sphere of radius k0 A (Q5.58) -> metres (Q28.36,
- * rounded: 2^-36 m = 15 pm, far below the series' own error) */
-static int64_t q36_from_angle(int64_t a)
+ * rounded: 2^-36 m = 15 pm, far below the series' own error). Out of
+ * line, as angle_from_metres(): the third 64-bit argument of
+ * geo_muldiv() goes on the stack of a 32-bit core, so it is in this
+ * small frame, not in the frames that hold the projection's state. */
+static __attribute__((noinline)) int64_t q36_from_angle(int64_t a)
 {
   return geo_muldiv(a, GEO_K0A_Q40, GEO_TWO_POW_62);
 }
 
 /* metres (Q47.16, |v| < 2^43) -> angle on the sphere of radius k0 A */
-static int64_t angle_from_metres(drdc_q47_16_t v)
+static __attribute__((noinline)) int64_t angle_from_metres(drdc_q47_16_t v)
 {
   return geo_muldiv(v * INT64_C(1048576), GEO_TWO_POW_62, GEO_K0A_Q40);
 }
@@ -199,13 +202,11 @@ static drdc_status_t ups_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat,
   if (!ups_in_range(in->north, in->northing)) {
     return DRDC_E_NORTHING;
   }
-  /* phi and lam in tm->xi and tm->eta, where the forward below takes
-   * them */
-  tm->xi = 0;
-  tm->eta = 0;
-  geo_ups_reverse(in->easting - UPS_FALSE_ORIGIN,
-                  in->northing - UPS_FALSE_ORIGIN, in->north, &tm->xi,
-                  &tm->eta);
+  /* the metres in, phi and lam out in tm->xi and tm->eta, where the
+   * forward below takes them */
+  tm->xi = in->easting - UPS_FALSE_ORIGIN;
+  tm->eta = in->northing - UPS_FALSE_ORIGIN;
+  geo_ups_reverse(in->north, tm);
   *lat = geo_nas_from_rad(tm->xi);
   *lon = geo_nas_from_rad(tm->eta);
   if ((convergence != NULL) || (scale != NULL)) {
