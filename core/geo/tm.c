@@ -471,11 +471,14 @@ tm_forward_stages(tm_fwd_t *st, geo_tm_t *out)
     return 0;
   }
   fwd_ratio(st, out);
-  /* the full atan2s write straight into out (0 first, as geo_atan2()
-   * gives when both arguments are zero): no result slot in this frame */
+  /* the full atan2s write straight into out (0 where both arguments
+   * are zero, as geo_atan2() gives): no result slot in this frame. x
+   * waits in out->xi, where the result goes (the atan2 takes it by value
+   * and leaves it, 0, when both are zero), not in registers across the
+   * product */
   if (fwd_xi(st, out) == 0) {
-    out->xi = 0;
-    (void)drdc_fx_atan2_q5_58(st->schi, geo_mul(out->k, st->clam), &out->xi);
+    out->xi = geo_mul(out->k, st->clam);
+    (void)drdc_fx_atan2_q5_58(st->schi, out->xi, &out->xi);
   }
   fwd_series(st, out);
   /* the stages one after the other from this frame, each with few
@@ -562,18 +565,20 @@ static __attribute__((noinline)) void rev_series(geo_tm_t *tm)
  * too, before phi = chi + its series */
 void geo_tm_reverse(geo_tm_t *tm)
 {
-  int64_t shetap;
-
   rev_series(tm);
   geo_sincos(tm->xi, &tm->gamma, &tm->k);
-  shetap = tm_sinh(tm->eta);
-  /* the atan2s write straight into the outputs (0 first, as
-   * geo_atan2() gives when both arguments are zero) */
+  /* xi' is used up: sinh eta', then its root with cos xi', wait in
+   * tm->xi (no value of this frame across the calls) */
+  tm->xi = tm_sinh(tm->eta);
+  /* the atan2s write straight into the outputs (0 where both arguments
+   * are zero, as geo_atan2() gives: first, or the x they take by value
+   * and leave) */
   tm->eta = 0;
-  (void)drdc_fx_atan2_q5_58(shetap, tm->k, &tm->eta);
-  shetap = geo_sqrt(geo_mul(shetap, shetap) + geo_mul(tm->k, tm->k));
-  tm->xi = 0;
-  (void)drdc_fx_atan2_q5_58(tm->gamma, shetap, &tm->xi);
+  (void)drdc_fx_atan2_q5_58(tm->xi, tm->k, &tm->eta);
+  /* a sum of squares: the root never fails (0 for 0, as geo_sqrt()) */
+  tm->xi = geo_mul(tm->xi, tm->xi) + geo_mul(tm->k, tm->k);
+  (void)drdc_fx_sqrt_q5_58(tm->xi, &tm->xi);
+  (void)drdc_fx_atan2_q5_58(tm->gamma, tm->xi, &tm->xi);
   geo_sincos(tm->xi, &tm->gamma, &tm->k);
   tm->xi = tm->xi + geo_phi_series(tm->gamma, tm->k);
 }
