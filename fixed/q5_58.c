@@ -7,6 +7,7 @@
  */
 #include <drdc/fixed_q5_58.h>
 
+#include <stdbool.h>
 #include <stddef.h>
 
 #include <drdc/fixed_arith.h>
@@ -37,16 +38,18 @@ static int64_t mul(int64_t a, int64_t b)
   return ((a < 0) != (b < 0)) ? -(int64_t)m : (int64_t)m;
 }
 
-/* a 2^58 / b, rounded (ties away from zero); 0 when the quotient
- * overflows, given b != 0 and rcp = drdc_fx_reciprocal_3by2() of |b|
- * normalised: fx_div_round_u128() of |a| 2^58 by |b| with the sign, bit
- * for bit. A leaf, out of line, so that its registers are saved under no
- * call (#3: worst-case stack). */
-static __attribute__((noinline)) int64_t quotient_rcp(int64_t a, int64_t b,
-                                                      uint32_t rcp)
+/* floor or rounded |a| 2^58 / |b| (ties away from zero) from the
+ * magnitudes ma = |a|, mb = |b| != 0 and rcp = drdc_fx_reciprocal_3by2()
+ * of mb normalised: fx_div_round_u128() of ma 2^58 by mb, bit for bit;
+ * UINT64_MAX when the quotient does not fit 64 bits (no quotient of
+ * interest is that large: the callers take anything above 2^63 as an
+ * overflow). A leaf on magnitudes, out of line, so that its registers are
+ * saved under no call and the signs wait in the caller (#3, #8:
+ * worst-case stack). */
+static __attribute__((noinline)) uint64_t quotient_mag(uint64_t ma,
+                                                       uint64_t mb,
+                                                       uint32_t rcp)
 {
-  uint64_t ma = fx_abs64(a);
-  uint64_t mb = fx_abs64(b);
   unsigned s;
   unsigned back;
   uint64_t v;
@@ -56,7 +59,7 @@ static __attribute__((noinline)) int64_t quotient_rcp(int64_t a, int64_t b,
   uint64_t q;
 
   if ((ma >> 6) >= mb) {
-    return 0; /* quotient >= 2^64 */
+    return UINT64_MAX; /* quotient >= 2^64 */
   }
   s = (unsigned)__builtin_clzll(mb);
   back = 64u - s;
@@ -73,17 +76,10 @@ static __attribute__((noinline)) int64_t quotient_rcp(int64_t a, int64_t b,
   q |= drdc_fx_div_3by2((uint32_t)(r >> 32), (uint32_t)r, (uint32_t)un10, v,
                         rcp, &r);
   r = r >> s;
-  if (r >= (mb - r)) {
-    if (q == UINT64_MAX) {
-      return 0;
-    }
+  if ((r >= (mb - r)) && (q != UINT64_MAX)) {
     q++;
   }
-  if ((a != 0) && ((a < 0) != (b < 0))) {
-    return (q > (UINT64_C(1) << 63)) ? 0
-           : ((q == (UINT64_C(1) << 63)) ? (-INT64_MAX - 1) : -(int64_t)q);
-  }
-  return (q > (uint64_t)INT64_MAX) ? 0 : (int64_t)q;
+  return q;
 }
 
 /* a 2^58 / b, rounded (ties away from zero); 0 when b == 0 or the
@@ -93,19 +89,39 @@ static __attribute__((noinline)) int64_t quotient_rcp(int64_t a, int64_t b,
 static inline int64_t quotient(int64_t a, int64_t b)
 {
   uint64_t v;
+  uint64_t q;
 
   if (b == 0) {
     return 0;
   }
   v = fx_abs64(b) << (unsigned)__builtin_clzll(fx_abs64(b));
-  return quotient_rcp(
-      a, b, drdc_fx_reciprocal_3by2((uint32_t)(v >> 32), (uint32_t)v));
+  q = quotient_mag(fx_abs64(a), fx_abs64(b),
+                   drdc_fx_reciprocal_3by2((uint32_t)(v >> 32), (uint32_t)v));
+  if ((a != 0) && ((a < 0) != (b < 0))) {
+    return (q > (UINT64_C(1) << 63)) ? 0
+           : ((q == (UINT64_C(1) << 63)) ? (-INT64_MAX - 1) : -(int64_t)q);
+  }
+  return (q > (uint64_t)INT64_MAX) ? 0 : (int64_t)q;
+}
+
+/* quotient() for a >= 0 and b > 0 (Newton's steps of the root): no
+ * signs to keep across the calls */
+static inline int64_t quotient_pos(int64_t a, int64_t b)
+{
+  uint64_t v = (uint64_t)b << (unsigned)__builtin_clzll((uint64_t)b);
+  uint64_t q = quotient_mag((uint64_t)a, (uint64_t)b,
+                            drdc_fx_reciprocal_3by2((uint32_t)(v >> 32),
+                                                    (uint32_t)v));
+
+  return (q > (uint64_t)INT64_MAX) ? 0 : (int64_t)q;
 }
 
 drdc_status_t drdc_fx_div_q5_58(drdc_q5_58_t a, drdc_q5_58_t b,
                                 drdc_q5_58_t *out)
 {
-  int64_t r;
+  uint64_t v;
+  uint64_t q;
+  bool negative;
 
   if (out == NULL) {
     return DRDC_E_NULL;
@@ -113,15 +129,29 @@ drdc_status_t drdc_fx_div_q5_58(drdc_q5_58_t a, drdc_q5_58_t b,
   if (b == 0) {
     return DRDC_E_DIVIDE_BY_ZERO;
   }
-  /* quotient() gives 0 exactly when the quotient is 0 or
-   * overflows: the overflow is told apart by a non-zero dividend
-   * (|a / b| >= 2^-59 rounds to at least 1 LSB unless |a| < |b| / 2^59) */
-  r = quotient(a, b);
-  if ((r == 0) && (fx_abs64(a) > (fx_abs64(b) >> 59))) {
+  /* quotient() without its zero for an overflow: the magnitude tells it
+   * (2^63 fits only when negative), and only the sign waits across the
+   * calls */
+  negative = ((a < 0) != (b < 0));
+  v = fx_abs64(b) << (unsigned)__builtin_clzll(fx_abs64(b));
+  q = quotient_mag(fx_abs64(a), fx_abs64(b),
+                   drdc_fx_reciprocal_3by2((uint32_t)(v >> 32), (uint32_t)v));
+  if (q > (negative ? (UINT64_C(1) << 63) : (uint64_t)INT64_MAX)) {
     return DRDC_E_OVERFLOW;
   }
-  *out = r;
+  if (!negative) {
+    *out = (int64_t)q;
+  } else if (q == (UINT64_C(1) << 63)) {
+    *out = -INT64_MAX - 1;
+  } else {
+    *out = -(int64_t)q;
+  }
   return DRDC_OK;
+}
+
+drdc_q5_58_t drdc_fx_div_q5_58_unchecked(drdc_q5_58_t a, drdc_q5_58_t b)
+{
+  return quotient(a, b);
 }
 
 /* sin and cos of x (Q5.58 radians, |x| <= 16): the body of
@@ -305,8 +335,8 @@ drdc_status_t drdc_fx_sqrt_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
   /* Newton: each step squares the relative error; the rounded integer
    * root is within 2^-15 relative for v >= 2^28, so two steps reach
    * 2^-60 */
-  y = drdc_fx_rshift_round_s64_inline(y + quotient(v, y), 1u);
-  y = drdc_fx_rshift_round_s64_inline(y + quotient(v, y), 1u);
+  y = drdc_fx_rshift_round_s64_inline(y + quotient_pos(v, y), 1u);
+  y = drdc_fx_rshift_round_s64_inline(y + quotient_pos(v, y), 1u);
   *out = (k == 0u) ? y : drdc_fx_rshift_round_s64_inline(y, k);
   return DRDC_OK;
 }

@@ -66,12 +66,11 @@ int64_t geo_mul(int64_t a, int64_t b);
  *  callers keep it so, so it never fails. Inline: an out-of-line wrapper
  *  would put its own frame (32 bytes) on top of drdc_fx_div_q5_58()'s on
  *  the deepest chains of the projections (issue 8's stack goal). */
+/* the quotient in registers (no result slot in the caller's frame); 0
+ * where drdc_fx_div_q5_58() fails, as before */
 static inline int64_t geo_div(int64_t a, int64_t b)
 {
-  int64_t r = 0;
-
-  (void)drdc_fx_div_q5_58(a, b, &r);
-  return r;
+  return drdc_fx_div_q5_58_unchecked(a, b);
 }
 
 /** a b / c, rounded; c != 0 and the quotient within int64_t. */
@@ -123,10 +122,12 @@ typedef struct geo_tm {
 /**
  * Transverse Mercator (Krueger series, 6th order) of latitude phi and
  * longitude from the central meridian lam (radians, |phi| <= pi/2,
- * |lam| <= pi/2). Returns 0 when the point is beyond the series' domain
- * (cos(chi) |sin(lam)| > tanh(0.34)), else 1 with *out written.
+ * |lam| <= pi/2) in out->xi, out->eta (the arguments in the struct: no
+ * caller holds outgoing stack arguments). Returns 0 when the point is
+ * beyond the series' domain (cos(chi) |sin(lam)| > tanh(0.34)), else 1
+ * with *out written.
  */
-int geo_tm_forward(int64_t phi, int64_t lam, geo_tm_t *out);
+int geo_tm_forward(geo_tm_t *out);
 
 /** 2^62, the divisor that takes k0 A (Q40) times an angle (Q58) to
  *  metres in Q36. */
@@ -138,8 +139,10 @@ int geo_tm_forward(int64_t phi, int64_t lam, geo_tm_t *out);
  *  geo_muldiv()), so that no wrapper frame is on its chain. */
 drdc_q47_16_t geo_metres_from_angle(int64_t a);
 
-/** Inverse of geo_tm_forward(): xi, eta (|eta| <= 0.34) -> phi, lam. */
-void geo_tm_reverse(int64_t xi, int64_t eta, int64_t *phi, int64_t *lam);
+/** Inverse of geo_tm_forward(): xi, eta (|eta| <= 0.34) in tm->xi,
+ *  tm->eta -> phi, lam in the same slots; tm->gamma and tm->k are its scratch (one struct of
+ *  the caller's frame holds every intermediate the stages share). */
+void geo_tm_reverse(geo_tm_t *tm);
 
 /** cos(chi) / cos(phi) from s = sin(phi), well conditioned up to the
  *  poles: 2 E / ((1 + s) + (1 - s) E^2) with E = exp(e atanh(e s)). */
@@ -163,19 +166,23 @@ static inline int64_t geo_phi_series(int64_t schi, int64_t cchi)
 }
 
 /**
- * Polar stereographic (UPS, k0 = 0.994) of phi, lam (radians) on the
- * north or south sheet: x, y as angles of the sphere of radius
- * 2 k0 a / c (geo_ups_metres() makes metres), convergence gamma
- * (radians) and scale k. Returns 0 (outputs unchanged) when the point is
- * too far on the other hemisphere (sin chi < -0.9), else 1.
+ * Polar stereographic (UPS, k0 = 0.994) of phi, lam (radians, in out->xi,
+ * out->eta as geo_tm_forward() takes them) on the north or south sheet
+ * into out: x, y (out->xi, out->eta) as angles of
+ * the sphere of radius 2 k0 a / c (geo_ups_metres() makes metres),
+ * convergence out->gamma (radians) and scale out->k; one pointer, so that
+ * no caller's frame holds outgoing arguments for four. Returns 0 when the
+ * point is too far on the other hemisphere (sin chi < -0.9), else 1; out
+ * is its scratch (it holds intermediate values after 0: the callers pass
+ * scratch).
  */
-int geo_ups_forward(int64_t phi, int64_t lam, bool north, int64_t *x,
-                    int64_t *y, int64_t *gamma, int64_t *k);
+int geo_ups_forward(bool north, geo_tm_t *out);
 
 /** Inverse of geo_ups_forward(): x, y from the pole in metres (Q47.16,
- *  |x|, |y| < 2 000 km) -> phi, lam (radians). */
-void geo_ups_reverse(drdc_q47_16_t x, drdc_q47_16_t y, bool north,
-                     int64_t *phi, int64_t *lam);
+ *  |x|, |y| < 2 000 km) in tm->xi, tm->eta -> phi, lam (radians) in the
+ *  same slots; tm->gamma and tm->k are its scratch. No 64-bit argument:
+ *  nothing on the caller's stack for the call. */
+void geo_ups_reverse(bool north, geo_tm_t *tm);
 
 /** UPS angle -> metres (Q47.16). */
 drdc_q47_16_t geo_ups_metres(int64_t a);

@@ -20,8 +20,9 @@
  */
 #include "geo_impl.h"
 
-/* the product of the inner loops, inlined (one copy per loop); the rest
- * call geo_mul(), the same bits */
+/* the product of the series' Horner and sine loops, inlined (one copy
+ * per loop); the rest, the complex recurrence included, call geo_mul(),
+ * the same bits */
 static inline int64_t tm_mul(int64_t a, int64_t b)
 {
   return drdc_fx_mul_q5_58_unchecked(a, b);
@@ -97,7 +98,11 @@ zeta_set(tm_zeta_t *z, int64_t *sr, int64_t *si)
  * pointer of its own: the compiler cannot tell that the stores to z's
  * slots leave it unchanged, so it reads A = 2 cos 2 zeta at each product
  * instead of holding it in four registers across the loop (which a
- * 32-bit core spills: 16 bytes more frame on either target). */
+ * 32-bit core spills: 16 bytes more frame on either target). Its
+ * products call geo_mul(): four inline 64 x 64-bit products per step
+ * held 80 bytes of frame on Cortex-M3, the calls 40 + 12 (2 %
+ * of drdc_geo_to_utm()'s cycles on PowerPC, the library 1 KB smaller:
+ * the loops of horner() are no longer inlined into each series). */
 static __attribute__((noinline)) void clenshaw(const int64_t *coef,
                                                bool deriv, tm_zeta_t *z,
                                                const int64_t c2[2])
@@ -114,10 +119,10 @@ static __attribute__((noinline)) void clenshaw(const int64_t *coef,
 
     /* the new b_j into the b_(j+2) slots one product at a time, then
      * the slots swapped */
-    z->r2 = (c - z->r2) + tm_mul(2 * c2[0], z->r1);
-    z->r2 = z->r2 - tm_mul(2 * c2[1], z->i1);
-    z->i2 = tm_mul(2 * c2[0], z->i1) - z->i2;
-    z->i2 = z->i2 + tm_mul(2 * c2[1], z->r1);
+    z->r2 = (c - z->r2) + geo_mul(2 * c2[0], z->r1);
+    z->r2 = z->r2 - geo_mul(2 * c2[1], z->i1);
+    z->i2 = geo_mul(2 * c2[0], z->i1) - z->i2;
+    z->i2 = z->i2 + geo_mul(2 * c2[1], z->r1);
     t = z->r1;
     z->r1 = z->r2;
     z->r2 = t;
@@ -305,12 +310,11 @@ typedef struct tm_fwd {
   int64_t ch;    /* cosh eta' */
 } tm_fwd_t;
 
-/* chi and the sphere's eta': out->xi = chi (xi' - chi is added by
- * fwd_xi()), out->eta = eta', out->k = cos chi, out->gamma = sinh eta',
- * st->ratio = cos phi (fwd_ratio() divides); 0 beyond the series'
- * domain */
-static __attribute__((noinline)) int fwd_sphere(int64_t phi, int64_t lam,
-                                                tm_fwd_t *st, geo_tm_t *out)
+/* chi and the sphere's eta' from phi, lam in out->xi, out->eta: out->xi
+ * = chi (xi' - chi is added by fwd_xi()), out->eta = eta', out->k = cos
+ * chi, out->gamma = sinh eta', st->ratio = cos phi (fwd_ratio()
+ * divides); 0 beyond the series' domain */
+static __attribute__((noinline)) int fwd_sphere(tm_fwd_t *st, geo_tm_t *out)
 {
   int64_t chi;
   int64_t tanh_eta;
@@ -318,9 +322,8 @@ static __attribute__((noinline)) int fwd_sphere(int64_t phi, int64_t lam,
   /* sin phi and cos phi wait in out->eta and out->gamma (free until
    * eta' and sinh eta' are known), phi in out->xi: only chi, then
    * tanh eta', is live in this frame across a call */
-  out->xi = phi;
-  geo_sincos(lam, &st->slam, &st->clam);
-  geo_sincos(phi, &out->eta, &out->gamma);
+  geo_sincos(out->eta, &st->slam, &st->clam);
+  geo_sincos(out->xi, &out->eta, &out->gamma);
   chi = geo_chi_series(out->eta, out->gamma);
   out->xi = out->xi + chi;
   rotate_small(out->eta, out->gamma, chi, &st->schi, &out->k);
@@ -416,12 +419,16 @@ static __attribute__((noinline)) void fwd_scale(const tm_fwd_t *st,
                                     + geo_mul(out->k, out->k))
               - GEO_ONE;
 
+  /* the root into out->k (0 first, as geo_sqrt() gives on failure): no
+   * result slot in this frame */
   if ((p <= TM_SQRT_MAX) && (p >= -TM_SQRT_MAX)) {
-    p = tm_sqrt1p(p);
+    out->k = tm_sqrt1p(p);
   } else {
-    p = geo_sqrt(GEO_ONE + p);
+    out->k = 0;
+    (void)drdc_fx_sqrt_q5_58(GEO_ONE + p, &out->k);
   }
-  out->k = geo_mul(GEO_K0A_OVER_A, geo_mul(geo_mul(p, st->ratio), st->ch));
+  out->k = geo_mul(GEO_K0A_OVER_A,
+                   geo_mul(geo_mul(out->k, st->ratio), st->ch));
 }
 
 /* the convergence's atan2(y, x) arguments into st->slam, st->clam (no
@@ -458,17 +465,20 @@ static __attribute__((noinline)) int fwd_gamma(const tm_fwd_t *st,
  * (inline, so that no frame of its own lies between the caller and the
  * stages) */
 static inline __attribute__((always_inline)) int
-tm_forward_stages(int64_t phi, int64_t lam, tm_fwd_t *st, geo_tm_t *out)
+tm_forward_stages(tm_fwd_t *st, geo_tm_t *out)
 {
-  if (fwd_sphere(phi, lam, st, out) == 0) {
+  if (fwd_sphere(st, out) == 0) {
     return 0;
   }
   fwd_ratio(st, out);
-  /* the full atan2s write straight into out (0 first, as geo_atan2()
-   * gives when both arguments are zero): no result slot in this frame */
+  /* the full atan2s write straight into out (0 where both arguments
+   * are zero, as geo_atan2() gives): no result slot in this frame. x
+   * waits in out->xi, where the result goes (the atan2 takes it by value
+   * and leaves it, 0, when both are zero), not in registers across the
+   * product */
   if (fwd_xi(st, out) == 0) {
-    out->xi = 0;
-    (void)drdc_fx_atan2_q5_58(st->schi, geo_mul(out->k, st->clam), &out->xi);
+    out->xi = geo_mul(out->k, st->clam);
+    (void)drdc_fx_atan2_q5_58(st->schi, out->xi, &out->xi);
   }
   fwd_series(st, out);
   /* the stages one after the other from this frame, each with few
@@ -482,11 +492,11 @@ tm_forward_stages(int64_t phi, int64_t lam, tm_fwd_t *st, geo_tm_t *out)
   return 1;
 }
 
-int geo_tm_forward(int64_t phi, int64_t lam, geo_tm_t *out)
+int geo_tm_forward(geo_tm_t *out)
 {
   tm_fwd_t st;
 
-  return tm_forward_stages(phi, lam, &st, out);
+  return tm_forward_stages(&st, out);
 }
 
 /* Here rather than in utm.c: the stages run from this frame, which holds
@@ -510,9 +520,9 @@ drdc_status_t drdc_geo_tm_forward(drdc_nas_t lat, drdc_nas_t dlon,
   if ((dlon > (90 * GEO_NAS_DEG)) || (dlon < (-90 * GEO_NAS_DEG))) {
     return DRDC_E_LONGITUDE;
   }
-  if (tm_forward_stages(geo_rad_from_nas(lat), geo_rad_from_nas(dlon), &st,
-                        &tm)
-      == 0) {
+  tm.xi = geo_rad_from_nas(lat);
+  tm.eta = geo_rad_from_nas(dlon);
+  if (tm_forward_stages(&st, &tm) == 0) {
     return DRDC_E_RANGE;
   }
   *x = geo_metres_from_angle(tm.eta);
@@ -526,50 +536,49 @@ drdc_status_t drdc_geo_tm_forward(drdc_nas_t lat, drdc_nas_t dlon,
   return DRDC_OK;
 }
 
-/* xi' + i eta' = zeta - Krueger's beta series at zeta = xi + i eta,
- * into *xip, *etap (the caller's outputs, its scratch until the end) */
-static __attribute__((noinline)) void rev_series(int64_t xi, int64_t eta,
-                                                 int64_t *xip, int64_t *etap)
+/* xi' + i eta' = zeta - Krueger's beta series at zeta = xi + i eta
+ * (in tm->xi, tm->eta), into tm->xi, tm->eta (the caller's outputs, its
+ * scratch until the end); sin 2 zeta and then the sum wait in tm->gamma, tm->k, free until
+ * the caller's forward: no slot of this frame has its address taken but
+ * the recurrence's */
+static __attribute__((noinline)) void rev_series(geo_tm_t *tm)
 {
   tm_zeta_t z;
-  int64_t sr;
-  int64_t si;
 
-  *xip = xi;
-  *etap = eta;
-  geo_sincos(2 * xi, &z.r1, &z.i1);
+  geo_sincos(2 * tm->xi, &z.r1, &z.i1);
   /* sinh and cosh of 2 eta from the series of sinh and cosh of eta
    * (|eta| <= 0.08 from the eastings' range): no exponential */
-  z.r2 = tm_sinh(eta);
-  z.i2 = tm_cosh(*etap);
+  z.r2 = tm_sinh(tm->eta);
+  z.i2 = tm_cosh(tm->eta);
   z.c2[0] = 2 * geo_mul(z.r2, z.i2);
   z.i2 = geo_mul(z.i2, z.i2) + geo_mul(z.r2, z.r2);
   z.r2 = z.c2[0];
-  zeta_set(&z, &sr, &si);
+  zeta_set(&z, &tm->gamma, &tm->k);
   clenshaw(geo_beta, false, &z, z.c2);
-  krueger_sum(&z, &sr, &si);
-  *xip = *xip - sr;
-  *etap = *etap - si;
+  krueger_sum(&z, &tm->gamma, &tm->k);
+  tm->xi = tm->xi - tm->gamma;
+  tm->eta = tm->eta - tm->k;
 }
 
-/* xi', eta' wait in *phi, *lam; chi = atan2(sin xi', sqrt(sinh^2 eta' +
- * cos^2 xi')) too, before phi = chi + its series */
-void geo_tm_reverse(int64_t xi, int64_t eta, int64_t *phi, int64_t *lam)
+/* xi', eta' wait in tm->xi, tm->eta, sin xi' and cos xi' in tm->gamma,
+ * tm->k; chi = atan2(sin xi', sqrt(sinh^2 eta' + cos^2 xi')) in tm->xi
+ * too, before phi = chi + its series */
+void geo_tm_reverse(geo_tm_t *tm)
 {
-  int64_t sxip = 0;
-  int64_t cxip = 0;
-  int64_t shetap;
-
-  rev_series(xi, eta, phi, lam);
-  geo_sincos(*phi, &sxip, &cxip);
-  shetap = tm_sinh(*lam);
-  /* the atan2s write straight into the outputs (0 first, as
-   * geo_atan2() gives when both arguments are zero) */
-  *lam = 0;
-  (void)drdc_fx_atan2_q5_58(shetap, cxip, lam);
-  shetap = geo_sqrt(geo_mul(shetap, shetap) + geo_mul(cxip, cxip));
-  *phi = 0;
-  (void)drdc_fx_atan2_q5_58(sxip, shetap, phi);
-  geo_sincos(*phi, &sxip, &cxip);
-  *phi = *phi + geo_phi_series(sxip, cxip);
+  rev_series(tm);
+  geo_sincos(tm->xi, &tm->gamma, &tm->k);
+  /* xi' is used up: sinh eta', then its root with cos xi', wait in
+   * tm->xi (no value of this frame across the calls) */
+  tm->xi = tm_sinh(tm->eta);
+  /* the atan2s write straight into the outputs (0 where both arguments
+   * are zero, as geo_atan2() gives: first, or the x they take by value
+   * and leave) */
+  tm->eta = 0;
+  (void)drdc_fx_atan2_q5_58(tm->xi, tm->k, &tm->eta);
+  /* a sum of squares: the root never fails (0 for 0, as geo_sqrt()) */
+  tm->xi = geo_mul(tm->xi, tm->xi) + geo_mul(tm->k, tm->k);
+  (void)drdc_fx_sqrt_q5_58(tm->xi, &tm->xi);
+  (void)drdc_fx_atan2_q5_58(tm->gamma, tm->xi, &tm->xi);
+  geo_sincos(tm->xi, &tm->gamma, &tm->k);
+  tm->xi = tm->xi + geo_phi_series(tm->gamma, tm->k);
 }

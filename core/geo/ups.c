@@ -23,32 +23,33 @@
  *  the UPS ranges end near chi = 65 degrees). */
 #define UPS_MIN_SIN_CHI (-GEO_ONE + (GEO_ONE / 10))
 
-int geo_ups_forward(int64_t phi, int64_t lam, bool north, int64_t *x,
-                    int64_t *y, int64_t *gamma, int64_t *k)
+int geo_ups_forward(bool north, geo_tm_t *out)
 {
-  int64_t p = north ? phi : -phi;
-  int64_t sphi = 0;
-  int64_t cphi = 0;
-  int64_t schi = 0;
-  int64_t cchi = 0;
+  int64_t p = north ? out->xi : -out->xi;
   int64_t t;
 
-  geo_sincos(p, &sphi, &cphi);
-  p = p + geo_chi_series(sphi, cphi);
-  geo_sincos(p, &schi, &cchi);
-  if (schi < UPS_MIN_SIN_CHI) {
+  /* out is the scratch from the start (the callers' own scratch, which
+   * they drop on 0): sin phi in out->xi until the scale's root, cos phi
+   * and then chi in out->eta, the convergence's lam in out->gamma, the
+   * scale's factors in out->k; only p, then t, is live across a call in
+   * this frame */
+  out->gamma = north ? out->eta : -out->eta;
+  geo_sincos(p, &out->xi, &out->eta);
+  out->eta = p + geo_chi_series(out->xi, out->eta);
+  out->k = geo_mul(GEO_UPS_2K0_OVER_C, geo_cos_ratio(out->xi));
+  out->k = geo_mul(out->k, geo_sqrt(GEO_ONE - geo_mul(GEO_E2,
+                                                      geo_mul(out->xi,
+                                                              out->xi))));
+  geo_sincos(out->eta, &out->xi, &out->eta); /* sin chi, cos chi */
+  if (out->xi < UPS_MIN_SIN_CHI) {
     return 0;
   }
-  /* from here the outputs are the scratch (sin and cos lam in *y and *k
-   * until x and y are made): few int64_t live across each call */
-  *gamma = north ? lam : -lam;
-  t = geo_div(cchi, GEO_ONE + schi);
-  geo_sincos(lam, y, k);
-  *x = geo_mul(t, *y);
-  *y = north ? -geo_mul(t, *k) : geo_mul(t, *k);
-  *k = geo_sqrt(GEO_ONE - geo_mul(GEO_E2, geo_mul(sphi, sphi)));
-  *k = geo_div(geo_mul(geo_mul(GEO_UPS_2K0_OVER_C, geo_cos_ratio(sphi)), *k),
-               GEO_ONE + schi);
+  out->k = geo_div(out->k, GEO_ONE + out->xi);
+  t = geo_div(out->eta, GEO_ONE + out->xi);
+  /* sin lam, cos lam */
+  geo_sincos(north ? out->gamma : -out->gamma, &out->xi, &out->eta);
+  out->xi = geo_mul(t, out->xi);
+  out->eta = north ? -geo_mul(t, out->eta) : geo_mul(t, out->eta);
   return 1;
 }
 
@@ -67,34 +68,33 @@ int64_t geo_ups_angle(drdc_q47_16_t v)
   return geo_muldiv(v * INT64_C(1048576), TWO_POW_61, GEO_UPS_K_Q39);
 }
 
-void geo_ups_reverse(drdc_q47_16_t x, drdc_q47_16_t y, bool north,
-                     int64_t *phi, int64_t *lam)
+void geo_ups_reverse(bool north, geo_tm_t *tm)
 {
-  int64_t sc = 0;
-  int64_t cc = 0;
   int64_t t;
 
-  /* the longitude first (x and y are dead after it), the atan2s straight
-   * into the outputs (0 first, as geo_atan2() gives when both arguments
-   * are zero): few values live across the deep calls */
-  if ((x == 0) && (y == 0)) {
+  /* the longitude first, the atan2s straight into the slots (0 first, as
+   * geo_atan2() gives when both arguments are zero): few values live
+   * across the deep calls. x, y wait in tm->xi, tm->eta until the polar
+   * distance, lam in tm->k until then */
+  if ((tm->xi == 0) && (tm->eta == 0)) {
     /* GeographicLib's atan2(+0, -0) at the north pole */
-    *lam = north ? GEO_PI : 0;
+    tm->k = north ? GEO_PI : 0;
   } else {
-    *lam = 0;
-    (void)drdc_fx_atan2_q5_58(x, north ? -y : y, lam);
+    tm->k = 0;
+    (void)drdc_fx_atan2_q5_58(tm->xi, north ? -tm->eta : tm->eta, &tm->k);
   }
   /* the polar distance (hypot of the metres in Q36) and the longitude
    * straight from the exact metres: next to the pole a Q5.58 angle would
    * keep too few bits, and a Q47.16 hypot would cost 7.6 um */
-  t = geo_muldiv((int64_t)drdc_fx_hypot_s64(x * INT64_C(1048576),
-                                            y * INT64_C(1048576)),
+  t = geo_muldiv((int64_t)drdc_fx_hypot_s64(tm->xi * INT64_C(1048576),
+                                            tm->eta * INT64_C(1048576)),
                  TWO_POW_61, GEO_UPS_K_Q39);
-  *phi = 0;
-  (void)drdc_fx_atan2_q5_58(GEO_ONE - geo_mul(t, t), 2 * t, phi);
-  geo_sincos(*phi, &sc, &cc);
-  *phi = *phi + geo_phi_series(sc, cc);
+  tm->eta = tm->k;
+  tm->xi = 0;
+  (void)drdc_fx_atan2_q5_58(GEO_ONE - geo_mul(t, t), 2 * t, &tm->xi);
+  geo_sincos(tm->xi, &tm->gamma, &tm->k);
+  tm->xi = tm->xi + geo_phi_series(tm->gamma, tm->k);
   if (!north) {
-    *phi = -*phi;
+    tm->xi = -tm->xi;
   }
 }

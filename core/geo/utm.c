@@ -117,14 +117,17 @@ static drdc_nas_t central_meridian(int32_t zone)
 }
 
 /* an angle on the sphere of radius k0 A (Q5.58) -> metres (Q28.36,
- * rounded: 2^-36 m = 15 pm, far below the series' own error) */
-static int64_t q36_from_angle(int64_t a)
+ * rounded: 2^-36 m = 15 pm, far below the series' own error). Out of
+ * line, as angle_from_metres(): the third 64-bit argument of
+ * geo_muldiv() goes on the stack of a 32-bit core, so it is in this
+ * small frame, not in the frames that hold the projection's state. */
+static __attribute__((noinline)) int64_t q36_from_angle(int64_t a)
 {
   return geo_muldiv(a, GEO_K0A_Q40, GEO_TWO_POW_62);
 }
 
 /* metres (Q47.16, |v| < 2^43) -> angle on the sphere of radius k0 A */
-static int64_t angle_from_metres(drdc_q47_16_t v)
+static __attribute__((noinline)) int64_t angle_from_metres(drdc_q47_16_t v)
 {
   return geo_muldiv(v * INT64_C(1048576), GEO_TWO_POW_62, GEO_K0A_Q40);
 }
@@ -136,8 +139,9 @@ static inline drdc_status_t tm_forward_nas(drdc_nas_t lat, drdc_nas_t dlon,
   if ((dlon > (90 * GEO_NAS_DEG)) || (dlon < (-90 * GEO_NAS_DEG))) {
     return DRDC_E_RANGE;
   }
-  if (geo_tm_forward(geo_rad_from_nas(lat), geo_rad_from_nas(dlon), tm)
-      == 0) {
+  tm->xi = geo_rad_from_nas(lat);
+  tm->eta = geo_rad_from_nas(dlon);
+  if (geo_tm_forward(tm) == 0) {
     return DRDC_E_RANGE;
   }
   return DRDC_OK;
@@ -161,9 +165,9 @@ static drdc_status_t ups_forward(drdc_nas_t lat, drdc_nas_t lon, bool fine,
   drdc_q47_16_t e;
   drdc_q47_16_t n;
 
-  if (geo_ups_forward(geo_rad_from_nas(lat),
-                      geo_rad_from_nas(lon_normalize(lon)), north, &tm->xi,
-                      &tm->eta, &tm->gamma, &tm->k) == 0) {
+  tm->xi = geo_rad_from_nas(lat);
+  tm->eta = geo_rad_from_nas(lon_normalize(lon));
+  if (geo_ups_forward(north, tm) == 0) {
     return DRDC_E_RANGE;
   }
   /* Q28.36 offsets in tm's slots; the Q47.16 metres for the checks */
@@ -198,21 +202,16 @@ static drdc_status_t ups_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat,
   if (!ups_in_range(in->north, in->northing)) {
     return DRDC_E_NORTHING;
   }
-  /* phi and lam in tm->gamma and tm->k until the forward below */
-  tm->gamma = 0;
-  tm->k = 0;
-  geo_ups_reverse(in->easting - UPS_FALSE_ORIGIN,
-                  in->northing - UPS_FALSE_ORIGIN, in->north, &tm->gamma,
-                  &tm->k);
-  *lat = geo_nas_from_rad(tm->gamma);
-  *lon = geo_nas_from_rad(tm->k);
+  /* the metres in, phi and lam out in tm->xi and tm->eta, where the
+   * forward below takes them */
+  tm->xi = in->easting - UPS_FALSE_ORIGIN;
+  tm->eta = in->northing - UPS_FALSE_ORIGIN;
+  geo_ups_reverse(in->north, tm);
+  *lat = geo_nas_from_rad(tm->xi);
+  *lon = geo_nas_from_rad(tm->eta);
   if ((convergence != NULL) || (scale != NULL)) {
-    int64_t phi = tm->gamma;
-    int64_t lam = tm->k;
-
     /* within the UPS ranges sin chi > 0.5: never fails */
-    (void)geo_ups_forward(phi, lam, in->north, &tm->xi, &tm->eta,
-                          &tm->gamma, &tm->k);
+    (void)geo_ups_forward(in->north, tm);
     if (convergence != NULL) {
       *convergence = geo_nas_from_rad(tm->gamma);
     }
@@ -329,20 +328,17 @@ drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
                    || (in->northing > UTM_N_SOUTH_MAX))) {
     return DRDC_E_NORTHING;
   }
-  tm.xi = 0;
-  tm.eta = 0;
-  geo_tm_reverse(angle_from_metres(in->north
-                                       ? in->northing
-                                       : (in->northing
-                                          - UTM_FALSE_NORTHING_SOUTH)),
-                 angle_from_metres(in->easting - UTM_FALSE_EASTING), &tm.xi,
-                 &tm.eta);
+  tm.xi = angle_from_metres(in->north ? in->northing
+                                      : (in->northing
+                                         - UTM_FALSE_NORTHING_SOUTH));
+  tm.eta = angle_from_metres(in->easting - UTM_FALSE_EASTING);
+  geo_tm_reverse(&tm);
   *lat = geo_nas_from_rad(tm.xi);
   *lon = lon_normalize(central_meridian(in->zone)
                        + geo_nas_from_rad(tm.eta));
   if ((convergence != NULL) || (scale != NULL)) {
     /* in the range checked above |dlon| < 30 degrees: never fails */
-    (void)geo_tm_forward(tm.xi, tm.eta, &tm);
+    (void)geo_tm_forward(&tm);
     if (convergence != NULL) {
       *convergence = geo_nas_from_rad(tm.gamma);
     }

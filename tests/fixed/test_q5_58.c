@@ -167,6 +167,23 @@ static void test_mul_and_div_ties(void)
   TEST_ASSERT_EQUAL_INT64(-1, r);
 }
 
+/* the quotient without status: every stored quotient that fits, bit for
+ * bit, and 0 where drdc_fx_div_q5_58() fails */
+static void test_div_unchecked_exact(void)
+{
+  size_t i;
+
+  for (i = 0; i < COUNT(q5_58_div_vectors); i++) {
+    const struct q5_58_pair_vector *v = &q5_58_div_vectors[i];
+
+    TEST_ASSERT_EQUAL_INT64((v->fits != 0) ? v->want : 0,
+                            drdc_fx_div_q5_58_unchecked(v->a, v->b));
+  }
+  TEST_ASSERT_EQUAL_INT64(-1,
+                          drdc_fx_div_q5_58_unchecked(-1, INT64_C(1) << 59));
+  TEST_ASSERT_EQUAL_INT64(0, drdc_fx_div_q5_58_unchecked(1, 0));
+}
+
 /* the inline product without status: every stored product that fits,
  * against mpmath (the same vectors as drdc_fx_mul_q5_58()), and the
  * named ties */
@@ -242,6 +259,7 @@ void suite_fixed_q5_58(void)
   RUN_TEST(test_mul_and_div_exact);
   RUN_TEST(test_mul_and_div_ties);
   RUN_TEST(test_mul_unchecked_exact);
+  RUN_TEST(test_div_unchecked_exact);
   RUN_TEST(test_drdc_fx_sincos_q5_58_errors);
   RUN_TEST(test_drdc_fx_atan2_q5_58_errors);
   RUN_TEST(test_drdc_fx_sqrt_q5_58_errors);

@@ -124,6 +124,22 @@ drdc_status_t drdc_fx_div_q5_58(drdc_q5_58_t a, drdc_q5_58_t b,
                                 drdc_q5_58_t *out);
 
 /**
+ * Q5.58 quotient a / b without a status, for callers whose bounds are
+ * proven: the same bits as drdc_fx_div_q5_58() whenever that returns
+ * DRDC_OK, and 0 where it fails (b == 0, or |a / b| >= 32).
+ *
+ * @param a dividend, Q5.58.
+ * @param b divisor, Q5.58; the caller guarantees b != 0 and |a / b| < 32.
+ * @return the correctly rounded quotient (ties away from zero), Q5.58.
+ *
+ * Why: the value comes back in registers, so a caller keeps no result
+ * slot in its frame (issue 8's worst-case stack). Accuracy: as
+ * drdc_fx_div_q5_58(); checked bit for bit against it on the stored
+ * quotient vectors (tests/fixed/test_q5_58.c).
+ */
+drdc_q5_58_t drdc_fx_div_q5_58_unchecked(drdc_q5_58_t a, drdc_q5_58_t b);
+
+/**
  * Q5.58 product a b / 2^58 rounded to nearest (ties away from zero),
  * inline and without a status, for inner loops whose bounds are proven:
  * the same bits as drdc_fx_mul_q5_58() whenever that returns DRDC_OK.
