@@ -76,6 +76,12 @@ static inline int64_t geo_div(int64_t a, int64_t b)
 /** a b / c, rounded; c != 0 and the quotient within int64_t. */
 int64_t geo_muldiv(int64_t a, int64_t b, int64_t c);
 
+/** a b / 2^n rounded to nearest, ties away from zero: the bits of
+ *  geo_muldiv(a, b, 2^n) for b > 0, 0 < n < 64, the quotient within
+ *  int64_t. A product and a shift, no 128-bit division: a small frame
+ *  with no chain under it (issue 8's stack) and fewer cycles. */
+int64_t geo_mul_shift(int64_t a, int64_t b, unsigned n);
+
 /** sin and cos of x radians: drdc_fx_sincos_q5_58() (s, c not NULL). */
 static inline void geo_sincos(int64_t x, int64_t *s, int64_t *c)
 {
@@ -134,9 +140,8 @@ int geo_tm_forward(geo_tm_t *out);
 #define GEO_TWO_POW_62 INT64_C(4611686018427387904)
 
 /** An angle on the sphere of radius k0 A (Q5.58, the xi and eta of
- *  geo_tm_forward()) -> metres (Q47.16): the Q28.36 metres (rounded)
- *  rounded again. Calls drdc_fx_muldiv_s64() itself (the bits of
- *  geo_muldiv()), so that no wrapper frame is on its chain. */
+ *  geo_tm_forward()) -> metres (Q47.16): the Q28.36 metres (rounded, by
+ *  geo_mul_shift()) rounded again. */
 drdc_q47_16_t geo_metres_from_angle(int64_t a);
 
 /** Inverse of geo_tm_forward(): xi, eta (|eta| <= 0.34) in tm->xi,

@@ -8,6 +8,7 @@
 #include "geo_impl.h"
 
 #include <drdc/fixed_arith.h>
+#include <drdc/fixed_wide.h>
 
 int64_t geo_mul(int64_t a, int64_t b)
 {
@@ -23,14 +24,31 @@ int64_t geo_muldiv(int64_t a, int64_t b, int64_t c)
   return r;
 }
 
+int64_t geo_mul_shift(int64_t a, int64_t b, unsigned n)
+{
+  uint64_t m = (a < 0) ? (UINT64_C(0) - (uint64_t)a) : (uint64_t)a;
+  uint64_t half = UINT64_C(1) << (n - 1u);
+  unsigned up = 64u - n;
+  uint64_t hi;
+  uint64_t lo;
+  uint64_t q;
+
+  /* the exact 128-bit |a| b plus half the divisor, shifted: the quotient
+   * rounded half up, which with the sign put back is round to nearest,
+   * ties away from zero, of a b / 2^n: geo_muldiv(a, b, 2^n) (b > 0),
+   * both being that one rounding of the same rational */
+  drdc_fx_mul_u64_u128(m, (uint64_t)b, &hi, &lo);
+  lo = lo + half;
+  hi = hi + ((lo < half) ? 1u : 0u);
+  q = (lo >> n) | (hi << up);
+  return (a < 0) ? (int64_t)(UINT64_C(0) - q) : (int64_t)q;
+}
+
 drdc_q47_16_t geo_metres_from_angle(int64_t a)
 {
-  int64_t r = 0;
-
-  /* the projection's angles keep the Q36 metres within int64_t (as for
-   * geo_muldiv()): never fails */
-  (void)drdc_fx_muldiv_s64(a, GEO_K0A_Q40, GEO_TWO_POW_62, &r);
-  return drdc_fx_rshift_round_s64_inline(r, 20u);
+  /* the projection's angles keep the Q36 metres within int64_t */
+  return drdc_fx_rshift_round_s64_inline(
+      geo_mul_shift(a, GEO_K0A_Q40, 62u), 20u);
 }
 
 int64_t geo_floor_div(int64_t a, int64_t b)

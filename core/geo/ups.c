@@ -55,7 +55,7 @@ int geo_ups_forward(bool north, geo_tm_t *out)
 
 int64_t geo_ups_q36(int64_t a)
 {
-  return geo_muldiv(a, GEO_UPS_K_Q39, TWO_POW_61);
+  return geo_mul_shift(a, GEO_UPS_K_Q39, 61u);
 }
 
 drdc_q47_16_t geo_ups_metres(int64_t a)

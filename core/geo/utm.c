@@ -117,13 +117,11 @@ static drdc_nas_t central_meridian(int32_t zone)
 }
 
 /* an angle on the sphere of radius k0 A (Q5.58) -> metres (Q28.36,
- * rounded: 2^-36 m = 15 pm, far below the series' own error). Out of
- * line, as angle_from_metres(): the third 64-bit argument of
- * geo_muldiv() goes on the stack of a 32-bit core, so it is in this
- * small frame, not in the frames that hold the projection's state. */
-static __attribute__((noinline)) int64_t q36_from_angle(int64_t a)
+ * rounded: 2^-36 m = 15 pm, far below the series' own error); a product
+ * and a shift (geo_mul_shift()), no division */
+static int64_t q36_from_angle(int64_t a)
 {
-  return geo_muldiv(a, GEO_K0A_Q40, GEO_TWO_POW_62);
+  return geo_mul_shift(a, GEO_K0A_Q40, 62u);
 }
 
 /* metres (Q47.16, |v| < 2^43) -> angle on the sphere of radius k0 A */
@@ -132,19 +130,48 @@ static __attribute__((noinline)) int64_t angle_from_metres(drdc_q47_16_t v)
   return geo_muldiv(v * INT64_C(1048576), GEO_TWO_POW_62, GEO_K0A_Q40);
 }
 
-/* forward of validated lat and dlon (|dlon| <= 180 degrees) */
-static inline drdc_status_t tm_forward_nas(drdc_nas_t lat, drdc_nas_t dlon,
-                                    geo_tm_t *tm)
+/* Added to a zone code (with GEO_ZONE_Q36) by forward_args() for a point
+ * south of the equator. */
+#define CODE_SOUTH ((int32_t)512)
+
+/* The checks and the projection's arguments of geo_utm_forward(), out of
+ * line (out is only checked for NULL here, the first check): lat and lon (nas) come in tm->xi and tm->eta and leave as phi and
+ * lam in radians (UTM: lam from the zone's central meridian; UPS: the
+ * longitude in [-180, 180) degrees). Returns the zone (0: UPS) plus
+ * GEO_ZONE_Q36 when zone asked for Q28.36 plus CODE_SOUTH for lat < 0, or
+ * minus the status of the first check that fails. The caller's frame then
+ * keeps this one code and out across the projection, not lat, lon, zone
+ * and the flags (issue 8's stack). */
+static __attribute__((noinline)) int32_t
+forward_args(int32_t zone, const drdc_geo_utm_t *out, geo_tm_t *tm)
 {
-  if ((dlon > (90 * GEO_NAS_DEG)) || (dlon < (-90 * GEO_NAS_DEG))) {
-    return DRDC_E_RANGE;
+  drdc_nas_t lat = tm->xi;
+  drdc_nas_t lon = tm->eta;
+  int32_t fine = (zone >= ZONE_FINE_MIN) ? GEO_ZONE_Q36 : 0;
+  int32_t z = zone - fine;
+  drdc_status_t st = (out == NULL) ? DRDC_E_NULL : check_lat_lon(lat, lon);
+
+  if (st != DRDC_OK) {
+    return -(int32_t)st;
+  }
+  if (z == DRDC_GEO_ZONE_STANDARD) {
+    z = standard_zone(lat, lon);
+  }
+  if ((z < DRDC_GEO_ZONE_UPS) || (z > DRDC_GEO_ZONE_MAX)) {
+    return -(int32_t)DRDC_E_ZONE;
+  }
+  if (z == DRDC_GEO_ZONE_UPS) {
+    lon = lon_normalize(lon);
+  } else {
+    /* |dlon| <= 180 degrees; the series' domain ends at 90 */
+    lon = lon_normalize(lon - central_meridian(z));
+    if ((lon > (90 * GEO_NAS_DEG)) || (lon < (-90 * GEO_NAS_DEG))) {
+      return -(int32_t)DRDC_E_RANGE;
+    }
   }
   tm->xi = geo_rad_from_nas(lat);
-  tm->eta = geo_rad_from_nas(dlon);
-  if (geo_tm_forward(tm) == 0) {
-    return DRDC_E_RANGE;
-  }
-  return DRDC_OK;
+  tm->eta = geo_rad_from_nas(lon);
+  return z + fine + ((lat < 0) ? CODE_SOUTH : 0);
 }
 
 static bool ups_in_range(bool north, drdc_q47_16_t v)
@@ -153,20 +180,21 @@ static bool ups_in_range(bool north, drdc_q47_16_t v)
                : ((v >= UPS_SOUTH_MIN) && (v <= UPS_SOUTH_MAX));
 }
 
-/* UPS forward, easting and northing in Q47.16 or (fine) Q28.36; tm is
- * the caller's scratch (x, y, gamma, k in its xi, eta, gamma, k), so the
- * UTM and UPS branches of geo_utm_forward() share one struct on the stack */
-static drdc_status_t ups_forward(drdc_nas_t lat, drdc_nas_t lon, bool fine,
-                                 drdc_geo_utm_t *out,
-                                 drdc_nas_t *convergence,
-                                 drdc_q5_58_t *scale, geo_tm_t *tm)
+/* UPS forward of phi, lam in tm->xi, tm->eta (forward_args(), whose
+ * code tells the hemisphere and the fine request), easting and northing
+ * in Q47.16 or (fine) Q28.36; tm is the caller's scratch (x, y, gamma, k
+ * in its xi, eta, gamma, k), so the UTM and UPS branches of
+ * geo_utm_forward() share one struct on the stack, and the caller writes
+ * convergence and scale from it. Out of line with three arguments (no
+ * stack argument): its values are not in geo_utm_forward()'s frame. */
+static __attribute__((noinline)) drdc_status_t
+ups_forward(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
 {
-  bool north = (lat >= 0);
+  bool north = (code < CODE_SOUTH);
+  bool fine = ((code % CODE_SOUTH) >= GEO_ZONE_Q36);
   drdc_q47_16_t e;
   drdc_q47_16_t n;
 
-  tm->xi = geo_rad_from_nas(lat);
-  tm->eta = geo_rad_from_nas(lon_normalize(lon));
   if (geo_ups_forward(north, tm) == 0) {
     return DRDC_E_RANGE;
   }
@@ -182,12 +210,6 @@ static drdc_status_t ups_forward(drdc_nas_t lat, drdc_nas_t lon, bool fine,
   out->north = north;
   out->easting = fine ? (Q36_FROM_Q16(UPS_FALSE_ORIGIN) + tm->xi) : e;
   out->northing = fine ? (Q36_FROM_Q16(UPS_FALSE_ORIGIN) + tm->eta) : n;
-  if (convergence != NULL) {
-    *convergence = geo_nas_from_rad(tm->gamma);
-  }
-  if (scale != NULL) {
-    *scale = tm->k;
-  }
   return DRDC_OK;
 }
 
@@ -222,6 +244,44 @@ static drdc_status_t ups_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat,
   return DRDC_OK;
 }
 
+/* UTM easting and northing of the projection's xi, eta in tm (Q28.36
+ * offsets left in tm's slots), checked, into out; the zone, the fine
+ * request and the hemisphere from forward_args()'s code. Out of line,
+ * after geo_tm_forward() has returned: its values (the offsets, the
+ * rounded metres) are not in the frame under the projection. */
+static __attribute__((noinline)) drdc_status_t
+utm_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
+{
+  bool north = (code < CODE_SOUTH);
+  bool fine = ((code % CODE_SOUTH) >= GEO_ZONE_Q36);
+  drdc_q47_16_t e;
+  drdc_q47_16_t n;
+
+  /* the offsets in Q28.36 (in tm's own slots), each rounded to Q47.16
+   * before the false origin is added (a tie of a negative offset rounds
+   * away from zero, which the rounding of the sum would not) */
+  tm->eta = q36_from_angle(tm->eta);
+  tm->xi = q36_from_angle(tm->xi);
+  e = UTM_FALSE_EASTING + drdc_fx_rshift_round_s64(tm->eta, 20u);
+  n = drdc_fx_rshift_round_s64(tm->xi, 20u);
+  if (!north) {
+    n = n + UTM_FALSE_NORTHING_SOUTH;
+    tm->xi = tm->xi + Q36_FROM_Q16(UTM_FALSE_NORTHING_SOUTH);
+  }
+  if ((e < UTM_E_MIN) || (e > UTM_E_MAX)) {
+    return DRDC_E_RANGE;
+  }
+  if (north ? ((n < UTM_N_NORTH_MIN) || (n > UTM_N_NORTH_MAX))
+            : ((n < UTM_N_SOUTH_MIN) || (n > UTM_N_SOUTH_MAX))) {
+    return DRDC_E_RANGE;
+  }
+  out->zone = code % GEO_ZONE_Q36;
+  out->north = north;
+  out->easting = fine ? (Q36_FROM_Q16(UTM_FALSE_EASTING) + tm->eta) : e;
+  out->northing = fine ? tm->xi : n;
+  return DRDC_OK;
+}
+
 /* drdc_geo_to_utm() and its Q28.36 form for MGRS in one (geo_impl.h):
  * zone is a zone code of drdc_geo_to_utm(), plus GEO_ZONE_Q36 for the
  * Q28.36 result. drdc_geo_to_utm() passes its arguments on (a sibling
@@ -231,60 +291,27 @@ drdc_status_t geo_utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
                               drdc_geo_utm_t *out, drdc_nas_t *convergence,
                               drdc_q5_58_t *scale)
 {
-  drdc_status_t st;
-  int32_t fine = (zone >= ZONE_FINE_MIN) ? GEO_ZONE_Q36 : 0;
-  int32_t z = zone - fine;
-  bool north = (lat >= 0);
-  geo_tm_t tm;
-  drdc_q47_16_t e;
-  drdc_q47_16_t n;
+  /* forward_args()'s code: the zone, the fine request and the hemisphere
+   * in one value, with out the only values of this frame live across the
+   * projection; the stages before and after run out of line, each from
+   * this frame (issue 8's stack) */
+  int32_t code;
+  geo_tm_t tm = { lat, lon, 0, 0 };
 
-  if (out == NULL) {
-    return DRDC_E_NULL;
+  code = forward_args(zone, out, &tm);
+  if (code < 0) {
+    return (drdc_status_t)-code;
   }
-  st = check_lat_lon(lat, lon);
-  if (st != DRDC_OK) {
-    return st;
-  }
-  if (z == DRDC_GEO_ZONE_STANDARD) {
-    z = standard_zone(lat, lon);
-  }
-  if ((z < DRDC_GEO_ZONE_UPS) || (z > DRDC_GEO_ZONE_MAX)) {
-    return DRDC_E_ZONE;
-  }
-  if (z == DRDC_GEO_ZONE_UPS) {
-    return ups_forward(lat, lon, fine != 0, out, convergence, scale, &tm);
-  }
-  st = tm_forward_nas(lat, lon_normalize(lon - central_meridian(z)), &tm);
-  if (st != DRDC_OK) {
-    return st;
-  }
-  /* the zone and the fine request in one value from here on (one
-   * register fewer across the calls above on the deepest path) */
-  z = z + fine;
-  /* the offsets in Q28.36 (in tm's own slots), each rounded to Q47.16
-   * before the false origin is added (a tie of a negative offset rounds
-   * away from zero, which the rounding of the sum would not) */
-  tm.eta = q36_from_angle(tm.eta);
-  tm.xi = q36_from_angle(tm.xi);
-  e = UTM_FALSE_EASTING + drdc_fx_rshift_round_s64(tm.eta, 20u);
-  n = drdc_fx_rshift_round_s64(tm.xi, 20u);
-  if (!north) {
-    n = n + UTM_FALSE_NORTHING_SOUTH;
-    tm.xi = tm.xi + Q36_FROM_Q16(UTM_FALSE_NORTHING_SOUTH);
-  }
-  if ((e < UTM_E_MIN) || (e > UTM_E_MAX)) {
+  if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
+    if (ups_forward(code, out, &tm) != DRDC_OK) {
+      return DRDC_E_RANGE;
+    }
+  } else if ((geo_tm_forward(&tm) == 0)
+             || (utm_from_tm(code, out, &tm) != DRDC_OK)) {
     return DRDC_E_RANGE;
+  } else {
+    /* out written */
   }
-  if (north ? ((n < UTM_N_NORTH_MIN) || (n > UTM_N_NORTH_MAX))
-            : ((n < UTM_N_SOUTH_MIN) || (n > UTM_N_SOUTH_MAX))) {
-    return DRDC_E_RANGE;
-  }
-  out->zone = z % GEO_ZONE_Q36;
-  out->north = north;
-  out->easting = (z >= GEO_ZONE_Q36) ? (Q36_FROM_Q16(UTM_FALSE_EASTING) + tm.eta)
-                                  : e;
-  out->northing = (z >= GEO_ZONE_Q36) ? tm.xi : n;
   if (convergence != NULL) {
     *convergence = geo_nas_from_rad(tm.gamma);
   }

@@ -11,6 +11,9 @@
 
 #include <stddef.h>
 
+#include <drdc/fixed_wide.h>
+
+#include "../../core/geo/geo_impl.h"
 #include "suites.h"
 #include "unity.h"
 #include "vectors_geo.h"
@@ -304,6 +307,55 @@ static void test_wutm_round_trip(void)
   }
 }
 
+/* geo_mul_shift(a, b, n) against drdc_fx_muldiv_s64(a, b, 2^n) (the
+ * division it replaced in the Q28.36 metres of UTM and UPS), bit for bit:
+ * both round the same rational a b / 2^n to nearest, ties away from
+ * zero. Checked for both constants on random values of every magnitude
+ * and sign, the largest |a| whose quotient fits int64_t, and the exact
+ * ties: b odd, so a b / 2^n is a half exactly when a is an odd multiple
+ * of 2^(n-1); +-2^(n-1) is the one in range, checked with its
+ * neighbours. */
+static void check_mul_shift(int64_t b, unsigned n)
+{
+  static const int64_t named[] = { 0, 1, -1, INT64_C(0x1fffffffffffffff) };
+  uint64_t seed = UINT64_C(0x9E3779B97F4A7C15);
+  int64_t half = INT64_C(1) << (n - 1u);
+  int64_t want;
+  int64_t a;
+  int k;
+  unsigned i;
+
+  TEST_ASSERT_TRUE(((uint64_t)b & 1u) == 1u);
+  for (i = 0u; i < 4000u; i++) {
+    seed = (seed * UINT64_C(6364136223846793005))
+           + UINT64_C(1442695040888963407);
+    /* 61 bits down to 1: the quotient stays within int64_t for
+     * b < 2^63 and n >= 61 */
+    a = (int64_t)(seed >> (3u + (i % 61u)));
+    a = ((i & 1u) != 0u) ? -a : a;
+    want = 0;
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_fx_muldiv_s64(a, b, INT64_C(1) << n, &want));
+    TEST_ASSERT_EQUAL_INT64(want, geo_mul_shift(a, b, n));
+  }
+  for (k = -1; k <= 1; k++) {
+    for (i = 0u; i < (2u * COUNT(named)); i++) {
+      a = (i < COUNT(named)) ? (half + k) : named[i - COUNT(named)];
+      a = ((i & 1u) != 0u) ? -a : a;
+      want = 0;
+      TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_muldiv_s64(
+                                         a, b, INT64_C(1) << n, &want));
+      TEST_ASSERT_EQUAL_INT64(want, geo_mul_shift(a, b, n));
+    }
+  }
+}
+
+static void test_geo_mul_shift_is_muldiv(void)
+{
+  check_mul_shift(GEO_K0A_Q40, 62u);
+  check_mul_shift(GEO_UPS_K_Q39, 61u);
+}
+
 void suite_geo_utm(void)
 {
   UnitySetTestFile(__FILE__);
@@ -311,6 +363,7 @@ void suite_geo_utm(void)
   RUN_TEST(test_utm_edges);
   RUN_TEST(test_utm_forced_zone);
   RUN_TEST(test_tm_outside_zone);
+  RUN_TEST(test_geo_mul_shift_is_muldiv);
   RUN_TEST(test_utm_zone_rules);
   RUN_TEST(test_utm_header_example);
   RUN_TEST(test_grid_from_true_turns_the_yaw_by_gamma);
