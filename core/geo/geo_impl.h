@@ -226,20 +226,18 @@ drdc_status_t geo_utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
                               drdc_q5_58_t *scale);
 
 /**
- * drdc_geo_to_utm() itself, inline: the pose conversions call it without
- * the public function's frame on top of the projection's chain. A zone
- * code above the zones is DRDC_E_ZONE (after the checks that come
- * first), never a request for the Q28.36 result.
+ * drdc_geo_to_utm(), for the pose conversions: the public function runs
+ * the body of geo_utm_forward() in its own frame (no wrapper frame on
+ * the projection's chain). A zone code above the zones is DRDC_E_ZONE
+ * (after the checks that come first), never a request for the Q28.36
+ * result.
  */
 static inline drdc_status_t geo_to_utm(drdc_nas_t lat, drdc_nas_t lon,
                                        int32_t zone, drdc_geo_utm_t *out,
                                        drdc_nas_t *convergence,
                                        drdc_q5_58_t *scale)
 {
-  return geo_utm_forward(lat, lon,
-                         (zone > DRDC_GEO_ZONE_MAX) ? (DRDC_GEO_ZONE_MAX + 1)
-                                                    : zone,
-                         out, convergence, scale);
+  return drdc_geo_to_utm(lat, lon, zone, out, convergence, scale);
 }
 
 /**

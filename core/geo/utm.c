@@ -282,14 +282,15 @@ utm_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
   return DRDC_OK;
 }
 
-/* drdc_geo_to_utm() and its Q28.36 form for MGRS in one (geo_impl.h):
- * zone is a zone code of drdc_geo_to_utm(), plus GEO_ZONE_Q36 for the
- * Q28.36 result. drdc_geo_to_utm() passes its arguments on (a sibling
- * call, no frame of its own at run time) and MGRS calls this directly, so
- * neither stack grows. */
-drdc_status_t geo_utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
-                              drdc_geo_utm_t *out, drdc_nas_t *convergence,
-                              drdc_q5_58_t *scale)
+/* drdc_geo_to_utm() and its Q28.36 form for MGRS in one: zone is a zone
+ * code of drdc_geo_to_utm(), plus GEO_ZONE_Q36 for the Q28.36 result.
+ * Inline into both entries (a few dozen instructions: the stages are out
+ * of line), so that neither stacks a frame of its own on top of this
+ * one: a wrapper's frame, even a sibling call's, counts on issue 8's
+ * chain (16 B on PowerPC). */
+static inline __attribute__((always_inline)) drdc_status_t
+utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
+            drdc_geo_utm_t *out, drdc_nas_t *convergence, drdc_q5_58_t *scale)
 {
   /* forward_args()'s code: the zone, the fine request and the hemisphere
    * in one value, with out the only values of this frame live across the
@@ -321,11 +322,23 @@ drdc_status_t geo_utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
   return DRDC_OK;
 }
 
+drdc_status_t geo_utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
+                              drdc_geo_utm_t *out, drdc_nas_t *convergence,
+                              drdc_q5_58_t *scale)
+{
+  return utm_forward(lat, lon, zone, out, convergence, scale);
+}
+
 drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
                               drdc_geo_utm_t *out, drdc_nas_t *convergence,
                               drdc_q5_58_t *scale)
 {
-  return geo_to_utm(lat, lon, zone, out, convergence, scale);
+  /* a zone code above the zones is DRDC_E_ZONE, never a request for
+   * Q28.36 (as geo_to_utm()) */
+  return utm_forward(lat, lon,
+                     (zone > DRDC_GEO_ZONE_MAX) ? (DRDC_GEO_ZONE_MAX + 1)
+                                                : zone,
+                     out, convergence, scale);
 }
 
 drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
