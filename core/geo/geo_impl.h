@@ -25,6 +25,7 @@
 #include <drdc/fixed_types.h>
 #include <drdc/geo.h>
 #include <drdc/geo_ecef.h>
+#include <drdc/pose.h>
 #include <drdc/types.h>
 
 #include "geo_consts.h"
@@ -239,6 +240,12 @@ static inline drdc_status_t geo_to_utm(drdc_nas_t lat, drdc_nas_t lon,
 {
   return drdc_geo_to_utm(lat, lon, zone, out, convergence, scale);
 }
+
+/** The last step of drdc_pose_weutm_from_we() (in utm.c), after the
+ *  projection: height and angles of w into out, the yaw turned from true
+ *  to grid north by the convergence parked in out->height. Never
+ *  fails. */
+void geo_weutm_attitude(const drdc_WePose_t *w, drdc_WeUTMPose_t *out);
 
 /**
  * geo_mgrs_format() of a position whose easting and northing carry

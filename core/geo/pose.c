@@ -129,26 +129,15 @@ drdc_status_t drdc_pose_w_from_wutm(const drdc_WUTMPose_t *u,
   return DRDC_OK;
 }
 
-drdc_status_t drdc_pose_weutm_from_we(const drdc_WePose_t *w, int32_t zone,
-                                      drdc_WeUTMPose_t *out)
+/* drdc_pose_weutm_from_we() is in utm.c, in the frame of the projection's
+ * body; it ends here */
+void geo_weutm_attitude(const drdc_WePose_t *w, drdc_WeUTMPose_t *out)
 {
-  drdc_nas_t gamma = 0;
-  drdc_status_t st;
-
-  if ((w == NULL) || (out == NULL)) {
-    return DRDC_E_NULL;
-  }
-  /* the one step that can fail writes out->utm only on DRDC_OK: no copy
-   * of it in this frame above the UTM chain */
-  st = geo_to_utm(w->latitude, w->longitude, zone, &out->utm, &gamma, NULL);
-  if (st != DRDC_OK) {
-    return st;
-  }
+  /* out->height holds the convergence until here */
+  out->e.yaw = w->e.yaw - drdc_pose_bam_from_convergence(out->height);
   out->height = w->height;
-  out->e.yaw = w->e.yaw - drdc_pose_bam_from_convergence(gamma);
   out->e.pitch = w->e.pitch;
   out->e.roll = w->e.roll;
-  return DRDC_OK;
 }
 
 drdc_status_t drdc_pose_we_from_weutm(const drdc_WeUTMPose_t *u,

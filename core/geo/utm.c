@@ -341,6 +341,32 @@ drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
                      out, convergence, scale);
 }
 
+/* A pose conversion of pose.c, here because it runs the body of
+ * drdc_geo_to_utm() in its own frame: the chain under the projection is
+ * that of drdc_geo_to_utm(), with no frame of a pose function on top of
+ * it (issue 8's stack; on PowerPC even a frameless tail call counts 16
+ * B). */
+drdc_status_t drdc_pose_weutm_from_we(const drdc_WePose_t *w, int32_t zone,
+                                      drdc_WeUTMPose_t *out)
+{
+  drdc_status_t st;
+
+  if ((w == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  /* as drdc_geo_to_utm(); no buffer for the convergence in this frame:
+   * out->height receives it, as out->utm the position, only on DRDC_OK,
+   * and geo_weutm_attitude() then overwrites it */
+  st = utm_forward(w->latitude, w->longitude,
+                   (zone > DRDC_GEO_ZONE_MAX) ? (DRDC_GEO_ZONE_MAX + 1) : zone,
+                   &out->utm, &out->height, NULL);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  geo_weutm_attitude(w, out);
+  return DRDC_OK;
+}
+
 drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
                                 drdc_nas_t *lon, drdc_nas_t *convergence,
                                 drdc_q5_58_t *scale)
