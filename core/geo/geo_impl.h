@@ -247,6 +247,12 @@ static inline drdc_status_t geo_to_utm(drdc_nas_t lat, drdc_nas_t lon,
  *  fails. */
 void geo_weutm_attitude(const drdc_WePose_t *w, drdc_WeUTMPose_t *out);
 
+/** The last step of drdc_pose_we_from_weutm() (in utm.c), after the
+ *  reverse projection: height and angles of u into out, the yaw turned
+ *  from grid to true north by the convergence parked in out->height.
+ *  Never fails. */
+void geo_we_attitude(const drdc_WeUTMPose_t *u, drdc_WePose_t *out);
+
 /**
  * geo_mgrs_format() of a position whose easting and northing carry
  * frac_bits fraction bits (16: Q47.16; 36: geo_utm_forward() with

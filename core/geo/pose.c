@@ -140,27 +140,14 @@ void geo_weutm_attitude(const drdc_WePose_t *w, drdc_WeUTMPose_t *out)
   out->e.roll = w->e.roll;
 }
 
-drdc_status_t drdc_pose_we_from_weutm(const drdc_WeUTMPose_t *u,
-                                      drdc_WePose_t *out)
+/* drdc_pose_we_from_weutm() is in utm.c, as drdc_pose_weutm_from_we() */
+void geo_we_attitude(const drdc_WeUTMPose_t *u, drdc_WePose_t *out)
 {
-  drdc_nas_t gamma = 0;
-  drdc_status_t st;
-
-  if ((u == NULL) || (out == NULL)) {
-    return DRDC_E_NULL;
-  }
-  /* the one step that can fail writes the position only on DRDC_OK:
-   * straight into out */
-  st = drdc_geo_from_utm(&u->utm, &out->latitude, &out->longitude, &gamma,
-                         NULL);
-  if (st != DRDC_OK) {
-    return st;
-  }
+  /* out->height holds the convergence until here */
+  out->e.yaw = u->e.yaw + drdc_pose_bam_from_convergence(out->height);
   out->height = u->height;
-  out->e.yaw = u->e.yaw + drdc_pose_bam_from_convergence(gamma);
   out->e.pitch = u->e.pitch;
   out->e.roll = u->e.roll;
-  return DRDC_OK;
 }
 
 /* the ellipsoidal point of a pose */

@@ -213,8 +213,11 @@ ups_forward(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
   return DRDC_OK;
 }
 
-/* UPS reverse; tm is the caller's scratch as in ups_forward() */
-static drdc_status_t ups_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat,
+/* UPS reverse; tm is the caller's scratch as in ups_forward(). Inline
+ * into utm_reverse()'s two entries, as it was into its one: out of line
+ * its frame (40 B on Cortex-M3, for the stack arguments) would be on the
+ * chain of the UPS projection. */
+static inline __attribute__((always_inline)) drdc_status_t ups_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat,
                                  drdc_nas_t *lon, drdc_nas_t *convergence,
                                  drdc_q5_58_t *scale, geo_tm_t *tm)
 {
@@ -367,18 +370,18 @@ drdc_status_t drdc_pose_weutm_from_we(const drdc_WePose_t *w, int32_t zone,
   return DRDC_OK;
 }
 
-drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
-                                drdc_nas_t *lon, drdc_nas_t *convergence,
-                                drdc_q5_58_t *scale)
+/* drdc_geo_from_utm() after its NULL checks, inline into it and into
+ * drdc_pose_we_from_weutm() (as utm_forward() into its entries): no
+ * wrapper frame on the projection's chain. Writes only on DRDC_OK. */
+static inline __attribute__((always_inline)) drdc_status_t
+utm_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat, drdc_nas_t *lon,
+            drdc_nas_t *convergence, drdc_q5_58_t *scale)
 {
   /* phi and lam of the reverse wait in tm's own slots (xi, eta) until
    * the forward overwrites them: one struct is the whole frame's data
    * on the deepest path */
   geo_tm_t tm;
 
-  if ((in == NULL) || (lat == NULL) || (lon == NULL)) {
-    return DRDC_E_NULL;
-  }
   if ((in->zone < DRDC_GEO_ZONE_UPS) || (in->zone > DRDC_GEO_ZONE_MAX)) {
     return DRDC_E_ZONE;
   }
@@ -412,5 +415,38 @@ drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
       *scale = tm.k;
     }
   }
+  return DRDC_OK;
+}
+
+drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
+                                drdc_nas_t *lon, drdc_nas_t *convergence,
+                                drdc_q5_58_t *scale)
+{
+  if ((in == NULL) || (lat == NULL) || (lon == NULL)) {
+    return DRDC_E_NULL;
+  }
+  return utm_reverse(in, lat, lon, convergence, scale);
+}
+
+/* A pose conversion of pose.c, here for the reason of
+ * drdc_pose_weutm_from_we(): the body of drdc_geo_from_utm() in its own
+ * frame. */
+drdc_status_t drdc_pose_we_from_weutm(const drdc_WeUTMPose_t *u,
+                                      drdc_WePose_t *out)
+{
+  drdc_status_t st;
+
+  if ((u == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  /* the position straight into out, the convergence parked in
+   * out->height: all written only on DRDC_OK, and geo_we_attitude()
+   * then overwrites the height */
+  st = utm_reverse(&u->utm, &out->latitude, &out->longitude, &out->height,
+                   NULL);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  geo_we_attitude(u, out);
   return DRDC_OK;
 }

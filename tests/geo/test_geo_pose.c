@@ -185,6 +185,10 @@ static void test_drdc_pose_we_from_weutm_errors(void)
                          { 0u, 0u, 0u } };
   drdc_WePose_t w;
 
+  /* the position and the convergence (parked in the height) are written
+   * straight into out, so each must stay as it was on error */
+  w.latitude = SENTINEL64;
+  w.longitude = SENTINEL64;
   w.height = SENTINEL64;
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_we_from_weutm(NULL, &w));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_we_from_weutm(&u, NULL));
@@ -196,6 +200,12 @@ static void test_drdc_pose_we_from_weutm_errors(void)
   u.utm.easting = M(500000);
   u.utm.northing = M(-9100000) - 1;
   TEST_ASSERT_EQUAL_INT(DRDC_E_NORTHING, drdc_pose_we_from_weutm(&u, &w));
+  u.utm.zone = 0;
+  u.utm.northing = M(2000000);
+  u.utm.easting = M(2800000) + 1; /* beyond UPS north */
+  TEST_ASSERT_EQUAL_INT(DRDC_E_EASTING, drdc_pose_we_from_weutm(&u, &w));
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, w.latitude);
+  TEST_ASSERT_EQUAL_INT64(SENTINEL64, w.longitude);
   TEST_ASSERT_EQUAL_INT64(SENTINEL64, w.height);
 }
 
