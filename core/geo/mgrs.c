@@ -225,24 +225,8 @@ drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
   return geo_mgrs_format_bits(&u, 36u, lat, prec, text, size);
 }
 
-drdc_status_t drdc_geo_mgrs_from_utm(const drdc_geo_utm_t *u, int32_t prec,
-                                     char *text, size_t size)
-{
-  drdc_nas_t lat = 0;
-  drdc_nas_t lon = 0;
-  drdc_status_t st;
-
-  if ((u == NULL) || (text == NULL)) {
-    return DRDC_E_NULL;
-  }
-  /* validates the zone and the UTM/UPS ranges, and gives the latitude of
-   * the band letter */
-  st = drdc_geo_from_utm(u, &lat, &lon, NULL, NULL);
-  if (st != DRDC_OK) {
-    return st;
-  }
-  return geo_mgrs_format(u, lat, prec, text, size);
-}
+/* drdc_geo_mgrs_from_utm() is in utm.c, in the frame of the reverse
+ * projection's body (issue 8's stack) */
 
 /* GeographicLib's placement of a UTM row letter (irow 0..19) in latitude
  * band iband (-10..9): the multiple of 20 rows nearest the band's centre,

@@ -370,23 +370,27 @@ drdc_status_t drdc_pose_weutm_from_we(const drdc_WePose_t *w, int32_t zone,
   return DRDC_OK;
 }
 
-/* drdc_geo_from_utm() after its NULL checks, inline into it and into
- * drdc_pose_we_from_weutm() (as utm_forward() into its entries): no
- * wrapper frame on the projection's chain. Writes only on DRDC_OK. */
+/* drdc_geo_from_utm() after its NULL checks, inline into it,
+ * drdc_pose_we_from_weutm() and drdc_geo_mgrs_from_utm() (as
+ * utm_forward() into its entries): no wrapper frame on the projection's
+ * chain. Writes only on DRDC_OK. tm is the entry's scratch; with
+ * convergence and scale NULL (no forward after the reverse), lat and lon
+ * may point into its xi and eta, each written after its slot is last
+ * read, so an entry that needs only the angles keeps no buffer for
+ * them. */
 static inline __attribute__((always_inline)) drdc_status_t
 utm_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat, drdc_nas_t *lon,
-            drdc_nas_t *convergence, drdc_q5_58_t *scale)
+            drdc_nas_t *convergence, drdc_q5_58_t *scale, geo_tm_t *tm)
 {
   /* phi and lam of the reverse wait in tm's own slots (xi, eta) until
    * the forward overwrites them: one struct is the whole frame's data
    * on the deepest path */
-  geo_tm_t tm;
 
   if ((in->zone < DRDC_GEO_ZONE_UPS) || (in->zone > DRDC_GEO_ZONE_MAX)) {
     return DRDC_E_ZONE;
   }
   if (in->zone == DRDC_GEO_ZONE_UPS) {
-    return ups_reverse(in, lat, lon, convergence, scale, &tm);
+    return ups_reverse(in, lat, lon, convergence, scale, tm);
   }
   if ((in->easting < UTM_E_MIN) || (in->easting > UTM_E_MAX)) {
     return DRDC_E_EASTING;
@@ -397,22 +401,22 @@ utm_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat, drdc_nas_t *lon,
                    || (in->northing > UTM_N_SOUTH_MAX))) {
     return DRDC_E_NORTHING;
   }
-  tm.xi = angle_from_metres(in->north ? in->northing
+  tm->xi = angle_from_metres(in->north ? in->northing
                                       : (in->northing
                                          - UTM_FALSE_NORTHING_SOUTH));
-  tm.eta = angle_from_metres(in->easting - UTM_FALSE_EASTING);
-  geo_tm_reverse(&tm);
-  *lat = geo_nas_from_rad(tm.xi);
+  tm->eta = angle_from_metres(in->easting - UTM_FALSE_EASTING);
+  geo_tm_reverse(tm);
+  *lat = geo_nas_from_rad(tm->xi);
   *lon = lon_normalize(central_meridian(in->zone)
-                       + geo_nas_from_rad(tm.eta));
+                       + geo_nas_from_rad(tm->eta));
   if ((convergence != NULL) || (scale != NULL)) {
     /* in the range checked above |dlon| < 30 degrees: never fails */
-    (void)geo_tm_forward(&tm);
+    (void)geo_tm_forward(tm);
     if (convergence != NULL) {
-      *convergence = geo_nas_from_rad(tm.gamma);
+      *convergence = geo_nas_from_rad(tm->gamma);
     }
     if (scale != NULL) {
-      *scale = tm.k;
+      *scale = tm->k;
     }
   }
   return DRDC_OK;
@@ -422,10 +426,12 @@ drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
                                 drdc_nas_t *lon, drdc_nas_t *convergence,
                                 drdc_q5_58_t *scale)
 {
+  geo_tm_t tm;
+
   if ((in == NULL) || (lat == NULL) || (lon == NULL)) {
     return DRDC_E_NULL;
   }
-  return utm_reverse(in, lat, lon, convergence, scale);
+  return utm_reverse(in, lat, lon, convergence, scale, &tm);
 }
 
 /* A pose conversion of pose.c, here for the reason of
@@ -434,6 +440,7 @@ drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
 drdc_status_t drdc_pose_we_from_weutm(const drdc_WeUTMPose_t *u,
                                       drdc_WePose_t *out)
 {
+  geo_tm_t tm;
   drdc_status_t st;
 
   if ((u == NULL) || (out == NULL)) {
@@ -443,10 +450,30 @@ drdc_status_t drdc_pose_we_from_weutm(const drdc_WeUTMPose_t *u,
    * out->height: all written only on DRDC_OK, and geo_we_attitude()
    * then overwrites the height */
   st = utm_reverse(&u->utm, &out->latitude, &out->longitude, &out->height,
-                   NULL);
+                   NULL, &tm);
   if (st != DRDC_OK) {
     return st;
   }
   geo_we_attitude(u, out);
   return DRDC_OK;
+}
+
+/* MGRS text of a UTM/UPS position (mgrs.c's encoder), here for the
+ * reason of drdc_pose_weutm_from_we(): the body of drdc_geo_from_utm(),
+ * which validates the position and gives the latitude of the band
+ * letter, in this frame, the angles in its scratch. */
+drdc_status_t drdc_geo_mgrs_from_utm(const drdc_geo_utm_t *u, int32_t prec,
+                                     char *text, size_t size)
+{
+  geo_tm_t tm;
+  drdc_status_t st;
+
+  if ((u == NULL) || (text == NULL)) {
+    return DRDC_E_NULL;
+  }
+  st = utm_reverse(u, &tm.xi, &tm.eta, NULL, NULL, &tm);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  return geo_mgrs_format(u, tm.xi, prec, text, size);
 }
