@@ -3,7 +3,9 @@
  * @file
  * @ingroup drdc_geo
  * @brief UTM zone rules and geographic <-> UTM on the transverse Mercator
- *        of tm.c (validate in nas, convert in Q5.58).
+ *        of tm.c (validate in nas, convert in Q5.58); also the {We} <->
+ *        {We-UTM} poses and MGRS from UTM, which run a projection's body
+ *        in their own frames (issue 8's stack).
  */
 #include <drdc/geo.h>
 
@@ -214,12 +216,12 @@ ups_forward(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
 }
 
 /* UPS reverse; tm is the caller's scratch as in ups_forward(). Inline
- * into utm_reverse()'s two entries, as it was into its one: out of line
- * its frame (40 B on Cortex-M3, for the stack arguments) would be on the
+ * into utm_reverse()'s entries, as it was into its one: out of line its
+ * frame (40 B on Cortex-M3, for the stack arguments) would be on the
  * chain of the UPS projection. */
-static inline __attribute__((always_inline)) drdc_status_t ups_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat,
-                                 drdc_nas_t *lon, drdc_nas_t *convergence,
-                                 drdc_q5_58_t *scale, geo_tm_t *tm)
+static inline __attribute__((always_inline)) drdc_status_t
+ups_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat, drdc_nas_t *lon,
+            drdc_nas_t *convergence, drdc_q5_58_t *scale, geo_tm_t *tm)
 {
   if (!ups_in_range(in->north, in->easting)) {
     return DRDC_E_EASTING;
@@ -385,7 +387,6 @@ utm_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat, drdc_nas_t *lon,
   /* phi and lam of the reverse wait in tm's own slots (xi, eta) until
    * the forward overwrites them: one struct is the whole frame's data
    * on the deepest path */
-
   if ((in->zone < DRDC_GEO_ZONE_UPS) || (in->zone > DRDC_GEO_ZONE_MAX)) {
     return DRDC_E_ZONE;
   }
@@ -402,8 +403,8 @@ utm_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat, drdc_nas_t *lon,
     return DRDC_E_NORTHING;
   }
   tm->xi = angle_from_metres(in->north ? in->northing
-                                      : (in->northing
-                                         - UTM_FALSE_NORTHING_SOUTH));
+                                       : (in->northing
+                                          - UTM_FALSE_NORTHING_SOUTH));
   tm->eta = angle_from_metres(in->easting - UTM_FALSE_EASTING);
   geo_tm_reverse(tm);
   *lat = geo_nas_from_rad(tm->xi);
