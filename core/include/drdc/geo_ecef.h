@@ -63,8 +63,8 @@ drdc_status_t drdc_geo_to_ecef(const drdc_geo_point_t *p,
  * unit vectors use reciprocal square roots by Newton steps from a 32-bit
  * seed (no Q5.58 division or square root); two atan2 in all (before:
  * nine atan2, sin/cos and square roots and eight quotients). Speed
- * (docs/performance.md): 10 549 cycles on Cortex-M3 (43 207 before),
- * against 18 910 for the same algorithm in soft-float double; 12 892 on
+ * (docs/performance.md): 9 616 cycles on Cortex-M3 (43 207 before),
+ * against 18 910 for the same algorithm in soft-float double; 11 214 on
  * PowerPC e500 (54 345 before).
  *
  * @param ecef X, Y, Z in Q47.16 metres.
