@@ -246,7 +246,9 @@ def write_docs(report, docs):
             for t, fp in report["footprint"].items()}
     lines += ["## Worst-case stack of each public function (bytes)", "",
               "From GCC's call graphs (`-fcallgraph-info=su`): own frame plus the",
-              "deepest chain of library callees; libgcc helpers listed, not counted.",
+              "deepest chain of library callees, except after a sibling (tail) call,",
+              "made once the caller's frame is gone (`objdump -dr`: an unconditional",
+              "jump, not a call, to the callee); libgcc helpers listed, not counted.",
               "Deeper than the issue's goal of %d bytes: %s." % (STACK_GOAL, "; ".join(
                   "%d on %s" % (len(v), t) for t, v in sorted(deep.items()))), "",
               "| function | " + " | ".join(sorted(report["footprint"])) + " | calls outside |",

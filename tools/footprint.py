@@ -8,7 +8,9 @@ per object, written by the library build).
   footprint.py [--build build] TARGET...   print JSON {target: footprint}
 
 Worst-case stack of a function = its own frame + the deepest chain of
-callees inside the library. Calls out of the library (libgcc's integer
+callees inside the library; a callee reached only by sibling (tail) calls,
+which the compiler makes after the caller's epilogue, adds its chain to
+the caller's entry stack instead of to its frame. Calls out of the library (libgcc's integer
 helpers) are listed with the function; their frames are not counted, and a
 recursive chain is reported as such instead of a number.
 """
@@ -120,20 +122,67 @@ def call_graph(paths):
     return frames, edges
 
 
-def worst_stack(fn, frames, edges, chain=()):
-    """(bytes, outside callees) of the deepest chain from fn."""
+# objdump -dr: a function's label, an instruction, a relocation under it
+LABEL = re.compile(r"^[0-9a-f]+ <([^>]+)>:$")
+INSN = re.compile(r"^\s+[0-9a-f]+:\t[0-9a-f ]+\t(\S+)")
+RELOC = re.compile(r"^\s+[0-9a-f]+: R_\w+\t([^+\s]+)(\+0x[0-9a-f]+)?$")
+# the unconditional jumps a sibling (tail) call is made with
+TAIL_JUMPS = {"b", "b.w", "b.n", "jmp"}
+
+
+def tail_calls(target, path, ci_path):
+    """(caller, callee) pairs of one object whose every call is a sibling
+    call: an unconditional jump made after the caller's epilogue, so the
+    callee runs on the caller's entry stack pointer, not below its frame.
+    Names as in the object's call graph ("file.c:name" for static ones)."""
+    with open(ci_path) as f:
+        titles = set(t for t, _ in NODE.findall(f.read()))
+    out = subprocess.run([PREFIX[target] + "objdump", "-dr", path], check=True,
+                         capture_output=True, text=True).stdout
+
+    def title(name):
+        local = [t for t in titles if t.endswith(":" + name)]
+        return local[0] if len(local) == 1 else name
+
+    kinds = {}
+    fn = insn = None
+    for line in out.splitlines():
+        m = LABEL.match(line)
+        if m:
+            fn, insn = m.group(1), None
+            continue
+        m = INSN.match(line)
+        if m:
+            insn = m.group(1)
+            continue
+        m = RELOC.match(line)
+        if m and fn and insn:
+            callee = m.group(1)
+            if callee.startswith(".text."):      # PowerPC: a static's section
+                if m.group(2):
+                    continue                    # not at the section's start
+                callee = callee[len(".text."):]
+            pair = (title(fn), title(callee))
+            kinds.setdefault(pair, set()).add(insn in TAIL_JUMPS)
+    return {pair for pair, k in kinds.items() if k == {True}}
+
+
+def worst_stack(fn, frames, edges, tails=frozenset(), chain=()):
+    """(bytes, outside callees) of the deepest chain from fn. A sibling
+    call (in tails) runs after fn's frame is gone: its depth is not added
+    to fn's own frame."""
     if fn in chain:
         raise RecursionError(" -> ".join(chain + (fn,)))
     own = frames[fn]
-    deepest, outside = 0, set()
+    deepest, outside = own, set()
     for callee in sorted(edges.get(fn, ())):
         if callee in frames:
-            depth, out = worst_stack(callee, frames, edges, chain + (fn,))
-            deepest = max(deepest, depth)
+            depth, out = worst_stack(callee, frames, edges, tails, chain + (fn,))
+            deepest = max(deepest, depth + (0 if (fn, callee) in tails else own))
             outside |= out
         else:
             outside.add(callee)
-    return own + deepest, outside
+    return deepest, outside
 
 
 def symbols(target, objs, top=20):
@@ -163,13 +212,17 @@ def footprint(build, target):
         for sec in SECTIONS:
             mod[sec] += sizes[sec]
             library[sec] += sizes[sec]
-    cis = [os.path.splitext(p)[0] + ".ci" for p, _ in objs.values()]
-    frames, edges = call_graph([c for c in cis if os.path.exists(c)])
+    cis = {p: os.path.splitext(p)[0] + ".ci" for p, _ in objs.values()}
+    cis = {p: c for p, c in cis.items() if os.path.exists(c)}
+    frames, edges = call_graph(cis.values())
+    tails = set()
+    for path, ci in sorted(cis.items()):
+        tails |= tail_calls(target, path, ci)
     public = sorted(f for f in frames if f.startswith("drdc_"))
     stack = {}
     for fn in public:
         try:
-            depth, outside = worst_stack(fn, frames, edges)
+            depth, outside = worst_stack(fn, frames, edges, tails)
             stack[fn] = {"bytes": depth, "calls_outside": sorted(outside)}
         except RecursionError as e:
             stack[fn] = {"bytes": None, "recursion": str(e)}

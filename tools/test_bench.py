@@ -6,7 +6,7 @@ import os
 import tempfile
 import unittest
 
-from tools import bench
+from tools import bench, footprint
 
 REPORT = {
     "functions": [{"function": "drdc_f", "target": "arm-cm3", "cycles": 100.0}],
@@ -45,3 +45,24 @@ class Guard(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class WorstStack(unittest.TestCase):
+    """tools/footprint.py's depth: frames add up along calls, but a sibling
+    (tail) call runs after its caller's frame is gone."""
+    FRAMES = {"drdc_f": 40, "g": 24, "h": 64, "leaf": 8}
+    EDGES = {"drdc_f": {"g", "h", "__divdi3"}, "g": {"leaf"}, "h": {"leaf"}}
+
+    def test_calls_add_frames(self):
+        depth, outside = footprint.worst_stack("drdc_f", self.FRAMES, self.EDGES)
+        self.assertEqual(depth, 40 + 64 + 8)
+        self.assertEqual(outside, {"__divdi3"})
+
+    def test_sibling_call_does_not_add_the_callers_frame(self):
+        tails = {("drdc_f", "h")}
+        depth, _ = footprint.worst_stack("drdc_f", self.FRAMES, self.EDGES, tails)
+        self.assertEqual(depth, max(40 + 24 + 8, 64 + 8))
+
+    def test_recursion_is_reported(self):
+        with self.assertRaises(RecursionError):
+            footprint.worst_stack("g", {"g": 8}, {"g": {"g"}})
