@@ -76,32 +76,8 @@ drdc_status_t drdc_pose_true_from_grid(const drdc_quat_t *q_grid,
   return turn_about_down(q_grid, convergence, q_true);
 }
 
-drdc_status_t drdc_pose_wutm_from_w(const drdc_WPose_t *w, int32_t zone,
-                                    drdc_WUTMPose_t *out)
-{
-  drdc_geo_utm_t u;
-  drdc_nas_t gamma = 0;
-  drdc_status_t st;
-
-  if ((w == NULL) || (out == NULL)) {
-    return DRDC_E_NULL;
-  }
-  st = geo_to_utm(w->latitude, w->longitude, zone, &u, &gamma, NULL);
-  if (st == DRDC_OK) {
-    /* the last step that can fail writes straight into out (only on
-     * DRDC_OK): no quaternion copy in this frame above the UTM chain */
-    st = turn_about_down(&w->q, -gamma, &out->q);
-  }
-  if (st != DRDC_OK) {
-    return st;
-  }
-  out->utm.zone = u.zone;
-  out->utm.north = u.north;
-  out->utm.easting = u.easting;
-  out->utm.northing = u.northing;
-  out->height = w->height;
-  return DRDC_OK;
-}
+/* drdc_pose_wutm_from_w() is in utm.c, in the frame of the projection's
+ * body (issue 8's stack) */
 
 drdc_status_t drdc_pose_w_from_wutm(const drdc_WUTMPose_t *u,
                                     drdc_WPose_t *out)

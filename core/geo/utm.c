@@ -189,17 +189,29 @@ static bool ups_in_range(bool north, drdc_q47_16_t v)
  * geo_utm_forward() share one struct on the stack, and the caller writes
  * convergence and scale from it. Out of line with three arguments (no
  * stack argument): its values are not in geo_utm_forward()'s frame. */
+static inline __attribute__((always_inline)) drdc_status_t
+ups_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm);
+
 static __attribute__((noinline)) drdc_status_t
 ups_forward(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
+{
+  if (geo_ups_forward(code < CODE_SOUTH, tm) == 0) {
+    return DRDC_E_RANGE;
+  }
+  return ups_from_tm(code, out, tm);
+}
+
+/* ups_forward() after geo_ups_forward(): x and y in tm's xi and eta
+ * slots to easting and northing, checked, into out. Inline into
+ * ups_forward() and grid_metres(). */
+static inline __attribute__((always_inline)) drdc_status_t
+ups_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
 {
   bool north = (code < CODE_SOUTH);
   bool fine = ((code % CODE_SOUTH) >= GEO_ZONE_Q36);
   drdc_q47_16_t e;
   drdc_q47_16_t n;
 
-  if (geo_ups_forward(north, tm) == 0) {
-    return DRDC_E_RANGE;
-  }
   /* Q28.36 offsets in tm's slots; the Q47.16 metres for the checks */
   tm->xi = geo_ups_q36(tm->xi);
   tm->eta = geo_ups_q36(tm->eta);
@@ -369,6 +381,83 @@ drdc_status_t drdc_pose_weutm_from_we(const drdc_WePose_t *w, int32_t zone,
     return st;
   }
   geo_weutm_attitude(w, out);
+  return DRDC_OK;
+}
+
+/* The easting and northing (Q47.16) of drdc_pose_wutm_from_w()'s
+ * projection, checked as utm_from_tm() and ups_from_tm() check them
+ * (same statuses), left in tm->eta and tm->xi rather than in out: the
+ * attitude, which can still fail, comes first. Out of line, after the
+ * projection has returned: its drdc_geo_utm_t is not under it. */
+static __attribute__((noinline)) drdc_status_t
+grid_metres(int32_t code, geo_tm_t *tm)
+{
+  drdc_geo_utm_t u;
+  drdc_status_t st;
+
+  if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
+    st = ups_from_tm(code, &u, tm);
+  } else {
+    st = utm_from_tm(code, &u, tm);
+  }
+  if (st == DRDC_OK) {
+    tm->eta = u.easting;
+    tm->xi = u.northing;
+  }
+  return st;
+}
+
+/* A pose conversion of pose.c, here for the reason of
+ * drdc_pose_weutm_from_we(): the body of drdc_geo_to_utm() in its own
+ * frame. The position cannot wait in out (the attitude after it may
+ * fail, and out stays unchanged on error): it waits in tm, with the
+ * convergence, and out is written only once the attitude is in. */
+drdc_status_t drdc_pose_wutm_from_w(const drdc_WPose_t *w, int32_t zone,
+                                    drdc_WUTMPose_t *out)
+{
+  int32_t code;
+  geo_tm_t tm;
+  drdc_status_t st;
+
+  if ((w == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  /* utm_forward()'s steps and statuses, as drdc_geo_to_utm() (a zone
+   * code above the zones is DRDC_E_ZONE) */
+  tm.xi = w->latitude;
+  tm.eta = w->longitude;
+  tm.gamma = 0;
+  tm.k = 0;
+  code = forward_args((zone > DRDC_GEO_ZONE_MAX) ? (DRDC_GEO_ZONE_MAX + 1)
+                                                 : zone,
+                      &out->utm, &tm);
+  if (code < 0) {
+    return (drdc_status_t)-code;
+  }
+  if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
+    if (geo_ups_forward(code < CODE_SOUTH, &tm) == 0) {
+      return DRDC_E_RANGE;
+    }
+  } else if (geo_tm_forward(&tm) == 0) {
+    return DRDC_E_RANGE;
+  } else {
+    /* xi, eta, gamma in tm */
+  }
+  st = grid_metres(code, &tm);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  /* q_grid = q_z(-gamma) q_true, the last step that can fail, straight
+   * into out->q (written only on DRDC_OK); |gamma| < 180 degrees */
+  st = drdc_pose_grid_from_true(&w->q, geo_nas_from_rad(tm.gamma), &out->q);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  out->utm.zone = code % GEO_ZONE_Q36;
+  out->utm.north = (code < CODE_SOUTH);
+  out->utm.easting = tm.eta;
+  out->utm.northing = tm.xi;
+  out->height = w->height;
   return DRDC_OK;
 }
 

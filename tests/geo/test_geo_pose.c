@@ -69,6 +69,61 @@ static void test_drdc_pose_wutm_from_w_errors(void)
   TEST_ASSERT_EQUAL_INT64(SENTINEL64, u.height);
 }
 
+/* The position and convergence now wait in the function's scratch until
+ * the attitude is in: every byte of out stays as it was when the last
+ * step (the attitude) fails after a projection that succeeded, UTM and
+ * UPS, and when the metres are out of the forced zone's range; then the
+ * same call with a unit quaternion gives drdc_geo_to_utm()'s position. */
+static void test_drdc_pose_wutm_from_w_unchanged_on_error(void)
+{
+  static const struct {
+    drdc_nas_t lat;
+    drdc_nas_t lon;
+    int32_t zone;
+    drdc_status_t st;
+  } rows[] = {
+    /* UTM zone 2, 45 N: convergence about -2.1 degrees */
+    { 45 * NAS_DEG, -170 * NAS_DEG, 2, DRDC_E_OVERFLOW },
+    /* UPS north, 85 N 45 E: convergence 45 degrees */
+    { 85 * NAS_DEG, 45 * NAS_DEG, DRDC_GEO_ZONE_STANDARD, DRDC_E_OVERFLOW },
+    /* UPS south, 85 S 100 W */
+    { -85 * NAS_DEG, -100 * NAS_DEG, DRDC_GEO_ZONE_UPS, DRDC_E_OVERFLOW },
+    /* zone 31 forced 88 degrees east of its meridian: out of its range */
+    { 10 * NAS_DEG, 91 * NAS_DEG, 31, DRDC_E_RANGE },
+    /* UPS forced at 10 N: out of the UPS range */
+    { 10 * NAS_DEG, 0, DRDC_GEO_ZONE_UPS, DRDC_E_RANGE },
+  };
+  size_t i;
+
+  for (i = 0; i < (sizeof rows / sizeof rows[0]); i++) {
+    drdc_WPose_t w = { rows[i].lon, rows[i].lat, M(12),
+                       { INT32_MAX, 0, 0, INT32_MIN } };
+    drdc_WUTMPose_t out;
+    drdc_WUTMPose_t before;
+    drdc_geo_utm_t pos;
+
+    memset(&out, 0x5A, sizeof out);
+    memcpy(&before, &out, sizeof out);
+    TEST_ASSERT_EQUAL_INT(rows[i].st,
+                          drdc_pose_wutm_from_w(&w, rows[i].zone, &out));
+    TEST_ASSERT_EQUAL_MEMORY(&before, &out, sizeof out);
+    if (rows[i].st == DRDC_E_OVERFLOW) {
+      w.q.s = 1073741824;
+      w.q.z = 0;
+      TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                            drdc_pose_wutm_from_w(&w, rows[i].zone, &out));
+      TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                            drdc_geo_to_utm(rows[i].lat, rows[i].lon,
+                                            rows[i].zone, &pos, NULL, NULL));
+      TEST_ASSERT_EQUAL_INT32(pos.zone, out.utm.zone);
+      TEST_ASSERT_TRUE(pos.north == out.utm.north);
+      TEST_ASSERT_EQUAL_INT64(pos.easting, out.utm.easting);
+      TEST_ASSERT_EQUAL_INT64(pos.northing, out.utm.northing);
+      TEST_ASSERT_EQUAL_INT64(M(12), out.height);
+    }
+  }
+}
+
 static void test_drdc_pose_w_from_wutm_errors(void)
 {
   drdc_WUTMPose_t u = { { 31, true, M(500000), M(0) }, 0,
@@ -628,6 +683,7 @@ void suite_geo_pose(void)
   UnitySetTestFile(__FILE__);
   RUN_TEST(test_drdc_pose_grid_and_true_errors);
   RUN_TEST(test_drdc_pose_wutm_from_w_errors);
+  RUN_TEST(test_drdc_pose_wutm_from_w_unchanged_on_error);
   RUN_TEST(test_drdc_pose_w_from_wutm_errors);
   RUN_TEST(test_drdc_pose_w_from_l_errors);
   RUN_TEST(test_drdc_pose_l_from_w_errors);
