@@ -204,26 +204,8 @@ drdc_status_t geo_mgrs_format_bits(const drdc_geo_utm_t *u, unsigned frac_bits,
   return DRDC_OK;
 }
 
-drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
-                                   int32_t prec, char *text, size_t size)
-{
-  drdc_geo_utm_t u;
-  drdc_status_t st;
-
-  if (text == NULL) {
-    return DRDC_E_NULL;
-  }
-  /* the easting and northing before their rounding to Q47.16 (2^-36 m),
-   * so the truncation falls on the side of a digit boundary that
-   * GeographicLib's value falls on, but within nanometres of it */
-  st = geo_utm_forward(lat, lon, DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, &u,
-                       NULL, NULL);
-  if (st != DRDC_OK) {
-    return st;
-  }
-  /* the standard zone is always inside the MGRS limits */
-  return geo_mgrs_format_bits(&u, 36u, lat, prec, text, size);
-}
+/* drdc_geo_mgrs_encode() is in utm.c, in the frame of the projection's
+ * body (issue 8's stack) */
 
 /* drdc_geo_mgrs_from_utm() is in utm.c, in the frame of the reverse
  * projection's body (issue 8's stack) */

@@ -145,7 +145,7 @@ static __attribute__((noinline)) int64_t angle_from_metres(drdc_q47_16_t v)
  * keeps this one code and out across the projection, not lat, lon, zone
  * and the flags (issue 8's stack). */
 static __attribute__((noinline)) int32_t
-forward_args(int32_t zone, const drdc_geo_utm_t *out, geo_tm_t *tm)
+forward_args(int32_t zone, const void *out, geo_tm_t *tm)
 {
   drdc_nas_t lat = tm->xi;
   drdc_nas_t lon = tm->eta;
@@ -459,6 +459,71 @@ drdc_status_t drdc_pose_wutm_from_w(const drdc_WPose_t *w, int32_t zone,
   out->utm.northing = tm.xi;
   out->height = w->height;
   return DRDC_OK;
+}
+
+/* The text of drdc_geo_mgrs_encode() after its projection, out of line:
+ * its drdc_geo_utm_t is not under the projection. tm holds
+ * grid_metres()'s easting and northing (Q28.36) in its eta and xi slots,
+ * and in its gamma and k slots the latitude (nas) and the precision. */
+static __attribute__((noinline)) drdc_status_t
+mgrs_from_tm(int32_t code, geo_tm_t *tm, char *text, size_t size)
+{
+  drdc_geo_utm_t u;
+  drdc_nas_t lat = tm->gamma;
+  int32_t prec = (int32_t)tm->k;
+
+  u.zone = code % GEO_ZONE_Q36;
+  u.north = (code < CODE_SOUTH);
+  u.easting = tm->eta;
+  u.northing = tm->xi;
+  /* the standard zone is always inside the MGRS limits */
+  return geo_mgrs_format_bits(&u, 36u, lat, prec, text, size);
+}
+
+/* MGRS text of a geographic position (mgrs.c's encoder), here for the
+ * reason of drdc_pose_weutm_from_we(): the body of geo_utm_forward(), in
+ * the standard zone, with the easting and northing before their rounding
+ * to Q47.16 (2^-36 m), so the truncation falls on the side of a digit
+ * boundary that GeographicLib's value falls on, but within nanometres of
+ * it. */
+drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
+                                   int32_t prec, char *text, size_t size)
+{
+  int32_t code;
+  geo_tm_t tm;
+  drdc_status_t st;
+
+  if (text == NULL) {
+    return DRDC_E_NULL;
+  }
+  tm.xi = lat;
+  tm.eta = lon;
+  tm.gamma = 0;
+  tm.k = 0;
+  /* forward_args() only tests its out for NULL (text is not) */
+  code = forward_args(DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, text, &tm);
+  if (code < 0) {
+    return (drdc_status_t)-code;
+  }
+  if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
+    if (geo_ups_forward(code < CODE_SOUTH, &tm) == 0) {
+      return DRDC_E_RANGE;
+    }
+  } else if (geo_tm_forward(&tm) == 0) {
+    return DRDC_E_RANGE;
+  } else {
+    /* xi, eta in tm */
+  }
+  st = grid_metres(code, &tm);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  /* the slots the encoder does not read carry the latitude and the
+   * precision on: four arguments in registers, no outgoing stack
+   * arguments in this frame (Cortex-M3) */
+  tm.gamma = lat;
+  tm.k = prec;
+  return mgrs_from_tm(code, &tm, text, size);
 }
 
 /* drdc_geo_from_utm() after its NULL checks, inline into it,
