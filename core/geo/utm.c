@@ -189,7 +189,7 @@ static bool ups_in_range(bool north, drdc_q47_16_t v)
  * geo_utm_forward() share one struct on the stack, and the caller writes
  * convergence and scale from it. Out of line with three arguments (no
  * stack argument): its values are not in geo_utm_forward()'s frame. */
-static inline __attribute__((always_inline)) drdc_status_t
+static __attribute__((noinline)) drdc_status_t
 ups_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm);
 
 static __attribute__((noinline)) drdc_status_t
@@ -202,9 +202,9 @@ ups_forward(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
 }
 
 /* ups_forward() after geo_ups_forward(): x and y in tm's xi and eta
- * slots to easting and northing, checked, into out. Inline into
- * ups_forward() and grid_metres(). */
-static inline __attribute__((always_inline)) drdc_status_t
+ * slots to easting and northing, checked, into out. Out of line, one
+ * copy for ups_forward() (a sibling call) and grid_metres(). */
+static __attribute__((noinline)) drdc_status_t
 ups_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
 {
   bool north = (code < CODE_SOUTH);
