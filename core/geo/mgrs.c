@@ -9,9 +9,9 @@
  * GeographicLib implements it (NGA.SIG.0012): UTM columns A-H, J-R, S-Z
  * by zone modulo 3, rows A-V (I and O skipped) shifted by 5 in even zones;
  * UPS columns and rows from their own sets per polar half. Coordinates
- * are whole micrometres, truncated: of the Q28.36 metres of
- * geo_utm_forward() (encode from geographic) or of the Q47.16 input
- * (from UTM).
+ * are whole micrometres, truncated: of the Q28.36 metres of the
+ * projection (encode from geographic, drdc_geo_mgrs_encode() in utm.c)
+ * or of the Q47.16 input (from UTM).
  */
 #include <drdc/geo_mgrs.h>
 
