@@ -408,6 +408,25 @@ grid_metres(int32_t code, geo_tm_t *tm)
   return st;
 }
 
+/* The projection of forward_args()'s code (UPS or transverse Mercator)
+ * on tm, then its metres checked by grid_metres(): the steps and statuses
+ * that drdc_pose_wutm_from_w() and drdc_geo_mgrs_encode() share. Inlined
+ * (always_inline) so the projection stays called from their own frames. */
+static inline __attribute__((always_inline)) drdc_status_t
+project_to_grid(int32_t code, geo_tm_t *tm)
+{
+  if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
+    if (geo_ups_forward(code < CODE_SOUTH, tm) == 0) {
+      return DRDC_E_RANGE;
+    }
+  } else if (geo_tm_forward(tm) == 0) {
+    return DRDC_E_RANGE;
+  } else {
+    /* xi, eta (and gamma) in tm */
+  }
+  return grid_metres(code, tm);
+}
+
 /* A pose conversion of pose.c, here for the reason of
  * drdc_pose_weutm_from_we(): the body of drdc_geo_to_utm() in its own
  * frame. The position cannot wait in out (the attitude after it may
@@ -435,16 +454,7 @@ drdc_status_t drdc_pose_wutm_from_w(const drdc_WPose_t *w, int32_t zone,
   if (code < 0) {
     return (drdc_status_t)-code;
   }
-  if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
-    if (geo_ups_forward(code < CODE_SOUTH, &tm) == 0) {
-      return DRDC_E_RANGE;
-    }
-  } else if (geo_tm_forward(&tm) == 0) {
-    return DRDC_E_RANGE;
-  } else {
-    /* xi, eta, gamma in tm */
-  }
-  st = grid_metres(code, &tm);
+  st = project_to_grid(code, &tm);
   if (st != DRDC_OK) {
     return st;
   }
@@ -506,16 +516,7 @@ drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
   if (code < 0) {
     return (drdc_status_t)-code;
   }
-  if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
-    if (geo_ups_forward(code < CODE_SOUTH, &tm) == 0) {
-      return DRDC_E_RANGE;
-    }
-  } else if (geo_tm_forward(&tm) == 0) {
-    return DRDC_E_RANGE;
-  } else {
-    /* xi, eta in tm */
-  }
-  st = grid_metres(code, &tm);
+  st = project_to_grid(code, &tm);
   if (st != DRDC_OK) {
     return st;
   }
