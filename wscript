@@ -79,8 +79,8 @@ FLASH_OPTIMISED = {
     "core/nmea/parse.c": "compact", "core/nmea/precision.c": "size",
     "core/nmea/rmc.c": "compact", "core/nmea/utc.c": "size",
     "core/nmea/zda.c": "size",
-    "core/jaus/date_stamp.c": "size", "core/jaus/global_pose.c": "size",
-    "core/jaus/local_pose.c": "compact-no-threading",
+    "core/jaus/date_stamp.c": "size",
+    "core/jaus/pose_messages.c": "compact-no-threading",
     "core/jaus/scaled.c": "compact",
     "core/time/jaus_stamp.c": "size", "core/time/iso8601.c": "compact-calls",
     # unit conversion at the edge: table search and rational scale
