@@ -26,22 +26,34 @@ drdc_bam32_t drdc_pose_bam_from_convergence(drdc_nas_t convergence)
   return (drdc_bam32_t)(uint64_t)b;
 }
 
+/* q_z(2 half) * q for half a turn's angle as a binary angle: r q with r
+ * = (cos half, 0, 0, sin half). Out of line, sibling-called by
+ * turn_about_down() once the half angle is known: r and the sine and
+ * cosine are not in a frame under the division that finds it (issue 8's
+ * stack). */
+static __attribute__((noinline)) drdc_status_t
+turn_by_half(const drdc_quat_t *q, drdc_bam32_t half, drdc_quat_t *out)
+{
+  drdc_q1_30_t s = 0;
+  drdc_q1_30_t c = 0;
+  drdc_quat_t r;
+
+  drdc_fx_sincos_bam32(half, &s, &c);
+  r.s = c;
+  r.x = 0;
+  r.y = 0;
+  r.z = s;
+  return drdc_quat_mul(&r, q, out);
+}
+
 /* q_z(angle) * q for an angle in nas, |angle| <= 180 degrees */
 static drdc_status_t turn_about_down(const drdc_quat_t *q, drdc_nas_t angle,
                                      drdc_quat_t *out)
 {
   /* half the angle as a binary angle (|half| <= 90 degrees) */
   int64_t half = geo_muldiv(angle, INT64_C(2147483648), NAS_PER_TURN);
-  drdc_q1_30_t s = 0;
-  drdc_q1_30_t c = 0;
-  drdc_quat_t r;
 
-  drdc_fx_sincos_bam32((drdc_bam32_t)(uint64_t)half, &s, &c);
-  r.s = c;
-  r.x = 0;
-  r.y = 0;
-  r.z = s;
-  return drdc_quat_mul(&r, q, out);
+  return turn_by_half(q, (drdc_bam32_t)(uint64_t)half, out);
 }
 
 static bool convergence_ok(drdc_nas_t convergence)
@@ -76,33 +88,23 @@ drdc_status_t drdc_pose_true_from_grid(const drdc_quat_t *q_grid,
   return turn_about_down(q_grid, convergence, q_true);
 }
 
-/* drdc_pose_wutm_from_w() is in utm.c, in the frame of the projection's
- * body (issue 8's stack) */
+/* drdc_pose_wutm_from_w(), drdc_pose_w_from_wutm() and their Euler forms
+ * are in utm.c, in the frame of the projection's body (issue 8's stack) */
 
-drdc_status_t drdc_pose_w_from_wutm(const drdc_WUTMPose_t *u,
-                                    drdc_WPose_t *out)
+/* The last step of utm.c's w_from_grid(), after the projection: q_true =
+ * q_z(gamma) q_grid straight into out->q, gamma (nas, |gamma| < 180
+ * degrees) in tm->gamma, then the height; written only on DRDC_OK. */
+drdc_status_t geo_w_attitude(const drdc_WUTMPose_t *u,
+                             const drdc_WMGRSPose_t *m, const geo_tm_t *tm,
+                             drdc_WPose_t *out)
 {
-  drdc_nas_t lat = 0;
-  drdc_nas_t lon = 0;
-  drdc_nas_t gamma = 0;
   drdc_status_t st;
 
-  if ((u == NULL) || (out == NULL)) {
-    return DRDC_E_NULL;
-  }
-  st = drdc_geo_from_utm(&u->utm, &lat, &lon, &gamma, NULL);
+  st = turn_about_down((u != NULL) ? &u->q : &m->q, tm->gamma, &out->q);
   if (st == DRDC_OK) {
-    /* the last step that can fail, straight into out (as in
-     * drdc_pose_wutm_from_w()) */
-    st = turn_about_down(&u->q, gamma, &out->q);
+    out->height = (u != NULL) ? u->height : m->height;
   }
-  if (st != DRDC_OK) {
-    return st;
-  }
-  out->latitude = lat;
-  out->longitude = lon;
-  out->height = u->height;
-  return DRDC_OK;
+  return st;
 }
 
 /* drdc_pose_weutm_from_we() is in utm.c, in the frame of the projection's
@@ -114,16 +116,6 @@ void geo_weutm_attitude(const drdc_WePose_t *w, drdc_WeUTMPose_t *out)
   out->height = w->height;
   out->e.pitch = w->e.pitch;
   out->e.roll = w->e.roll;
-}
-
-/* drdc_pose_we_from_weutm() is in utm.c, as drdc_pose_weutm_from_we() */
-void geo_we_attitude(const drdc_WeUTMPose_t *u, drdc_WePose_t *out)
-{
-  /* out->height holds the convergence until here */
-  out->e.yaw = u->e.yaw + drdc_pose_bam_from_convergence(out->height);
-  out->height = u->height;
-  out->e.pitch = u->e.pitch;
-  out->e.roll = u->e.roll;
 }
 
 /* the ellipsoidal point of a pose */
@@ -305,40 +297,6 @@ static drdc_status_t mgrs_and_gamma(drdc_nas_t lat, drdc_nas_t lon,
   return st;
 }
 
-/* the centre of an MGRS text's cell (DRDC_GEO_MGRS_SIZE bytes at most),
- * written only on DRDC_OK. Out of line, so that the corner the decoder
- * also writes is not on the stack under drdc_geo_from_utm(). */
-static __attribute__((noinline)) drdc_status_t mgrs_cell_centre(
-  const char *text, drdc_geo_utm_t *centre)
-{
-  drdc_geo_utm_t corner;
-  size_t n = 0u;
-
-  /* the decoder must not read beyond the array */
-  while ((n < DRDC_GEO_MGRS_SIZE) && (text[n] != '\0')) {
-    n++;
-  }
-  if (n == DRDC_GEO_MGRS_SIZE) {
-    return DRDC_E_MGRS;
-  }
-  return drdc_geo_mgrs_decode(text, &corner, centre, NULL);
-}
-
-/* the position of an MGRS text (its cell's centre) and the convergence
- * there; lat and lon written only on DRDC_OK */
-static drdc_status_t mgrs_centre(const char *text, drdc_nas_t *lat,
-                                 drdc_nas_t *lon, drdc_nas_t *gamma)
-{
-  drdc_geo_utm_t centre;
-  drdc_status_t st;
-
-  st = mgrs_cell_centre(text, &centre);
-  if (st == DRDC_OK) {
-    st = drdc_geo_from_utm(&centre, lat, lon, gamma, NULL);
-  }
-  return st;
-}
-
 drdc_status_t drdc_pose_wmgrs_from_w(const drdc_WPose_t *w, int32_t prec,
                                      drdc_WMGRSPose_t *out)
 {
@@ -378,31 +336,7 @@ drdc_status_t drdc_pose_wmgrs_from_w(const drdc_WPose_t *w, int32_t prec,
   return DRDC_OK;
 }
 
-drdc_status_t drdc_pose_w_from_wmgrs(const drdc_WMGRSPose_t *m,
-                                     drdc_WPose_t *out)
-{
-  drdc_nas_t lat = 0;
-  drdc_nas_t lon = 0;
-  drdc_nas_t gamma = 0;
-  drdc_status_t st;
-
-  if ((m == NULL) || (out == NULL)) {
-    return DRDC_E_NULL;
-  }
-  st = mgrs_centre(m->mgrs, &lat, &lon, &gamma);
-  if (st == DRDC_OK) {
-    /* the last step that can fail, straight into out (as in
-     * drdc_pose_w_from_wutm()) */
-    st = turn_about_down(&m->q, gamma, &out->q);
-  }
-  if (st != DRDC_OK) {
-    return st;
-  }
-  out->latitude = lat;
-  out->longitude = lon;
-  out->height = m->height;
-  return DRDC_OK;
-}
+/* drdc_pose_w_from_wmgrs() is in utm.c, as drdc_pose_w_from_wutm() */
 
 drdc_status_t drdc_pose_wemgrs_from_we(const drdc_WePose_t *w, int32_t prec,
                                        drdc_WeMGRSPose_t *out)
@@ -427,27 +361,7 @@ drdc_status_t drdc_pose_wemgrs_from_we(const drdc_WePose_t *w, int32_t prec,
   return DRDC_OK;
 }
 
-drdc_status_t drdc_pose_we_from_wemgrs(const drdc_WeMGRSPose_t *m,
-                                       drdc_WePose_t *out)
-{
-  drdc_nas_t gamma = 0;
-  drdc_status_t st;
-
-  if ((m == NULL) || (out == NULL)) {
-    return DRDC_E_NULL;
-  }
-  /* the one step that can fail writes the position only on DRDC_OK:
-   * straight into out */
-  st = mgrs_centre(m->mgrs, &out->latitude, &out->longitude, &gamma);
-  if (st != DRDC_OK) {
-    return st;
-  }
-  out->height = m->height;
-  out->e.yaw = m->e.yaw + drdc_pose_bam_from_convergence(gamma);
-  out->e.pitch = m->e.pitch;
-  out->e.roll = m->e.roll;
-  return DRDC_OK;
-}
+/* drdc_pose_we_from_wemgrs() is in utm.c, as drdc_pose_we_from_weutm() */
 
 drdc_status_t drdc_pose_l_from_le(const drdc_lePose_t *le, drdc_lPose_t *out)
 {
