@@ -224,36 +224,9 @@ int32_t geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec);
  *  its rounding to Q47.16. */
 int64_t geo_ups_q36(int64_t a);
 
-/** Added to a zone code of drdc_geo_to_utm() (-1..60): geo_utm_forward()
- *  returns easting and northing in Q28.36 metres. */
+/** Added to a zone code of drdc_geo_to_utm() (-1..60): utm.c's forward
+ *  projection (for MGRS) keeps easting and northing in Q28.36 metres. */
 #define GEO_ZONE_Q36 ((int32_t)256)
-
-/**
- * drdc_geo_to_utm(), which passes its arguments on to this; with zone
- * plus GEO_ZONE_Q36 the easting and northing are in Q28.36 metres
- * (2^-36 m, int64_t in the drdc_geo_utm_t fields): the false origin plus
- * the projection's offset before its rounding to Q47.16. Same checks,
- * statuses, convergence and scale; the Q47.16 result is the offset from
- * the false origin rounded to nearest.
- */
-drdc_status_t geo_utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
-                              drdc_geo_utm_t *out, drdc_nas_t *convergence,
-                              drdc_q5_58_t *scale);
-
-/**
- * drdc_geo_to_utm(), for the pose conversions: the public function runs
- * the body of geo_utm_forward() in its own frame (no wrapper frame on
- * the projection's chain). A zone code above the zones is DRDC_E_ZONE
- * (after the checks that come first), never a request for the Q28.36
- * result.
- */
-static inline drdc_status_t geo_to_utm(drdc_nas_t lat, drdc_nas_t lon,
-                                       int32_t zone, drdc_geo_utm_t *out,
-                                       drdc_nas_t *convergence,
-                                       drdc_q5_58_t *scale)
-{
-  return drdc_geo_to_utm(lat, lon, zone, out, convergence, scale);
-}
 
 /** The last step of drdc_pose_w_from_wutm() (u) and
  *  drdc_pose_w_from_wmgrs() (m, u NULL), in utm.c, after the reverse
@@ -267,6 +240,15 @@ drdc_status_t geo_w_attitude(const drdc_WUTMPose_t *u,
                              const drdc_WMGRSPose_t *m, const geo_tm_t *tm,
                              drdc_WPose_t *out);
 
+/** The attitude and height of drdc_pose_wmgrs_from_w() (in utm.c), after
+ *  the projection: w's attitude turned from true to grid north by the
+ *  convergence (radians) in tm->gamma straight into out->q, then the
+ *  height; written only on DRDC_OK (else DRDC_E_OVERFLOW). In pose.c, as
+ *  geo_w_attitude(), so the caller passes tm's address, not a 64-bit
+ *  argument on its stack. */
+drdc_status_t geo_wmgrs_attitude(const drdc_WPose_t *w, const geo_tm_t *tm,
+                                 drdc_WMGRSPose_t *out);
+
 /** The last step of drdc_pose_weutm_from_we() (in utm.c), after the
  *  projection: height and angles of w into out, the yaw turned from true
  *  to grid north by the convergence parked in out->height. Never
@@ -275,7 +257,7 @@ void geo_weutm_attitude(const drdc_WePose_t *w, drdc_WeUTMPose_t *out);
 
 /**
  * geo_mgrs_format() of a position whose easting and northing carry
- * frac_bits fraction bits (16: Q47.16; 36: geo_utm_forward() with
+ * frac_bits fraction bits (16: Q47.16; 36: utm.c's projection with
  * GEO_ZONE_Q36): the digits
  * truncate that value.
  */

@@ -107,6 +107,22 @@ drdc_status_t geo_w_attitude(const drdc_WUTMPose_t *u,
   return st;
 }
 
+/* The attitude and height of utm.c's drdc_pose_wmgrs_from_w(), after the
+ * projection: q_grid = q_z(-gamma) q_true straight into out->q, gamma
+ * (radians, |gamma| < 180 degrees) in tm->gamma; written only on
+ * DRDC_OK. */
+drdc_status_t geo_wmgrs_attitude(const drdc_WPose_t *w, const geo_tm_t *tm,
+                                 drdc_WMGRSPose_t *out)
+{
+  drdc_status_t st;
+
+  st = turn_about_down(&w->q, -geo_nas_from_rad(tm->gamma), &out->q);
+  if (st == DRDC_OK) {
+    out->height = w->height;
+  }
+  return st;
+}
+
 /* drdc_pose_weutm_from_we() is in utm.c, in the frame of the projection's
  * body; it ends here */
 void geo_weutm_attitude(const drdc_WePose_t *w, drdc_WeUTMPose_t *out)
@@ -273,95 +289,7 @@ drdc_status_t drdc_pose_l_from_w(const drdc_WPose_t *ref,
   return DRDC_OK;
 }
 
-/* the MGRS text of w's position at prec and the convergence there; text
- * (DRDC_GEO_MGRS_SIZE bytes) written only on DRDC_OK */
-static drdc_status_t mgrs_and_gamma(drdc_nas_t lat, drdc_nas_t lon,
-                                    int32_t prec, char *text,
-                                    drdc_nas_t *gamma)
-{
-  drdc_geo_utm_t u;
-  drdc_status_t st;
-
-  /* prec first: DRDC_E_RANGE must not depend on the position */
-  if ((prec < DRDC_GEO_MGRS_PREC_MIN) || (prec > DRDC_GEO_MGRS_PREC_MAX)) {
-    return DRDC_E_RANGE;
-  }
-  /* the coordinates before their rounding to Q47.16, as
-   * drdc_geo_mgrs_encode() truncates them */
-  st = geo_utm_forward(lat, lon, DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, &u,
-                       gamma, NULL);
-  if (st == DRDC_OK) {
-    /* the standard zone is always inside the MGRS limits */
-    st = geo_mgrs_format_bits(&u, 36u, lat, prec, text, DRDC_GEO_MGRS_SIZE);
-  }
-  return st;
-}
-
-drdc_status_t drdc_pose_wmgrs_from_w(const drdc_WPose_t *w, int32_t prec,
-                                     drdc_WMGRSPose_t *out)
-{
-  drdc_geo_utm_t u;
-  drdc_nas_t gamma = 0;
-  drdc_quat_t q = { 0, 0, 0, 0 };
-  drdc_status_t st;
-
-  if ((w == NULL) || (out == NULL)) {
-    return DRDC_E_NULL;
-  }
-  /* as mgrs_and_gamma(), with the attitude turned before the text is
-   * made: the text then goes straight into out (geo_mgrs_format() writes
-   * it only on DRDC_OK, and it is the last step that can fail), so no
-   * text buffer is on the stack */
-  if ((prec < DRDC_GEO_MGRS_PREC_MIN) || (prec > DRDC_GEO_MGRS_PREC_MAX)) {
-    return DRDC_E_RANGE;
-  }
-  st = geo_utm_forward(w->latitude, w->longitude,
-                       DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, &u, &gamma, NULL);
-  if (st == DRDC_OK) {
-    st = turn_about_down(&w->q, -gamma, &q);
-  }
-  if (st == DRDC_OK) {
-    /* the standard zone is always inside the MGRS limits */
-    st = geo_mgrs_format_bits(&u, 36u, w->latitude, prec, out->mgrs,
-                              DRDC_GEO_MGRS_SIZE);
-  }
-  if (st != DRDC_OK) {
-    return st;
-  }
-  out->height = w->height;
-  out->q.s = q.s;
-  out->q.x = q.x;
-  out->q.y = q.y;
-  out->q.z = q.z;
-  return DRDC_OK;
-}
-
-/* drdc_pose_w_from_wmgrs() is in utm.c, as drdc_pose_w_from_wutm() */
-
-drdc_status_t drdc_pose_wemgrs_from_we(const drdc_WePose_t *w, int32_t prec,
-                                       drdc_WeMGRSPose_t *out)
-{
-  drdc_nas_t gamma = 0;
-  drdc_status_t st;
-
-  if ((w == NULL) || (out == NULL)) {
-    return DRDC_E_NULL;
-  }
-  /* the text straight into out: mgrs_and_gamma() writes it only on
-   * DRDC_OK, and nothing after it can fail (no text buffer on the
-   * stack) */
-  st = mgrs_and_gamma(w->latitude, w->longitude, prec, out->mgrs, &gamma);
-  if (st != DRDC_OK) {
-    return st;
-  }
-  out->height = w->height;
-  out->e.yaw = w->e.yaw - drdc_pose_bam_from_convergence(gamma);
-  out->e.pitch = w->e.pitch;
-  out->e.roll = w->e.roll;
-  return DRDC_OK;
-}
-
-/* drdc_pose_we_from_wemgrs() is in utm.c, as drdc_pose_we_from_weutm() */
+/* the four MGRS poses are in utm.c, as drdc_pose_w_from_wutm() */
 
 drdc_status_t drdc_pose_l_from_le(const drdc_lePose_t *le, drdc_lPose_t *out)
 {

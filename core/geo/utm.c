@@ -45,7 +45,7 @@
 /* Q47.16 metres -> Q28.36 (exact for the false origins used here). */
 #define Q36_FROM_Q16(v) ((v) * INT64_C(1048576))
 
-/* Every zone code from here up asks geo_utm_forward() for Q28.36. */
+/* Every zone code from here up asks forward_args() for Q28.36. */
 #define ZONE_FINE_MIN (GEO_ZONE_Q36 + DRDC_GEO_ZONE_STANDARD)
 
 static drdc_status_t check_lat_lon(drdc_nas_t lat, drdc_nas_t lon)
@@ -138,7 +138,7 @@ static __attribute__((noinline)) int64_t angle_from_metres(drdc_q47_16_t v)
  * (geo_impl.h's, which the MGRS decoder also returns). */
 #define CODE_SOUTH GEO_CODE_SOUTH
 
-/* The checks and the projection's arguments of geo_utm_forward(), out of
+/* The checks and the projection's arguments of utm_forward(), out of
  * line (out is only checked for NULL here, the first check): lat and lon (nas) come in tm->xi and tm->eta and leave as phi and
  * lam in radians (UTM: lam from the zone's central meridian; UPS: the
  * longitude in [-180, 180) degrees). Returns the zone (0: UPS) plus
@@ -188,9 +188,9 @@ static bool ups_in_range(bool north, drdc_q47_16_t v)
  * code tells the hemisphere and the fine request), easting and northing
  * in Q47.16 or (fine) Q28.36; tm is the caller's scratch (x, y, gamma, k
  * in its xi, eta, gamma, k), so the UTM and UPS branches of
- * geo_utm_forward() share one struct on the stack, and the caller writes
+ * utm_forward() share one struct on the stack, and the caller writes
  * convergence and scale from it. Out of line with three arguments (no
- * stack argument): its values are not in geo_utm_forward()'s frame. */
+ * stack argument): its values are not in utm_forward()'s frame. */
 static __attribute__((noinline)) drdc_status_t
 ups_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm);
 
@@ -267,12 +267,12 @@ utm_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
   return DRDC_OK;
 }
 
-/* drdc_geo_to_utm() and its Q28.36 form for MGRS in one: zone is a zone
- * code of drdc_geo_to_utm(), plus GEO_ZONE_Q36 for the Q28.36 result.
- * Inline into both entries (a few dozen instructions: the stages are out
- * of line), so that neither stacks a frame of its own on top of this
- * one: a wrapper's frame, even a sibling call's, counts on issue 8's
- * chain (16 B on PowerPC). */
+/* drdc_geo_to_utm() and its Q28.36 form in one: zone is a zone code of
+ * drdc_geo_to_utm(), plus GEO_ZONE_Q36 for the Q28.36 result. Inline
+ * into its entries (drdc_geo_to_utm(), drdc_pose_weutm_from_we(); a few
+ * dozen instructions: the stages are out of line), so that none stacks a
+ * frame of its own on top of this one: a wrapper's frame, even a sibling
+ * call's, counts on issue 8's chain (16 B on PowerPC). */
 static inline __attribute__((always_inline)) drdc_status_t
 utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
             drdc_geo_utm_t *out, drdc_nas_t *convergence, drdc_q5_58_t *scale)
@@ -307,19 +307,12 @@ utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
   return DRDC_OK;
 }
 
-drdc_status_t geo_utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
-                              drdc_geo_utm_t *out, drdc_nas_t *convergence,
-                              drdc_q5_58_t *scale)
-{
-  return utm_forward(lat, lon, zone, out, convergence, scale);
-}
-
 drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
                               drdc_geo_utm_t *out, drdc_nas_t *convergence,
                               drdc_q5_58_t *scale)
 {
   /* a zone code above the zones is DRDC_E_ZONE, never a request for
-   * Q28.36 (as geo_to_utm()) */
+   * Q28.36 */
   return utm_forward(lat, lon,
                      (zone > DRDC_GEO_ZONE_MAX) ? (DRDC_GEO_ZONE_MAX + 1)
                                                 : zone,
@@ -459,7 +452,7 @@ mgrs_from_tm(int32_t code, geo_tm_t *tm, char *text, size_t size)
 }
 
 /* MGRS text of a geographic position (mgrs.c's encoder), here for the
- * reason of drdc_pose_weutm_from_we(): the body of geo_utm_forward(), in
+ * reason of drdc_pose_weutm_from_we(): the body of utm_forward(), in
  * the standard zone, with the easting and northing before their rounding
  * to Q47.16 (2^-36 m), so the truncation falls on the side of a digit
  * boundary that GeographicLib's value falls on, but within nanometres of
@@ -493,6 +486,98 @@ drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
   tm.gamma = lat;
   tm.k = prec;
   return mgrs_from_tm(code, &tm, text, size);
+}
+
+/* The MGRS text of drdc_geo_mgrs_encode()'s projection in tm (its
+ * code), at prec (checked) and for the latitude lat (nas), into text
+ * (DRDC_GEO_MGRS_SIZE bytes): mgrs_from_tm(), which never fails here (a
+ * standard zone's position is always inside the MGRS limits, the size
+ * holds the longest text), so the MGRS poses write it last, after the
+ * attitude and height; tm is left holding lat and prec. */
+static inline __attribute__((always_inline)) void
+mgrs_text(int32_t code, drdc_nas_t lat, int32_t prec, geo_tm_t *tm,
+          char *text)
+{
+  tm->gamma = lat;
+  tm->k = prec;
+  (void)mgrs_from_tm(code, tm, text, DRDC_GEO_MGRS_SIZE);
+}
+
+/* A pose conversion of pose.c, here for the reason of
+ * drdc_pose_weutm_from_we(): the body of drdc_geo_mgrs_encode() in its
+ * own frame, the position and the convergence waiting in its geo_tm_t
+ * (as drdc_pose_wutm_from_w()) while pose.c's geo_wmgrs_attitude() turns
+ * the attitude, the last step that can fail, straight into out->q and
+ * writes the height (only on DRDC_OK); then the text. Statuses and their
+ * order as before. */
+drdc_status_t drdc_pose_wmgrs_from_w(const drdc_WPose_t *w, int32_t prec,
+                                     drdc_WMGRSPose_t *out)
+{
+  int32_t code;
+  geo_tm_t tm;
+  drdc_status_t st;
+
+  if ((w == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  /* prec first: DRDC_E_RANGE must not depend on the position */
+  if ((prec < DRDC_GEO_MGRS_PREC_MIN) || (prec > DRDC_GEO_MGRS_PREC_MAX)) {
+    return DRDC_E_RANGE;
+  }
+  tm.xi = w->latitude;
+  tm.eta = w->longitude;
+  tm.gamma = 0;
+  tm.k = 0;
+  code = forward_args(DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, out, &tm);
+  if (code < 0) {
+    return (drdc_status_t)-code;
+  }
+  st = project_to_grid(code, &tm);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  st = geo_wmgrs_attitude(w, &tm, out);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  mgrs_text(code, w->latitude, prec, &tm, out->mgrs);
+  return DRDC_OK;
+}
+
+/* As drdc_pose_wmgrs_from_w(), the yaw turned instead (which cannot
+ * fail) */
+drdc_status_t drdc_pose_wemgrs_from_we(const drdc_WePose_t *w, int32_t prec,
+                                       drdc_WeMGRSPose_t *out)
+{
+  int32_t code;
+  geo_tm_t tm;
+  drdc_status_t st;
+
+  if ((w == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  if ((prec < DRDC_GEO_MGRS_PREC_MIN) || (prec > DRDC_GEO_MGRS_PREC_MAX)) {
+    return DRDC_E_RANGE;
+  }
+  tm.xi = w->latitude;
+  tm.eta = w->longitude;
+  tm.gamma = 0;
+  tm.k = 0;
+  code = forward_args(DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, out, &tm);
+  if (code < 0) {
+    return (drdc_status_t)-code;
+  }
+  st = project_to_grid(code, &tm);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  out->e.yaw = w->e.yaw - drdc_pose_bam_from_convergence(
+                            geo_nas_from_rad(tm.gamma));
+  out->e.pitch = w->e.pitch;
+  out->e.roll = w->e.roll;
+  out->height = w->height;
+  mgrs_text(code, w->latitude, prec, &tm, out->mgrs);
+  return DRDC_OK;
 }
 
 /* The checks of drdc_geo_from_utm() after the zone's, and the reverse

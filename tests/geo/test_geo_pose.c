@@ -782,6 +782,99 @@ static void test_w_from_grid_step_by_step(void)
   TEST_ASSERT_EQUAL_UINT(4u, overflows);
 }
 
+/* {W} -> {W-MGRS} and {We} -> {We-MGRS} against drdc_geo_mgrs_encode(),
+ * drdc_geo_to_utm()'s convergence and drdc_pose_grid_from_true() or
+ * drdc_pose_bam_from_convergence(), as the test above */
+static void test_mgrs_from_w_step_by_step(void)
+{
+  size_t i;
+  size_t j;
+
+  for (i = 0; i < COUNT(grid_points); i++) {
+    drdc_geo_utm_t g;
+    drdc_nas_t gamma = 0;
+    char text[DRDC_GEO_MGRS_SIZE];
+    drdc_WePose_t we = { grid_points[i].lon, grid_points[i].lat, M(7),
+                         { 4000000000u, 12345u, 99u } };
+    drdc_WeMGRSPose_t me;
+
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_geo_to_utm(grid_points[i].lat,
+                                          grid_points[i].lon,
+                                          DRDC_GEO_ZONE_STANDARD, &g, &gamma,
+                                          NULL));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_geo_mgrs_encode(grid_points[i].lat,
+                                               grid_points[i].lon, 11, text,
+                                               sizeof text));
+    for (j = 0; j < COUNT(grid_attitudes); j++) {
+      drdc_WPose_t w = { grid_points[i].lon, grid_points[i].lat, M(7),
+                         grid_attitudes[j] };
+      drdc_WMGRSPose_t out;
+      drdc_WMGRSPose_t before;
+      drdc_quat_t q = { 0, 0, 0, 0 };
+      drdc_status_t st = drdc_pose_grid_from_true(&w.q, gamma, &q);
+
+      memset(&out, 0x5A, sizeof out);
+      memcpy(&before, &out, sizeof out);
+      TEST_ASSERT_EQUAL_INT(st, drdc_pose_wmgrs_from_w(&w, 11, &out));
+      if (st == DRDC_OK) {
+        TEST_ASSERT_EQUAL_STRING(text, out.mgrs);
+        TEST_ASSERT_EQUAL_INT64(M(7), out.height);
+        TEST_ASSERT_EQUAL_MEMORY(&q, &out.q, sizeof q);
+      } else {
+        TEST_ASSERT_EQUAL_MEMORY(&before, &out, sizeof out);
+      }
+    }
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_wemgrs_from_we(&we, 11, &me));
+    TEST_ASSERT_EQUAL_STRING(text, me.mgrs);
+    TEST_ASSERT_EQUAL_INT64(M(7), me.height);
+    TEST_ASSERT_EQUAL_UINT32(4000000000u
+                               - drdc_pose_bam_from_convergence(gamma),
+                             me.e.yaw);
+    TEST_ASSERT_EQUAL_UINT32(12345u, me.e.pitch);
+    TEST_ASSERT_EQUAL_UINT32(99u, me.e.roll);
+  }
+}
+
+/* drdc_pose_wmgrs_from_w() and drdc_pose_wemgrs_from_we() write the text
+ * last and take it as never failing: a standard zone's position is inside
+ * the MGRS limits, and DRDC_GEO_MGRS_SIZE holds the longest text. The
+ * encoder's status (the same projection and text) at the edges of the
+ * zones and bands, Norway's and Svalbard's, and the UTM/UPS limits, at
+ * the finest and the coarsest precision. */
+static void test_mgrs_text_of_a_pose_cannot_fail(void)
+{
+  static const drdc_nas_t lats[] = {
+    -90 * NAS_DEG, (-80 * NAS_DEG) - 1, -80 * NAS_DEG, 0,
+    56 * NAS_DEG, (64 * NAS_DEG) - 1, 72 * NAS_DEG, (84 * NAS_DEG) - 1,
+    84 * NAS_DEG, 90 * NAS_DEG,
+  };
+  static const drdc_nas_t lons[] = {
+    -180 * NAS_DEG, (-177 * NAS_DEG) - 1, -177 * NAS_DEG, 0,
+    (3 * NAS_DEG) - 1, 3 * NAS_DEG, (9 * NAS_DEG) - 1, 9 * NAS_DEG,
+    (12 * NAS_DEG) - 1, 12 * NAS_DEG, (21 * NAS_DEG) - 1, 21 * NAS_DEG,
+    (33 * NAS_DEG) - 1, 33 * NAS_DEG, (42 * NAS_DEG) - 1, 42 * NAS_DEG,
+    (180 * NAS_DEG) - 1,
+  };
+  char text[DRDC_GEO_MGRS_SIZE];
+  size_t i;
+  size_t j;
+
+  for (i = 0; i < COUNT(lats); i++) {
+    for (j = 0; j < COUNT(lons); j++) {
+      TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                            drdc_geo_mgrs_encode(lats[i], lons[j],
+                                                 DRDC_GEO_MGRS_PREC_MAX, text,
+                                                 sizeof text));
+      TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                            drdc_geo_mgrs_encode(lats[i], lons[j],
+                                                 DRDC_GEO_MGRS_PREC_MIN, text,
+                                                 sizeof text));
+    }
+  }
+}
+
 /* {We-MGRS} -> {We} against drdc_geo_mgrs_decode(), drdc_geo_from_utm()
  * and drdc_pose_bam_from_convergence() */
 static void test_we_from_wemgrs_step_by_step(void)
@@ -861,6 +954,8 @@ void suite_geo_pose(void)
   RUN_TEST(test_drdc_pose_wutm_from_w_unchanged_on_error);
   RUN_TEST(test_drdc_pose_w_from_wutm_errors);
   RUN_TEST(test_w_from_grid_step_by_step);
+  RUN_TEST(test_mgrs_from_w_step_by_step);
+  RUN_TEST(test_mgrs_text_of_a_pose_cannot_fail);
   RUN_TEST(test_we_from_wemgrs_step_by_step);
   RUN_TEST(test_w_from_wutm_wide_position_errors);
   RUN_TEST(test_drdc_pose_w_from_l_errors);
