@@ -3,7 +3,8 @@
  * @file
  * @ingroup drdc_geo
  * @brief MGRS encode (truncation) and decode (validation, the row placed
- *        in its latitude band) over UTM/UPS.
+ *        in its latitude band) over UTM/UPS; the decoder also into a
+ *        geo_tm_t, for the MGRS poses of utm.c.
  *
  * Letter sets and the row placement follow the MGRS standard as
  * GeographicLib implements it (NGA.SIG.0012): UTM columns A-H, J-R, S-Z

@@ -3,10 +3,10 @@
  * @file
  * @ingroup drdc_geo
  * @brief UTM zone rules and geographic <-> UTM on the transverse Mercator
- *        of tm.c (validate in nas, convert in Q5.58); also the {W} ->
- *        {W-UTM} and {We} <-> {We-UTM} poses and MGRS from geographic
- *        and from UTM, which run a projection's body in their own frames
- *        (issue 8's stack).
+ *        of tm.c (validate in nas, convert in Q5.58); also the grid
+ *        poses ({W}, {We} <-> {W-UTM}, {We-UTM}; {W-MGRS}, {We-MGRS})
+ *        and MGRS from geographic and from UTM, which run a projection's
+ *        body in their own frames (issue 8's stack).
  */
 #include <drdc/geo.h>
 
