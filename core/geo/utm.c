@@ -194,18 +194,9 @@ static bool ups_in_range(bool north, drdc_q47_16_t v)
 static __attribute__((noinline)) drdc_status_t
 ups_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm);
 
-static __attribute__((noinline)) drdc_status_t
-ups_forward(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
-{
-  if (geo_ups_forward(code < CODE_SOUTH, tm) == 0) {
-    return DRDC_E_RANGE;
-  }
-  return ups_from_tm(code, out, tm);
-}
-
-/* ups_forward() after geo_ups_forward(): x and y in tm's xi and eta
- * slots to easting and northing, checked, into out. Out of line, one
- * copy for ups_forward() (a sibling call) and grid_metres(). */
+/* After geo_ups_forward(): x and y in tm's xi and eta slots to easting
+ * and northing, checked, into out. Out of line, one copy for
+ * grid_to_utm() (a sibling call). */
 static __attribute__((noinline)) drdc_status_t
 ups_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
 {
@@ -267,6 +258,36 @@ utm_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
   return DRDC_OK;
 }
 
+/* The forward projection (UPS or transverse Mercator, by the zone of a
+ * code of forward_args() or of reverse_args()) of phi and lam in tm's xi
+ * and eta slots: 0 beyond its domain, else 1 (never 0 after the reverse,
+ * for the convergence and scale: UTM in the range reverse_args() checked
+ * has |dlon| < 30 degrees, UPS within its ranges sin chi > 0.5). A
+ * sibling call of either projection: no frame of its own on their
+ * chains, its callers keep no hemisphere flag across them, and the grid
+ * poses and the reverse share one copy of the dispatch. */
+static __attribute__((noinline)) int
+grid_forward_projection(int32_t code, geo_tm_t *tm)
+{
+  if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
+    return geo_ups_forward(code < CODE_SOUTH, tm);
+  }
+  return geo_tm_forward(tm);
+}
+
+/* The easting and northing of the forward projection in tm, checked, into
+ * out: ups_from_tm() or utm_from_tm() by the zone of forward_args()'s
+ * code, each a sibling call; one copy of the dispatch for utm_forward()
+ * and grid_metres(). */
+static __attribute__((noinline)) drdc_status_t
+grid_to_utm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
+{
+  if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
+    return ups_from_tm(code, out, tm);
+  }
+  return utm_from_tm(code, out, tm);
+}
+
 /* drdc_geo_to_utm() and its Q28.36 form in one: zone is a zone code of
  * drdc_geo_to_utm(), plus GEO_ZONE_Q36 for the Q28.36 result. Inline
  * into its entries (drdc_geo_to_utm(), drdc_pose_weutm_from_we(); a few
@@ -288,15 +309,9 @@ utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
   if (code < 0) {
     return (drdc_status_t)-code;
   }
-  if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
-    if (ups_forward(code, out, &tm) != DRDC_OK) {
-      return DRDC_E_RANGE;
-    }
-  } else if ((geo_tm_forward(&tm) == 0)
-             || (utm_from_tm(code, out, &tm) != DRDC_OK)) {
+  if ((grid_forward_projection(code, &tm) == 0)
+      || (grid_to_utm(code, out, &tm) != DRDC_OK)) {
     return DRDC_E_RANGE;
-  } else {
-    /* out written */
   }
   if (convergence != NULL) {
     *convergence = geo_nas_from_rad(tm.gamma);
@@ -356,11 +371,7 @@ grid_metres(int32_t code, geo_tm_t *tm)
   drdc_geo_utm_t u;
   drdc_status_t st;
 
-  if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
-    st = ups_from_tm(code, &u, tm);
-  } else {
-    st = utm_from_tm(code, &u, tm);
-  }
+  st = grid_to_utm(code, &u, tm);
   if (st == DRDC_OK) {
     tm->eta = u.easting;
     tm->xi = u.northing;
@@ -370,20 +381,16 @@ grid_metres(int32_t code, geo_tm_t *tm)
 
 /* The projection of forward_args()'s code (UPS or transverse Mercator)
  * on tm, then its metres checked by grid_metres(): the steps and statuses
- * that drdc_pose_wutm_from_w() and drdc_geo_mgrs_encode() share. Inlined
- * (always_inline) so the projection stays called from their own frames. */
+ * that drdc_pose_wutm_from_w(), drdc_geo_mgrs_encode() and the MGRS poses
+ * share. Inlined (always_inline) so the projection stays called from
+ * their own frames (by grid_forward_projection(), a sibling call). */
 static inline __attribute__((always_inline)) drdc_status_t
 project_to_grid(int32_t code, geo_tm_t *tm)
 {
-  if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
-    if (geo_ups_forward(code < CODE_SOUTH, tm) == 0) {
-      return DRDC_E_RANGE;
-    }
-  } else if (geo_tm_forward(tm) == 0) {
+  if (grid_forward_projection(code, tm) == 0) {
     return DRDC_E_RANGE;
-  } else {
-    /* xi, eta (and gamma) in tm */
   }
+  /* xi, eta (and gamma) in tm */
   return grid_metres(code, tm);
 }
 
@@ -630,20 +637,6 @@ grid_reverse_projection(int32_t code, geo_tm_t *tm)
   }
 }
 
-/* The forward projection of the reverse's phi and lam on tm's slots, for
- * the convergence and the scale, as grid_reverse_projection() (UTM: in
- * the range reverse_args() checked |dlon| < 30 degrees; UPS: within the
- * UPS ranges sin chi > 0.5: neither fails) */
-static __attribute__((noinline)) void
-grid_forward_projection(int32_t code, geo_tm_t *tm)
-{
-  if ((code % CODE_SOUTH) == DRDC_GEO_ZONE_UPS) {
-    (void)geo_ups_forward(code < CODE_SOUTH, tm);
-  } else {
-    (void)geo_tm_forward(tm);
-  }
-}
-
 /* The latitude and longitude (nas) of the reverse projection's phi and
  * lam in tm->xi and tm->eta (UTM: lam from the zone's central meridian),
  * into *lat and *lon, either NULL when not wanted, each written after its
@@ -712,7 +705,7 @@ grid_reverse(int32_t code, drdc_nas_t *lat, drdc_nas_t *lon,
     return reverse_angles(code, tm, lat, lon);
   }
   (void)reverse_angles(code, tm, lat, lon);
-  grid_forward_projection(code, tm);
+  (void)grid_forward_projection(code, tm);
   return forward_outputs(tm, convergence, scale);
 }
 
