@@ -793,9 +793,10 @@ static bool turn_cannot_fail(const drdc_quat_t *q)
  * written) and turns the attitude into out->q and writes the height,
  * only on DRDC_OK; then the second pass writes the position, the same
  * projection of the same input (which cannot fail now), and the same
- * turn (twice the cycles for such an attitude). Statuses and their order as before: the position's, then
- * the turn's. Each pass a copy of grid_reverse(), a few calls: no loop
- * whose state would stay in this frame across the projections. */
+ * turn (twice the cycles for such an attitude). Statuses and their order
+ * as before: the position's, then the turn's. Each pass a copy of
+ * grid_reverse(), a few calls: no loop whose state would stay in this
+ * frame across the projections. */
 static __attribute__((noinline)) drdc_status_t
 w_from_grid(const drdc_WUTMPose_t *u, const drdc_WMGRSPose_t *m,
             drdc_WPose_t *out)
