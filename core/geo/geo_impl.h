@@ -206,40 +206,48 @@ int64_t geo_ups_angle(drdc_q47_16_t v);
 drdc_status_t geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,
                               int32_t prec, char *text, size_t size);
 
+/** Added to a zone (0..60) for the southern hemisphere: the code of a
+ *  grid position that geo_mgrs_decode_tm() returns and the reverse
+ *  projections of utm.c take (and, with GEO_ZONE_Q36, the forward's). */
+#define GEO_CODE_SOUTH ((int32_t)512)
+
+/**
+ * drdc_geo_mgrs_decode() of text (not NULL) into tm: the cell's centre
+ * (Q47.16 metres) in tm->eta (easting) and tm->xi (northing), its corner
+ * in tm->gamma and tm->k; returns the zone plus GEO_CODE_SOUTH for the
+ * southern hemisphere, or minus the status (same checks, same order); tm
+ * and *prec (may be NULL) written only when it returns a code.
+ */
+int32_t geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec);
+
 /** UPS angle -> metres in Q28.36 (2^-36 m, rounded); geo_ups_metres() is
  *  its rounding to Q47.16. */
 int64_t geo_ups_q36(int64_t a);
 
-/** Added to a zone code of drdc_geo_to_utm() (-1..60): geo_utm_forward()
- *  returns easting and northing in Q28.36 metres. */
+/** Added to a zone code of drdc_geo_to_utm() (-1..60): utm.c's forward
+ *  projection (for MGRS) keeps easting and northing in Q28.36 metres. */
 #define GEO_ZONE_Q36 ((int32_t)256)
 
-/**
- * drdc_geo_to_utm(), which passes its arguments on to this; with zone
- * plus GEO_ZONE_Q36 the easting and northing are in Q28.36 metres
- * (2^-36 m, int64_t in the drdc_geo_utm_t fields): the false origin plus
- * the projection's offset before its rounding to Q47.16. Same checks,
- * statuses, convergence and scale; the Q47.16 result is the offset from
- * the false origin rounded to nearest.
- */
-drdc_status_t geo_utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
-                              drdc_geo_utm_t *out, drdc_nas_t *convergence,
-                              drdc_q5_58_t *scale);
+/** The last step of drdc_pose_w_from_wutm() (u) and
+ *  drdc_pose_w_from_wmgrs() (m, u NULL), in utm.c, after the reverse
+ *  projection: the attitude of u or m turned from grid to true north by
+ *  the convergence (nas) in tm->gamma straight into out->q, then the
+ *  height; out written only on DRDC_OK (else DRDC_E_OVERFLOW). In
+ *  pose.c, with the turn: a call to another unit, so the compiler passes
+ *  tm's address rather than the 64-bit convergence, which would leave an
+ *  argument on the caller's stack on Cortex-M3. */
+drdc_status_t geo_w_attitude(const drdc_WUTMPose_t *u,
+                             const drdc_WMGRSPose_t *m, const geo_tm_t *tm,
+                             drdc_WPose_t *out);
 
-/**
- * drdc_geo_to_utm(), for the pose conversions: the public function runs
- * the body of geo_utm_forward() in its own frame (no wrapper frame on
- * the projection's chain). A zone code above the zones is DRDC_E_ZONE
- * (after the checks that come first), never a request for the Q28.36
- * result.
- */
-static inline drdc_status_t geo_to_utm(drdc_nas_t lat, drdc_nas_t lon,
-                                       int32_t zone, drdc_geo_utm_t *out,
-                                       drdc_nas_t *convergence,
-                                       drdc_q5_58_t *scale)
-{
-  return drdc_geo_to_utm(lat, lon, zone, out, convergence, scale);
-}
+/** The attitude and height of drdc_pose_wmgrs_from_w() (in utm.c), after
+ *  the projection: w's attitude turned from true to grid north by the
+ *  convergence (radians) in tm->gamma straight into out->q, then the
+ *  height; written only on DRDC_OK (else DRDC_E_OVERFLOW). In pose.c, as
+ *  geo_w_attitude(), so the caller passes tm's address, not a 64-bit
+ *  argument on its stack. */
+drdc_status_t geo_wmgrs_attitude(const drdc_WPose_t *w, const geo_tm_t *tm,
+                                 drdc_WMGRSPose_t *out);
 
 /** The last step of drdc_pose_weutm_from_we() (in utm.c), after the
  *  projection: height and angles of w into out, the yaw turned from true
@@ -247,15 +255,9 @@ static inline drdc_status_t geo_to_utm(drdc_nas_t lat, drdc_nas_t lon,
  *  fails. */
 void geo_weutm_attitude(const drdc_WePose_t *w, drdc_WeUTMPose_t *out);
 
-/** The last step of drdc_pose_we_from_weutm() (in utm.c), after the
- *  reverse projection: height and angles of u into out, the yaw turned
- *  from grid to true north by the convergence parked in out->height.
- *  Never fails. */
-void geo_we_attitude(const drdc_WeUTMPose_t *u, drdc_WePose_t *out);
-
 /**
  * geo_mgrs_format() of a position whose easting and northing carry
- * frac_bits fraction bits (16: Q47.16; 36: geo_utm_forward() with
+ * frac_bits fraction bits (16: Q47.16; 36: utm.c's projection with
  * GEO_ZONE_Q36): the digits
  * truncate that value.
  */

@@ -3,7 +3,8 @@
  * @file
  * @ingroup drdc_geo
  * @brief MGRS encode (truncation) and decode (validation, the row placed
- *        in its latitude band) over UTM/UPS.
+ *        in its latitude band) over UTM/UPS; the decoder also into a
+ *        geo_tm_t, for the MGRS poses of utm.c.
  *
  * Letter sets and the row placement follow the MGRS standard as
  * GeographicLib implements it (NGA.SIG.0012): UTM columns A-H, J-R, S-Z
@@ -246,15 +247,6 @@ static int64_t utm_row(int64_t iband, int64_t icol, int64_t irow_letter)
   return irow;
 }
 
-/* *dst = *src field by field (a struct copy may become a memcpy call) */
-static void copy_utm(drdc_geo_utm_t *dst, const drdc_geo_utm_t *src)
-{
-  dst->zone = src->zone;
-  dst->north = src->north;
-  dst->easting = src->easting;
-  dst->northing = src->northing;
-}
-
 /* metres (Q47.16) of v / 10^prec tiles, rounded */
 static int64_t tiles_q16(int64_t v, int64_t den)
 {
@@ -264,8 +256,11 @@ static int64_t tiles_q16(int64_t v, int64_t den)
   return r;
 }
 
-drdc_status_t drdc_geo_mgrs_decode(const char *text, drdc_geo_utm_t *corner,
-                                   drdc_geo_utm_t *centre, int32_t *prec)
+/* drdc_geo_mgrs_decode() into a geo_tm_t, for it and for the pose
+ * conversions of utm.c, which run the reverse projection on these slots:
+ * no drdc_geo_utm_t in this frame or in the caller's (issue 8's stack),
+ * the values written once, after the last check. */
+int32_t geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec)
 {
   int32_t p = 0;
   int32_t len = 0;
@@ -280,12 +275,7 @@ drdc_status_t drdc_geo_mgrs_decode(const char *text, drdc_geo_utm_t *corner,
   int64_t unit;
   bool utmp;
   bool north;
-  drdc_geo_utm_t a;
-  drdc_geo_utm_t c;
 
-  if ((text == NULL) || (corner == NULL)) {
-    return DRDC_E_NULL;
-  }
   while ((len <= (int32_t)DRDC_GEO_MGRS_SIZE) && (text[len] != '\0')) {
     len++;
   }
@@ -297,60 +287,57 @@ drdc_status_t drdc_geo_mgrs_decode(const char *text, drdc_geo_utm_t *corner,
   }
   /* GeographicLib checks the zone's value before its digit count */
   if ((p > 0) && ((zone == 0) || (zone > DRDC_GEO_ZONE_MAX))) {
-    return DRDC_E_ZONE;
+    return -(int32_t)DRDC_E_ZONE;
   }
   if (p > 2) {
-    return DRDC_E_MGRS;
+    return -(int32_t)DRDC_E_MGRS;
   }
   if ((len - p) < 1) {
-    return DRDC_E_MGRS;
+    return -(int32_t)DRDC_E_MGRS;
   }
   utmp = (zone != DRDC_GEO_ZONE_UPS);
   iband = lookup(utmp ? latband : upsband, text[p]);
   p++;
   if (iband < 0) {
-    return DRDC_E_MGRS;
+    return -(int32_t)DRDC_E_MGRS;
   }
   north = (iband >= (utmp ? 10 : 2));
-  a.zone = zone;
-  a.north = north;
   if (p == len) {
-    /* the grid zone alone: GeographicLib's representative point */
+    /* the grid zone alone: GeographicLib's representative point, corner
+     * and centre */
     if (utmp) {
-      a.easting = (((zone == 31) && (iband == 17)) ? 4 : 5) * TILE_Q16;
-      a.northing = (geo_floor_div((160 * (int64_t)iband) - 1511, 18)
-                    + (north ? 0 : SOUTH_ROWS)) * TILE_Q16;
+      tm->eta = (((zone == 31) && (iband == 17)) ? 4 : 5) * TILE_Q16;
+      tm->xi = (geo_floor_div((160 * (int64_t)iband) - 1511, 18)
+                + (north ? 0 : SOUTH_ROWS)) * TILE_Q16;
     } else {
-      a.easting = ((((iband % 2) == 1) ? 4 : -4) + UPS_POLE_INDEX)
-                  * TILE_Q16;
-      a.northing = UPS_POLE_INDEX * TILE_Q16;
+      tm->eta = ((((iband % 2) == 1) ? 4 : -4) + UPS_POLE_INDEX)
+                * TILE_Q16;
+      tm->xi = UPS_POLE_INDEX * TILE_Q16;
     }
-    copy_utm(corner, &a);
-    if (centre != NULL) {
-      copy_utm(centre, &a);
-    }
+    tm->gamma = tm->eta;
+    tm->k = tm->xi;
     if (prec != NULL) {
       *prec = -1;
     }
-    return DRDC_OK;
+    return zone + (north ? 0 : GEO_CODE_SOUTH);
   }
   if ((len - p) < 2) {
-    return DRDC_E_MGRS;
+    return -(int32_t)DRDC_E_MGRS;
   }
   icol = lookup(utmp ? utmcols[(zone - 1) % 3] : upscols[iband], text[p]);
   irow = lookup(utmp ? utmrow : upsrows[north ? 1 : 0], text[p + 1]);
   p += 2;
   if ((icol < 0) || (irow < 0)) {
-    return DRDC_E_MGRS;
+    return -(int32_t)DRDC_E_MGRS;
   }
   ndig = len - p;
   for (k = 0; k < ndig; k++) {
     if (lookup(digits, text[p + k]) < 0) {
-      return DRDC_E_MGRS;
+      return -(int32_t)DRDC_E_MGRS;
     }
   }
   if (((ndig % 2) != 0) || (ndig > (2 * DRDC_GEO_MGRS_PREC_MAX))) {
-    return DRDC_E_MGRS;
+    return -(int32_t)DRDC_E_MGRS;
   }
   if (utmp) {
     if ((zone % 2) == 0) {
@@ -358,7 +345,7 @@ drdc_status_t drdc_geo_mgrs_decode(const char *text, drdc_geo_utm_t *corner,
     }
     irow = utm_row((int64_t)iband - 10, icol, irow);
     if (irow == SOUTH_ROWS) {
-      return DRDC_E_BAND;
+      return -(int32_t)DRDC_E_BAND;
     }
     irow = north ? irow : (irow + SOUTH_ROWS);
     icol = icol + 1;
@@ -379,18 +366,39 @@ drdc_status_t drdc_geo_mgrs_decode(const char *text, drdc_geo_utm_t *corner,
     y1 = (y1 * 10) + lookup(digits, text[p + ndig + k]);
     unit = unit * 10;
   }
-  a.easting = tiles_q16(x1, unit);
-  a.northing = tiles_q16(y1, unit);
-  c.zone = zone;
-  c.north = north;
-  c.easting = tiles_q16((2 * x1) + 1, 2 * unit);
-  c.northing = tiles_q16((2 * y1) + 1, 2 * unit);
-  copy_utm(corner, &a);
-  if (centre != NULL) {
-    copy_utm(centre, &c);
-  }
+  /* the corner in the gamma and k slots, the centre in eta and xi */
+  tm->gamma = tiles_q16(x1, unit);
+  tm->k = tiles_q16(y1, unit);
+  tm->eta = tiles_q16((2 * x1) + 1, 2 * unit);
+  tm->xi = tiles_q16((2 * y1) + 1, 2 * unit);
   if (prec != NULL) {
     *prec = ndig;
+  }
+  return zone + (north ? 0 : GEO_CODE_SOUTH);
+}
+
+drdc_status_t drdc_geo_mgrs_decode(const char *text, drdc_geo_utm_t *corner,
+                                   drdc_geo_utm_t *centre, int32_t *prec)
+{
+  geo_tm_t tm;
+  int32_t code;
+
+  if ((text == NULL) || (corner == NULL)) {
+    return DRDC_E_NULL;
+  }
+  code = geo_mgrs_decode_tm(text, &tm, prec);
+  if (code < 0) {
+    return (drdc_status_t)-code;
+  }
+  corner->zone = code % GEO_CODE_SOUTH;
+  corner->north = (code < GEO_CODE_SOUTH);
+  corner->easting = tm.gamma;
+  corner->northing = tm.k;
+  if (centre != NULL) {
+    centre->zone = code % GEO_CODE_SOUTH;
+    centre->north = (code < GEO_CODE_SOUTH);
+    centre->easting = tm.eta;
+    centre->northing = tm.xi;
   }
   return DRDC_OK;
 }

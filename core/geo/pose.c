@@ -26,22 +26,34 @@ drdc_bam32_t drdc_pose_bam_from_convergence(drdc_nas_t convergence)
   return (drdc_bam32_t)(uint64_t)b;
 }
 
+/* q_z(2 half) * q for half a turn's angle as a binary angle: r q with r
+ * = (cos half, 0, 0, sin half). Out of line, sibling-called by
+ * turn_about_down() once the half angle is known: r and the sine and
+ * cosine are not in a frame under the division that finds it (issue 8's
+ * stack). */
+static __attribute__((noinline)) drdc_status_t
+turn_by_half(const drdc_quat_t *q, drdc_bam32_t half, drdc_quat_t *out)
+{
+  drdc_q1_30_t s = 0;
+  drdc_q1_30_t c = 0;
+  drdc_quat_t r;
+
+  drdc_fx_sincos_bam32(half, &s, &c);
+  r.s = c;
+  r.x = 0;
+  r.y = 0;
+  r.z = s;
+  return drdc_quat_mul(&r, q, out);
+}
+
 /* q_z(angle) * q for an angle in nas, |angle| <= 180 degrees */
 static drdc_status_t turn_about_down(const drdc_quat_t *q, drdc_nas_t angle,
                                      drdc_quat_t *out)
 {
   /* half the angle as a binary angle (|half| <= 90 degrees) */
   int64_t half = geo_muldiv(angle, INT64_C(2147483648), NAS_PER_TURN);
-  drdc_q1_30_t s = 0;
-  drdc_q1_30_t c = 0;
-  drdc_quat_t r;
 
-  drdc_fx_sincos_bam32((drdc_bam32_t)(uint64_t)half, &s, &c);
-  r.s = c;
-  r.x = 0;
-  r.y = 0;
-  r.z = s;
-  return drdc_quat_mul(&r, q, out);
+  return turn_by_half(q, (drdc_bam32_t)(uint64_t)half, out);
 }
 
 static bool convergence_ok(drdc_nas_t convergence)
@@ -76,33 +88,39 @@ drdc_status_t drdc_pose_true_from_grid(const drdc_quat_t *q_grid,
   return turn_about_down(q_grid, convergence, q_true);
 }
 
-/* drdc_pose_wutm_from_w() is in utm.c, in the frame of the projection's
- * body (issue 8's stack) */
+/* drdc_pose_wutm_from_w(), drdc_pose_w_from_wutm() and their Euler forms
+ * are in utm.c, in the frame of the projection's body (issue 8's stack) */
 
-drdc_status_t drdc_pose_w_from_wutm(const drdc_WUTMPose_t *u,
-                                    drdc_WPose_t *out)
+/* The last step of utm.c's w_from_grid(), after the projection: q_true =
+ * q_z(gamma) q_grid straight into out->q, gamma (nas, |gamma| < 180
+ * degrees) in tm->gamma, then the height; written only on DRDC_OK. */
+drdc_status_t geo_w_attitude(const drdc_WUTMPose_t *u,
+                             const drdc_WMGRSPose_t *m, const geo_tm_t *tm,
+                             drdc_WPose_t *out)
 {
-  drdc_nas_t lat = 0;
-  drdc_nas_t lon = 0;
-  drdc_nas_t gamma = 0;
   drdc_status_t st;
 
-  if ((u == NULL) || (out == NULL)) {
-    return DRDC_E_NULL;
-  }
-  st = drdc_geo_from_utm(&u->utm, &lat, &lon, &gamma, NULL);
+  st = turn_about_down((u != NULL) ? &u->q : &m->q, tm->gamma, &out->q);
   if (st == DRDC_OK) {
-    /* the last step that can fail, straight into out (as in
-     * drdc_pose_wutm_from_w()) */
-    st = turn_about_down(&u->q, gamma, &out->q);
+    out->height = (u != NULL) ? u->height : m->height;
   }
-  if (st != DRDC_OK) {
-    return st;
+  return st;
+}
+
+/* The attitude and height of utm.c's drdc_pose_wmgrs_from_w(), after the
+ * projection: q_grid = q_z(-gamma) q_true straight into out->q, gamma
+ * (radians, |gamma| < 180 degrees) in tm->gamma; written only on
+ * DRDC_OK. */
+drdc_status_t geo_wmgrs_attitude(const drdc_WPose_t *w, const geo_tm_t *tm,
+                                 drdc_WMGRSPose_t *out)
+{
+  drdc_status_t st;
+
+  st = turn_about_down(&w->q, -geo_nas_from_rad(tm->gamma), &out->q);
+  if (st == DRDC_OK) {
+    out->height = w->height;
   }
-  out->latitude = lat;
-  out->longitude = lon;
-  out->height = u->height;
-  return DRDC_OK;
+  return st;
 }
 
 /* drdc_pose_weutm_from_we() is in utm.c, in the frame of the projection's
@@ -114,16 +132,6 @@ void geo_weutm_attitude(const drdc_WePose_t *w, drdc_WeUTMPose_t *out)
   out->height = w->height;
   out->e.pitch = w->e.pitch;
   out->e.roll = w->e.roll;
-}
-
-/* drdc_pose_we_from_weutm() is in utm.c, as drdc_pose_weutm_from_we() */
-void geo_we_attitude(const drdc_WeUTMPose_t *u, drdc_WePose_t *out)
-{
-  /* out->height holds the convergence until here */
-  out->e.yaw = u->e.yaw + drdc_pose_bam_from_convergence(out->height);
-  out->height = u->height;
-  out->e.pitch = u->e.pitch;
-  out->e.roll = u->e.roll;
 }
 
 /* the ellipsoidal point of a pose */
@@ -281,173 +289,7 @@ drdc_status_t drdc_pose_l_from_w(const drdc_WPose_t *ref,
   return DRDC_OK;
 }
 
-/* the MGRS text of w's position at prec and the convergence there; text
- * (DRDC_GEO_MGRS_SIZE bytes) written only on DRDC_OK */
-static drdc_status_t mgrs_and_gamma(drdc_nas_t lat, drdc_nas_t lon,
-                                    int32_t prec, char *text,
-                                    drdc_nas_t *gamma)
-{
-  drdc_geo_utm_t u;
-  drdc_status_t st;
-
-  /* prec first: DRDC_E_RANGE must not depend on the position */
-  if ((prec < DRDC_GEO_MGRS_PREC_MIN) || (prec > DRDC_GEO_MGRS_PREC_MAX)) {
-    return DRDC_E_RANGE;
-  }
-  /* the coordinates before their rounding to Q47.16, as
-   * drdc_geo_mgrs_encode() truncates them */
-  st = geo_utm_forward(lat, lon, DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, &u,
-                       gamma, NULL);
-  if (st == DRDC_OK) {
-    /* the standard zone is always inside the MGRS limits */
-    st = geo_mgrs_format_bits(&u, 36u, lat, prec, text, DRDC_GEO_MGRS_SIZE);
-  }
-  return st;
-}
-
-/* the centre of an MGRS text's cell (DRDC_GEO_MGRS_SIZE bytes at most),
- * written only on DRDC_OK. Out of line, so that the corner the decoder
- * also writes is not on the stack under drdc_geo_from_utm(). */
-static __attribute__((noinline)) drdc_status_t mgrs_cell_centre(
-  const char *text, drdc_geo_utm_t *centre)
-{
-  drdc_geo_utm_t corner;
-  size_t n = 0u;
-
-  /* the decoder must not read beyond the array */
-  while ((n < DRDC_GEO_MGRS_SIZE) && (text[n] != '\0')) {
-    n++;
-  }
-  if (n == DRDC_GEO_MGRS_SIZE) {
-    return DRDC_E_MGRS;
-  }
-  return drdc_geo_mgrs_decode(text, &corner, centre, NULL);
-}
-
-/* the position of an MGRS text (its cell's centre) and the convergence
- * there; lat and lon written only on DRDC_OK */
-static drdc_status_t mgrs_centre(const char *text, drdc_nas_t *lat,
-                                 drdc_nas_t *lon, drdc_nas_t *gamma)
-{
-  drdc_geo_utm_t centre;
-  drdc_status_t st;
-
-  st = mgrs_cell_centre(text, &centre);
-  if (st == DRDC_OK) {
-    st = drdc_geo_from_utm(&centre, lat, lon, gamma, NULL);
-  }
-  return st;
-}
-
-drdc_status_t drdc_pose_wmgrs_from_w(const drdc_WPose_t *w, int32_t prec,
-                                     drdc_WMGRSPose_t *out)
-{
-  drdc_geo_utm_t u;
-  drdc_nas_t gamma = 0;
-  drdc_quat_t q = { 0, 0, 0, 0 };
-  drdc_status_t st;
-
-  if ((w == NULL) || (out == NULL)) {
-    return DRDC_E_NULL;
-  }
-  /* as mgrs_and_gamma(), with the attitude turned before the text is
-   * made: the text then goes straight into out (geo_mgrs_format() writes
-   * it only on DRDC_OK, and it is the last step that can fail), so no
-   * text buffer is on the stack */
-  if ((prec < DRDC_GEO_MGRS_PREC_MIN) || (prec > DRDC_GEO_MGRS_PREC_MAX)) {
-    return DRDC_E_RANGE;
-  }
-  st = geo_utm_forward(w->latitude, w->longitude,
-                       DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, &u, &gamma, NULL);
-  if (st == DRDC_OK) {
-    st = turn_about_down(&w->q, -gamma, &q);
-  }
-  if (st == DRDC_OK) {
-    /* the standard zone is always inside the MGRS limits */
-    st = geo_mgrs_format_bits(&u, 36u, w->latitude, prec, out->mgrs,
-                              DRDC_GEO_MGRS_SIZE);
-  }
-  if (st != DRDC_OK) {
-    return st;
-  }
-  out->height = w->height;
-  out->q.s = q.s;
-  out->q.x = q.x;
-  out->q.y = q.y;
-  out->q.z = q.z;
-  return DRDC_OK;
-}
-
-drdc_status_t drdc_pose_w_from_wmgrs(const drdc_WMGRSPose_t *m,
-                                     drdc_WPose_t *out)
-{
-  drdc_nas_t lat = 0;
-  drdc_nas_t lon = 0;
-  drdc_nas_t gamma = 0;
-  drdc_status_t st;
-
-  if ((m == NULL) || (out == NULL)) {
-    return DRDC_E_NULL;
-  }
-  st = mgrs_centre(m->mgrs, &lat, &lon, &gamma);
-  if (st == DRDC_OK) {
-    /* the last step that can fail, straight into out (as in
-     * drdc_pose_w_from_wutm()) */
-    st = turn_about_down(&m->q, gamma, &out->q);
-  }
-  if (st != DRDC_OK) {
-    return st;
-  }
-  out->latitude = lat;
-  out->longitude = lon;
-  out->height = m->height;
-  return DRDC_OK;
-}
-
-drdc_status_t drdc_pose_wemgrs_from_we(const drdc_WePose_t *w, int32_t prec,
-                                       drdc_WeMGRSPose_t *out)
-{
-  drdc_nas_t gamma = 0;
-  drdc_status_t st;
-
-  if ((w == NULL) || (out == NULL)) {
-    return DRDC_E_NULL;
-  }
-  /* the text straight into out: mgrs_and_gamma() writes it only on
-   * DRDC_OK, and nothing after it can fail (no text buffer on the
-   * stack) */
-  st = mgrs_and_gamma(w->latitude, w->longitude, prec, out->mgrs, &gamma);
-  if (st != DRDC_OK) {
-    return st;
-  }
-  out->height = w->height;
-  out->e.yaw = w->e.yaw - drdc_pose_bam_from_convergence(gamma);
-  out->e.pitch = w->e.pitch;
-  out->e.roll = w->e.roll;
-  return DRDC_OK;
-}
-
-drdc_status_t drdc_pose_we_from_wemgrs(const drdc_WeMGRSPose_t *m,
-                                       drdc_WePose_t *out)
-{
-  drdc_nas_t gamma = 0;
-  drdc_status_t st;
-
-  if ((m == NULL) || (out == NULL)) {
-    return DRDC_E_NULL;
-  }
-  /* the one step that can fail writes the position only on DRDC_OK:
-   * straight into out */
-  st = mgrs_centre(m->mgrs, &out->latitude, &out->longitude, &gamma);
-  if (st != DRDC_OK) {
-    return st;
-  }
-  out->height = m->height;
-  out->e.yaw = m->e.yaw + drdc_pose_bam_from_convergence(gamma);
-  out->e.pitch = m->e.pitch;
-  out->e.roll = m->e.roll;
-  return DRDC_OK;
-}
+/* the four MGRS poses are in utm.c, as drdc_pose_w_from_wutm() */
 
 drdc_status_t drdc_pose_l_from_le(const drdc_lePose_t *le, drdc_lPose_t *out)
 {

@@ -3,10 +3,10 @@
  * @file
  * @ingroup drdc_geo
  * @brief UTM zone rules and geographic <-> UTM on the transverse Mercator
- *        of tm.c (validate in nas, convert in Q5.58); also the {W} ->
- *        {W-UTM} and {We} <-> {We-UTM} poses and MGRS from geographic
- *        and from UTM, which run a projection's body in their own frames
- *        (issue 8's stack).
+ *        of tm.c (validate in nas, convert in Q5.58); also the grid
+ *        poses ({W}, {We} <-> {W-UTM}, {We-UTM}; {W-MGRS}, {We-MGRS})
+ *        and MGRS from geographic and from UTM, which run a projection's
+ *        body in their own frames (issue 8's stack).
  */
 #include <drdc/geo.h>
 
@@ -45,7 +45,7 @@
 /* Q47.16 metres -> Q28.36 (exact for the false origins used here). */
 #define Q36_FROM_Q16(v) ((v) * INT64_C(1048576))
 
-/* Every zone code from here up asks geo_utm_forward() for Q28.36. */
+/* Every zone code from here up asks forward_args() for Q28.36. */
 #define ZONE_FINE_MIN (GEO_ZONE_Q36 + DRDC_GEO_ZONE_STANDARD)
 
 static drdc_status_t check_lat_lon(drdc_nas_t lat, drdc_nas_t lon)
@@ -134,10 +134,11 @@ static __attribute__((noinline)) int64_t angle_from_metres(drdc_q47_16_t v)
 }
 
 /* Added to a zone code (with GEO_ZONE_Q36) by forward_args() for a point
- * south of the equator. */
-#define CODE_SOUTH ((int32_t)512)
+ * south of the equator; the reverse projections take the same code
+ * (geo_impl.h's, which the MGRS decoder also returns). */
+#define CODE_SOUTH GEO_CODE_SOUTH
 
-/* The checks and the projection's arguments of geo_utm_forward(), out of
+/* The checks and the projection's arguments of utm_forward(), out of
  * line (out is only checked for NULL here, the first check): lat and lon (nas) come in tm->xi and tm->eta and leave as phi and
  * lam in radians (UTM: lam from the zone's central meridian; UPS: the
  * longitude in [-180, 180) degrees). Returns the zone (0: UPS) plus
@@ -187,24 +188,15 @@ static bool ups_in_range(bool north, drdc_q47_16_t v)
  * code tells the hemisphere and the fine request), easting and northing
  * in Q47.16 or (fine) Q28.36; tm is the caller's scratch (x, y, gamma, k
  * in its xi, eta, gamma, k), so the UTM and UPS branches of
- * geo_utm_forward() share one struct on the stack, and the caller writes
+ * utm_forward() share one struct on the stack, and the caller writes
  * convergence and scale from it. Out of line with three arguments (no
- * stack argument): its values are not in geo_utm_forward()'s frame. */
+ * stack argument): its values are not in utm_forward()'s frame. */
 static __attribute__((noinline)) drdc_status_t
 ups_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm);
 
-static __attribute__((noinline)) drdc_status_t
-ups_forward(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
-{
-  if (geo_ups_forward(code < CODE_SOUTH, tm) == 0) {
-    return DRDC_E_RANGE;
-  }
-  return ups_from_tm(code, out, tm);
-}
-
-/* ups_forward() after geo_ups_forward(): x and y in tm's xi and eta
- * slots to easting and northing, checked, into out. Out of line, one
- * copy for ups_forward() (a sibling call) and grid_metres(). */
+/* After geo_ups_forward(): x and y in tm's xi and eta slots to easting
+ * and northing, checked, into out. Out of line, one copy for
+ * grid_to_utm() (a sibling call). */
 static __attribute__((noinline)) drdc_status_t
 ups_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
 {
@@ -225,40 +217,6 @@ ups_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
   out->north = north;
   out->easting = fine ? (Q36_FROM_Q16(UPS_FALSE_ORIGIN) + tm->xi) : e;
   out->northing = fine ? (Q36_FROM_Q16(UPS_FALSE_ORIGIN) + tm->eta) : n;
-  return DRDC_OK;
-}
-
-/* UPS reverse; tm is the caller's scratch as in ups_forward(). Inline
- * into utm_reverse()'s entries, as it was into its one: out of line its
- * frame (40 B on Cortex-M3, for the stack arguments) would be on the
- * chain of the UPS projection. */
-static inline __attribute__((always_inline)) drdc_status_t
-ups_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat, drdc_nas_t *lon,
-            drdc_nas_t *convergence, drdc_q5_58_t *scale, geo_tm_t *tm)
-{
-  if (!ups_in_range(in->north, in->easting)) {
-    return DRDC_E_EASTING;
-  }
-  if (!ups_in_range(in->north, in->northing)) {
-    return DRDC_E_NORTHING;
-  }
-  /* the metres in, phi and lam out in tm->xi and tm->eta, where the
-   * forward below takes them */
-  tm->xi = in->easting - UPS_FALSE_ORIGIN;
-  tm->eta = in->northing - UPS_FALSE_ORIGIN;
-  geo_ups_reverse(in->north, tm);
-  *lat = geo_nas_from_rad(tm->xi);
-  *lon = geo_nas_from_rad(tm->eta);
-  if ((convergence != NULL) || (scale != NULL)) {
-    /* within the UPS ranges sin chi > 0.5: never fails */
-    (void)geo_ups_forward(in->north, tm);
-    if (convergence != NULL) {
-      *convergence = geo_nas_from_rad(tm->gamma);
-    }
-    if (scale != NULL) {
-      *scale = tm->k;
-    }
-  }
   return DRDC_OK;
 }
 
@@ -300,12 +258,42 @@ utm_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
   return DRDC_OK;
 }
 
-/* drdc_geo_to_utm() and its Q28.36 form for MGRS in one: zone is a zone
- * code of drdc_geo_to_utm(), plus GEO_ZONE_Q36 for the Q28.36 result.
- * Inline into both entries (a few dozen instructions: the stages are out
- * of line), so that neither stacks a frame of its own on top of this
- * one: a wrapper's frame, even a sibling call's, counts on issue 8's
- * chain (16 B on PowerPC). */
+/* The forward projection (UPS or transverse Mercator, by the zone of a
+ * code of forward_args() or of reverse_args()) of phi and lam in tm's xi
+ * and eta slots: 0 beyond its domain, else 1 (never 0 after the reverse,
+ * for the convergence and scale: UTM in the range reverse_args() checked
+ * has |dlon| < 30 degrees, UPS within its ranges sin chi > 0.5). A
+ * sibling call of either projection: no frame of its own on their
+ * chains, its callers keep no hemisphere flag across them, and the grid
+ * poses and the reverse share one copy of the dispatch. */
+static __attribute__((noinline)) int
+grid_forward_projection(int32_t code, geo_tm_t *tm)
+{
+  if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
+    return geo_ups_forward(code < CODE_SOUTH, tm);
+  }
+  return geo_tm_forward(tm);
+}
+
+/* The easting and northing of the forward projection in tm, checked, into
+ * out: ups_from_tm() or utm_from_tm() by the zone of forward_args()'s
+ * code, each a sibling call; one copy of the dispatch for utm_forward()
+ * and grid_metres(). */
+static __attribute__((noinline)) drdc_status_t
+grid_to_utm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
+{
+  if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
+    return ups_from_tm(code, out, tm);
+  }
+  return utm_from_tm(code, out, tm);
+}
+
+/* drdc_geo_to_utm() and its Q28.36 form in one: zone is a zone code of
+ * drdc_geo_to_utm(), plus GEO_ZONE_Q36 for the Q28.36 result. Inline
+ * into its entries (drdc_geo_to_utm(), drdc_pose_weutm_from_we(); a few
+ * dozen instructions: the stages are out of line), so that none stacks a
+ * frame of its own on top of this one: a wrapper's frame, even a sibling
+ * call's, counts on issue 8's chain (16 B on PowerPC). */
 static inline __attribute__((always_inline)) drdc_status_t
 utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
             drdc_geo_utm_t *out, drdc_nas_t *convergence, drdc_q5_58_t *scale)
@@ -321,15 +309,9 @@ utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
   if (code < 0) {
     return (drdc_status_t)-code;
   }
-  if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
-    if (ups_forward(code, out, &tm) != DRDC_OK) {
-      return DRDC_E_RANGE;
-    }
-  } else if ((geo_tm_forward(&tm) == 0)
-             || (utm_from_tm(code, out, &tm) != DRDC_OK)) {
+  if ((grid_forward_projection(code, &tm) == 0)
+      || (grid_to_utm(code, out, &tm) != DRDC_OK)) {
     return DRDC_E_RANGE;
-  } else {
-    /* out written */
   }
   if (convergence != NULL) {
     *convergence = geo_nas_from_rad(tm.gamma);
@@ -340,19 +322,12 @@ utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
   return DRDC_OK;
 }
 
-drdc_status_t geo_utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
-                              drdc_geo_utm_t *out, drdc_nas_t *convergence,
-                              drdc_q5_58_t *scale)
-{
-  return utm_forward(lat, lon, zone, out, convergence, scale);
-}
-
 drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
                               drdc_geo_utm_t *out, drdc_nas_t *convergence,
                               drdc_q5_58_t *scale)
 {
   /* a zone code above the zones is DRDC_E_ZONE, never a request for
-   * Q28.36 (as geo_to_utm()) */
+   * Q28.36 */
   return utm_forward(lat, lon,
                      (zone > DRDC_GEO_ZONE_MAX) ? (DRDC_GEO_ZONE_MAX + 1)
                                                 : zone,
@@ -396,11 +371,7 @@ grid_metres(int32_t code, geo_tm_t *tm)
   drdc_geo_utm_t u;
   drdc_status_t st;
 
-  if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
-    st = ups_from_tm(code, &u, tm);
-  } else {
-    st = utm_from_tm(code, &u, tm);
-  }
+  st = grid_to_utm(code, &u, tm);
   if (st == DRDC_OK) {
     tm->eta = u.easting;
     tm->xi = u.northing;
@@ -410,20 +381,16 @@ grid_metres(int32_t code, geo_tm_t *tm)
 
 /* The projection of forward_args()'s code (UPS or transverse Mercator)
  * on tm, then its metres checked by grid_metres(): the steps and statuses
- * that drdc_pose_wutm_from_w() and drdc_geo_mgrs_encode() share. Inlined
- * (always_inline) so the projection stays called from their own frames. */
+ * that drdc_pose_wutm_from_w(), drdc_geo_mgrs_encode() and the MGRS poses
+ * share. Inlined (always_inline) so the projection stays called from
+ * their own frames (by grid_forward_projection(), a sibling call). */
 static inline __attribute__((always_inline)) drdc_status_t
 project_to_grid(int32_t code, geo_tm_t *tm)
 {
-  if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
-    if (geo_ups_forward(code < CODE_SOUTH, tm) == 0) {
-      return DRDC_E_RANGE;
-    }
-  } else if (geo_tm_forward(tm) == 0) {
+  if (grid_forward_projection(code, tm) == 0) {
     return DRDC_E_RANGE;
-  } else {
-    /* xi, eta (and gamma) in tm */
   }
+  /* xi, eta (and gamma) in tm */
   return grid_metres(code, tm);
 }
 
@@ -492,7 +459,7 @@ mgrs_from_tm(int32_t code, geo_tm_t *tm, char *text, size_t size)
 }
 
 /* MGRS text of a geographic position (mgrs.c's encoder), here for the
- * reason of drdc_pose_weutm_from_we(): the body of geo_utm_forward(), in
+ * reason of drdc_pose_weutm_from_we(): the body of utm_forward(), in
  * the standard zone, with the easting and northing before their rounding
  * to Q47.16 (2^-36 m), so the truncation falls on the side of a digit
  * boundary that GeographicLib's value falls on, but within nanometres of
@@ -528,55 +495,232 @@ drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
   return mgrs_from_tm(code, &tm, text, size);
 }
 
-/* drdc_geo_from_utm() after its NULL checks, inline into it,
- * drdc_pose_we_from_weutm() and drdc_geo_mgrs_from_utm() (as
+/* The MGRS text of drdc_geo_mgrs_encode()'s projection in tm (its
+ * code), at prec (checked) and for the latitude lat (nas), into text
+ * (DRDC_GEO_MGRS_SIZE bytes): mgrs_from_tm(), which never fails here (a
+ * standard zone's position is always inside the MGRS limits, the size
+ * holds the longest text), so the MGRS poses write it last, after the
+ * attitude and height; tm is left holding lat and prec. */
+static inline __attribute__((always_inline)) void
+mgrs_text(int32_t code, drdc_nas_t lat, int32_t prec, geo_tm_t *tm,
+          char *text)
+{
+  tm->gamma = lat;
+  tm->k = prec;
+  (void)mgrs_from_tm(code, tm, text, DRDC_GEO_MGRS_SIZE);
+}
+
+/* A pose conversion of pose.c, here for the reason of
+ * drdc_pose_weutm_from_we(): the body of drdc_geo_mgrs_encode() in its
+ * own frame, the position and the convergence waiting in its geo_tm_t
+ * (as drdc_pose_wutm_from_w()) while pose.c's geo_wmgrs_attitude() turns
+ * the attitude, the last step that can fail, straight into out->q and
+ * writes the height (only on DRDC_OK); then the text. Statuses and their
+ * order as before. */
+drdc_status_t drdc_pose_wmgrs_from_w(const drdc_WPose_t *w, int32_t prec,
+                                     drdc_WMGRSPose_t *out)
+{
+  int32_t code;
+  geo_tm_t tm;
+  drdc_status_t st;
+
+  if ((w == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  /* prec first: DRDC_E_RANGE must not depend on the position */
+  if ((prec < DRDC_GEO_MGRS_PREC_MIN) || (prec > DRDC_GEO_MGRS_PREC_MAX)) {
+    return DRDC_E_RANGE;
+  }
+  tm.xi = w->latitude;
+  tm.eta = w->longitude;
+  tm.gamma = 0;
+  tm.k = 0;
+  code = forward_args(DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, out, &tm);
+  if (code < 0) {
+    return (drdc_status_t)-code;
+  }
+  st = project_to_grid(code, &tm);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  st = geo_wmgrs_attitude(w, &tm, out);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  mgrs_text(code, w->latitude, prec, &tm, out->mgrs);
+  return DRDC_OK;
+}
+
+/* As drdc_pose_wmgrs_from_w(), the yaw turned instead (which cannot
+ * fail) */
+drdc_status_t drdc_pose_wemgrs_from_we(const drdc_WePose_t *w, int32_t prec,
+                                       drdc_WeMGRSPose_t *out)
+{
+  int32_t code;
+  geo_tm_t tm;
+  drdc_status_t st;
+
+  if ((w == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  if ((prec < DRDC_GEO_MGRS_PREC_MIN) || (prec > DRDC_GEO_MGRS_PREC_MAX)) {
+    return DRDC_E_RANGE;
+  }
+  tm.xi = w->latitude;
+  tm.eta = w->longitude;
+  tm.gamma = 0;
+  tm.k = 0;
+  code = forward_args(DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, out, &tm);
+  if (code < 0) {
+    return (drdc_status_t)-code;
+  }
+  st = project_to_grid(code, &tm);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  out->e.yaw = w->e.yaw - drdc_pose_bam_from_convergence(
+                            geo_nas_from_rad(tm.gamma));
+  out->e.pitch = w->e.pitch;
+  out->e.roll = w->e.roll;
+  out->height = w->height;
+  mgrs_text(code, w->latitude, prec, &tm, out->mgrs);
+  return DRDC_OK;
+}
+
+/* The checks of drdc_geo_from_utm() after the zone's, and the reverse
+ * projection's arguments: the metres (Q47.16) of a zone with its
+ * hemisphere (code: the zone, 0..60, plus CODE_SOUTH south), northing in
+ * tm->xi and easting in tm->eta, to the angles that geo_tm_reverse()
+ * (xi, eta on the sphere of radius k0 A) or geo_ups_reverse() (x, y from
+ * the pole) takes in the same slots. Out of line, before the projection:
+ * its constants and values are not in the frame under it. */
+static __attribute__((noinline)) drdc_status_t
+reverse_args(int32_t code, geo_tm_t *tm)
+{
+  bool north = (code < CODE_SOUTH);
+  drdc_q47_16_t n = tm->xi;
+
+  if ((code % CODE_SOUTH) == DRDC_GEO_ZONE_UPS) {
+    if (!ups_in_range(north, tm->eta)) {
+      return DRDC_E_EASTING;
+    }
+    if (!ups_in_range(north, n)) {
+      return DRDC_E_NORTHING;
+    }
+    tm->xi = tm->eta - UPS_FALSE_ORIGIN;
+    tm->eta = n - UPS_FALSE_ORIGIN;
+    return DRDC_OK;
+  }
+  if ((tm->eta < UTM_E_MIN) || (tm->eta > UTM_E_MAX)) {
+    return DRDC_E_EASTING;
+  }
+  if (north ? ((n < UTM_N_NORTH_MIN) || (n > UTM_N_NORTH_MAX))
+            : ((n < UTM_N_SOUTH_MIN) || (n > UTM_N_SOUTH_MAX))) {
+    return DRDC_E_NORTHING;
+  }
+  tm->xi = angle_from_metres(north ? n : (n - UTM_FALSE_NORTHING_SOUTH));
+  tm->eta = angle_from_metres(tm->eta - UTM_FALSE_EASTING);
+  return DRDC_OK;
+}
+
+/* The reverse projection (UPS or transverse Mercator, by the code of
+ * reverse_args()) on tm's slots. A sibling call of either: no frame of
+ * its own on their chains, and its callers keep no hemisphere flag
+ * across them. */
+static __attribute__((noinline)) void
+grid_reverse_projection(int32_t code, geo_tm_t *tm)
+{
+  if ((code % CODE_SOUTH) == DRDC_GEO_ZONE_UPS) {
+    geo_ups_reverse(code < CODE_SOUTH, tm);
+  } else {
+    geo_tm_reverse(tm);
+  }
+}
+
+/* The latitude and longitude (nas) of the reverse projection's phi and
+ * lam in tm->xi and tm->eta (UTM: lam from the zone's central meridian),
+ * into *lat and *lon, either NULL when not wanted, each written after its
+ * slot is last read (they may point into tm's xi and eta). Out of line,
+ * after the projection; DRDC_OK, for its callers' sibling call. */
+static __attribute__((noinline)) drdc_status_t
+reverse_angles(int32_t code, geo_tm_t *tm, drdc_nas_t *lat, drdc_nas_t *lon)
+{
+  int32_t zone = code % CODE_SOUTH;
+  drdc_nas_t a;
+
+  if (lat != NULL) {
+    *lat = geo_nas_from_rad(tm->xi);
+  }
+  if (lon != NULL) {
+    a = geo_nas_from_rad(tm->eta);
+    *lon = (zone == DRDC_GEO_ZONE_UPS)
+             ? a
+             : lon_normalize(central_meridian(zone) + a);
+  }
+  return DRDC_OK;
+}
+
+/* The convergence (nas) and scale of the forward projection in tm into
+ * *convergence and *scale, either NULL; DRDC_OK, as reverse_angles(). */
+static __attribute__((noinline)) drdc_status_t
+forward_outputs(const geo_tm_t *tm, drdc_nas_t *convergence,
+                drdc_q5_58_t *scale)
+{
+  if (convergence != NULL) {
+    *convergence = geo_nas_from_rad(tm->gamma);
+  }
+  if (scale != NULL) {
+    *scale = tm->k;
+  }
+  return DRDC_OK;
+}
+
+/* The reverse projection of a zone (0..60) with its hemisphere (code: the
+ * zone, plus CODE_SOUTH south) and the metres (Q47.16) in tm, northing in
+ * tm->xi and easting in tm->eta: drdc_geo_from_utm() after its NULL and
+ * zone checks, inline into each entry that runs it in its own frame (as
  * utm_forward() into its entries): no wrapper frame on the projection's
- * chain. Writes only on DRDC_OK. tm is the entry's scratch; with
+ * chain. Only the calls are inline (the checks and conversions are
+ * stages, out of line, before and after the projections, the last one a
+ * sibling call), so each copy is small and the frame keeps only code and
+ * the outputs' pointers across the projections. Writes only on DRDC_OK;
+ * lat and lon may be NULL (not wanted). tm is the entry's scratch; with
  * convergence and scale NULL (no forward after the reverse), lat and lon
- * may point into its xi and eta, each written after its slot is last
- * read, so an entry that needs only the angles keeps no buffer for
- * them. */
+ * may point into its xi and eta, so an entry that needs only the angles
+ * keeps no buffer for them. */
+static inline __attribute__((always_inline)) drdc_status_t
+grid_reverse(int32_t code, drdc_nas_t *lat, drdc_nas_t *lon,
+             drdc_nas_t *convergence, drdc_q5_58_t *scale, geo_tm_t *tm)
+{
+  drdc_status_t st = reverse_args(code, tm);
+
+  if (st != DRDC_OK) {
+    return st;
+  }
+  /* phi and lam of the reverse wait in tm's own slots (xi, eta) until
+   * the forward overwrites them: one struct is the whole frame's data
+   * on the deepest path */
+  grid_reverse_projection(code, tm);
+  if ((convergence == NULL) && (scale == NULL)) {
+    return reverse_angles(code, tm, lat, lon);
+  }
+  (void)reverse_angles(code, tm, lat, lon);
+  (void)grid_forward_projection(code, tm);
+  return forward_outputs(tm, convergence, scale);
+}
+
+/* grid_reverse() of a drdc_geo_utm_t, its zone checked first */
 static inline __attribute__((always_inline)) drdc_status_t
 utm_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat, drdc_nas_t *lon,
             drdc_nas_t *convergence, drdc_q5_58_t *scale, geo_tm_t *tm)
 {
-  /* phi and lam of the reverse wait in tm's own slots (xi, eta) until
-   * the forward overwrites them: one struct is the whole frame's data
-   * on the deepest path */
   if ((in->zone < DRDC_GEO_ZONE_UPS) || (in->zone > DRDC_GEO_ZONE_MAX)) {
     return DRDC_E_ZONE;
   }
-  if (in->zone == DRDC_GEO_ZONE_UPS) {
-    return ups_reverse(in, lat, lon, convergence, scale, tm);
-  }
-  if ((in->easting < UTM_E_MIN) || (in->easting > UTM_E_MAX)) {
-    return DRDC_E_EASTING;
-  }
-  if (in->north ? ((in->northing < UTM_N_NORTH_MIN)
-                   || (in->northing > UTM_N_NORTH_MAX))
-                : ((in->northing < UTM_N_SOUTH_MIN)
-                   || (in->northing > UTM_N_SOUTH_MAX))) {
-    return DRDC_E_NORTHING;
-  }
-  tm->xi = angle_from_metres(in->north ? in->northing
-                                       : (in->northing
-                                          - UTM_FALSE_NORTHING_SOUTH));
-  tm->eta = angle_from_metres(in->easting - UTM_FALSE_EASTING);
-  geo_tm_reverse(tm);
-  *lat = geo_nas_from_rad(tm->xi);
-  *lon = lon_normalize(central_meridian(in->zone)
-                       + geo_nas_from_rad(tm->eta));
-  if ((convergence != NULL) || (scale != NULL)) {
-    /* in the range checked above |dlon| < 30 degrees: never fails */
-    (void)geo_tm_forward(tm);
-    if (convergence != NULL) {
-      *convergence = geo_nas_from_rad(tm->gamma);
-    }
-    if (scale != NULL) {
-      *scale = tm->k;
-    }
-  }
-  return DRDC_OK;
+  tm->xi = in->northing;
+  tm->eta = in->easting;
+  return grid_reverse(in->zone + (in->north ? 0 : CODE_SOUTH), lat, lon,
+                      convergence, scale, tm);
 }
 
 drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
@@ -591,28 +735,179 @@ drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
   return utm_reverse(in, lat, lon, convergence, scale, &tm);
 }
 
-/* A pose conversion of pose.c, here for the reason of
- * drdc_pose_weutm_from_we(): the body of drdc_geo_from_utm() in its own
- * frame. */
-drdc_status_t drdc_pose_we_from_weutm(const drdc_WeUTMPose_t *u,
-                                      drdc_WePose_t *out)
+/* The position of a grid pose in tm, as grid_reverse() takes it: from
+ * in's zone, hemisphere and metres (DRDC_E_ZONE for a zone outside
+ * 0..60), or else the centre of the cell of the MGRS text (DRDC_E_MGRS
+ * when no NUL is within DRDC_GEO_MGRS_SIZE bytes, then the decoder's
+ * statuses). Returns grid_reverse()'s code or minus the status. Out of
+ * line, one copy for the four reverse poses, called before their
+ * projection; the decoder a sibling call, its drdc_geo_utm_t nowhere. */
+static __attribute__((noinline)) int32_t
+grid_of(const drdc_geo_utm_t *in, const char *text, geo_tm_t *tm)
+{
+  size_t n = 0u;
+
+  if (in != NULL) {
+    if ((in->zone < DRDC_GEO_ZONE_UPS) || (in->zone > DRDC_GEO_ZONE_MAX)) {
+      return -(int32_t)DRDC_E_ZONE;
+    }
+    tm->xi = in->northing;
+    tm->eta = in->easting;
+    return in->zone + (in->north ? 0 : CODE_SOUTH);
+  }
+  /* the decoder must not read beyond the array */
+  while ((n < DRDC_GEO_MGRS_SIZE) && (text[n] != '\0')) {
+    n++;
+  }
+  if (n == DRDC_GEO_MGRS_SIZE) {
+    return -(int32_t)DRDC_E_MGRS;
+  }
+  return geo_mgrs_decode_tm(text, tm, NULL);
+}
+
+/* Every part of q within [-1, 1] (|raw| <= 2^30): then a turn about the
+ * down axis, r q with r = (c, 0, 0, s) from drdc_fx_sincos_bam32(),
+ * cannot fail. Each part of the product is c a -/+ s b for two parts a,
+ * b of q, at most sqrt(c^2 + s^2) sqrt(a^2 + b^2) in size; with c and s
+ * within 1 LSB of the cosine and sine, sqrt(c^2 + s^2) < 1 + 2^-29, so
+ * the part stays below 1.415, inside Q1.30's [-2, 2), and
+ * drdc_quat_mul()'s only error (DRDC_E_OVERFLOW) cannot occur. */
+static bool turn_cannot_fail(const drdc_quat_t *q)
+{
+  const int32_t one = INT32_C(1073741824); /* 1.0 in Q1.30 */
+
+  return (q->s >= -one) && (q->s <= one) && (q->x >= -one) && (q->x <= one)
+         && (q->y >= -one) && (q->y <= one) && (q->z >= -one)
+         && (q->z <= one);
+}
+
+/* drdc_pose_w_from_wutm() (u) and drdc_pose_w_from_wmgrs() (m; u NULL),
+ * with the body of drdc_geo_from_utm() in this frame, the sibling call of
+ * both (so no frame of theirs on the projection's chain: issue 8's
+ * stack). The attitude's turn, after the projection, is the last step
+ * that can fail, and out stays unchanged on error; the position cannot
+ * wait in this frame (a buffer of it on top of the projection's chain
+ * would pass 256 B), so it goes straight into out when the turn cannot
+ * fail (turn_cannot_fail(), the common case: one pass). Otherwise a
+ * first pass keeps nothing but the convergence (the angles are not
+ * written) and turns the attitude into out->q and writes the height,
+ * only on DRDC_OK; then the second pass writes the position, the same
+ * projection of the same input (which cannot fail now), and the same
+ * turn (twice the cycles for such an attitude). Statuses and their order
+ * as before: the position's, then the turn's. Each pass a copy of
+ * grid_reverse(), a few calls: no loop whose state would stay in this
+ * frame across the projections. */
+static __attribute__((noinline)) drdc_status_t
+w_from_grid(const drdc_WUTMPose_t *u, const drdc_WMGRSPose_t *m,
+            drdc_WPose_t *out)
 {
   geo_tm_t tm;
+  int32_t code;
   drdc_status_t st;
 
-  if ((u == NULL) || (out == NULL)) {
-    return DRDC_E_NULL;
+  if (!turn_cannot_fail((u != NULL) ? &u->q : &m->q)) {
+    code = grid_of((u != NULL) ? &u->utm : NULL,
+                   (m != NULL) ? m->mgrs : NULL, &tm);
+    if (code < 0) {
+      return (drdc_status_t)-code;
+    }
+    /* the convergence in tm->gamma, where the forward leaves it */
+    st = grid_reverse(code, NULL, NULL, &tm.gamma, NULL, &tm);
+    if (st == DRDC_OK) {
+      st = geo_w_attitude(u, m, &tm, out);
+    }
+    if (st != DRDC_OK) {
+      return st;
+    }
   }
-  /* the position straight into out, the convergence parked in
-   * out->height: all written only on DRDC_OK, and geo_we_attitude()
-   * then overwrites the height */
-  st = utm_reverse(&u->utm, &out->latitude, &out->longitude, &out->height,
-                   NULL, &tm);
+  /* the position straight into out: nothing after it can fail now (the
+   * same turn returns DRDC_OK) */
+  code = grid_of((u != NULL) ? &u->utm : NULL, (m != NULL) ? m->mgrs : NULL,
+                 &tm);
+  if (code < 0) {
+    return (drdc_status_t)-code;
+  }
+  st = grid_reverse(code, &out->latitude, &out->longitude, &tm.gamma, NULL,
+                    &tm);
   if (st != DRDC_OK) {
     return st;
   }
-  geo_we_attitude(u, out);
+  return geo_w_attitude(u, m, &tm, out);
+}
+
+/* A pose conversion of pose.c, here for the reason of
+ * drdc_pose_weutm_from_we(): w_from_grid() runs the body of
+ * drdc_geo_from_utm() in its own frame, in place of this one (a sibling
+ * call). */
+drdc_status_t drdc_pose_w_from_wutm(const drdc_WUTMPose_t *u,
+                                    drdc_WPose_t *out)
+{
+  if ((u == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  return w_from_grid(u, NULL, out);
+}
+
+/* As drdc_pose_w_from_wutm(), from the centre of the MGRS cell */
+drdc_status_t drdc_pose_w_from_wmgrs(const drdc_WMGRSPose_t *m,
+                                     drdc_WPose_t *out)
+{
+  if ((m == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  return w_from_grid(NULL, m, out);
+}
+
+/* drdc_pose_we_from_weutm() (u) and drdc_pose_we_from_wemgrs() (m; u
+ * NULL), as w_from_grid(); nothing can fail after the projection, so the
+ * position goes straight into out, the convergence waits in tm, and then
+ * the yaw is turned. */
+static __attribute__((noinline)) drdc_status_t
+we_from_grid(const drdc_WeUTMPose_t *u, const drdc_WeMGRSPose_t *m,
+             drdc_WePose_t *out)
+{
+  const drdc_euler_t *e;
+  geo_tm_t tm;
+  int32_t code;
+  drdc_status_t st;
+
+  code = grid_of((u != NULL) ? &u->utm : NULL, (m != NULL) ? m->mgrs : NULL,
+                 &tm);
+  if (code < 0) {
+    return (drdc_status_t)-code;
+  }
+  st = grid_reverse(code, &out->latitude, &out->longitude, &tm.gamma, NULL,
+                    &tm);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  e = (u != NULL) ? &u->e : &m->e;
+  out->e.yaw = e->yaw + drdc_pose_bam_from_convergence(tm.gamma);
+  out->e.pitch = e->pitch;
+  out->e.roll = e->roll;
+  out->height = (u != NULL) ? u->height : m->height;
   return DRDC_OK;
+}
+
+/* A pose conversion of pose.c, here for the reason of
+ * drdc_pose_w_from_wutm() */
+drdc_status_t drdc_pose_we_from_weutm(const drdc_WeUTMPose_t *u,
+                                      drdc_WePose_t *out)
+{
+  if ((u == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  return we_from_grid(u, NULL, out);
+}
+
+/* As drdc_pose_we_from_weutm(), from the centre of the MGRS cell */
+drdc_status_t drdc_pose_we_from_wemgrs(const drdc_WeMGRSPose_t *m,
+                                       drdc_WePose_t *out)
+{
+  if ((m == NULL) || (out == NULL)) {
+    return DRDC_E_NULL;
+  }
+  return we_from_grid(NULL, m, out);
 }
 
 /* MGRS text of a UTM/UPS position (mgrs.c's encoder), here for the

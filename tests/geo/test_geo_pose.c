@@ -18,6 +18,7 @@
 #define NAS_DEG INT64_C(3600000000000)
 #define M(v) ((int64_t)(v) * INT64_C(65536))
 #define SENTINEL64 INT64_C(0x5A5A5A5A5A5A5A5A)
+#define COUNT(a) (sizeof(a) / sizeof((a)[0]))
 
 static void test_drdc_pose_grid_and_true_errors(void)
 {
@@ -294,7 +295,6 @@ static void test_we_round_trip_turns_the_yaw(void)
                             drdc_pose_bam_from_convergence(gamma));
 }
 
-#define COUNT(a) (sizeof(a) / sizeof((a)[0]))
 /* pose.h bounds, the maxima measured on vectors_pose.h */
 #define MGRS_Q_TOL 2     /* LSB of Q1.30 per quaternion part */
 #define MGRS_YAW_TOL 1   /* binary-angle LSB */
@@ -678,6 +678,274 @@ static void test_drdc_pose_le_from_we_errors(void)
   TEST_ASSERT_EQUAL_INT32(77, out.p.x);
 }
 
+/* Points for the grid poses step by step: UTM north and south (off the
+ * central meridian, a convergence of degrees), UPS north and south, and
+ * a point on a central meridian (convergence 0). */
+static const struct {
+  drdc_nas_t lat;
+  drdc_nas_t lon;
+} grid_points[] = {
+  { 45 * NAS_DEG, -170 * NAS_DEG },
+  { INT64_C(-119880000000000), INT64_C(544320000000000) },
+  { 85 * NAS_DEG, 45 * NAS_DEG },
+  { -85 * NAS_DEG, -100 * NAS_DEG },
+  { 10 * NAS_DEG, 3 * NAS_DEG },
+};
+
+/* Attitudes: inside [-1, 1] (one pass), beyond it with a turn that fits
+ * Q1.30, and beyond it with one that overflows wherever the convergence
+ * is not 0. */
+static const drdc_quat_t grid_attitudes[] = {
+  { 1073741824, 0, 0, 0 },
+  { -601295421, 536870912, -644245094, 268435456 },
+  { 1610612736, -107374182, 214748364, 268435456 },
+  { INT32_MAX, 0, 0, INT32_MIN },
+};
+
+/* {W-UTM} and {W-MGRS} -> {W} against the public building blocks step by
+ * step (drdc_geo_from_utm(), drdc_geo_mgrs_decode(),
+ * drdc_pose_true_from_grid()): the same status, the same result, and out
+ * unchanged byte for byte on error, for attitudes inside and beyond
+ * [-1, 1] (the second pass of the wide attitude). */
+static void test_w_from_grid_step_by_step(void)
+{
+  size_t i;
+  size_t j;
+  unsigned overflows = 0u;
+
+  for (i = 0; i < COUNT(grid_points); i++) {
+    for (j = 0; j < COUNT(grid_attitudes); j++) {
+      drdc_WUTMPose_t u;
+      drdc_WMGRSPose_t m;
+      drdc_geo_utm_t corner;
+      drdc_geo_utm_t centre;
+      drdc_WPose_t out;
+      drdc_WPose_t before;
+      drdc_nas_t lat = 0;
+      drdc_nas_t lon = 0;
+      drdc_nas_t gamma = 0;
+      drdc_quat_t q = { 0, 0, 0, 0 };
+      drdc_status_t st;
+
+      u.height = M(123);
+      u.q = grid_attitudes[j];
+      TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                            drdc_geo_to_utm(grid_points[i].lat,
+                                            grid_points[i].lon,
+                                            DRDC_GEO_ZONE_STANDARD, &u.utm,
+                                            NULL, NULL));
+      TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_from_utm(&u.utm, &lat, &lon,
+                                                       &gamma, NULL));
+      st = drdc_pose_true_from_grid(&u.q, gamma, &q);
+      memset(&out, 0x5A, sizeof out);
+      memcpy(&before, &out, sizeof out);
+      TEST_ASSERT_EQUAL_INT(st, drdc_pose_w_from_wutm(&u, &out));
+      if (st == DRDC_OK) {
+        TEST_ASSERT_EQUAL_INT64(lat, out.latitude);
+        TEST_ASSERT_EQUAL_INT64(lon, out.longitude);
+        TEST_ASSERT_EQUAL_INT64(M(123), out.height);
+        TEST_ASSERT_EQUAL_MEMORY(&q, &out.q, sizeof q);
+      } else {
+        TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, st);
+        TEST_ASSERT_EQUAL_MEMORY(&before, &out, sizeof out);
+        overflows++;
+      }
+
+      /* the same through MGRS text at 1 m: the cell's centre */
+      memset(&m, 0, sizeof m);
+      m.height = M(-45);
+      m.q = grid_attitudes[j];
+      TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                            drdc_geo_mgrs_encode(grid_points[i].lat,
+                                                 grid_points[i].lon, 5,
+                                                 m.mgrs, sizeof m.mgrs));
+      TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_mgrs_decode(m.mgrs, &corner,
+                                                          &centre, NULL));
+      TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_from_utm(&centre, &lat, &lon,
+                                                       &gamma, NULL));
+      st = drdc_pose_true_from_grid(&m.q, gamma, &q);
+      memset(&out, 0xA5, sizeof out);
+      memcpy(&before, &out, sizeof out);
+      TEST_ASSERT_EQUAL_INT(st, drdc_pose_w_from_wmgrs(&m, &out));
+      if (st == DRDC_OK) {
+        TEST_ASSERT_EQUAL_INT64(lat, out.latitude);
+        TEST_ASSERT_EQUAL_INT64(lon, out.longitude);
+        TEST_ASSERT_EQUAL_INT64(M(-45), out.height);
+        TEST_ASSERT_EQUAL_MEMORY(&q, &out.q, sizeof q);
+      } else {
+        TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, st);
+        TEST_ASSERT_EQUAL_MEMORY(&before, &out, sizeof out);
+      }
+    }
+  }
+  /* the overflowing attitude at the four points off a meridian */
+  TEST_ASSERT_EQUAL_UINT(4u, overflows);
+}
+
+/* {W} -> {W-MGRS} and {We} -> {We-MGRS} against drdc_geo_mgrs_encode(),
+ * drdc_geo_to_utm()'s convergence and drdc_pose_grid_from_true() or
+ * drdc_pose_bam_from_convergence(), as the test above */
+static void test_mgrs_from_w_step_by_step(void)
+{
+  size_t i;
+  size_t j;
+
+  for (i = 0; i < COUNT(grid_points); i++) {
+    drdc_geo_utm_t g;
+    drdc_nas_t gamma = 0;
+    char text[DRDC_GEO_MGRS_SIZE];
+    drdc_WePose_t we = { grid_points[i].lon, grid_points[i].lat, M(7),
+                         { 4000000000u, 12345u, 99u } };
+    drdc_WeMGRSPose_t me;
+
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_geo_to_utm(grid_points[i].lat,
+                                          grid_points[i].lon,
+                                          DRDC_GEO_ZONE_STANDARD, &g, &gamma,
+                                          NULL));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_geo_mgrs_encode(grid_points[i].lat,
+                                               grid_points[i].lon, 11, text,
+                                               sizeof text));
+    for (j = 0; j < COUNT(grid_attitudes); j++) {
+      drdc_WPose_t w = { grid_points[i].lon, grid_points[i].lat, M(7),
+                         grid_attitudes[j] };
+      drdc_WMGRSPose_t out;
+      drdc_WMGRSPose_t before;
+      drdc_quat_t q = { 0, 0, 0, 0 };
+      drdc_status_t st = drdc_pose_grid_from_true(&w.q, gamma, &q);
+
+      memset(&out, 0x5A, sizeof out);
+      memcpy(&before, &out, sizeof out);
+      TEST_ASSERT_EQUAL_INT(st, drdc_pose_wmgrs_from_w(&w, 11, &out));
+      if (st == DRDC_OK) {
+        TEST_ASSERT_EQUAL_STRING(text, out.mgrs);
+        TEST_ASSERT_EQUAL_INT64(M(7), out.height);
+        TEST_ASSERT_EQUAL_MEMORY(&q, &out.q, sizeof q);
+      } else {
+        TEST_ASSERT_EQUAL_MEMORY(&before, &out, sizeof out);
+      }
+    }
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_wemgrs_from_we(&we, 11, &me));
+    TEST_ASSERT_EQUAL_STRING(text, me.mgrs);
+    TEST_ASSERT_EQUAL_INT64(M(7), me.height);
+    TEST_ASSERT_EQUAL_UINT32(4000000000u
+                               - drdc_pose_bam_from_convergence(gamma),
+                             me.e.yaw);
+    TEST_ASSERT_EQUAL_UINT32(12345u, me.e.pitch);
+    TEST_ASSERT_EQUAL_UINT32(99u, me.e.roll);
+  }
+}
+
+/* drdc_pose_wmgrs_from_w() and drdc_pose_wemgrs_from_we() write the text
+ * last and take it as never failing: a standard zone's position is inside
+ * the MGRS limits, and DRDC_GEO_MGRS_SIZE holds the longest text. The
+ * encoder's status (the same projection and text) at the edges of the
+ * zones and bands, Norway's and Svalbard's, and the UTM/UPS limits, at
+ * the finest and the coarsest precision. */
+static void test_mgrs_text_of_a_pose_cannot_fail(void)
+{
+  static const drdc_nas_t lats[] = {
+    -90 * NAS_DEG, (-80 * NAS_DEG) - 1, -80 * NAS_DEG, 0,
+    56 * NAS_DEG, (64 * NAS_DEG) - 1, 72 * NAS_DEG, (84 * NAS_DEG) - 1,
+    84 * NAS_DEG, 90 * NAS_DEG,
+  };
+  static const drdc_nas_t lons[] = {
+    -180 * NAS_DEG, (-177 * NAS_DEG) - 1, -177 * NAS_DEG, 0,
+    (3 * NAS_DEG) - 1, 3 * NAS_DEG, (9 * NAS_DEG) - 1, 9 * NAS_DEG,
+    (12 * NAS_DEG) - 1, 12 * NAS_DEG, (21 * NAS_DEG) - 1, 21 * NAS_DEG,
+    (33 * NAS_DEG) - 1, 33 * NAS_DEG, (42 * NAS_DEG) - 1, 42 * NAS_DEG,
+    (180 * NAS_DEG) - 1,
+  };
+  char text[DRDC_GEO_MGRS_SIZE];
+  size_t i;
+  size_t j;
+
+  for (i = 0; i < COUNT(lats); i++) {
+    for (j = 0; j < COUNT(lons); j++) {
+      TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                            drdc_geo_mgrs_encode(lats[i], lons[j],
+                                                 DRDC_GEO_MGRS_PREC_MAX, text,
+                                                 sizeof text));
+      TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                            drdc_geo_mgrs_encode(lats[i], lons[j],
+                                                 DRDC_GEO_MGRS_PREC_MIN, text,
+                                                 sizeof text));
+    }
+  }
+}
+
+/* {We-MGRS} -> {We} against drdc_geo_mgrs_decode(), drdc_geo_from_utm()
+ * and drdc_pose_bam_from_convergence() */
+static void test_we_from_wemgrs_step_by_step(void)
+{
+  size_t i;
+
+  for (i = 0; i < COUNT(grid_points); i++) {
+    drdc_WeMGRSPose_t m;
+    drdc_WePose_t out;
+    drdc_geo_utm_t corner;
+    drdc_geo_utm_t centre;
+    drdc_nas_t lat = 0;
+    drdc_nas_t lon = 0;
+    drdc_nas_t gamma = 0;
+
+    memset(&m, 0, sizeof m);
+    m.height = M(3);
+    m.e.yaw = 123456789u;
+    m.e.pitch = 5u;
+    m.e.roll = 6u;
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_geo_mgrs_encode(grid_points[i].lat,
+                                               grid_points[i].lon, 3, m.mgrs,
+                                               sizeof m.mgrs));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_mgrs_decode(m.mgrs, &corner,
+                                                        &centre, NULL));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_from_utm(&centre, &lat, &lon,
+                                                     &gamma, NULL));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_we_from_wemgrs(&m, &out));
+    TEST_ASSERT_EQUAL_INT64(lat, out.latitude);
+    TEST_ASSERT_EQUAL_INT64(lon, out.longitude);
+    TEST_ASSERT_EQUAL_INT64(M(3), out.height);
+    TEST_ASSERT_EQUAL_UINT32(123456789u
+                               + drdc_pose_bam_from_convergence(gamma),
+                             out.e.yaw);
+    TEST_ASSERT_EQUAL_UINT32(5u, out.e.pitch);
+    TEST_ASSERT_EQUAL_UINT32(6u, out.e.roll);
+  }
+}
+
+/* The position's errors before the wide attitude's first pass: out
+ * unchanged byte for byte, the statuses as drdc_geo_from_utm()'s */
+static void test_w_from_wutm_wide_position_errors(void)
+{
+  static const struct {
+    drdc_geo_utm_t utm;
+    drdc_status_t st;
+  } rows[] = {
+    { { 61, true, M(500000), M(0) }, DRDC_E_ZONE },
+    { { 31, true, M(1000000) + 1, M(0) }, DRDC_E_EASTING },
+    { { 31, false, M(500000), M(900000) - 1 }, DRDC_E_NORTHING },
+    { { 0, true, M(2800000) + 1, M(2000000) }, DRDC_E_EASTING },
+    { { 0, false, M(2000000), M(700000) - 1 }, DRDC_E_NORTHING },
+  };
+  size_t i;
+  size_t j;
+
+  for (i = 0; i < COUNT(rows); i++) {
+    for (j = 0; j < COUNT(grid_attitudes); j++) {
+      drdc_WUTMPose_t u = { rows[i].utm, M(1), grid_attitudes[j] };
+      drdc_WPose_t out;
+      drdc_WPose_t before;
+
+      memset(&out, 0x5A, sizeof out);
+      memcpy(&before, &out, sizeof out);
+      TEST_ASSERT_EQUAL_INT(rows[i].st, drdc_pose_w_from_wutm(&u, &out));
+      TEST_ASSERT_EQUAL_MEMORY(&before, &out, sizeof out);
+    }
+  }
+}
+
 void suite_geo_pose(void)
 {
   UnitySetTestFile(__FILE__);
@@ -685,6 +953,11 @@ void suite_geo_pose(void)
   RUN_TEST(test_drdc_pose_wutm_from_w_errors);
   RUN_TEST(test_drdc_pose_wutm_from_w_unchanged_on_error);
   RUN_TEST(test_drdc_pose_w_from_wutm_errors);
+  RUN_TEST(test_w_from_grid_step_by_step);
+  RUN_TEST(test_mgrs_from_w_step_by_step);
+  RUN_TEST(test_mgrs_text_of_a_pose_cannot_fail);
+  RUN_TEST(test_we_from_wemgrs_step_by_step);
+  RUN_TEST(test_w_from_wutm_wide_position_errors);
   RUN_TEST(test_drdc_pose_w_from_l_errors);
   RUN_TEST(test_drdc_pose_l_from_w_errors);
   RUN_TEST(test_drdc_pose_weutm_from_we_errors);

@@ -165,6 +165,10 @@ drdc_status_t drdc_pose_wutm_from_w(const drdc_WPose_t *w, int32_t zone,
  * @retval DRDC_E_EASTING easting outside its zone's range.
  * @retval DRDC_E_NORTHING northing outside its zone's range.
  * @retval DRDC_E_OVERFLOW u->q is far from unit length.
+ *
+ * Output unchanged on error. An attitude with a part beyond [-1, 1]
+ * (whose turn may overflow) costs a second reverse projection, about
+ * twice the cycles.
  */
 drdc_status_t drdc_pose_w_from_wutm(const drdc_WUTMPose_t *u,
                                     drdc_WPose_t *out);
@@ -260,8 +264,10 @@ drdc_status_t drdc_pose_wmgrs_from_w(const drdc_WPose_t *w, int32_t prec,
  * @retval DRDC_E_BAND the 100 km square does not lie in the latitude band.
  * @retval DRDC_E_OVERFLOW m->q is far from unit length.
  *
- * Output unchanged on error. Accuracy: the position within 1 nas of
- * GeoConvert's position of the cell's centre as it is held in Q47.16
+ * Output unchanged on error; an attitude with a part beyond [-1, 1]
+ * costs a second reverse projection, about twice the cycles. Accuracy:
+ * the position within 1 nas of GeoConvert's position of the cell's
+ * centre as it is held in Q47.16
  * (rounded to 15 um for cells finer than 1 m); the attitude measured
  * on 500 GeoConvert cells with SciPy rotations (q_z(gamma) q,
  * gamma GeoConvert's at the centre): every part within 2 LSB.
