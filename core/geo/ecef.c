@@ -326,13 +326,16 @@ static drdc_status_t geodetic_direction(bowring_t *b, drdc_geo_point_t *out)
   return DRDC_OK;
 }
 
-/* atan2(y, x) in nas */
-static inline drdc_nas_t angle_nas(int64_t y, int64_t x)
+/* atan2(y, x) in nas for (y, x) != (0, 0), the radians through *slot (a
+ * free slot of the caller's bowring_t, scratch): no result slot in the
+ * frames on the inverse's deepest chain. drdc_fx_atan2_q5_58() fails
+ * only at (0, 0), which every caller rules out (the longitude's callers
+ * test it, the latitude's (sin, cos) is a unit vector), so *slot is
+ * always written. */
+static inline drdc_nas_t angle_nas(int64_t y, int64_t x, int64_t *slot)
 {
-  int64_t r = 0;
-
-  (void)drdc_fx_atan2_q5_58(y, x, &r);
-  return geo_nas_from_rad(r);
+  (void)drdc_fx_atan2_q5_58(y, x, slot);
+  return geo_nas_from_rad(*slot);
 }
 
 /* geodetic of the ECEF point in b (Q27.36, as geodetic_direction()
@@ -342,12 +345,15 @@ static inline drdc_nas_t angle_nas(int64_t y, int64_t x)
  * longitude and pointers */
 static drdc_status_t geodetic_q36(bowring_t *b, drdc_geo_point_t *out)
 {
-  drdc_nas_t lon = ((b->u == 0) && (b->v == 0)) ? 0 : angle_nas(b->v, b->u);
+  /* the longitude's radians in b->p, free until geodetic_direction() */
+  drdc_nas_t lon =
+    ((b->u == 0) && (b->v == 0)) ? 0 : angle_nas(b->v, b->u, &b->p);
   drdc_status_t st = geodetic_direction(b, out);
 
   if (st == DRDC_OK) {
-    /* nothing fails from here on: out holds the scratch direction */
-    out->lat = angle_nas(out->lat, out->lon);
+    /* nothing fails from here on: out holds the scratch direction, and
+     * b->z (no longer needed) the latitude's radians */
+    out->lat = angle_nas(out->lat, out->lon, &b->z);
     out->lon = lon;
   }
   return st;
@@ -370,13 +376,15 @@ drdc_status_t drdc_geo_from_ecef(const drdc_vec3_q47_16_t *ecef,
   /* as geodetic_q36(), reading the coordinates again after each call
    * rather than keeping them: the longitude from the Q47.16 values (the
    * same angle: atan2 scales its arguments exactly) */
-  lon = ((ecef->x == 0) && (ecef->y == 0)) ? 0 : angle_nas(ecef->y, ecef->x);
+  lon = ((ecef->x == 0) && (ecef->y == 0))
+          ? 0
+          : angle_nas(ecef->y, ecef->x, &b.p);
   b.u = ecef->x * Q36_PER_Q16;
   b.v = ecef->y * Q36_PER_Q16;
   b.z = ecef->z * Q36_PER_Q16;
   st = geodetic_direction(&b, p);
   if (st == DRDC_OK) {
-    p->lat = angle_nas(p->lat, p->lon);
+    p->lat = angle_nas(p->lat, p->lon, &b.z);
     p->lon = lon;
   }
   return st;
