@@ -130,8 +130,8 @@ static int64_t rsqrt_q58(int64_t x, unsigned steps)
  * latitude, then those of the longitude, share one pair of slots, and
  * only cos phi and N + h are kept across the second sin/cos: the frame
  * under the roots and sin/cos of every tangent-plane chain stays small. */
-void geo_ecef_acc_q36(const drdc_geo_point_t *p, bool sub, int64_t *x,
-                      int64_t *y, int64_t *z)
+static inline __attribute__((always_inline)) void acc_body(
+  const drdc_geo_point_t *p, bool sub, int64_t *x, int64_t *y, int64_t *z)
 {
   int64_t sc[2] = { 0, 0 };
   int64_t cphi;
@@ -155,6 +155,15 @@ void geo_ecef_acc_q36(const drdc_geo_point_t *p, bool sub, int64_t *x,
   *x = sub ? (*x - v) : (*x + v);
   v = geo_mul(n, geo_mul(cphi, sc[0]));
   *y = sub ? (*y - v) : (*y + v);
+}
+
+/* geo_impl.h: acc_body(), one copy of its code per entry (the same
+ * bits; no wrapper frame on the chains of drdc_geo_to_ecef() and of the
+ * tangent-plane conversions) */
+void geo_ecef_acc_q36(const drdc_geo_point_t *p, bool sub, int64_t *x,
+                      int64_t *y, int64_t *z)
+{
+  acc_body(p, sub, x, y, z);
 }
 
 drdc_status_t drdc_geo_to_ecef(const drdc_geo_point_t *p,
@@ -213,16 +222,11 @@ static int scale_legs(int64_t *a, int64_t *b)
   return -(int)n;
 }
 
-/* The state of Bowring's iteration (Q27.36 lengths, or Q5.58 when (u, v)
- * is a unit vector), one struct in the frame of the caller of
- * geodetic_direction() (which also fills it with the ECEF point) that the
- * helpers below reach by pointer, so no level keeps copies of it */
-typedef struct bowring {
-  int64_t p; /**< distance from the polar axis */
-  int64_t z; /**< distance from the equatorial plane */
-  int64_t u; /**< a direction: horizontal part */
-  int64_t v; /**< a direction: vertical part */
-} bowring_t;
+/* The state of Bowring's iteration: geo_bowring_t (geo_impl.h), one
+ * struct in the frame of the caller of geodetic_direction() (which also
+ * fills it with the ECEF point) that the helpers below reach by pointer,
+ * so no level keeps copies of it */
+typedef geo_bowring_t bowring_t;
 
 /* (b->u, b->v) <- (u, v) / hypot(u, v) (Q5.58, within 3 LSB), and
  * returns hypot(u, v) (relative error within 2^-56: 1e-10 m at the
@@ -284,10 +288,10 @@ static int64_t height_q36(const bowring_t *b)
 /* The unit vector (cos phi, sin phi) of the geodetic latitude (Q5.58) and
  * the height (Q47.16) of the ECEF point x = b->u, y = b->v, z = b->z in
  * Q27.36 (|x|, |y|, |z| < 2^61; b is the caller's, its scratch from here
- * on). On DRDC_OK they are written to out as scratch: out->lon = cos phi,
- * out->lat = sin phi, and the final out->height; nothing is written on
- * error. */
-static drdc_status_t geodetic_direction(bowring_t *b, drdc_geo_point_t *out)
+ * on). On DRDC_OK they are left in b: b->u = cos phi, b->v = sin phi and
+ * b->p = the height (the distance from the axis is no longer needed), so
+ * that no caller holds a point beside b; b->z is then free. */
+static drdc_status_t geodetic_direction(bowring_t *b)
 {
   int64_t h;
 
@@ -320,37 +324,61 @@ static drdc_status_t geodetic_direction(bowring_t *b, drdc_geo_point_t *out)
   if ((h > DRDC_GEO_HEIGHT_MAX) || (h < -DRDC_GEO_HEIGHT_MAX)) {
     return DRDC_E_HEIGHT;
   }
-  out->lon = b->u;
-  out->lat = b->v;
-  out->height = h;
+  b->p = h;
   return DRDC_OK;
 }
 
-/* atan2(y, x) in nas */
-static inline drdc_nas_t angle_nas(int64_t y, int64_t x)
+/* atan2(y, x) in nas for (y, x) != (0, 0), the radians through *slot (a
+ * free slot of the caller's bowring_t, scratch): no result slot in the
+ * frames on the inverse's deepest chain. drdc_fx_atan2_q5_58() fails
+ * only at (0, 0), which every caller rules out (the longitude's callers
+ * test it, the latitude's (sin, cos) is a unit vector), so *slot is
+ * always written. */
+static inline drdc_nas_t angle_nas(int64_t y, int64_t x, int64_t *slot)
 {
-  int64_t r = 0;
-
-  (void)drdc_fx_atan2_q5_58(y, x, &r);
-  return geo_nas_from_rad(r);
+  (void)drdc_fx_atan2_q5_58(y, x, slot);
+  return geo_nas_from_rad(*slot);
 }
 
-/* geodetic of the ECEF point in b (Q27.36, as geodetic_direction()
- * takes it). The longitude first (atan2 is scale-free), then Bowring's
- * iteration for the latitude's direction and the height, then the
- * latitude's atan2: each deep call from a frame that keeps only the
- * longitude and pointers */
-static drdc_status_t geodetic_q36(bowring_t *b, drdc_geo_point_t *out)
+/* The end of geo_geodetic_q36() once the direction and height are in b:
+ * the latitude's atan2 (its radians in b->z, no longer needed) into
+ * b->v, the longitude into b->u. A sibling call of its caller, so that
+ * no status is kept across the atan2 in the caller's frame; never
+ * fails. */
+static __attribute__((noinline)) drdc_status_t lat_lon_into(bowring_t *b,
+                                                            drdc_nas_t lon)
 {
-  drdc_nas_t lon = ((b->u == 0) && (b->v == 0)) ? 0 : angle_nas(b->v, b->u);
-  drdc_status_t st = geodetic_direction(b, out);
+  b->v = angle_nas(b->v, b->u, &b->z);
+  b->u = lon;
+  return DRDC_OK;
+}
 
-  if (st == DRDC_OK) {
-    /* nothing fails from here on: out holds the scratch direction */
-    out->lat = angle_nas(out->lat, out->lon);
-    out->lon = lon;
+/* geo_impl.h: geodetic of the ECEF point in b (Q27.36, as
+ * geodetic_direction() takes it), left in b. The longitude first (atan2
+ * is scale-free), then Bowring's iteration for the latitude's direction
+ * and the height, then the latitude's atan2: each deep call from a frame
+ * that keeps only the longitude and b, whose free slots take the
+ * radians. Out of line: not merged into the frame of its caller, which
+ * holds the bowring_t. */
+__attribute__((noinline)) drdc_status_t geo_geodetic_q36(bowring_t *b)
+{
+  drdc_nas_t lon = 0;
+  drdc_status_t st;
+
+  if (b->u != 0) {
+    /* the longitude's radians in b->p, free until
+     * geodetic_direction() */
+    lon = angle_nas(b->v, b->u, &b->p);
+  } else if (b->v != 0) {
+    lon = angle_nas(b->v, b->u, &b->p);
+  } else {
+    /* on the axis: longitude 0 */
   }
-  return st;
+  st = geodetic_direction(b);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  return lat_lon_into(b, lon);
 }
 
 drdc_status_t drdc_geo_from_ecef(const drdc_vec3_q47_16_t *ecef,
@@ -367,17 +395,20 @@ drdc_status_t drdc_geo_from_ecef(const drdc_vec3_q47_16_t *ecef,
       || (ecef_abs64(ecef->z) >= ECEF_COORD_MAX)) {
     return DRDC_E_HEIGHT;
   }
-  /* as geodetic_q36(), reading the coordinates again after each call
-   * rather than keeping them: the longitude from the Q47.16 values (the
-   * same angle: atan2 scales its arguments exactly) */
-  lon = ((ecef->x == 0) && (ecef->y == 0)) ? 0 : angle_nas(ecef->y, ecef->x);
+  /* as geo_geodetic_q36(), reading the coordinates again after each
+   * call rather than keeping them: the longitude from the Q47.16 values
+   * (the same angle: atan2 scales its arguments exactly) */
+  lon = ((ecef->x == 0) && (ecef->y == 0))
+          ? 0
+          : angle_nas(ecef->y, ecef->x, &b.p);
   b.u = ecef->x * Q36_PER_Q16;
   b.v = ecef->y * Q36_PER_Q16;
   b.z = ecef->z * Q36_PER_Q16;
-  st = geodetic_direction(&b, p);
+  st = geodetic_direction(&b);
   if (st == DRDC_OK) {
-    p->lat = angle_nas(p->lat, p->lon);
+    p->lat = angle_nas(b.v, b.u, &b.z);
     p->lon = lon;
+    p->height = b.p;
   }
   return st;
 }
@@ -454,37 +485,81 @@ drdc_status_t drdc_geo_to_ned(const drdc_geo_point_t *ref,
   return plane_of(ref, p, true, ned);
 }
 
-/* ECEF (Q27.36) of ENU (ned false) or NED (ned true) v (Q15.16) at a
- * checked ref into b->u, b->v, b->z (x, y, z): the offsets turned to ECEF
- * axes in b's slots, the ref's ECEF added. Out of line, so that its
- * sin/cos and roots run beside, not above, the inverse's chain. */
-static __attribute__((noinline)) void ecef_of_plane(
-  const drdc_geo_point_t *ref, const drdc_vec3_q15_16_t *v, bool ned,
-  bowring_t *b)
+/* turn() of b's (north, up) by -latitude (lon false) or of its (east,
+ * horizontal) by -longitude (lon true), the slots chosen here: its
+ * caller keeps b alone, not the addresses of two of its slots */
+static __attribute__((noinline)) void turn_plane(int64_t t, bowring_t *b,
+                                                 bool lon)
 {
-  /* north, up, east */
-  b->z = (int64_t)(ned ? v->x : v->y) * Q36_PER_Q16;
-  b->u = (int64_t)(ned ? -(int64_t)v->z : (int64_t)v->z) * Q36_PER_Q16;
-  b->v = (int64_t)(ned ? v->y : v->x) * Q36_PER_Q16;
-  /* about east by -latitude: (north, up) -> (dz, the horizontal part
-   * towards the ref's meridian plane r); about the axis by -longitude:
-   * (east, r) -> (dy, dx) */
-  turn(geo_rad_from_nas(ref->lat), &b->z, &b->u);
-  turn(lon_rad(ref->lon), &b->v, &b->u);
-  geo_ecef_acc_q36(ref, false, &b->u, &b->v, &b->z);
+  int64_t sc[2] = { 0, 0 };
+
+  geo_sincos(t, &sc[0], &sc[1]);
+  turn_apply(sc, lon ? &b->v : &b->z, &b->u);
+}
+
+/* acc_body(p, false, x, y, z) into b's ECEF slots (x in b->u, y in
+ * b->v, z in b->z), the same operations in the same order: two
+ * arguments, so that geo_ecef_of_plane() ends with a sibling call on
+ * both targets (no stack argument on Cortex-M3), and cos phi waits in
+ * b->p (free until the inverse) rather than in registers across the
+ * second sin/cos: a frame that keeps b, p and N + h only. */
+static __attribute__((noinline)) void acc_plane(const drdc_geo_point_t *p,
+                                                bowring_t *b)
+{
+  int64_t sc[2] = { 0, 0 };
+  int64_t n;
+  int64_t v;
+
+  geo_sincos(geo_rad_from_nas(p->lat), &sc[0], &sc[1]);
+  n = geo_mul(A_Q36,
+              rsqrt_q58(GEO_ONE - geo_mul(GEO_E2, geo_mul(sc[0], sc[0])),
+                        2u));
+  v = geo_mul(geo_mul(n, GEO_ONE - GEO_E2) + (p->height * Q36_PER_Q16),
+              sc[0]);
+  b->z = b->z + v;
+  b->p = sc[1];
+  n = n + (p->height * Q36_PER_Q16);
+  geo_sincos(lon_rad(p->lon), &sc[0], &sc[1]);
+  v = geo_mul(n, geo_mul(b->p, sc[1]));
+  b->u = b->u + v;
+  v = geo_mul(n, geo_mul(b->p, sc[0]));
+  b->v = b->v + v;
+}
+
+/* geo_impl.h: b's offset (north b->z, up b->u, east b->v) turned to ECEF
+ * axes in place (about east by -latitude: (north, up) -> (dz, the
+ * horizontal part towards the ref's meridian plane r); about the axis by
+ * -longitude: (east, r) -> (dy, dx)), then the ref's ECEF added */
+__attribute__((noinline)) void geo_ecef_of_plane(const drdc_geo_point_t *ref,
+                                                 bowring_t *b)
+{
+  turn_plane(geo_rad_from_nas(ref->lat), b, false);
+  turn_plane(lon_rad(ref->lon), b, true);
+  acc_plane(ref, b);
 }
 
 /* geodetic of ENU (ned false) or NED (ned true) v (Q15.16) at a checked
- * ref: ecef_of_plane(), then geodetic_q36(); the one bowring_t of the
- * chain lives here */
+ * ref: the offset into b's slots (north, up, east), geo_ecef_of_plane(),
+ * then geo_geodetic_q36(); the one bowring_t of the chain lives here, p
+ * written only on DRDC_OK */
 static drdc_status_t point_of_plane(const drdc_geo_point_t *ref,
                                     const drdc_vec3_q15_16_t *v, bool ned,
                                     drdc_geo_point_t *p)
 {
   bowring_t b;
+  drdc_status_t st;
 
-  ecef_of_plane(ref, v, ned, &b);
-  return geodetic_q36(&b, p);
+  b.z = (int64_t)(ned ? v->x : v->y) * Q36_PER_Q16;
+  b.u = (int64_t)(ned ? -(int64_t)v->z : (int64_t)v->z) * Q36_PER_Q16;
+  b.v = (int64_t)(ned ? v->y : v->x) * Q36_PER_Q16;
+  geo_ecef_of_plane(ref, &b);
+  st = geo_geodetic_q36(&b);
+  if (st == DRDC_OK) {
+    p->lat = b.v;
+    p->lon = b.u;
+    p->height = b.p;
+  }
+  return st;
 }
 
 drdc_status_t drdc_geo_from_enu(const drdc_geo_point_t *ref,

@@ -288,4 +288,40 @@ void geo_ecef_acc_q36(const drdc_geo_point_t *p, bool sub, int64_t *x,
 drdc_status_t geo_plane_turn(const drdc_geo_point_t *ref, bool ned,
                              int64_t d[3], drdc_vec3_q15_16_t *out);
 
+/**
+ * The state of the inverse (ECEF -> geodetic, Bowring's iteration) in
+ * Q27.36 lengths, or Q5.58 when (u, v) is a unit vector: one struct in
+ * the frame of a caller of the deep chain, which the stages of ecef.c
+ * reach by pointer (no level keeps copies of it). Its entry is an ECEF
+ * point (u, v, z) = (x, y, z); p is scratch; on DRDC_OK
+ * geo_geodetic_q36() leaves the geodetic point in it (v latitude, u
+ * longitude, p height), so that its caller needs no point beside it.
+ */
+typedef struct geo_bowring {
+  int64_t p; /**< distance from the polar axis */
+  int64_t z; /**< distance from the equatorial plane */
+  int64_t u; /**< a direction: horizontal part */
+  int64_t v; /**< a direction: vertical part */
+} geo_bowring_t;
+
+/**
+ * The ECEF point (Q27.36) of an offset from the checked point ref, given
+ * in b as north b->z, up b->u, east b->v (Q27.36): turned to ECEF axes in
+ * place and ref's ECEF added, so that b->u, b->v, b->z hold x, y, z (as
+ * geo_geodetic_q36() takes them). The first half of drdc_geo_from_ned()
+ * and drdc_geo_from_enu(); its sin/cos and roots run beside, not above,
+ * the inverse's chain.
+ */
+void geo_ecef_of_plane(const drdc_geo_point_t *ref, geo_bowring_t *b);
+
+/**
+ * Geodetic of the ECEF point in b (Q27.36, |x|, |y|, |z| < 2^61), the
+ * second half of drdc_geo_from_ned() and drdc_geo_from_enu(): on DRDC_OK
+ * the latitude (nas) in b->v, the longitude (nas, atan2's range) in b->u
+ * and the ellipsoidal height (Q47.16) in b->p; DRDC_E_HEIGHT within
+ * 1 000 km of the centre or beyond DRDC_GEO_HEIGHT_MAX (b is scratch
+ * then).
+ */
+drdc_status_t geo_geodetic_q36(geo_bowring_t *b);
+
 #endif /* DRDC_GEO_IMPL_H */

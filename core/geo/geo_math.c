@@ -69,7 +69,41 @@ int64_t geo_rad_from_nas(drdc_nas_t a)
   return (a * 1397) + geo_mul(a, GEO_NAS_RAD_FRACTION);
 }
 
+/** floor(2^63 GEO_NAS_180 / GEO_PI), GEO_PI being pi 2^58 rounded to an
+ *  integer: the nas in a radian in Q63, 53 bits. */
+#define NAS_PER_RAD_Q63 INT64_C(6600473799907083)
+
 drdc_nas_t geo_nas_from_rad(int64_t r)
 {
-  return geo_muldiv(r, GEO_NAS_180, GEO_PI);
+  const uint64_t c = (uint64_t)GEO_NAS_180;
+  const uint64_t d = (uint64_t)GEO_PI;
+  uint64_t x = (r < 0) ? (UINT64_C(0) - (uint64_t)r) : (uint64_t)r;
+  uint64_t hi;
+  uint64_t lo;
+  uint64_t q;
+  uint64_t rem;
+
+  /* geo_muldiv(r, GEO_NAS_180, GEO_PI) bit for bit, without the 128-bit
+   * division (its chain of frames was the deepest of the inverse on
+   * Cortex-M3): with x = |r| <= 2^63, c = GEO_NAS_180, d = GEO_PI and
+   * f = floor(x c / d), the magnitude is f + [2 rem >= d], rem = x c -
+   * f d (rounded half up, the sign then put back: to nearest, ties away
+   * from zero, as drdc_fx_muldiv_s64()). Here m = NAS_PER_RAD_Q63 =
+   * c 2^63 / d - e, 0 <= e < 1, so x m / 2^63 is within (x c / d - 1,
+   * x c / d]: its floor q is f or f - 1, and x c - q d lies in [0, 2 d),
+   * below 2^61: exact as the 64-bit difference of the two products
+   * taken modulo 2^64. One step corrects q to f. d is odd and shares
+   * with c only the factor 15, so x c / d is never a half: no ties. */
+  drdc_fx_mul_u64_u128(x, (uint64_t)NAS_PER_RAD_Q63, &hi, &lo);
+  q = (hi << 1u) | (lo >> 63u);
+  rem = (x * c) - (q * d);
+  if (rem >= d) {
+    q++;
+    rem -= d;
+  }
+  if (rem >= (d - rem)) {
+    q++;
+  }
+  /* q <= 2^63 c / d < 2^53 */
+  return (r < 0) ? -(int64_t)q : (int64_t)q;
 }

@@ -149,44 +149,108 @@ static bool separation_ok(drdc_q47_16_t n)
   return (n <= DRDC_GEO_HEIGHT_MAX) && (n >= -DRDC_GEO_HEIGHT_MAX);
 }
 
-/* The rest of drdc_pose_w_from_l() once the offset is in NED: the
- * position through drdc_geo_from_ned() at the reference's ellipsoidal
- * point and the composed attitude, written only when both succeed. In
- * its own frame, so the points and the quaternion are not on the stack
- * during the caller's quaternion rotation. */
-static drdc_status_t w_from_ned(const drdc_WPose_t *ref,
-                                drdc_q47_16_t geoid_separation,
-                                const drdc_vec3_q15_16_t *ned,
-                                const drdc_quat_t *lq, drdc_WPose_t *out)
+/* The steps of drdc_geo_from_ned() at the ellipsoidal point of a {W} or
+ * {We} reference, in frames that hold one buffer each, so that the pose
+ * conversions keep in their own frames, which are on top of the
+ * rotation's chain, only the offset (and quaternion) the rotation needs:
+ * position_*() holds the geo_bowring_t of the inverse, ecef_at_*() the
+ * reference's point beside it. The 64-bit separation first: arguments in
+ * registers on Cortex-M3. */
+
+/* the offset in b's slots (north, up, east; Q15.16 -> Q27.36) */
+static void load_ned(const drdc_vec3_q15_16_t *ned, geo_bowring_t *b)
 {
-  drdc_geo_point_t r;
-  drdc_geo_point_t p = { 0, 0, 0 };
-  drdc_quat_t q = { 0, 0, 0, 0 };
+  b->z = (int64_t)ned->x * INT64_C(1048576);
+  b->u = -(int64_t)ned->z * INT64_C(1048576);
+  b->v = (int64_t)ned->y * INT64_C(1048576);
+}
+
+/* the ellipsoidal point of ref, out of line: its copies use no register
+ * that ecef_at_w() would have to save */
+static __attribute__((noinline)) void ellipsoidal_at_w(
+  drdc_q47_16_t geoid_separation, const drdc_WPose_t *ref,
+  drdc_geo_point_t *pt)
+{
+  ellipsoidal(ref, geoid_separation, pt);
+}
+
+/* the ellipsoidal point of ref checked (drdc_geo_from_ned()'s first
+ * status), then the ECEF point of b's offset (north b->z, up b->u, east
+ * b->v) there, into b */
+static __attribute__((noinline)) drdc_status_t ecef_at_w(
+  drdc_q47_16_t geoid_separation, const drdc_WPose_t *ref, geo_bowring_t *b)
+{
+  drdc_geo_point_t pt;
   drdc_status_t st;
 
-  ellipsoidal(ref, geoid_separation, &r);
-  st = drdc_geo_from_ned(&r, ned, &p);
-  if (st == DRDC_OK) {
-    st = drdc_quat_compose(&ref->q, lq, &q);
-  }
+  ellipsoidal_at_w(geoid_separation, ref, &pt);
+  st = geo_check_point(&pt);
   if (st != DRDC_OK) {
     return st;
   }
-  out->latitude = p.lat;
-  out->longitude = p.lon;
-  out->height = p.height - geoid_separation;
-  out->q.s = q.s;
-  out->q.x = q.x;
-  out->q.y = q.y;
-  out->q.z = q.z;
+  geo_ecef_of_plane(&pt, b);
   return DRDC_OK;
 }
 
+/* drdc_geo_from_ned() of ned at the ellipsoidal point of ref: on DRDC_OK
+ * the latitude, longitude and ellipsoidal height into out, unless out is
+ * NULL (the status alone); out unchanged on error. Only out is kept
+ * across the calls. */
+static __attribute__((noinline)) drdc_status_t position_w(
+  drdc_q47_16_t geoid_separation, const drdc_WPose_t *ref,
+  const drdc_vec3_q15_16_t *ned, drdc_WPose_t *out)
+{
+  geo_bowring_t b;
+  drdc_status_t st;
+
+  load_ned(ned, &b);
+  st = ecef_at_w(geoid_separation, ref, &b);
+  if (st == DRDC_OK) {
+    st = geo_geodetic_q36(&b);
+  }
+  if ((st == DRDC_OK) && (out != NULL)) {
+    out->latitude = b.v;
+    out->longitude = b.u;
+    out->height = b.p;
+  }
+  return st;
+}
+
+/* the status of drdc_pose_w_from_l()'s relative attitude alone (the
+ * product in this frame, discarded) */
+static __attribute__((noinline)) drdc_status_t compose_status(
+  const drdc_WPose_t *ref, const drdc_lPose_t *l)
+{
+  drdc_quat_t q = { 0, 0, 0, 0 };
+
+  return drdc_quat_compose(&ref->q, &l->q, &q);
+}
+
+/* drdc_pose_w_from_l()'s relative attitude straight into out->q (written
+ * only on DRDC_OK); taking the poses, so that the caller keeps no
+ * pointer to their quaternions beside them */
+static __attribute__((noinline)) drdc_status_t compose_into(
+  const drdc_WPose_t *ref, const drdc_lPose_t *l, drdc_WPose_t *out)
+{
+  return drdc_quat_compose(&ref->q, &l->q, &out->q);
+}
+
+/* {l} -> {W} with the offset alone in this frame (on top of the
+ * rotation's chain): the attitude's status first, for its place in the
+ * order; the offset turned into NED; then position_w(), which writes the
+ * position into out only when the attitude will succeed, and is then the
+ * last step that can fail; the separation taken off the height, and the
+ * attitude again, straight into out->q: the same inputs, the same
+ * status, DRDC_OK. out unchanged on every error, the statuses in their
+ * order (rotation, reference, result's height, attitude). ref's
+ * quaternion is read after out's position is written, which it does not
+ * share (out may be ref). */
 drdc_status_t drdc_pose_w_from_l(const drdc_WPose_t *ref,
                                  drdc_q47_16_t geoid_separation,
                                  const drdc_lPose_t *l, drdc_WPose_t *out)
 {
   drdc_vec3_q15_16_t ned = { 0, 0, 0 };
+  drdc_status_t att;
   drdc_status_t st;
 
   if ((ref == NULL) || (l == NULL) || (out == NULL)) {
@@ -195,11 +259,20 @@ drdc_status_t drdc_pose_w_from_l(const drdc_WPose_t *ref,
   if (!separation_ok(geoid_separation)) {
     return DRDC_E_HEIGHT;
   }
+  att = compose_status(ref, l);
   st = drdc_quat_rotate_q15_16(&ref->q, &l->p, &ned);
+  if (st == DRDC_OK) {
+    st = position_w(geoid_separation, ref, &ned,
+                    (att == DRDC_OK) ? out : NULL);
+  }
+  if (st == DRDC_OK) {
+    st = att;
+  }
   if (st != DRDC_OK) {
     return st;
   }
-  return w_from_ned(ref, geoid_separation, &ned, &l->q, out);
+  out->height = out->height - geoid_separation;
+  return compose_into(ref, l, out);
 }
 
 /* NED of w at ref (both ellipsoidal by the separation): drdc_geo_to_ned()
@@ -330,26 +403,93 @@ drdc_status_t drdc_pose_le_from_l(const drdc_lPose_t *l, drdc_lePose_t *out)
   return DRDC_OK;
 }
 
-/* {We} -> {W}: the same position, the attitude as a quaternion (never
- * fails: the pointers are checked by the callers) */
-static void w_from_we(const drdc_WePose_t *we, drdc_WPose_t *w)
+/* the ellipsoidal point of a {We} pose */
+static void ellipsoidal_we(const drdc_WePose_t *we, drdc_q47_16_t n,
+                           drdc_geo_point_t *p)
 {
-  w->longitude = we->longitude;
-  w->latitude = we->latitude;
-  w->height = we->height;
-  (void)drdc_quat_from_euler(&we->e, &w->q);
+  p->lat = we->latitude;
+  p->lon = we->longitude;
+  p->height = we->height + n;
 }
 
+/* *inv composed in place with the quaternion of the angles e: the
+ * relative attitude of drdc_pose_le_from_we() and of
+ * drdc_pose_we_from_le(), in its own frame (the second quaternion is not
+ * on the caller's stack under the rotation) */
+static __attribute__((noinline)) drdc_status_t compose_euler(
+  drdc_quat_t *inv, const drdc_euler_t *e)
+{
+  drdc_quat_t q = { 0, 0, 0, 0 };
+
+  (void)drdc_quat_from_euler(e, &q);
+  return drdc_quat_compose(inv, &q, inv);
+}
+
+/* ellipsoidal_at_w() for a {We} reference */
+static __attribute__((noinline)) void ellipsoidal_at_we(
+  drdc_q47_16_t geoid_separation, const drdc_WePose_t *ref,
+  drdc_geo_point_t *pt)
+{
+  ellipsoidal_we(ref, geoid_separation, pt);
+}
+
+/* ecef_at_w() for a {We} reference (its position read in place) */
+static __attribute__((noinline)) drdc_status_t ecef_at_we(
+  drdc_q47_16_t geoid_separation, const drdc_WePose_t *ref, geo_bowring_t *b)
+{
+  drdc_geo_point_t pt;
+  drdc_status_t st;
+
+  ellipsoidal_at_we(geoid_separation, ref, &pt);
+  st = geo_check_point(&pt);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  geo_ecef_of_plane(&pt, b);
+  return DRDC_OK;
+}
+
+/* position_w() for a {We} reference and result */
+static __attribute__((noinline)) drdc_status_t position_we(
+  drdc_q47_16_t geoid_separation, const drdc_WePose_t *ref,
+  const drdc_vec3_q15_16_t *ned, drdc_WePose_t *out)
+{
+  geo_bowring_t b;
+  drdc_status_t st;
+
+  load_ned(ned, &b);
+  st = ecef_at_we(geoid_separation, ref, &b);
+  if (st == DRDC_OK) {
+    st = geo_geodetic_q36(&b);
+  }
+  if ((st == DRDC_OK) && (out != NULL)) {
+    out->latitude = b.v;
+    out->longitude = b.u;
+    out->height = b.p;
+  }
+  return st;
+}
+
+/* {le} -> {We}: drdc_pose_w_from_l() of the two poses as {W}, then the
+ * angles of the result, with one local pose in this frame and no {W}
+ * copy of ref: the quaternion of ref's angles and the offset turned into
+ * NED by it wait in t; the relative attitude is then composed into t.q
+ * in place (compose_euler(): the second quaternion in its own frame; its
+ * status kept for its place in the order), and position_we() writes the
+ * position into out only when the attitude succeeded (it is then the
+ * last step that can fail). The angles of t.q last, straight into
+ * out->e: drdc_euler_from_quat() fails only on a zero quaternion, and
+ * drdc_quat_compose()'s result is within 2 LSB of unit length. out
+ * unchanged on every error, the statuses in their order of before
+ * (rotation, reference, result's height, attitude). ref's angles are
+ * read before out is written (out may be ref). */
 drdc_status_t drdc_pose_we_from_le(const drdc_WePose_t *ref,
                                    drdc_q47_16_t geoid_separation,
                                    const drdc_lePose_t *le,
                                    drdc_WePose_t *out)
 {
-  /* the reference as {W}, then overwritten by the result (w_from_ned()
-   * reads its ref before writing its out) */
-  drdc_WPose_t r;
-  drdc_quat_t lq = { 0, 0, 0, 0 };
-  drdc_vec3_q15_16_t ned = { 0, 0, 0 };
+  drdc_lPose_t t = { { 0, 0, 0 }, { 0, 0, 0, 0 } };
+  drdc_status_t att;
   drdc_status_t st;
 
   if ((ref == NULL) || (le == NULL) || (out == NULL)) {
@@ -358,32 +498,23 @@ drdc_status_t drdc_pose_we_from_le(const drdc_WePose_t *ref,
   if (!separation_ok(geoid_separation)) {
     return DRDC_E_HEIGHT;
   }
-  w_from_we(ref, &r);
-  (void)drdc_quat_from_euler(&le->e, &lq);
-  st = drdc_quat_rotate_q15_16(&r.q, &le->p, &ned);
-  if (st == DRDC_OK) {
-    st = w_from_ned(&r, geoid_separation, &ned, &lq, &r);
+  (void)drdc_quat_from_euler(&ref->e, &t.q);
+  st = drdc_quat_rotate_q15_16(&t.q, &le->p, &t.p);
+  if (st != DRDC_OK) {
+    return st;
   }
+  att = compose_euler(&t.q, &le->e);
+  st = position_we(geoid_separation, ref, &t.p,
+                   (att == DRDC_OK) ? out : NULL);
   if (st == DRDC_OK) {
-    /* the last step that can fail: out->e written only on DRDC_OK */
-    st = drdc_euler_from_quat(&r.q, &out->e);
+    st = att;
   }
   if (st != DRDC_OK) {
     return st;
   }
-  out->longitude = r.longitude;
-  out->latitude = r.latitude;
-  out->height = r.height;
+  out->height = out->height - geoid_separation;
+  (void)drdc_euler_from_quat(&t.q, &out->e);
   return DRDC_OK;
-}
-
-/* the ellipsoidal point of a {We} pose */
-static void ellipsoidal_we(const drdc_WePose_t *we, drdc_q47_16_t n,
-                           drdc_geo_point_t *p)
-{
-  p->lat = we->latitude;
-  p->lon = we->longitude;
-  p->height = we->height + n;
 }
 
 /* ned_of() for two {We} poses, read in place (no {W} copy of either on
@@ -415,18 +546,6 @@ static __attribute__((noinline)) drdc_status_t ned_of_we(
     st = drdc_quat_conj(inv, inv);
   }
   return st;
-}
-
-/* *inv composed in place with the quaternion of the angles e: the
- * relative attitude of drdc_pose_le_from_we(), in its own frame (the
- * second quaternion is not on the caller's stack under the rotation) */
-static __attribute__((noinline)) drdc_status_t compose_euler(
-  drdc_quat_t *inv, const drdc_euler_t *e)
-{
-  drdc_quat_t q = { 0, 0, 0, 0 };
-
-  (void)drdc_quat_from_euler(e, &q);
-  return drdc_quat_compose(inv, &q, inv);
 }
 
 /* drdc_pose_l_from_w() of the two poses as {W}, then

@@ -9,9 +9,12 @@
 
 #include <stddef.h>
 
+#include <drdc/fixed_arith.h>
+
 #include "suites.h"
 #include "unity.h"
 #include "vectors_ecef.h"
+#include "../../core/geo/geo_impl.h"
 
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
 
@@ -162,10 +165,61 @@ static void test_local_pose_against_cartconvert(void)
   TEST_ASSERT_LESS_OR_EQUAL_INT64(TRIP_TOL, w_trip);
 }
 
+/* geo_nas_from_rad(r) against drdc_fx_muldiv_s64(r, GEO_NAS_180, GEO_PI)
+ * (the 128-bit division it replaced), bit for bit, on both signs of: the
+ * extremes of int64_t and of the angles (0, 1, pi, pi/2, INT64_MAX,
+ * INT64_MIN), the radians nearest to a whole and to a half nas (where
+ * the estimate's correction and the rounding decide: x = n pi 2^58 /
+ * 648e12 and (n + 1/2) pi 2^58 / 648e12, rounded, and their neighbours,
+ * for n of every magnitude), and random values of every magnitude. */
+static void check_nas_from_rad(int64_t r)
+{
+  int64_t want = 0;
+
+  TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                        drdc_fx_muldiv_s64(r, GEO_NAS_180, GEO_PI, &want));
+  TEST_ASSERT_EQUAL_INT64(want, geo_nas_from_rad(r));
+}
+
+static void test_geo_nas_from_rad_is_muldiv(void)
+{
+  static const int64_t named[] = { 0, 1, 2, GEO_PI, GEO_PI - 1, GEO_PI + 1,
+                                   GEO_HALF_PI, GEO_TWO_PI, INT64_MAX,
+                                   INT64_MAX - 1 };
+  uint64_t seed = UINT64_C(0x2545F4914F6CDD1D);
+  int64_t n;
+  int64_t x;
+  int64_t k;
+  unsigned i;
+
+  for (i = 0u; i < COUNT(named); i++) {
+    check_nas_from_rad(named[i]);
+    check_nas_from_rad(-named[i]);
+  }
+  check_nas_from_rad(INT64_MIN);
+  for (i = 0u; i < 3000u; i++) {
+    seed = (seed * UINT64_C(6364136223846793005))
+           + UINT64_C(1442695040888963407);
+    /* n up to 2^52 nas: x up to about 2^62.5 */
+    n = (int64_t)(seed >> (12u + (i % 52u)));
+    x = 0;
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_muldiv_s64(
+                                       (2 * n) + (int64_t)(i & 1u), GEO_PI,
+                                       2 * GEO_NAS_180, &x));
+    for (k = -1; k <= 1; k++) {
+      check_nas_from_rad(x + k);
+      check_nas_from_rad(-(x + k));
+    }
+    x = (int64_t)(seed >> (1u + (i % 63u)));
+    check_nas_from_rad(((i & 2u) != 0u) ? -x : x);
+  }
+}
+
 void suite_geo_ecef(void)
 {
   UnitySetTestFile(__FILE__);
   RUN_TEST(test_ecef_forward_and_reverse);
   RUN_TEST(test_enu_and_ned);
   RUN_TEST(test_local_pose_against_cartconvert);
+  RUN_TEST(test_geo_nas_from_rad_is_muldiv);
 }

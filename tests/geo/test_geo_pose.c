@@ -946,6 +946,91 @@ static void test_w_from_wutm_wide_position_errors(void)
   }
 }
 
+/* out unchanged, byte for byte, when the attitude fails after a valid
+ * position (the last step), and the result's height status before the
+ * attitude's when both fail; out may be ref */
+static void test_drdc_pose_w_from_l_unchanged_on_error(void)
+{
+  static const drdc_quat_t zero = { 0, 0, 0, 0 };
+  static const drdc_quat_t big = { INT32_MAX, INT32_MAX, INT32_MAX,
+                                   INT32_MAX };
+  drdc_WPose_t ref = { 10 * NAS_DEG, 45 * NAS_DEG, M(100),
+                       { INT32_MAX, 0, 0, 0 } };
+  drdc_lPose_t l = { { M(1), 0, 0 }, { 0, 0, 0, 0 } };
+  drdc_WPose_t out;
+  drdc_WPose_t before;
+  drdc_WPose_t alias;
+
+  memset(&out, 0x5A, sizeof out);
+  memcpy(&before, &out, sizeof out);
+  /* a zero relative attitude: the composed product is zero */
+  l.q = zero;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN, drdc_pose_w_from_l(&ref, 0, &l, &out));
+  TEST_ASSERT_EQUAL_MEMORY(&before, &out, sizeof out);
+  /* parts near 2 times near 2: the product's scalar part near 4 */
+  l.q = big;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        drdc_pose_w_from_l(&ref, 0, &l, &out));
+  TEST_ASSERT_EQUAL_MEMORY(&before, &out, sizeof out);
+  /* 1 km above the highest reference: the result's height first */
+  ref.height = DRDC_GEO_HEIGHT_MAX;
+  l.p.z = -M(1000);
+  TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT, drdc_pose_w_from_l(&ref, 0, &l, &out));
+  TEST_ASSERT_EQUAL_MEMORY(&before, &out, sizeof out);
+  l.q = zero;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT, drdc_pose_w_from_l(&ref, 0, &l, &out));
+  TEST_ASSERT_EQUAL_MEMORY(&before, &out, sizeof out);
+  /* in place: the same pose as into another object */
+  ref.height = M(100);
+  ref.q.s = 992008094;
+  ref.q.z = 410903207;
+  l.p.x = M(1200);
+  l.p.y = -M(300);
+  l.p.z = M(20);
+  l.q.s = 1073741824;
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_w_from_l(&ref, M(30), &l, &out));
+  alias = ref;
+  TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                        drdc_pose_w_from_l(&alias, M(30), &l, &alias));
+  TEST_ASSERT_EQUAL_MEMORY(&out, &alias, sizeof out);
+}
+
+/* out unchanged, byte for byte, when the result's height fails (the
+ * position is no longer the last step); out may be ref */
+static void test_drdc_pose_we_from_le_unchanged_on_error(void)
+{
+  drdc_WePose_t ref = { 10 * NAS_DEG, 45 * NAS_DEG, DRDC_GEO_HEIGHT_MAX,
+                        { 1u << 29, 0u, 0u } };
+  drdc_lePose_t le = { { 0, 0, -M(1000) }, { 1u << 28, 1u << 27, 0u } };
+  drdc_WePose_t out;
+  drdc_WePose_t before;
+  drdc_WePose_t alias;
+
+  memset(&out, 0x5A, sizeof out);
+  memcpy(&before, &out, sizeof out);
+  /* 1 km above the highest reference */
+  TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT,
+                        drdc_pose_we_from_le(&ref, 0, &le, &out));
+  TEST_ASSERT_EQUAL_MEMORY(&before, &out, sizeof out);
+  /* in place: the same pose as into another object */
+  ref.height = M(100);
+  le.p.x = M(1200);
+  le.p.y = -M(300);
+  le.p.z = M(20);
+  TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                        drdc_pose_we_from_le(&ref, M(30), &le, &out));
+  alias = ref;
+  TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                        drdc_pose_we_from_le(&alias, M(30), &le, &alias));
+  /* field by field: the struct's tail padding is not a value */
+  TEST_ASSERT_EQUAL_INT64(out.longitude, alias.longitude);
+  TEST_ASSERT_EQUAL_INT64(out.latitude, alias.latitude);
+  TEST_ASSERT_EQUAL_INT64(out.height, alias.height);
+  TEST_ASSERT_EQUAL_UINT32(out.e.yaw, alias.e.yaw);
+  TEST_ASSERT_EQUAL_UINT32(out.e.pitch, alias.e.pitch);
+  TEST_ASSERT_EQUAL_UINT32(out.e.roll, alias.e.roll);
+}
+
 void suite_geo_pose(void)
 {
   UnitySetTestFile(__FILE__);
@@ -959,6 +1044,7 @@ void suite_geo_pose(void)
   RUN_TEST(test_we_from_wemgrs_step_by_step);
   RUN_TEST(test_w_from_wutm_wide_position_errors);
   RUN_TEST(test_drdc_pose_w_from_l_errors);
+  RUN_TEST(test_drdc_pose_w_from_l_unchanged_on_error);
   RUN_TEST(test_drdc_pose_l_from_w_errors);
   RUN_TEST(test_drdc_pose_weutm_from_we_errors);
   RUN_TEST(test_drdc_pose_we_from_weutm_errors);
@@ -974,5 +1060,6 @@ void suite_geo_pose(void)
   RUN_TEST(test_drdc_pose_we_from_wemgrs_errors);
   RUN_TEST(test_drdc_pose_l_from_le_and_le_from_l_errors);
   RUN_TEST(test_drdc_pose_we_from_le_errors);
+  RUN_TEST(test_drdc_pose_we_from_le_unchanged_on_error);
   RUN_TEST(test_drdc_pose_le_from_we_errors);
 }
