@@ -15,6 +15,7 @@
 #include <drdc/fixed_trig.h>
 
 #include "fixed_impl.h"
+#include "trig_impl.h"
 
 /** 1.0 in Q5.58 as a literal (DRDC_Q5_58_ONE shifts a signed value). */
 #define Q5_58_ONE INT64_C(288230376151711744)
@@ -281,10 +282,11 @@ drdc_status_t drdc_fx_atan2_q5_58(int64_t y, int64_t x, drdc_q5_58_t *out)
   } else {
     /* already on the scale */
   }
-  /* seed: the binary-angle atan2 of the top 31 bits (1 LSB = 1.5e-9) */
-  (void)drdc_fx_atan2_bam32((int32_t)drdc_fx_rshift_round_s64(yn, 28u),
-                            (int32_t)drdc_fx_rshift_round_s64(xn, 28u),
-                            &seed);
+  /* seed: the binary-angle atan2 of the top 31 bits (1 LSB = 1.5e-9),
+   * drdc_fx_atan2_bam32()'s body in line (the larger part is at least
+   * 2^57, so its top bits are not 0: that function's checks pass) */
+  seed = fx_atan2_bam((int32_t)drdc_fx_rshift_round_s64(yn, 28u),
+                      (int32_t)drdc_fx_rshift_round_s64(xn, 28u));
   if (seed >= 0x80000000u) {
     theta = (int64_t)seed - INT64_C(4294967296);
   } else {

@@ -210,6 +210,30 @@ static inline uint32_t fx_atan_ratio_bam(uint32_t num, uint32_t den)
   return (uint32_t)((acc + (UINT64_C(1) << 32)) >> 33);
 }
 
+/** Angle of (ax, ay) in the first quadrant, magnitudes <= 2^31, not both
+ *  zero: the octant below the diagonal directly, the other by
+ *  atan(y/x) = pi/2 - atan(x/y). */
+static inline uint32_t fx_atan_first_quadrant(uint32_t ay, uint32_t ax)
+{
+  bool steep = ay > ax;
+  uint32_t a = fx_atan_ratio_bam(steep ? ax : ay, steep ? ay : ax);
+
+  return steep ? (FX_BAM_QUARTER - a) : a;
+}
+
+/** drdc_fx_atan2_bam32() of (y, x), not both zero, without the checks:
+ *  inline into it and into drdc_fx_atan2_q5_58()'s seed, which then
+ *  stacks no frame of its own for it (issue 8's stack). */
+static inline uint32_t fx_atan2_bam(int32_t y, int32_t x)
+{
+  uint32_t a = fx_atan_first_quadrant(fx_abs32(y), fx_abs32(x));
+
+  if (x < 0) {
+    a = (FX_BAM_QUARTER << 1) - a; /* pi - a */
+  }
+  return (y < 0) ? (0u - a) : a;  /* -a modulo one turn */
+}
+
 /** floor(x / 2^n) for 0 < n < 64, shifting only unsigned values. */
 static inline int64_t fx_floor_shift64(int64_t x, unsigned n)
 {

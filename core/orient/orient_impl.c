@@ -24,6 +24,16 @@ static int32_t shl32(int32_t v, unsigned n)
   return (int32_t)u;
 }
 
+/* drdc_fx_rshift_round_s32(v, 1): v / 2 rounded to nearest, ties away
+ * from zero (|INT32_MIN| / 2 = 2^30 fits), in line: a call would put a
+ * frame under the rotations' (issue 8's stack) */
+static int32_t halve_part(int32_t v)
+{
+  uint32_t mag = (orient_abs32(v) + 1u) >> 1;
+
+  return (v < 0) ? -(int32_t)mag : (int32_t)mag;
+}
+
 drdc_status_t drdc_orient_impl_scale(const drdc_quat_t *q,
                                      orient_scaled_quat_t *out)
 {
@@ -45,10 +55,10 @@ drdc_status_t drdc_orient_impl_scale(const drdc_quat_t *q,
   }
   if (m > (UINT32_C(1) << 30)) {
     /* Halve, rounded: |c| <= 2^30 afterwards (2^31 -> 2^30). */
-    out->c[0] = drdc_fx_rshift_round_s32(s, 1u);
-    out->c[1] = drdc_fx_rshift_round_s32(x, 1u);
-    out->c[2] = drdc_fx_rshift_round_s32(y, 1u);
-    out->c[3] = drdc_fx_rshift_round_s32(z, 1u);
+    out->c[0] = halve_part(s);
+    out->c[1] = halve_part(x);
+    out->c[2] = halve_part(y);
+    out->c[3] = halve_part(z);
     out->k = -1;
   } else {
     /* Exact scaling up by 2^shift: largest part into [2^29, 2^30]; for

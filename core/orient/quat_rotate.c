@@ -89,13 +89,13 @@ static inline int64_t rotate_term(int64_t p, int32_t v, uint64_t *lo)
  * rounds it to nearest, ties away from zero.
  * Returns 0, or 1 when the part is outside int32_t.
  */
-static int rotate_part_q15_16(const int64_t p[3], const int32_t v[3],
-                              uint64_t dn, unsigned z, uint32_t rcp,
-                              int32_t *out)
+static int rotate_part_q15_16(const int64_t p[3],
+                              const drdc_vec3_q15_16_t *v, uint64_t dn,
+                              unsigned z, uint32_t rcp, int32_t *out)
 {
   uint64_t lo = 0u;
-  int64_t a = rotate_term(p[0], v[0], &lo) + rotate_term(p[1], v[1], &lo)
-              + rotate_term(p[2], v[2], &lo);
+  int64_t a = rotate_term(p[0], v->x, &lo) + rotate_term(p[1], v->y, &lo)
+              + rotate_term(p[2], v->z, &lo);
   uint64_t mag_hi;
   uint32_t mag_lo;
   uint32_t w1;
@@ -146,7 +146,6 @@ drdc_status_t drdc_quat_rotate_q15_16(const drdc_quat_t *q,
 {
   orient_scaled_quat_t sq;
   int64_t row[3];
-  int32_t in[3];
   int32_t res[3];
   uint64_t dn;
   unsigned z;
@@ -161,16 +160,13 @@ drdc_status_t drdc_quat_rotate_q15_16(const drdc_quat_t *q,
   if (st != DRDC_OK) {
     return st;
   }
-  in[0] = v->x;
-  in[1] = v->y;
-  in[2] = v->z;
   /* n2 in [2^58, 2^62]: normalised by z = 1..5 so that bit 63 is set */
   z = (unsigned)__builtin_clzll((uint64_t)sq.n2);
   dn = (uint64_t)sq.n2 << z;
   rcp = drdc_fx_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
   for (i = 0u; i < 3u; i++) {
     drdc_orient_impl_numerator_row(sq.c, i, row);
-    if (rotate_part_q15_16(row, in, dn, z, rcp, &res[i]) != 0) {
+    if (rotate_part_q15_16(row, v, dn, z, rcp, &res[i]) != 0) {
       return DRDC_E_OVERFLOW;
     }
   }
