@@ -35,21 +35,29 @@
  *  geodetic position: 1 000 km. */
 #define ECEF_CORE (INT64_C(1000000) * INT64_C(65536))
 
-/* out of line (one copy for the five functions of ecef.c and pose.c that
+/* the checks of a point's latitude, longitude and height, in that
+ * order: one body for geo_check_point() and geo_ecef_of_plane() */
+static inline drdc_status_t point_status(drdc_nas_t lat, drdc_nas_t lon,
+                                         drdc_q47_16_t height)
+{
+  if ((lat > (90 * GEO_NAS_DEG)) || (lat < (-90 * GEO_NAS_DEG))) {
+    return DRDC_E_LATITUDE;
+  }
+  if ((lon >= (540 * GEO_NAS_DEG)) || (lon < (-540 * GEO_NAS_DEG))) {
+    return DRDC_E_LONGITUDE;
+  }
+  if ((height > DRDC_GEO_HEIGHT_MAX) || (height < -DRDC_GEO_HEIGHT_MAX)) {
+    return DRDC_E_HEIGHT;
+  }
+  return DRDC_OK;
+}
+
+/* out of line (one copy for the functions of ecef.c and pose.c that
  * check points): a leaf, called before any deep chain starts */
 __attribute__((noinline)) drdc_status_t geo_check_point(
   const drdc_geo_point_t *p)
 {
-  if ((p->lat > (90 * GEO_NAS_DEG)) || (p->lat < (-90 * GEO_NAS_DEG))) {
-    return DRDC_E_LATITUDE;
-  }
-  if ((p->lon >= (540 * GEO_NAS_DEG)) || (p->lon < (-540 * GEO_NAS_DEG))) {
-    return DRDC_E_LONGITUDE;
-  }
-  if ((p->height > DRDC_GEO_HEIGHT_MAX) || (p->height < -DRDC_GEO_HEIGHT_MAX)) {
-    return DRDC_E_HEIGHT;
-  }
-  return DRDC_OK;
+  return point_status(p->lat, p->lon, p->height);
 }
 
 /* a longitude of a checked point (|lon| < 540 degrees) reduced by whole
@@ -497,14 +505,15 @@ static __attribute__((noinline)) void turn_plane(int64_t t, bowring_t *b,
   turn_apply(sc, lon ? &b->v : &b->z, &b->u);
 }
 
-/* acc_body(p, false, x, y, z) into b's ECEF slots (x in b->u, y in
- * b->v, z in b->z), the same operations in the same order: two
- * arguments, so that geo_ecef_of_plane() ends with a sibling call on
- * both targets (no stack argument on Cortex-M3), and cos phi waits in
- * b->p (free until the inverse) rather than in registers across the
- * second sin/cos: a frame that keeps b, p and N + h only. */
-static __attribute__((noinline)) void acc_plane(const drdc_geo_point_t *p,
-                                                bowring_t *b)
+/* acc_body() of the point (ref's latitude and longitude, its height
+ * (Q47.16) in b->p) into b's ECEF slots (x in b->u, y in b->v, z in
+ * b->z), the same operations in the same order: two arguments, so that
+ * geo_ecef_of_plane() ends with a sibling call on both targets (no stack
+ * argument on Cortex-M3), and cos phi then waits in b->p (free until the
+ * inverse) rather than in registers across the second sin/cos: a frame
+ * that keeps b, p and N + h only. */
+static __attribute__((noinline)) drdc_status_t
+acc_plane(const geo_lat_lon_t *p, bowring_t *b)
 {
   int64_t sc[2] = { 0, 0 };
   int64_t n;
@@ -514,46 +523,73 @@ static __attribute__((noinline)) void acc_plane(const drdc_geo_point_t *p,
   n = geo_mul(A_Q36,
               rsqrt_q58(GEO_ONE - geo_mul(GEO_E2, geo_mul(sc[0], sc[0])),
                         2u));
-  v = geo_mul(geo_mul(n, GEO_ONE - GEO_E2) + (p->height * Q36_PER_Q16),
-              sc[0]);
+  v = geo_mul(geo_mul(n, GEO_ONE - GEO_E2) + (b->p * Q36_PER_Q16), sc[0]);
   b->z = b->z + v;
+  n = n + (b->p * Q36_PER_Q16);
   b->p = sc[1];
-  n = n + (p->height * Q36_PER_Q16);
   geo_sincos(lon_rad(p->lon), &sc[0], &sc[1]);
   v = geo_mul(n, geo_mul(b->p, sc[1]));
   b->u = b->u + v;
   v = geo_mul(n, geo_mul(b->p, sc[0]));
   b->v = b->v + v;
+  return DRDC_OK;
 }
 
-/* geo_impl.h: b's offset (north b->z, up b->u, east b->v) turned to ECEF
- * axes in place (about east by -latitude: (north, up) -> (dz, the
- * horizontal part towards the ref's meridian plane r); about the axis by
- * -longitude: (east, r) -> (dy, dx)), then the ref's ECEF added */
-__attribute__((noinline)) void geo_ecef_of_plane(const drdc_geo_point_t *ref,
-                                                 bowring_t *b)
+/* point_status() of geo_ecef_of_plane()'s point: a leaf, so that its
+ * caller keeps only ref and b across it */
+static __attribute__((noinline)) drdc_status_t
+plane_point_status(const geo_lat_lon_t *ref, const bowring_t *b)
 {
+  return point_status(ref->lat, ref->lon, b->p);
+}
+
+/* geo_impl.h: the point checked, then b's offset (north b->z, up b->u,
+ * east b->v; Q15.16, scaled here) turned to ECEF axes in place (about east by -latitude:
+ * (north, up) -> (dz, the horizontal part towards the ref's meridian
+ * plane r); about the axis by -longitude: (east, r) -> (dy, dx)), then
+ * the point's ECEF added. The check here, and acc_plane()'s DRDC_OK
+ * returned by a sibling call: a caller that holds the latitude and
+ * longitude alone (16 bytes) saves no register across the check (issue
+ * 8's stack). */
+__attribute__((noinline)) drdc_status_t
+geo_ecef_of_plane(const geo_lat_lon_t *ref, bowring_t *b)
+{
+  drdc_status_t st = plane_point_status(ref, b);
+
+  if (st != DRDC_OK) {
+    return st;
+  }
+  /* the offset Q15.16 -> Q27.36 in place (exact: |part| < 2^32) */
+  b->z = b->z * Q36_PER_Q16;
+  b->u = b->u * Q36_PER_Q16;
+  b->v = b->v * Q36_PER_Q16;
   turn_plane(geo_rad_from_nas(ref->lat), b, false);
   turn_plane(lon_rad(ref->lon), b, true);
-  acc_plane(ref, b);
+  return acc_plane(ref, b);
 }
 
-/* geodetic of ENU (ned false) or NED (ned true) v (Q15.16) at a checked
- * ref: the offset into b's slots (north, up, east), geo_ecef_of_plane(),
- * then geo_geodetic_q36(); the one bowring_t of the chain lives here, p
- * written only on DRDC_OK */
+/* geodetic of ENU (ned false) or NED (ned true) v (Q15.16) at ref: the
+ * offset into b's slots (north, up, east), geo_ecef_of_plane() (ref's
+ * check first), then geo_geodetic_q36(); the one bowring_t of the chain
+ * lives here, p written only on DRDC_OK */
 static drdc_status_t point_of_plane(const drdc_geo_point_t *ref,
                                     const drdc_vec3_q15_16_t *v, bool ned,
                                     drdc_geo_point_t *p)
 {
   bowring_t b;
+  geo_lat_lon_t ll;
   drdc_status_t st;
 
-  b.z = (int64_t)(ned ? v->x : v->y) * Q36_PER_Q16;
-  b.u = (int64_t)(ned ? -(int64_t)v->z : (int64_t)v->z) * Q36_PER_Q16;
-  b.v = (int64_t)(ned ? v->y : v->x) * Q36_PER_Q16;
-  geo_ecef_of_plane(ref, &b);
-  st = geo_geodetic_q36(&b);
+  b.z = ned ? v->x : v->y;
+  b.u = ned ? -(int64_t)v->z : (int64_t)v->z;
+  b.v = ned ? v->y : v->x;
+  b.p = ref->height;
+  ll.lat = ref->lat;
+  ll.lon = ref->lon;
+  st = geo_ecef_of_plane(&ll, &b);
+  if (st == DRDC_OK) {
+    st = geo_geodetic_q36(&b);
+  }
   if (st == DRDC_OK) {
     p->lat = b.v;
     p->lon = b.u;
@@ -566,14 +602,8 @@ drdc_status_t drdc_geo_from_enu(const drdc_geo_point_t *ref,
                                 const drdc_vec3_q15_16_t *enu,
                                 drdc_geo_point_t *p)
 {
-  drdc_status_t st;
-
   if ((ref == NULL) || (enu == NULL) || (p == NULL)) {
     return DRDC_E_NULL;
-  }
-  st = geo_check_point(ref);
-  if (st != DRDC_OK) {
-    return st;
   }
   return point_of_plane(ref, enu, false, p);
 }
@@ -582,14 +612,8 @@ drdc_status_t drdc_geo_from_ned(const drdc_geo_point_t *ref,
                                 const drdc_vec3_q15_16_t *ned,
                                 drdc_geo_point_t *p)
 {
-  drdc_status_t st;
-
   if ((ref == NULL) || (ned == NULL) || (p == NULL)) {
     return DRDC_E_NULL;
-  }
-  st = geo_check_point(ref);
-  if (st != DRDC_OK) {
-    return st;
   }
   return point_of_plane(ref, ned, true, p);
 }

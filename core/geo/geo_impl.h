@@ -304,15 +304,24 @@ typedef struct geo_bowring {
   int64_t v; /**< a direction: vertical part */
 } geo_bowring_t;
 
+/** A point's latitude and longitude (nas), its height kept apart. */
+typedef struct geo_lat_lon {
+  drdc_nas_t lat;
+  drdc_nas_t lon;
+} geo_lat_lon_t;
+
 /**
- * The ECEF point (Q27.36) of an offset from the checked point ref, given
- * in b as north b->z, up b->u, east b->v (Q27.36): turned to ECEF axes in
- * place and ref's ECEF added, so that b->u, b->v, b->z hold x, y, z (as
- * geo_geodetic_q36() takes them). The first half of drdc_geo_from_ned()
- * and drdc_geo_from_enu(); its sin/cos and roots run beside, not above,
- * the inverse's chain.
+ * The ECEF point (Q27.36) of an offset from a point given as ref's
+ * latitude and longitude and, in b->p, its height (Q47.16), the offset in
+ * b as north b->z, up b->u, east b->v (Q15.16 values, |v| < 2^32): the
+ * point checked first (geo_check_point()'s statuses, b untouched on
+ * error), then the offset scaled to Q27.36 and turned to ECEF axes in
+ * place and the point's ECEF added, so that b->u, b->v, b->z hold x, y, z
+ * (as geo_geodetic_q36() takes them); DRDC_OK.
+ * The first half of drdc_geo_from_ned() and drdc_geo_from_enu(); its
+ * sin/cos and roots run beside, not above, the inverse's chain.
  */
-void geo_ecef_of_plane(const drdc_geo_point_t *ref, geo_bowring_t *b);
+drdc_status_t geo_ecef_of_plane(const geo_lat_lon_t *ref, geo_bowring_t *b);
 
 /**
  * Geodetic of the ECEF point in b (Q27.36, |x|, |y|, |z| < 2^61), the

@@ -154,24 +154,19 @@ static bool separation_ok(drdc_q47_16_t n)
  * conversions keep in their own frames, which are on top of the
  * rotation's chain, only the offset (and quaternion) the rotation needs:
  * position_*() holds the geo_bowring_t of the inverse, ecef_at_*() the
- * reference's point beside it. The 64-bit separation first: arguments in
- * registers on Cortex-M3. */
+ * reference's latitude and longitude beside it (16 bytes; the
+ * ellipsoidal height waits in the bowring_t's free slot p). The 64-bit
+ * separation first: arguments in registers on Cortex-M3. */
 
-/* the offset in b's slots (north, up, east; Q15.16 -> Q27.36) */
+/* the offset in b's slots (north, up, east) in Q15.16, as
+ * geo_ecef_of_plane() takes it (it scales it there, so that the shifts'
+ * temporaries take no saved registers in the frames of position_w() and
+ * position_we(): issue 8's stack) */
 static void load_ned(const drdc_vec3_q15_16_t *ned, geo_bowring_t *b)
 {
-  b->z = (int64_t)ned->x * INT64_C(1048576);
-  b->u = -(int64_t)ned->z * INT64_C(1048576);
-  b->v = (int64_t)ned->y * INT64_C(1048576);
-}
-
-/* the ellipsoidal point of ref, out of line: its copies use no register
- * that ecef_at_w() would have to save */
-static __attribute__((noinline)) void ellipsoidal_at_w(
-  drdc_q47_16_t geoid_separation, const drdc_WPose_t *ref,
-  drdc_geo_point_t *pt)
-{
-  ellipsoidal(ref, geoid_separation, pt);
+  b->z = ned->x;
+  b->u = -(int64_t)ned->z;
+  b->v = ned->y;
 }
 
 /* the ellipsoidal point of ref checked (drdc_geo_from_ned()'s first
@@ -180,16 +175,12 @@ static __attribute__((noinline)) void ellipsoidal_at_w(
 static __attribute__((noinline)) drdc_status_t ecef_at_w(
   drdc_q47_16_t geoid_separation, const drdc_WPose_t *ref, geo_bowring_t *b)
 {
-  drdc_geo_point_t pt;
-  drdc_status_t st;
+  geo_lat_lon_t ll;
 
-  ellipsoidal_at_w(geoid_separation, ref, &pt);
-  st = geo_check_point(&pt);
-  if (st != DRDC_OK) {
-    return st;
-  }
-  geo_ecef_of_plane(&pt, b);
-  return DRDC_OK;
+  ll.lat = ref->latitude;
+  ll.lon = ref->longitude;
+  b->p = ref->height + geoid_separation;
+  return geo_ecef_of_plane(&ll, b);
 }
 
 /* drdc_geo_from_ned() of ned at the ellipsoidal point of ref: on DRDC_OK
@@ -425,28 +416,16 @@ static __attribute__((noinline)) drdc_status_t compose_euler(
   return drdc_quat_compose(inv, &q, inv);
 }
 
-/* ellipsoidal_at_w() for a {We} reference */
-static __attribute__((noinline)) void ellipsoidal_at_we(
-  drdc_q47_16_t geoid_separation, const drdc_WePose_t *ref,
-  drdc_geo_point_t *pt)
-{
-  ellipsoidal_we(ref, geoid_separation, pt);
-}
-
 /* ecef_at_w() for a {We} reference (its position read in place) */
 static __attribute__((noinline)) drdc_status_t ecef_at_we(
   drdc_q47_16_t geoid_separation, const drdc_WePose_t *ref, geo_bowring_t *b)
 {
-  drdc_geo_point_t pt;
-  drdc_status_t st;
+  geo_lat_lon_t ll;
 
-  ellipsoidal_at_we(geoid_separation, ref, &pt);
-  st = geo_check_point(&pt);
-  if (st != DRDC_OK) {
-    return st;
-  }
-  geo_ecef_of_plane(&pt, b);
-  return DRDC_OK;
+  ll.lat = ref->latitude;
+  ll.lon = ref->longitude;
+  b->p = ref->height + geoid_separation;
+  return geo_ecef_of_plane(&ll, b);
 }
 
 /* position_w() for a {We} reference and result */
