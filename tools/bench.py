@@ -18,7 +18,10 @@ between implementations on the same target are the meaningful figures.
 The guard fails when a function's cycles on a target grow more than 5 %
 over the committed report, or the library's flash (text + rodata + data)
 grows more than 5 %; regenerating the report (./waf bench) and committing
-it with the change that causes the growth is what makes it pass.
+it with the change that causes the growth is what makes it pass. It also
+fails, whatever the committed report says, when a public function's
+worst-case stack exceeds issue 8's 256 bytes on a target (or cannot be
+bounded: recursion), a limit the library meets and holds.
 """
 import argparse
 import json
@@ -321,13 +324,29 @@ def check(report, committed_path):
         if prev and flash(fp) > flash(prev) * GROWTH_LIMIT:
             bad.append("library flash on %s: %d bytes, committed %d" % (
                 target, flash(fp), flash(prev)))
-    for line in bad:
+    deep = []
+    for target, fp in report["footprint"].items():
+        for fn, entry in sorted(fp.get("stack", {}).items()):
+            if entry.get("bytes") is None:
+                deep.append("%s on %s: stack unbounded (%s)" % (
+                    fn, target, entry.get("recursion")))
+            elif entry["bytes"] > STACK_GOAL:
+                deep.append("%s on %s: worst-case stack %d bytes, over %d" % (
+                    fn, target, entry["bytes"], STACK_GOAL))
+    for line in bad + deep:
         print("bench guard: " + line)
-    print("bench guard: %d function(s) and %d target(s) within 5 %% of %s"
-          % (len(report["functions"]), len(report["footprint"]), committed_path)
-          if not bad else "bench guard: regenerate with ./waf bench and commit the "
-          "report with the change that costs it")
-    return not bad
+    if bad:
+        print("bench guard: regenerate with ./waf bench and commit the "
+              "report with the change that costs it")
+    if deep:
+        print("bench guard: make those functions shallower (a regenerated "
+              "report does not lift the %d-byte limit)" % STACK_GOAL)
+    if not (bad or deep):
+        print("bench guard: %d function(s) and %d target(s) within 5 %% of %s, "
+              "every stack within %d bytes"
+              % (len(report["functions"]), len(report["footprint"]),
+                 committed_path, STACK_GOAL))
+    return not (bad or deep)
 
 
 def main():

@@ -11,7 +11,8 @@ from tools import bench, footprint
 REPORT = {
     "functions": [{"function": "drdc_f", "target": "arm-cm3", "cycles": 100.0}],
     "footprint": {"arm-cm3": {"library": {"text": 1000, "rodata": 100, "data": 0,
-                                          "bss": 0}}},
+                                          "bss": 0},
+                              "stack": {"drdc_f": {"bytes": 200}}}},
 }
 
 
@@ -42,9 +43,21 @@ class Guard(unittest.TestCase):
         new["footprint"]["arm-cm3"]["library"]["text"] = 1066
         self.assertFalse(self.check(new))
 
+    def test_stack_of_256_bytes_passes(self):
+        new = copy.deepcopy(REPORT)
+        new["footprint"]["arm-cm3"]["stack"]["drdc_f"]["bytes"] = 256
+        self.assertTrue(self.check(new))
 
-if __name__ == "__main__":
-    unittest.main()
+    def test_stack_over_256_bytes_fails(self):
+        new = copy.deepcopy(REPORT)
+        new["footprint"]["arm-cm3"]["stack"]["drdc_f"]["bytes"] = 264
+        self.assertFalse(self.check(new))
+
+    def test_unbounded_stack_fails(self):
+        new = copy.deepcopy(REPORT)
+        new["footprint"]["arm-cm3"]["stack"]["drdc_f"] = {
+            "bytes": None, "recursion": "drdc_f -> drdc_f"}
+        self.assertFalse(self.check(new))
 
 
 class WorstStack(unittest.TestCase):
@@ -66,3 +79,7 @@ class WorstStack(unittest.TestCase):
     def test_recursion_is_reported(self):
         with self.assertRaises(RecursionError):
             footprint.worst_stack("g", {"g": 8}, {"g": {"g"}})
+
+
+if __name__ == "__main__":
+    unittest.main()
