@@ -132,6 +132,15 @@ static int64_t rsqrt_q58(int64_t x, unsigned steps)
   return y;
 }
 
+/* N = a / w = a / sqrt(w^2) (Q27.36 metres) at sin phi = s, w^2 = 1 -
+ * e^2 sin^2 phi in [1 - e^2, 1]: no Q5.58 square root or quotient. One
+ * body for acc_body() and acc_plane(). */
+static inline int64_t prime_vertical_q36(int64_t s)
+{
+  return geo_mul(A_Q36,
+                 rsqrt_q58(GEO_ONE - geo_mul(GEO_E2, geo_mul(s, s)), 2u));
+}
+
 /* ECEF of a checked point in Q27.36, added to (*x, *y, *z), or subtracted
  * when sub (geo_mul() rounds symmetrically, so the difference of two
  * points is exactly that of their coordinates). The sin and cos of the
@@ -147,11 +156,7 @@ static inline __attribute__((always_inline)) void acc_body(
   int64_t v;
 
   geo_sincos(geo_rad_from_nas(p->lat), &sc[0], &sc[1]);
-  /* N = a / w = a / sqrt(w^2), w^2 = 1 - e^2 sin^2 phi in [1 - e^2, 1]:
-   * no Q5.58 square root or quotient */
-  n = geo_mul(A_Q36,
-              rsqrt_q58(GEO_ONE - geo_mul(GEO_E2, geo_mul(sc[0], sc[0])),
-                        2u));
+  n = prime_vertical_q36(sc[0]);
   v = geo_mul(geo_mul(n, GEO_ONE - GEO_E2) + (p->height * Q36_PER_Q16),
               sc[0]);
   *z = sub ? (*z - v) : (*z + v);
@@ -520,9 +525,7 @@ acc_plane(const geo_lat_lon_t *p, bowring_t *b)
   int64_t v;
 
   geo_sincos(geo_rad_from_nas(p->lat), &sc[0], &sc[1]);
-  n = geo_mul(A_Q36,
-              rsqrt_q58(GEO_ONE - geo_mul(GEO_E2, geo_mul(sc[0], sc[0])),
-                        2u));
+  n = prime_vertical_q36(sc[0]);
   v = geo_mul(geo_mul(n, GEO_ONE - GEO_E2) + (b->p * Q36_PER_Q16), sc[0]);
   b->z = b->z + v;
   n = n + (b->p * Q36_PER_Q16);

@@ -379,19 +379,30 @@ grid_metres(int32_t code, geo_tm_t *tm)
   return st;
 }
 
-/* The projection of forward_args()'s code (UPS or transverse Mercator)
- * on tm, then its metres checked by grid_metres(): the steps and statuses
- * that drdc_pose_wutm_from_w(), drdc_geo_mgrs_encode() and the MGRS poses
- * share. Inlined (always_inline) so the projection stays called from
- * their own frames (by grid_forward_projection(), a sibling call). */
+/* forward_args() of (lat, lon) for zone (its statuses; out only tested
+ * for NULL), then the projection of its code (UPS or transverse
+ * Mercator) on tm, then its metres checked by grid_metres(): the steps
+ * and statuses that drdc_pose_wutm_from_w(), drdc_geo_mgrs_encode() and
+ * the MGRS poses share; the code into *code. Inlined (always_inline) so
+ * the projection stays called from their own frames (by
+ * grid_forward_projection(), a sibling call). */
 static inline __attribute__((always_inline)) drdc_status_t
-project_to_grid(int32_t code, geo_tm_t *tm)
+project_to_grid(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
+                const void *out, geo_tm_t *tm, int32_t *code)
 {
-  if (grid_forward_projection(code, tm) == 0) {
+  tm->xi = lat;
+  tm->eta = lon;
+  tm->gamma = 0;
+  tm->k = 0;
+  *code = forward_args(zone, out, tm);
+  if (*code < 0) {
+    return (drdc_status_t)-*code;
+  }
+  if (grid_forward_projection(*code, tm) == 0) {
     return DRDC_E_RANGE;
   }
   /* xi, eta (and gamma) in tm */
-  return grid_metres(code, tm);
+  return grid_metres(*code, tm);
 }
 
 /* A pose conversion of pose.c, here for the reason of
@@ -411,17 +422,10 @@ drdc_status_t drdc_pose_wutm_from_w(const drdc_WPose_t *w, int32_t zone,
   }
   /* utm_forward()'s steps and statuses, as drdc_geo_to_utm() (a zone
    * code above the zones is DRDC_E_ZONE) */
-  tm.xi = w->latitude;
-  tm.eta = w->longitude;
-  tm.gamma = 0;
-  tm.k = 0;
-  code = forward_args((zone > DRDC_GEO_ZONE_MAX) ? (DRDC_GEO_ZONE_MAX + 1)
-                                                 : zone,
-                      &out->utm, &tm);
-  if (code < 0) {
-    return (drdc_status_t)-code;
-  }
-  st = project_to_grid(code, &tm);
+  st = project_to_grid(w->latitude, w->longitude,
+                       (zone > DRDC_GEO_ZONE_MAX) ? (DRDC_GEO_ZONE_MAX + 1)
+                                                  : zone,
+                       &out->utm, &tm, &code);
   if (st != DRDC_OK) {
     return st;
   }
@@ -474,16 +478,9 @@ drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
   if (text == NULL) {
     return DRDC_E_NULL;
   }
-  tm.xi = lat;
-  tm.eta = lon;
-  tm.gamma = 0;
-  tm.k = 0;
   /* forward_args() only tests its out for NULL (text is not) */
-  code = forward_args(DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, text, &tm);
-  if (code < 0) {
-    return (drdc_status_t)-code;
-  }
-  st = project_to_grid(code, &tm);
+  st = project_to_grid(lat, lon, DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36,
+                       text, &tm, &code);
   if (st != DRDC_OK) {
     return st;
   }
@@ -531,15 +528,9 @@ drdc_status_t drdc_pose_wmgrs_from_w(const drdc_WPose_t *w, int32_t prec,
   if ((prec < DRDC_GEO_MGRS_PREC_MIN) || (prec > DRDC_GEO_MGRS_PREC_MAX)) {
     return DRDC_E_RANGE;
   }
-  tm.xi = w->latitude;
-  tm.eta = w->longitude;
-  tm.gamma = 0;
-  tm.k = 0;
-  code = forward_args(DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, out, &tm);
-  if (code < 0) {
-    return (drdc_status_t)-code;
-  }
-  st = project_to_grid(code, &tm);
+  st = project_to_grid(w->latitude, w->longitude,
+                       DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, out, &tm,
+                       &code);
   if (st != DRDC_OK) {
     return st;
   }
@@ -566,15 +557,9 @@ drdc_status_t drdc_pose_wemgrs_from_we(const drdc_WePose_t *w, int32_t prec,
   if ((prec < DRDC_GEO_MGRS_PREC_MIN) || (prec > DRDC_GEO_MGRS_PREC_MAX)) {
     return DRDC_E_RANGE;
   }
-  tm.xi = w->latitude;
-  tm.eta = w->longitude;
-  tm.gamma = 0;
-  tm.k = 0;
-  code = forward_args(DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, out, &tm);
-  if (code < 0) {
-    return (drdc_status_t)-code;
-  }
-  st = project_to_grid(code, &tm);
+  st = project_to_grid(w->latitude, w->longitude,
+                       DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, out, &tm,
+                       &code);
   if (st != DRDC_OK) {
     return st;
   }
