@@ -175,7 +175,7 @@ static inline int64_t geo_phi_series(int64_t schi, int64_t cchi)
  * Polar stereographic (UPS, k0 = 0.994) of phi, lam (radians, in out->xi,
  * out->eta as geo_tm_forward() takes them) on the north or south sheet
  * into out: x, y (out->xi, out->eta) as angles of
- * the sphere of radius 2 k0 a / c (geo_ups_metres() makes metres),
+ * the sphere of radius 2 k0 a / c (geo_ups_q36() makes metres),
  * convergence out->gamma (radians) and scale out->k; one pointer, so that
  * no caller's frame holds outgoing arguments for four. Returns 0 when the
  * point is too far on the other hemisphere (sin chi < -0.9), else 1; out
@@ -189,12 +189,6 @@ int geo_ups_forward(bool north, geo_tm_t *out);
  *  same slots; tm->gamma and tm->k are its scratch. No 64-bit argument:
  *  nothing on the caller's stack for the call. */
 void geo_ups_reverse(bool north, geo_tm_t *tm);
-
-/** UPS angle -> metres (Q47.16). */
-drdc_q47_16_t geo_ups_metres(int64_t a);
-
-/** Metres (Q47.16, |v| < 2^43) -> UPS angle. */
-int64_t geo_ups_angle(drdc_q47_16_t v);
 
 /**
  * MGRS text of a UTM/UPS position already validated by drdc_geo_to_utm()
@@ -220,8 +214,7 @@ drdc_status_t geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,
  */
 int32_t geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec);
 
-/** UPS angle -> metres in Q28.36 (2^-36 m, rounded); geo_ups_metres() is
- *  its rounding to Q47.16. */
+/** UPS angle -> metres in Q28.36 (2^-36 m, rounded). */
 int64_t geo_ups_q36(int64_t a);
 
 /** Added to a zone code of drdc_geo_to_utm() (-1..60): utm.c's forward

@@ -58,16 +58,6 @@ int64_t geo_ups_q36(int64_t a)
   return geo_mul_shift(a, GEO_UPS_K_Q39, 61u);
 }
 
-drdc_q47_16_t geo_ups_metres(int64_t a)
-{
-  return drdc_fx_rshift_round_s64(geo_ups_q36(a), 20u);
-}
-
-int64_t geo_ups_angle(drdc_q47_16_t v)
-{
-  return geo_muldiv(v * INT64_C(1048576), TWO_POW_61, GEO_UPS_K_Q39);
-}
-
 void geo_ups_reverse(bool north, geo_tm_t *tm)
 {
   int64_t t;
