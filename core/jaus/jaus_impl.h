@@ -39,6 +39,27 @@ typedef struct jaus_field {
   drdc_status_t outside;
 } jaus_field_t;
 
+/** Rows of jaus_fields: the 32 fields of the two messages in the two
+ *  forms have 12 distinct ones, each stored once; a message's fields in
+ *  a form are their rows, one byte each (issue 8, flash). _RA3 and _AS:
+ *  the type of RA 3.x and of AS6009. */
+#define JAUS_F_LAT_RA3 0u
+#define JAUS_F_LAT_AS 1u
+#define JAUS_F_LON_RA3 2u
+#define JAUS_F_LON_AS 3u
+#define JAUS_F_ALT_RA3 4u
+#define JAUS_F_ALT_AS 5u
+#define JAUS_F_XY_RA3 6u
+#define JAUS_F_XY_AS 7u
+#define JAUS_F_ANGLE_RA3 8u
+#define JAUS_F_ANGLE_AS 9u
+#define JAUS_F_POS_RMS 10u
+#define JAUS_F_ATT_RMS 11u
+#define JAUS_FIELDS 12u
+
+/** The distinct fields (pose_messages.c). */
+extern const jaus_field_t jaus_fields[JAUS_FIELDS];
+
 /** Bytes of the presence vector, before the fields. */
 #define JAUS_PRESENCE_BYTES 2u
 /** Presence bit of the time stamp, the last field (4 bytes). */
@@ -95,11 +116,12 @@ static inline uint32_t jaus_get_le(const uint8_t *p, size_t n)
 
 /**
  * Validate the fields present in the body (`local` or `global`), check
- * the time stamp and the capacity, then scale the fields by `fields` and
- * write them little-endian. Nothing is written before every check has
+ * the time stamp and the capacity, then scale the fields by `fields`
+ * (their rows of jaus_fields, in presence-bit order) and write them
+ * little-endian. Nothing is written before every check has
  * passed: outputs unchanged on error.
  */
-drdc_status_t drdc_jaus_body_pack(const jaus_field_t *fields,
+drdc_status_t drdc_jaus_body_pack(const uint8_t *fields,
                                   drdc_jaus_form_t form,
                                   const drdc_jaus_local_pose_t *local,
                                   const drdc_jaus_global_pose_t *global,
@@ -113,7 +135,7 @@ drdc_status_t drdc_jaus_body_pack(const jaus_field_t *fields,
  * Q15.16: DRDC_E_OVERFLOW after every other check), the second decodes
  * again into the body, so the body is unchanged on error.
  */
-drdc_status_t drdc_jaus_body_unpack(const jaus_field_t *fields,
+drdc_status_t drdc_jaus_body_unpack(const uint8_t *fields,
                                     drdc_jaus_form_t form,
                                     const uint8_t *buf, size_t length,
                                     drdc_jaus_local_pose_t *local,

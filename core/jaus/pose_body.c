@@ -166,7 +166,7 @@ static int local_fits_q15_16(int64_t v)
   return (v >= (int64_t)INT32_MIN) && (v <= (int64_t)INT32_MAX);
 }
 
-drdc_status_t drdc_jaus_body_pack(const jaus_field_t *fields,
+drdc_status_t drdc_jaus_body_pack(const uint8_t *fields,
                                   drdc_jaus_form_t form,
                                   const drdc_jaus_local_pose_t *local,
                                   const drdc_jaus_global_pose_t *global,
@@ -189,7 +189,7 @@ drdc_status_t drdc_jaus_body_pack(const jaus_field_t *fields,
    * its field's limits (in bit order), the time stamp, the capacity */
   for (bit = 0u; bit < JAUS_POSE_SCALED; bit++) {
     if (jaus_present(presence, bit) != 0) {
-      const jaus_field_t *f = &fields[bit];
+      const jaus_field_t *f = &jaus_fields[fields[bit]];
       int64_t v = field_get(local, global, bit);
 
       if ((v < f->min) || (v > f->max)) {
@@ -210,11 +210,15 @@ drdc_status_t drdc_jaus_body_pack(const jaus_field_t *fields,
    * on the way to DRDC_OK (its status is still passed on). */
   for (bit = 0u; bit < JAUS_POSE_SCALED; bit++) {
     if (jaus_present(presence, bit) != 0) {
-      const jaus_field_t *f = &fields[bit];
+      /* the value first: the field's address is computed after the
+       * call, not held across it (on Cortex-M3 a saved register and 16 B
+       * of frame) */
+      int64_t v = field_get(local, global, bit);
+      const jaus_field_t *f = &jaus_fields[fields[bit]];
       int64_t integer = 0;
 
-      st = drdc_jaus_scaled_encode(field_get(local, global, bit), f->min,
-                                   f->max, f->type, form, &integer);
+      st = drdc_jaus_scaled_encode(v, f->min, f->max, f->type, form,
+                                   &integer);
       if (st != DRDC_OK) {
         return st;
       }
@@ -232,7 +236,7 @@ drdc_status_t drdc_jaus_body_pack(const jaus_field_t *fields,
   return DRDC_OK;
 }
 
-drdc_status_t drdc_jaus_body_unpack(const jaus_field_t *fields,
+drdc_status_t drdc_jaus_body_unpack(const uint8_t *fields,
                                     drdc_jaus_form_t form,
                                     const uint8_t *buf, size_t length,
                                     drdc_jaus_local_pose_t *local,
@@ -275,7 +279,7 @@ drdc_status_t drdc_jaus_body_unpack(const jaus_field_t *fields,
       int64_t v = 0;
 
       if (jaus_present(presence, bit) != 0) {
-        const jaus_field_t *f = &fields[bit];
+        const jaus_field_t *f = &jaus_fields[fields[bit]];
         size_t n = jaus_field_size(bit);
 
         st = drdc_jaus_scaled_decode(
