@@ -50,8 +50,10 @@ static const char *const upscols[4] = { "JKLPQRSTUXYZ", "ABCFGHJKLPQR",
 static const char *const upsrows[2] = { "ABCDEFGHJKLMNPQRSTUVWXYZ",
                                         "ABCDEFGHJKLMNP" };
 
-/* index of c in set, letters in either case; -1 when absent */
-static int32_t lookup(const char *set, char c)
+/* index of c in set, letters in either case; -1 when absent. Out of
+ * line: the decoder calls it at seven places, a copy each when inlined
+ * (240/412 B of flash on Cortex-M3/PowerPC, issue 8) */
+static __attribute__((noinline)) int32_t lookup(const char *set, char c)
 {
   static const char upper[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZ";
   static const char lower[] = "abcdefghijklmnopqrstuvwxyz";
@@ -215,26 +217,26 @@ drdc_status_t geo_mgrs_format_bits(const drdc_geo_utm_t *u, unsigned frac_bits,
  * band iband (-10..9): the multiple of 20 rows nearest the band's centre,
  * then the band's extent with its overlaps; returns SOUTH_ROWS when the
  * square is not in the band. Rows count 100 km from the equator. */
-static int64_t utm_row(int64_t iband, int64_t icol, int64_t irow_letter)
+static int32_t utm_row(int32_t iband, int32_t icol, int32_t irow_letter)
 {
-  int64_t north = (iband >= 0) ? INT64_C(1) : INT64_C(0);
+  /* int32_t: every value here is within +-8 000; 0.1 north in
+   * ninetieths */
+  int32_t north9 = (iband >= 0) ? (int32_t)9 : (int32_t)0;
   /* c = 100 (8 iband + 4) / 90 rows; min = floor(c - 4.3 - 0.1 north),
    * max = floor(c + 4.4 - 0.1 north), in ninetieths (never a tie) */
-  int64_t minrow = (iband > -10)
-                     ? geo_floor_div((800 * iband) + 13 - (9 * north), 90)
-                     : -90;
-  int64_t maxrow = (iband < 9)
-                     ? geo_floor_div((800 * iband) + 796 - (9 * north), 90)
-                     : 94;
+  int32_t low = ((800 * iband) + 13) - north9;
+  int32_t high = ((800 * iband) + 796) - north9;
+  int32_t minrow = (iband > -10) ? (int32_t)geo_floor_div(low, 90) : -90;
+  int32_t maxrow = (iband < 9) ? (int32_t)geo_floor_div(high, 90) : 94;
   /* C's division truncates towards zero, as GeographicLib's does */
-  int64_t baserow = ((minrow + maxrow) / 2) - (ROW_PERIOD / 2);
-  int64_t irow = (((irow_letter - baserow) + SOUTH_ROWS) % ROW_PERIOD)
+  int32_t baserow = ((minrow + maxrow) / 2) - (ROW_PERIOD / 2);
+  int32_t irow = (((irow_letter - baserow) + SOUTH_ROWS) % ROW_PERIOD)
                  + baserow;
 
   if ((irow < minrow) || (irow > maxrow)) {
-    int64_t sband = (iband >= 0) ? iband : (-iband - 1);
-    int64_t srow = (irow >= 0) ? irow : (-irow - 1);
-    int64_t scol = (icol < 4) ? icol : (-icol + 7);
+    int32_t sband = (iband >= 0) ? iband : (-iband - 1);
+    int32_t srow = (irow >= 0) ? irow : (-irow - 1);
+    int32_t scol = (icol < 4) ? icol : (-icol + 7);
 
     /* the squares of 31X-37X and of band X above 80 degrees */
     if (!(((srow == 70) && (sband == 8) && (scol >= 2))
@@ -268,8 +270,8 @@ int32_t geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec)
   int32_t iband;
   int32_t ndig;
   int32_t k;
-  int64_t icol;
-  int64_t irow;
+  int32_t icol;
+  int32_t irow;
   int64_t x1;
   int64_t y1;
   int64_t unit;
@@ -343,7 +345,7 @@ int32_t geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec)
     if ((zone % 2) == 0) {
       irow = (irow + ROW_PERIOD - EVEN_ROW_SHIFT) % ROW_PERIOD;
     }
-    irow = utm_row((int64_t)iband - 10, icol, irow);
+    irow = utm_row(iband - 10, icol, irow);
     if (irow == SOUTH_ROWS) {
       return -(int32_t)DRDC_E_BAND;
     }
@@ -351,8 +353,8 @@ int32_t geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec)
     icol = icol + 1;
   } else {
     bool eastp = ((iband % 2) == 1);
-    int64_t first = north ? UPS_NORTH_FIRST
-                          : UPS_SOUTH_FIRST;
+    int32_t first = north ? (int32_t)UPS_NORTH_FIRST
+                          : (int32_t)UPS_SOUTH_FIRST;
 
     icol = icol + (eastp ? UPS_POLE_INDEX : first);
     irow = irow + first;
