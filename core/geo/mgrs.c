@@ -195,12 +195,13 @@ drdc_status_t geo_mgrs_format_bits(const drdc_geo_utm_t *u, unsigned frac_bits,
       n++;
     }
   }
-  for (d = 0; d < prec; d++) {
-    buf[n] = digits[((x % TILE_UM) / pow10_i64(10 - d)) % 10];
-    n++;
-  }
-  for (d = 0; d < prec; d++) {
-    buf[n] = digits[((y % TILE_UM) / pow10_i64(10 - d)) % 10];
+  /* prec digits of the easting's micrometres within the square, then
+   * of the northing's: one loop, one copy of the digit code */
+  for (d = 0; d < (2 * prec); d++) {
+    int64_t v = (d < prec) ? x : y;
+    int32_t place = (d < prec) ? d : (d - prec);
+
+    buf[n] = digits[((v % TILE_UM) / pow10_i64(10 - place)) % 10];
     n++;
   }
   buf[n] = '\0';
