@@ -8,7 +8,8 @@
 The table is stored compactly (issue 8, flash): the names as one string of
 NUL-terminated names in row order (no pointer per row), each distinct
 dimension once, each distinct factor number once (below 2^32 as uint32_t,
-larger ones as int64_t) and four one-byte indices per unit. The numbers are
+larger ones as int64_t) and three bytes per unit: the two factor indices
+and the dimension and offset rows, four bits each. The numbers are
 the very same exact integers as in units.txt: conversions are unchanged.
 """
 import os
@@ -69,8 +70,11 @@ def table_text(path=SOURCE):
     large = [v for v in values if v >= 2 ** 32]
     index = {v: i for i, v in enumerate(small + large)}
     offsets = [(0, 1)] + sorted(set((r[5], r[6]) for r in rows if r[5] != 0))
-    if len(rows) > 255 or len(values) > 255 or len(dims) > 255:
+    if len(rows) > 255 or len(values) > 255:
         raise SystemExit("units.txt: too many units for one-byte indices")
+    if len(dims) > 16 or len(offsets) > 16:
+        raise SystemExit("units.txt: too many dimensions or offsets for"
+                         " four-bit rows")
 
     def indent(lines):
         return ["  " + l if l else l for l in lines]
@@ -126,14 +130,14 @@ def table_text(path=SOURCE):
         " * table and below what GNU units prints. Every other factor is exact.",
         " *",
         " * Compact storage: every name once in units_names (row order), each",
-        " * distinct dimension, factor number and offset once, and four one-byte",
-        " * indices per unit (%d units, %d bytes of rows)." % (len(rows), 4 * len(rows)),
+        " * distinct dimension, factor number and offset once, and three bytes",
+        " * per unit (%d units, %d bytes of rows)." % (len(rows), 3 * len(rows)),
         " */",
         "",
         "/* Number of factor numbers below 2^32 (units_small). */",
         "#define UNITS_SMALL_COUNT %du" % len(small),
         "",
-        "/* { dimension, factor num, factor den, offset }: indices into the",
+        "/* { factor num, factor den, (dimension, offset) }: indices into the",
         " * tables of the readers below; the name is the row's string in",
         " * units_names. */",
             "static const drdc_unit_t units_table[] = {"]
@@ -143,8 +147,12 @@ def table_text(path=SOURCE):
         text = "%s: %d / %d" % (name, num, den)
         if onum:
             text += ", offset %d / %d" % (onum, oden)
-        out.append("  { %du, %du, %du, %du }, /* %s */" % (
-            dims.index(d), index[num], index[den], offsets.index((onum, oden)), text))
+        row = "  { %du, %du, UNITS_DIM_OFFSET(%du, %du) }," % (
+            index[num], index[den], dims.index(d), offsets.index((onum, oden)))
+        if len(row) + len(text) + 7 <= 80:
+            out.append("%s /* %s */" % (row, text))
+        else:  # 80 columns: the row's comment above it
+            out += ["  /* %s */" % text, row]
     out += ["};", "",
             "size_t drdc_units_count(void)",
             "{",
@@ -180,7 +188,7 @@ def table_text(path=SOURCE):
             "int8_t units_dimension(const drdc_unit_t *unit, size_t i)",
             "{"] + indent(dimensions) + [
             "",
-            "  return units_dimensions[unit->dimension][i];",
+            "  return units_dimensions[units_dimension_row(unit)][i];",
             "}",
             "",
             "int64_t units_number(uint8_t index)",
@@ -194,7 +202,7 @@ def table_text(path=SOURCE):
             "int64_t units_offset_part(const drdc_unit_t *unit, unsigned part)",
             "{"] + indent(offs) + [
             "",
-            "  return units_offsets[unit->offset][(part != 0u) ? 1 : 0];",
+            "  return units_offsets[units_offset_row(unit)][(part != 0u) ? 1 : 0];",
             "}",
             "",
             "units_rat_t units_offset(const drdc_unit_t *unit)",

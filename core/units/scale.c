@@ -52,7 +52,7 @@ drdc_status_t units_prepare(unsigned from_frac, const drdc_unit_t *from,
       != DRDC_OK) {
     return DRDC_E_RANGE;
   }
-  if ((from->offset != 0u) || (to->offset != 0u)) {
+  if ((units_offset_row(from) != 0u) || (units_offset_row(to) != 0u)) {
     /* affine: a = raw x Hd + Hn, the factor divided by Hd; both exact */
     int64_t scaled;
     units_rat_t h;

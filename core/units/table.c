@@ -14,398 +14,414 @@
  * table and below what GNU units prints. Every other factor is exact.
  *
  * Compact storage: every name once in units_names (row order), each
- * distinct dimension, factor number and offset once, and four one-byte
- * indices per unit (182 units, 728 bytes of rows).
+ * distinct dimension, factor number and offset once, and three bytes
+ * per unit (182 units, 546 bytes of rows).
  */
 
 /* Number of factor numbers below 2^32 (units_small). */
 #define UNITS_SMALL_COUNT 85u
 
-/* { dimension, factor num, factor den, offset }: indices into the
+/* { factor num, factor den, (dimension, offset) }: indices into the
  * tables of the readers below; the name is the row's string in
  * units_names. */
 static const drdc_unit_t units_table[] = {
   /* length */
   /* SI base unit (metre) */
-  { 0u, 0u, 0u, 0u }, /* m: 1 / 1 */
+  { 0u, 0u, UNITS_DIM_OFFSET(0u, 0u) }, /* m: 1 / 1 */
   /* 10^3 m */
-  { 0u, 17u, 0u, 0u }, /* km: 1000 / 1 */
+  { 17u, 0u, UNITS_DIM_OFFSET(0u, 0u) }, /* km: 1000 / 1 */
   /* 10^-2 m */
-  { 0u, 0u, 7u, 0u }, /* cm: 1 / 100 */
+  { 0u, 7u, UNITS_DIM_OFFSET(0u, 0u) }, /* cm: 1 / 100 */
   /* 10^-3 m */
-  { 0u, 0u, 17u, 0u }, /* mm: 1 / 1000 */
+  { 0u, 17u, UNITS_DIM_OFFSET(0u, 0u) }, /* mm: 1 / 1000 */
   /* 10^-6 m */
-  { 0u, 0u, 51u, 0u }, /* um: 1 / 1000000 */
+  { 0u, 51u, UNITS_DIM_OFFSET(0u, 0u) }, /* um: 1 / 1000000 */
   /* 10^-9 m */
-  { 0u, 0u, 79u, 0u }, /* nm: 1 / 1000000000 */
+  { 0u, 79u, UNITS_DIM_OFFSET(0u, 0u) }, /* nm: 1 / 1000000000 */
   /* 10^-6 m */
-  { 0u, 0u, 51u, 0u }, /* micron: 1 / 1000000 */
+  { 0u, 51u, UNITS_DIM_OFFSET(0u, 0u) }, /* micron: 1 / 1000000 */
   /* 10^-10 m */
-  { 0u, 0u, 88u, 0u }, /* angstrom: 1 / 10000000000 */
+  { 0u, 88u, UNITS_DIM_OFFSET(0u, 0u) }, /* angstrom: 1 / 10000000000 */
   /* 2.54 cm exactly (international inch, 1959) */
-  { 0u, 9u, 28u, 0u }, /* inch: 127 / 5000 */
+  { 9u, 28u, UNITS_DIM_OFFSET(0u, 0u) }, /* inch: 127 / 5000 */
   /* inch */
-  { 0u, 9u, 28u, 0u }, /* in: 127 / 5000 */
+  { 9u, 28u, UNITS_DIM_OFFSET(0u, 0u) }, /* in: 127 / 5000 */
   /* 12 inch = 0.3048 m exactly (international foot, 1959) */
-  { 0u, 11u, 20u, 0u }, /* ft: 381 / 1250 */
+  { 11u, 20u, UNITS_DIM_OFFSET(0u, 0u) }, /* ft: 381 / 1250 */
   /* ft */
-  { 0u, 11u, 20u, 0u }, /* foot: 381 / 1250 */
+  { 11u, 20u, UNITS_DIM_OFFSET(0u, 0u) }, /* foot: 381 / 1250 */
   /* 3 ft = 0.9144 m */
-  { 0u, 18u, 20u, 0u }, /* yd: 1143 / 1250 */
+  { 18u, 20u, UNITS_DIM_OFFSET(0u, 0u) }, /* yd: 1143 / 1250 */
   /* yd */
-  { 0u, 18u, 20u, 0u }, /* yard: 1143 / 1250 */
+  { 18u, 20u, UNITS_DIM_OFFSET(0u, 0u) }, /* yard: 1143 / 1250 */
   /* 5280 ft = 1609.344 m */
-  { 0u, 46u, 8u, 0u }, /* mile: 201168 / 125 */
+  { 46u, 8u, UNITS_DIM_OFFSET(0u, 0u) }, /* mile: 201168 / 125 */
   /* international nautical mile, 1852 m exactly */
-  { 0u, 22u, 0u, 0u }, /* nmi: 1852 / 1 */
+  { 22u, 0u, UNITS_DIM_OFFSET(0u, 0u) }, /* nmi: 1852 / 1 */
   /* nmi */
-  { 0u, 22u, 0u, 0u }, /* nauticalmile: 1852 / 1 */
+  { 22u, 0u, UNITS_DIM_OFFSET(0u, 0u) }, /* nauticalmile: 1852 / 1 */
   /* 6 ft */
-  { 0u, 18u, 14u, 0u }, /* fathom: 1143 / 625 */
+  { 18u, 14u, UNITS_DIM_OFFSET(0u, 0u) }, /* fathom: 1143 / 625 */
   /* 40 rod = 660 ft */
-  { 0u, 38u, 8u, 0u }, /* furlong: 25146 / 125 */
+  { 38u, 8u, UNITS_DIM_OFFSET(0u, 0u) }, /* furlong: 25146 / 125 */
   /* 66 ft */
-  { 0u, 32u, 14u, 0u }, /* chain: 12573 / 625 */
+  { 32u, 14u, UNITS_DIM_OFFSET(0u, 0u) }, /* chain: 12573 / 625 */
   /* 0.001 inch */
-  { 0u, 9u, 58u, 0u }, /* mil: 127 / 5000000 */
+  { 9u, 58u, UNITS_DIM_OFFSET(0u, 0u) }, /* mil: 127 / 5000000 */
   /* astronomical unit, 149 597 870 700 m exactly (IAU 2012) */
-  { 0u, 96u, 0u, 0u }, /* au: 149597870700 / 1 */
+  { 96u, 0u, UNITS_DIM_OFFSET(0u, 0u) }, /* au: 149597870700 / 1 */
   /* c x 1 s */
-  { 0u, 73u, 0u, 0u }, /* lightsecond: 299792458 / 1 */
+  { 73u, 0u, UNITS_DIM_OFFSET(0u, 0u) }, /* lightsecond: 299792458 / 1 */
   /* c x julianyear (365.25 d) */
-  { 0u, 110u, 0u, 0u }, /* lightyear: 9460730472580800 / 1 */
+  { 110u, 0u, UNITS_DIM_OFFSET(0u, 0u) }, /* lightyear: 9460730472580800 / 1 */
   /* US survey foot, 1200/3937 m exactly */
-  { 0u, 19u, 26u, 0u }, /* surveyfoot: 1200 / 3937 */
+  { 19u, 26u, UNITS_DIM_OFFSET(0u, 0u) }, /* surveyfoot: 1200 / 3937 */
   /* area */
   /* SI */
-  { 1u, 0u, 0u, 0u }, /* m^2: 1 / 1 */
+  { 0u, 0u, UNITS_DIM_OFFSET(1u, 0u) }, /* m^2: 1 / 1 */
   /* (10^3 m)^2 */
-  { 1u, 51u, 0u, 0u }, /* km^2: 1000000 / 1 */
+  { 51u, 0u, UNITS_DIM_OFFSET(1u, 0u) }, /* km^2: 1000000 / 1 */
   /* (10^-2 m)^2 */
-  { 1u, 0u, 30u, 0u }, /* cm^2: 1 / 10000 */
+  { 0u, 30u, UNITS_DIM_OFFSET(1u, 0u) }, /* cm^2: 1 / 10000 */
   /* (10^-3 m)^2 */
-  { 1u, 0u, 51u, 0u }, /* mm^2: 1 / 1000000 */
+  { 0u, 51u, UNITS_DIM_OFFSET(1u, 0u) }, /* mm^2: 1 / 1000000 */
   /* inch^2 */
-  { 1u, 34u, 62u, 0u }, /* in^2: 16129 / 25000000 */
+  { 34u, 62u, UNITS_DIM_OFFSET(1u, 0u) }, /* in^2: 16129 / 25000000 */
   /* ft^2 */
-  { 1u, 44u, 55u, 0u }, /* ft^2: 145161 / 1562500 */
+  { 44u, 55u, UNITS_DIM_OFFSET(1u, 0u) }, /* ft^2: 145161 / 1562500 */
   /* yd^2 */
-  { 1u, 54u, 55u, 0u }, /* yd^2: 1306449 / 1562500 */
+  { 54u, 55u, UNITS_DIM_OFFSET(1u, 0u) }, /* yd^2: 1306449 / 1562500 */
   /* mile^2 */
-  { 1u, 91u, 33u, 0u }, /* mile^2: 40468564224 / 15625 */
+  { 91u, 33u, UNITS_DIM_OFFSET(1u, 0u) }, /* mile^2: 40468564224 / 15625 */
   /* 100 are = 10^4 m^2 */
-  { 1u, 30u, 0u, 0u }, /* hectare: 10000 / 1 */
+  { 30u, 0u, UNITS_DIM_OFFSET(1u, 0u) }, /* hectare: 10000 / 1 */
   /* 100 m^2 */
-  { 1u, 7u, 0u, 0u }, /* are: 100 / 1 */
+  { 7u, 0u, UNITS_DIM_OFFSET(1u, 0u) }, /* are: 100 / 1 */
   /* international acre, 43560 ft^2 (GNU units intacre) */
-  { 1u, 74u, 40u, 0u }, /* acre: 316160658 / 78125 */
+  { 74u, 40u, UNITS_DIM_OFFSET(1u, 0u) }, /* acre: 316160658 / 78125 */
   /* volume */
   /* SI */
-  { 2u, 0u, 0u, 0u }, /* m^3: 1 / 1 */
+  { 0u, 0u, UNITS_DIM_OFFSET(2u, 0u) }, /* m^3: 1 / 1 */
   /* (10^-2 m)^3 */
-  { 2u, 0u, 51u, 0u }, /* cm^3: 1 / 1000000 */
+  { 0u, 51u, UNITS_DIM_OFFSET(2u, 0u) }, /* cm^3: 1 / 1000000 */
   /* inch^3 */
-  { 2u, 56u, 95u, 0u }, /* in^3: 2048383 / 125000000000 */
+  { 56u, 95u, UNITS_DIM_OFFSET(2u, 0u) }, /* in^3: 2048383 / 125000000000 */
   /* ft^3 */
-  { 2u, 66u, 83u, 0u }, /* ft^3: 55306341 / 1953125000 */
+  { 66u, 83u, UNITS_DIM_OFFSET(2u, 0u) }, /* ft^3: 55306341 / 1953125000 */
   /* 10^-3 m^3 (1964 definition) */
-  { 2u, 0u, 17u, 0u }, /* liter: 1 / 1000 */
+  { 0u, 17u, UNITS_DIM_OFFSET(2u, 0u) }, /* liter: 1 / 1000 */
   /* liter */
-  { 2u, 0u, 17u, 0u }, /* L: 1 / 1000 */
+  { 0u, 17u, UNITS_DIM_OFFSET(2u, 0u) }, /* L: 1 / 1000 */
   /* liter */
-  { 2u, 0u, 17u, 0u }, /* l: 1 / 1000 */
+  { 0u, 17u, UNITS_DIM_OFFSET(2u, 0u) }, /* l: 1 / 1000 */
   /* 10^-3 liter */
-  { 2u, 0u, 51u, 0u }, /* ml: 1 / 1000000 */
+  { 0u, 51u, UNITS_DIM_OFFSET(2u, 0u) }, /* ml: 1 / 1000000 */
   /* US gallon, 231 in^3 (GNU units' default, UNITS_ENGLISH=US) */
-  { 2u, 76u, 95u, 0u }, /* gallon: 473176473 / 125000000000 */
+  { 76u, 95u, UNITS_DIM_OFFSET(2u, 0u) }, /* gallon: 473176473 / 125000000000 */
   /* gallon */
-  { 2u, 76u, 95u, 0u }, /* gal: 473176473 / 125000000000 */
+  { 76u, 95u, UNITS_DIM_OFFSET(2u, 0u) }, /* gal: 473176473 / 125000000000 */
   /* 1/4 gallon */
-  { 2u, 76u, 99u, 0u }, /* quart: 473176473 / 500000000000 */
+  { 76u, 99u, UNITS_DIM_OFFSET(2u, 0u) }, /* quart: 473176473 / 500000000000 */
   /* 1/2 quart */
-  { 2u, 76u, 101u, 0u }, /* pint: 473176473 / 1000000000000 */
+  { 76u, 101u, UNITS_DIM_OFFSET(2u, 0u) }, /* pint: 473176473 / 1000000000000 */
   /* US cup, 1/2 pint */
-  { 2u, 76u, 102u, 0u }, /* cup: 473176473 / 2000000000000 */
+  { 76u, 102u, UNITS_DIM_OFFSET(2u, 0u) }, /* cup: 473176473 / 2000000000000 */
   /* US fluid ounce, 1/128 gallon */
-  { 2u, 76u, 106u, 0u }, /* floz: 473176473 / 16000000000000 */
+  /* floz: 473176473 / 16000000000000 */
+  { 76u, 106u, UNITS_DIM_OFFSET(2u, 0u) },
   /* US tablespoon, 1/2 floz */
-  { 2u, 76u, 108u, 0u }, /* tablespoon: 473176473 / 32000000000000 */
+  /* tablespoon: 473176473 / 32000000000000 */
+  { 76u, 108u, UNITS_DIM_OFFSET(2u, 0u) },
   /* US teaspoon, 1/3 tablespoon */
-  { 2u, 71u, 108u, 0u }, /* teaspoon: 157725491 / 32000000000000 */
+  /* teaspoon: 157725491 / 32000000000000 */
+  { 71u, 108u, UNITS_DIM_OFFSET(2u, 0u) },
   /* British gallon, 4.54609 liter exactly */
-  { 2u, 48u, 68u, 0u }, /* brgallon: 454609 / 100000000 */
+  { 48u, 68u, UNITS_DIM_OFFSET(2u, 0u) }, /* brgallon: 454609 / 100000000 */
   /* petroleum barrel, 42 gallon */
-  { 2u, 87u, 93u, 0u }, /* barrel: 9936705933 / 62500000000 */
+  { 87u, 93u, UNITS_DIM_OFFSET(2u, 0u) }, /* barrel: 9936705933 / 62500000000 */
   /* barrel */
-  { 2u, 87u, 93u, 0u }, /* bbl: 9936705933 / 62500000000 */
+  { 87u, 93u, UNITS_DIM_OFFSET(2u, 0u) }, /* bbl: 9936705933 / 62500000000 */
   /* mass */
   /* SI base unit (kilogram) */
-  { 3u, 0u, 0u, 0u }, /* kg: 1 / 1 */
+  { 0u, 0u, UNITS_DIM_OFFSET(3u, 0u) }, /* kg: 1 / 1 */
   /* 10^-3 kg */
-  { 3u, 0u, 17u, 0u }, /* g: 1 / 1000 */
+  { 0u, 17u, UNITS_DIM_OFFSET(3u, 0u) }, /* g: 1 / 1000 */
   /* 10^-6 kg */
-  { 3u, 0u, 51u, 0u }, /* mg: 1 / 1000000 */
+  { 0u, 51u, UNITS_DIM_OFFSET(3u, 0u) }, /* mg: 1 / 1000000 */
   /* 10^3 kg */
-  { 3u, 17u, 0u, 0u }, /* tonne: 1000 / 1 */
+  { 17u, 0u, UNITS_DIM_OFFSET(3u, 0u) }, /* tonne: 1000 / 1 */
   /* tonne */
-  { 3u, 17u, 0u, 0u }, /* t: 1000 / 1 */
+  { 17u, 0u, UNITS_DIM_OFFSET(3u, 0u) }, /* t: 1000 / 1 */
   /* avoirdupois pound, 0.45359237 kg exactly (1959) */
-  { 3u, 64u, 68u, 0u }, /* lb: 45359237 / 100000000 */
+  { 64u, 68u, UNITS_DIM_OFFSET(3u, 0u) }, /* lb: 45359237 / 100000000 */
   /* lb */
-  { 3u, 64u, 68u, 0u }, /* pound: 45359237 / 100000000 */
+  { 64u, 68u, UNITS_DIM_OFFSET(3u, 0u) }, /* pound: 45359237 / 100000000 */
   /* 1/16 lb */
-  { 3u, 64u, 82u, 0u }, /* oz: 45359237 / 1600000000 */
+  { 64u, 82u, UNITS_DIM_OFFSET(3u, 0u) }, /* oz: 45359237 / 1600000000 */
   /* 1/7000 lb */
-  { 3u, 59u, 94u, 0u }, /* grain: 6479891 / 100000000000 */
+  { 59u, 94u, UNITS_DIM_OFFSET(3u, 0u) }, /* grain: 6479891 / 100000000000 */
   /* 14 lb */
-  { 3u, 75u, 65u, 0u }, /* stone: 317514659 / 50000000 */
+  { 75u, 65u, UNITS_DIM_OFFSET(3u, 0u) }, /* stone: 317514659 / 50000000 */
   /* US short ton, 2000 lb (GNU units' default) */
-  { 3u, 64u, 39u, 0u }, /* ton: 45359237 / 50000 */
+  { 64u, 39u, UNITS_DIM_OFFSET(3u, 0u) }, /* ton: 45359237 / 50000 */
   /* 2000 lb */
-  { 3u, 64u, 39u, 0u }, /* shortton: 45359237 / 50000 */
+  { 64u, 39u, UNITS_DIM_OFFSET(3u, 0u) }, /* shortton: 45359237 / 50000 */
   /* 2240 lb */
-  { 3u, 75u, 47u, 0u }, /* longton: 317514659 / 312500 */
+  { 75u, 47u, UNITS_DIM_OFFSET(3u, 0u) }, /* longton: 317514659 / 312500 */
   /* 480 grain */
-  { 3u, 61u, 78u, 0u }, /* troyounce: 19439673 / 625000000 */
+  { 61u, 78u, UNITS_DIM_OFFSET(3u, 0u) }, /* troyounce: 19439673 / 625000000 */
   /* metric carat, 200 mg */
-  { 3u, 0u, 28u, 0u }, /* carat: 1 / 5000 */
+  { 0u, 28u, UNITS_DIM_OFFSET(3u, 0u) }, /* carat: 1 / 5000 */
   /* lbf s^2 / ft */
-  { 3u, 104u, 100u, 0u }, /* slug: 8896443230521 / 609600000000 */
+  /* slug: 8896443230521 / 609600000000 */
+  { 104u, 100u, UNITS_DIM_OFFSET(3u, 0u) },
   /* time */
   /* SI base unit (second) */
-  { 4u, 0u, 0u, 0u }, /* s: 1 / 1 */
+  { 0u, 0u, UNITS_DIM_OFFSET(4u, 0u) }, /* s: 1 / 1 */
   /* s */
-  { 4u, 0u, 0u, 0u }, /* sec: 1 / 1 */
+  { 0u, 0u, UNITS_DIM_OFFSET(4u, 0u) }, /* sec: 1 / 1 */
   /* s */
-  { 4u, 0u, 0u, 0u }, /* second: 1 / 1 */
+  { 0u, 0u, UNITS_DIM_OFFSET(4u, 0u) }, /* second: 1 / 1 */
   /* 10^-3 s */
-  { 4u, 0u, 17u, 0u }, /* ms: 1 / 1000 */
+  { 0u, 17u, UNITS_DIM_OFFSET(4u, 0u) }, /* ms: 1 / 1000 */
   /* 10^-6 s */
-  { 4u, 0u, 51u, 0u }, /* us: 1 / 1000000 */
+  { 0u, 51u, UNITS_DIM_OFFSET(4u, 0u) }, /* us: 1 / 1000000 */
   /* 10^-9 s */
-  { 4u, 0u, 79u, 0u }, /* ns: 1 / 1000000000 */
+  { 0u, 79u, UNITS_DIM_OFFSET(4u, 0u) }, /* ns: 1 / 1000000000 */
   /* 60 s */
-  { 4u, 6u, 0u, 0u }, /* min: 60 / 1 */
+  { 6u, 0u, UNITS_DIM_OFFSET(4u, 0u) }, /* min: 60 / 1 */
   /* 60 s */
-  { 4u, 6u, 0u, 0u }, /* minute: 60 / 1 */
+  { 6u, 0u, UNITS_DIM_OFFSET(4u, 0u) }, /* minute: 60 / 1 */
   /* 3600 s */
-  { 4u, 25u, 0u, 0u }, /* hr: 3600 / 1 */
+  { 25u, 0u, UNITS_DIM_OFFSET(4u, 0u) }, /* hr: 3600 / 1 */
   /* 3600 s */
-  { 4u, 25u, 0u, 0u }, /* hour: 3600 / 1 */
+  { 25u, 0u, UNITS_DIM_OFFSET(4u, 0u) }, /* hour: 3600 / 1 */
   /* 86400 s */
-  { 4u, 41u, 0u, 0u }, /* day: 86400 / 1 */
+  { 41u, 0u, UNITS_DIM_OFFSET(4u, 0u) }, /* day: 86400 / 1 */
   /* 7 day */
-  { 4u, 50u, 0u, 0u }, /* week: 604800 / 1 */
+  { 50u, 0u, UNITS_DIM_OFFSET(4u, 0u) }, /* week: 604800 / 1 */
   /* 14 day */
-  { 4u, 52u, 0u, 0u }, /* fortnight: 1209600 / 1 */
+  { 52u, 0u, UNITS_DIM_OFFSET(4u, 0u) }, /* fortnight: 1209600 / 1 */
   /* 365.25 day */
-  { 4u, 63u, 0u, 0u }, /* julianyear: 31557600 / 1 */
+  { 63u, 0u, UNITS_DIM_OFFSET(4u, 0u) }, /* julianyear: 31557600 / 1 */
   /* GNU units' year: tropicalyear, 365.242198781 day */
-  { 4u, 105u, 47u, 0u }, /* year: 9861539367087 / 312500 */
+  { 105u, 47u, UNITS_DIM_OFFSET(4u, 0u) }, /* year: 9861539367087 / 312500 */
   /* speed */
   /* SI */
-  { 5u, 0u, 0u, 0u }, /* m/s: 1 / 1 */
+  { 0u, 0u, UNITS_DIM_OFFSET(5u, 0u) }, /* m/s: 1 / 1 */
   /* km / 3600 s */
-  { 5u, 2u, 5u, 0u }, /* km/hr: 5 / 18 */
+  { 2u, 5u, UNITS_DIM_OFFSET(5u, 0u) }, /* km/hr: 5 / 18 */
   /* km/hr */
-  { 5u, 2u, 5u, 0u }, /* kph: 5 / 18 */
+  { 2u, 5u, UNITS_DIM_OFFSET(5u, 0u) }, /* kph: 5 / 18 */
   /* mile/hr */
-  { 5u, 21u, 24u, 0u }, /* mph: 1397 / 3125 */
+  { 21u, 24u, UNITS_DIM_OFFSET(5u, 0u) }, /* mph: 1397 / 3125 */
   /* nmi/hr */
-  { 5u, 12u, 16u, 0u }, /* knot: 463 / 900 */
+  { 12u, 16u, UNITS_DIM_OFFSET(5u, 0u) }, /* knot: 463 / 900 */
   /* knot */
-  { 5u, 12u, 16u, 0u }, /* knots: 463 / 900 */
+  { 12u, 16u, UNITS_DIM_OFFSET(5u, 0u) }, /* knots: 463 / 900 */
   /* ft / s */
-  { 5u, 11u, 20u, 0u }, /* ft/s: 381 / 1250 */
+  { 11u, 20u, UNITS_DIM_OFFSET(5u, 0u) }, /* ft/s: 381 / 1250 */
   /* ft/s */
-  { 5u, 11u, 20u, 0u }, /* fps: 381 / 1250 */
+  { 11u, 20u, UNITS_DIM_OFFSET(5u, 0u) }, /* fps: 381 / 1250 */
   /* ft / 60 s */
-  { 5u, 9u, 37u, 0u }, /* ft/min: 127 / 25000 */
+  { 9u, 37u, UNITS_DIM_OFFSET(5u, 0u) }, /* ft/min: 127 / 25000 */
   /* ft/min */
-  { 5u, 9u, 37u, 0u }, /* fpm: 127 / 25000 */
+  { 9u, 37u, UNITS_DIM_OFFSET(5u, 0u) }, /* fpm: 127 / 25000 */
   /* speed of light, 299 792 458 m/s exactly */
-  { 5u, 73u, 0u, 0u }, /* c: 299792458 / 1 */
+  { 73u, 0u, UNITS_DIM_OFFSET(5u, 0u) }, /* c: 299792458 / 1 */
   /* acceleration */
   /* SI */
-  { 6u, 0u, 0u, 0u }, /* m/s^2: 1 / 1 */
+  { 0u, 0u, UNITS_DIM_OFFSET(6u, 0u) }, /* m/s^2: 1 / 1 */
   /* standard gravity, 9.80665 m/s^2 exactly (CGPM 1901) */
-  { 6u, 45u, 35u, 0u }, /* gravity: 196133 / 20000 */
+  { 45u, 35u, UNITS_DIM_OFFSET(6u, 0u) }, /* gravity: 196133 / 20000 */
   /* galileo, cm/s^2 */
-  { 6u, 0u, 7u, 0u }, /* Gal: 1 / 100 */
+  { 0u, 7u, UNITS_DIM_OFFSET(6u, 0u) }, /* Gal: 1 / 100 */
   /* Gal */
-  { 6u, 0u, 7u, 0u }, /* galileo: 1 / 100 */
+  { 0u, 7u, UNITS_DIM_OFFSET(6u, 0u) }, /* galileo: 1 / 100 */
   /* ft / s^2 */
-  { 6u, 11u, 20u, 0u }, /* ft/s^2: 381 / 1250 */
+  { 11u, 20u, UNITS_DIM_OFFSET(6u, 0u) }, /* ft/s^2: 381 / 1250 */
   /* angle */
   /* SI (dimensionless, as in GNU units) */
-  { 7u, 0u, 0u, 0u }, /* radian: 1 / 1 */
+  { 0u, 0u, UNITS_DIM_OFFSET(7u, 0u) }, /* radian: 1 / 1 */
   /* pi/180 radian (pi convergent) */
-  { 7u, 70u, 85u, 0u }, /* degree: 122925461 / 7043110110 */
+  { 70u, 85u, UNITS_DIM_OFFSET(7u, 0u) }, /* degree: 122925461 / 7043110110 */
   /* degree */
-  { 7u, 70u, 85u, 0u }, /* deg: 122925461 / 7043110110 */
+  { 70u, 85u, UNITS_DIM_OFFSET(7u, 0u) }, /* deg: 122925461 / 7043110110 */
   /* degree/60 */
-  { 7u, 70u, 98u, 0u }, /* arcmin: 122925461 / 422586606600 */
+  { 70u, 98u, UNITS_DIM_OFFSET(7u, 0u) }, /* arcmin: 122925461 / 422586606600 */
   /* arcmin */
-  { 7u, 70u, 98u, 0u }, /* arcminute: 122925461 / 422586606600 */
+  /* arcminute: 122925461 / 422586606600 */
+  { 70u, 98u, UNITS_DIM_OFFSET(7u, 0u) },
   /* arcmin/60 */
-  { 7u, 70u, 107u, 0u }, /* arcsec: 122925461 / 25355196396000 */
+  /* arcsec: 122925461 / 25355196396000 */
+  { 70u, 107u, UNITS_DIM_OFFSET(7u, 0u) },
   /* arcsec */
-  { 7u, 70u, 107u, 0u }, /* arcsecond: 122925461 / 25355196396000 */
+  /* arcsecond: 122925461 / 25355196396000 */
+  { 70u, 107u, UNITS_DIM_OFFSET(7u, 0u) },
   /* 1/400 circle */
-  { 7u, 70u, 86u, 0u }, /* gon: 122925461 / 7825677900 */
+  { 70u, 86u, UNITS_DIM_OFFSET(7u, 0u) }, /* gon: 122925461 / 7825677900 */
   /* gon */
-  { 7u, 70u, 86u, 0u }, /* grade: 122925461 / 7825677900 */
+  { 70u, 86u, UNITS_DIM_OFFSET(7u, 0u) }, /* grade: 122925461 / 7825677900 */
   /* circle, 2 pi radian */
-  { 7u, 77u, 67u, 0u }, /* turn: 491701844 / 78256779 */
+  { 77u, 67u, UNITS_DIM_OFFSET(7u, 0u) }, /* turn: 491701844 / 78256779 */
   /* turn */
-  { 7u, 77u, 67u, 0u }, /* revolution: 491701844 / 78256779 */
+  { 77u, 67u, UNITS_DIM_OFFSET(7u, 0u) }, /* revolution: 491701844 / 78256779 */
   /* 2 pi radian */
-  { 7u, 77u, 67u, 0u }, /* circle: 491701844 / 78256779 */
+  { 77u, 67u, UNITS_DIM_OFFSET(7u, 0u) }, /* circle: 491701844 / 78256779 */
   /* 10^-3 radian */
-  { 7u, 0u, 17u, 0u }, /* milliradian: 1 / 1000 */
+  { 0u, 17u, UNITS_DIM_OFFSET(7u, 0u) }, /* milliradian: 1 / 1000 */
   /* angular rate */
   /* SI */
-  { 8u, 0u, 0u, 0u }, /* radian/s: 1 / 1 */
+  { 0u, 0u, UNITS_DIM_OFFSET(8u, 0u) }, /* radian/s: 1 / 1 */
   /* degree / s */
-  { 8u, 70u, 85u, 0u }, /* deg/s: 122925461 / 7043110110 */
+  { 70u, 85u, UNITS_DIM_OFFSET(8u, 0u) }, /* deg/s: 122925461 / 7043110110 */
   /* degree / s */
-  { 8u, 70u, 85u, 0u }, /* degree/s: 122925461 / 7043110110 */
+  { 70u, 85u, UNITS_DIM_OFFSET(8u, 0u) }, /* degree/s: 122925461 / 7043110110 */
   /* degree / 3600 s */
-  { 8u, 70u, 107u, 0u }, /* deg/hr: 122925461 / 25355196396000 */
+  /* deg/hr: 122925461 / 25355196396000 */
+  { 70u, 107u, UNITS_DIM_OFFSET(8u, 0u) },
   /* rev/min */
-  { 8u, 70u, 80u, 0u }, /* rpm: 122925461 / 1173851685 */
+  { 70u, 80u, UNITS_DIM_OFFSET(8u, 0u) }, /* rpm: 122925461 / 1173851685 */
   /* rev/sec */
-  { 8u, 77u, 67u, 0u }, /* rps: 491701844 / 78256779 */
+  { 77u, 67u, UNITS_DIM_OFFSET(8u, 0u) }, /* rps: 491701844 / 78256779 */
   /* frequency */
   /* 1/s */
-  { 8u, 0u, 0u, 0u }, /* Hz: 1 / 1 */
+  { 0u, 0u, UNITS_DIM_OFFSET(8u, 0u) }, /* Hz: 1 / 1 */
   /* 10^3 Hz */
-  { 8u, 17u, 0u, 0u }, /* kHz: 1000 / 1 */
+  { 17u, 0u, UNITS_DIM_OFFSET(8u, 0u) }, /* kHz: 1000 / 1 */
   /* 10^6 Hz */
-  { 8u, 51u, 0u, 0u }, /* MHz: 1000000 / 1 */
+  { 51u, 0u, UNITS_DIM_OFFSET(8u, 0u) }, /* MHz: 1000000 / 1 */
   /* 10^9 Hz */
-  { 8u, 79u, 0u, 0u }, /* GHz: 1000000000 / 1 */
+  { 79u, 0u, UNITS_DIM_OFFSET(8u, 0u) }, /* GHz: 1000000000 / 1 */
   /* force */
   /* SI (kg m/s^2) */
-  { 9u, 0u, 0u, 0u }, /* N: 1 / 1 */
+  { 0u, 0u, UNITS_DIM_OFFSET(9u, 0u) }, /* N: 1 / 1 */
   /* 10^3 N */
-  { 9u, 17u, 0u, 0u }, /* kN: 1000 / 1 */
+  { 17u, 0u, UNITS_DIM_OFFSET(9u, 0u) }, /* kN: 1000 / 1 */
   /* g cm/s^2 */
-  { 9u, 0u, 42u, 0u }, /* dyne: 1 / 100000 */
+  { 0u, 42u, UNITS_DIM_OFFSET(9u, 0u) }, /* dyne: 1 / 100000 */
   /* lb x gravity = 4.4482216152605 N exactly */
-  { 9u, 104u, 102u, 0u }, /* lbf: 8896443230521 / 2000000000000 */
+  /* lbf: 8896443230521 / 2000000000000 */
+  { 104u, 102u, UNITS_DIM_OFFSET(9u, 0u) },
   /* 1000 lbf */
-  { 9u, 104u, 84u, 0u }, /* kip: 8896443230521 / 2000000000 */
+  { 104u, 84u, UNITS_DIM_OFFSET(9u, 0u) }, /* kip: 8896443230521 / 2000000000 */
   /* ton force, 2000 lbf */
-  { 9u, 104u, 79u, 0u }, /* tonf: 8896443230521 / 1000000000 */
+  /* tonf: 8896443230521 / 1000000000 */
+  { 104u, 79u, UNITS_DIM_OFFSET(9u, 0u) },
   /* kg x gravity = 9.80665 N */
-  { 9u, 45u, 35u, 0u }, /* kgf: 196133 / 20000 */
+  { 45u, 35u, UNITS_DIM_OFFSET(9u, 0u) }, /* kgf: 196133 / 20000 */
   /* lb ft/s^2 */
-  { 9u, 89u, 95u, 0u }, /* poundal: 17281869297 / 125000000000 */
+  /* poundal: 17281869297 / 125000000000 */
+  { 89u, 95u, UNITS_DIM_OFFSET(9u, 0u) },
   /* pressure */
   /* SI (N/m^2) */
-  { 10u, 0u, 0u, 0u }, /* Pa: 1 / 1 */
+  { 0u, 0u, UNITS_DIM_OFFSET(10u, 0u) }, /* Pa: 1 / 1 */
   /* 10^2 Pa */
-  { 10u, 7u, 0u, 0u }, /* hPa: 100 / 1 */
+  { 7u, 0u, UNITS_DIM_OFFSET(10u, 0u) }, /* hPa: 100 / 1 */
   /* 10^3 Pa */
-  { 10u, 17u, 0u, 0u }, /* kPa: 1000 / 1 */
+  { 17u, 0u, UNITS_DIM_OFFSET(10u, 0u) }, /* kPa: 1000 / 1 */
   /* 10^6 Pa */
-  { 10u, 51u, 0u, 0u }, /* MPa: 1000000 / 1 */
+  { 51u, 0u, UNITS_DIM_OFFSET(10u, 0u) }, /* MPa: 1000000 / 1 */
   /* 10^5 Pa */
-  { 10u, 42u, 0u, 0u }, /* bar: 100000 / 1 */
+  { 42u, 0u, UNITS_DIM_OFFSET(10u, 0u) }, /* bar: 100000 / 1 */
   /* 10^-3 bar */
-  { 10u, 7u, 0u, 0u }, /* mbar: 100 / 1 */
+  { 7u, 0u, UNITS_DIM_OFFSET(10u, 0u) }, /* mbar: 100 / 1 */
   /* mbar */
-  { 10u, 7u, 0u, 0u }, /* millibar: 100 / 1 */
+  { 7u, 0u, UNITS_DIM_OFFSET(10u, 0u) }, /* millibar: 100 / 1 */
   /* standard atmosphere, 101325 Pa exactly */
-  { 10u, 43u, 0u, 0u }, /* atm: 101325 / 1 */
+  { 43u, 0u, UNITS_DIM_OFFSET(10u, 0u) }, /* atm: 101325 / 1 */
   /* technical atmosphere, kgf/cm^2 */
-  { 10u, 45u, 1u, 0u }, /* at: 196133 / 2 */
+  { 45u, 1u, UNITS_DIM_OFFSET(10u, 0u) }, /* at: 196133 / 2 */
   /* lbf/in^2 */
-  { 10u, 104u, 81u, 0u }, /* psi: 8896443230521 / 1290320000 */
+  /* psi: 8896443230521 / 1290320000 */
+  { 104u, 81u, UNITS_DIM_OFFSET(10u, 0u) },
   /* 1000 psi */
-  { 10u, 104u, 53u, 0u }, /* ksi: 8896443230521 / 1290320 */
+  { 104u, 53u, UNITS_DIM_OFFSET(10u, 0u) }, /* ksi: 8896443230521 / 1290320 */
   /* atm/760 */
-  { 10u, 36u, 10u, 0u }, /* torr: 20265 / 152 */
+  { 36u, 10u, UNITS_DIM_OFFSET(10u, 0u) }, /* torr: 20265 / 152 */
   /* mm x 13.5951 g/cm^3 x gravity (GNU units' Hg) */
-  { 10u, 90u, 72u, 0u }, /* mmHg: 26664477483 / 200000000 */
+  { 90u, 72u, UNITS_DIM_OFFSET(10u, 0u) }, /* mmHg: 26664477483 / 200000000 */
   /* inch x 13.5951 g/cm^3 x gravity */
-  { 10u, 103u, 79u, 0u }, /* inHg: 3386388640341 / 1000000000 */
+  /* inHg: 3386388640341 / 1000000000 */
+  { 103u, 79u, UNITS_DIM_OFFSET(10u, 0u) },
   /* energy */
   /* SI (N m) */
-  { 11u, 0u, 0u, 0u }, /* J: 1 / 1 */
+  { 0u, 0u, UNITS_DIM_OFFSET(11u, 0u) }, /* J: 1 / 1 */
   /* 10^3 J */
-  { 11u, 17u, 0u, 0u }, /* kJ: 1000 / 1 */
+  { 17u, 0u, UNITS_DIM_OFFSET(11u, 0u) }, /* kJ: 1000 / 1 */
   /* 10^6 J */
-  { 11u, 51u, 0u, 0u }, /* MJ: 1000000 / 1 */
+  { 51u, 0u, UNITS_DIM_OFFSET(11u, 0u) }, /* MJ: 1000000 / 1 */
   /* dyne cm */
-  { 11u, 0u, 60u, 0u }, /* erg: 1 / 10000000 */
+  { 0u, 60u, UNITS_DIM_OFFSET(11u, 0u) }, /* erg: 1 / 10000000 */
   /* thermochemical calorie, 4.184 J (GNU units' cal) */
-  { 11u, 13u, 8u, 0u }, /* cal: 523 / 125 */
+  { 13u, 8u, UNITS_DIM_OFFSET(11u, 0u) }, /* cal: 523 / 125 */
   /* cal */
-  { 11u, 13u, 8u, 0u }, /* calorie: 523 / 125 */
+  { 13u, 8u, UNITS_DIM_OFFSET(11u, 0u) }, /* calorie: 523 / 125 */
   /* 10^3 cal */
-  { 11u, 27u, 0u, 0u }, /* kcal: 4184 / 1 */
+  { 27u, 0u, UNITS_DIM_OFFSET(11u, 0u) }, /* kcal: 4184 / 1 */
   /* International Table calorie, 4.1868 J */
-  { 11u, 31u, 23u, 0u }, /* cal_IT: 10467 / 2500 */
+  { 31u, 23u, UNITS_DIM_OFFSET(11u, 0u) }, /* cal_IT: 10467 / 2500 */
   /* btu_IT: cal_IT x lb x degF / (g K) = 1055.05585262 J */
-  { 11u, 92u, 65u, 0u }, /* btu: 52752792631 / 50000000 */
+  { 92u, 65u, UNITS_DIM_OFFSET(11u, 0u) }, /* btu: 52752792631 / 50000000 */
   /* US therm, 105 480 400 J */
-  { 11u, 69u, 0u, 0u }, /* therm: 105480400 / 1 */
+  { 69u, 0u, UNITS_DIM_OFFSET(11u, 0u) }, /* therm: 105480400 / 1 */
   /* W x hr */
-  { 11u, 25u, 0u, 0u }, /* Wh: 3600 / 1 */
+  { 25u, 0u, UNITS_DIM_OFFSET(11u, 0u) }, /* Wh: 3600 / 1 */
   /* kW x hr */
-  { 11u, 57u, 0u, 0u }, /* kWh: 3600000 / 1 */
+  { 57u, 0u, UNITS_DIM_OFFSET(11u, 0u) }, /* kWh: 3600000 / 1 */
   /* power */
   /* SI (J/s) */
-  { 12u, 0u, 0u, 0u }, /* W: 1 / 1 */
+  { 0u, 0u, UNITS_DIM_OFFSET(12u, 0u) }, /* W: 1 / 1 */
   /* 10^3 W */
-  { 12u, 17u, 0u, 0u }, /* kW: 1000 / 1 */
+  { 17u, 0u, UNITS_DIM_OFFSET(12u, 0u) }, /* kW: 1000 / 1 */
   /* 10^6 W */
-  { 12u, 51u, 0u, 0u }, /* MW: 1000000 / 1 */
+  { 51u, 0u, UNITS_DIM_OFFSET(12u, 0u) }, /* MW: 1000000 / 1 */
   /* horsepower, 550 ft lbf / s */
-  { 12u, 111u, 109u, 0u }, /* hp: 37284993579113511 / 50000000000000 */
+  /* hp: 37284993579113511 / 50000000000000 */
+  { 111u, 109u, UNITS_DIM_OFFSET(12u, 0u) },
   /* hp */
-  { 12u, 111u, 109u, 0u }, /* horsepower: 37284993579113511 / 50000000000000 */
+  /* horsepower: 37284993579113511 / 50000000000000 */
+  { 111u, 109u, UNITS_DIM_OFFSET(12u, 0u) },
   /* 75 kgf m / s */
-  { 12u, 49u, 15u, 0u }, /* metrichorsepower: 588399 / 800 */
+  { 49u, 15u, UNITS_DIM_OFFSET(12u, 0u) }, /* metrichorsepower: 588399 / 800 */
   /* btu / 3600 s */
-  { 12u, 92u, 97u, 0u }, /* btu/hr: 52752792631 / 180000000000 */
+  /* btu/hr: 52752792631 / 180000000000 */
+  { 92u, 97u, UNITS_DIM_OFFSET(12u, 0u) },
   /* temperature */
   /* SI base unit (kelvin), absolute temperature */
-  { 13u, 0u, 0u, 0u }, /* K: 1 / 1 */
+  { 0u, 0u, UNITS_DIM_OFFSET(13u, 0u) }, /* K: 1 / 1 */
   /* K */
-  { 13u, 0u, 0u, 0u }, /* tempK: 1 / 1 */
+  { 0u, 0u, UNITS_DIM_OFFSET(13u, 0u) }, /* tempK: 1 / 1 */
   /* temperature: K = degC + 273.15 */
-  { 13u, 0u, 0u, 1u }, /* degC: 1 / 1, offset 5463 / 20 */
+  { 0u, 0u, UNITS_DIM_OFFSET(13u, 1u) }, /* degC: 1 / 1, offset 5463 / 20 */
   /* degC */
-  { 13u, 0u, 0u, 1u }, /* tempC: 1 / 1, offset 5463 / 20 */
+  { 0u, 0u, UNITS_DIM_OFFSET(13u, 1u) }, /* tempC: 1 / 1, offset 5463 / 20 */
   /* temperature: K = (degF + 459.67) x 5/9 */
-  { 13u, 2u, 4u, 2u }, /* degF: 5 / 9, offset 45967 / 100 */
+  { 2u, 4u, UNITS_DIM_OFFSET(13u, 2u) }, /* degF: 5 / 9, offset 45967 / 100 */
   /* degF */
-  { 13u, 2u, 4u, 2u }, /* tempF: 5 / 9, offset 45967 / 100 */
+  { 2u, 4u, UNITS_DIM_OFFSET(13u, 2u) }, /* tempF: 5 / 9, offset 45967 / 100 */
   /* Rankine: K = degR x 5/9 */
-  { 13u, 2u, 4u, 0u }, /* degR: 5 / 9 */
+  { 2u, 4u, UNITS_DIM_OFFSET(13u, 0u) }, /* degR: 5 / 9 */
   /* degR */
-  { 13u, 2u, 4u, 0u }, /* tempR: 5 / 9 */
+  { 2u, 4u, UNITS_DIM_OFFSET(13u, 0u) }, /* tempR: 5 / 9 */
   /* data */
   /* base unit (GNU units) */
-  { 14u, 0u, 0u, 0u }, /* bit: 1 / 1 */
+  { 0u, 0u, UNITS_DIM_OFFSET(14u, 0u) }, /* bit: 1 / 1 */
   /* 8 bit */
-  { 14u, 3u, 0u, 0u }, /* byte: 8 / 1 */
+  { 3u, 0u, UNITS_DIM_OFFSET(14u, 0u) }, /* byte: 8 / 1 */
   /* data rate */
   /* bit/s */
-  { 15u, 0u, 0u, 0u }, /* bps: 1 / 1 */
+  { 0u, 0u, UNITS_DIM_OFFSET(15u, 0u) }, /* bps: 1 / 1 */
   /* 10^3 bit/s */
-  { 15u, 17u, 0u, 0u }, /* kbps: 1000 / 1 */
+  { 17u, 0u, UNITS_DIM_OFFSET(15u, 0u) }, /* kbps: 1000 / 1 */
   /* 10^6 bit/s */
-  { 15u, 51u, 0u, 0u }, /* Mbps: 1000000 / 1 */
+  { 51u, 0u, UNITS_DIM_OFFSET(15u, 0u) }, /* Mbps: 1000000 / 1 */
   /* 10^9 bit/s */
-  { 15u, 79u, 0u, 0u }, /* Gbps: 1000000000 / 1 */
+  { 79u, 0u, UNITS_DIM_OFFSET(15u, 0u) }, /* Gbps: 1000000000 / 1 */
   /* 8 bit/s */
-  { 15u, 3u, 0u, 0u }, /* byte/s: 8 / 1 */
+  { 3u, 0u, UNITS_DIM_OFFSET(15u, 0u) }, /* byte/s: 8 / 1 */
   /* 10^3 byte/s */
-  { 15u, 29u, 0u, 0u }, /* kbyte/s: 8000 / 1 */
+  { 29u, 0u, UNITS_DIM_OFFSET(15u, 0u) }, /* kbyte/s: 8000 / 1 */
 };
 
 size_t drdc_units_count(void)
@@ -487,7 +503,7 @@ int8_t units_dimension(const drdc_unit_t *unit, size_t i)
     { 0, 0, -1, 0, 1 },
   };
 
-  return units_dimensions[unit->dimension][i];
+  return units_dimensions[units_dimension_row(unit)][i];
 }
 
 int64_t units_number(uint8_t index)
@@ -551,7 +567,7 @@ int64_t units_offset_part(const drdc_unit_t *unit, unsigned part)
     { 45967, 100 },
   };
 
-  return units_offsets[unit->offset][(part != 0u) ? 1 : 0];
+  return units_offsets[units_offset_row(unit)][(part != 0u) ? 1 : 0];
 }
 
 units_rat_t units_offset(const drdc_unit_t *unit)

@@ -56,14 +56,28 @@ drdc_status_t units_prepare(unsigned from_frac, const drdc_unit_t *from,
 
 /** One unit: indices into the tables of core/units/table.c (generated
  *  by core/units/gen_table.py); its name is the row's string in the
- *  names, in row order. Four bytes a unit instead of a pointer and four
- *  int64_t. */
+ *  names, in row order. Three bytes a unit instead of a pointer and four
+ *  int64_t: the dimension (16 rows) and offset (3 rows) share a byte. */
 struct drdc_unit {
-  uint8_t dimension;  /**< row of the dimension table */
   uint8_t factor_num; /**< factor numerator: units_number() index */
   uint8_t factor_den; /**< factor denominator: units_number() index */
-  uint8_t offset;     /**< row of the offset table, 0: linear */
+  uint8_t dim_offset; /**< UNITS_DIM_OFFSET(dimension row, offset row) */
 };
+
+/** The byte of a dimension row and an offset row (each below 16). */
+#define UNITS_DIM_OFFSET(dim, offset) ((dim) | ((offset) << 4u))
+
+/** Row of the unit's dimension in the dimension table. */
+static inline unsigned units_dimension_row(const drdc_unit_t *unit)
+{
+  return (unsigned)unit->dim_offset & 0x0Fu;
+}
+
+/** Row of the unit's offset in the offset table, 0: linear. */
+static inline unsigned units_offset_row(const drdc_unit_t *unit)
+{
+  return (unsigned)unit->dim_offset >> 4u;
+}
 
 /** The first name; the names follow each other, NUL-terminated, in the
  *  order of the rows. */
