@@ -85,7 +85,7 @@ FLASH_OPTIMISED = {
     "core/nmea/zda.c": "size",
     "core/jaus/date_stamp.c": "size",
     "core/jaus/pose_body.c": "no-invariant-motion",
-    "core/jaus/pose_messages.c": "compact-no-threading",
+    "core/jaus/pose_messages.c": "size",
     "core/jaus/scaled.c": "compact",
     "core/time/jaus_stamp.c": "size", "core/time/iso8601.c": "compact-calls",
     # unit conversion at the edge: table search and rational scale
