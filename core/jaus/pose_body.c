@@ -106,10 +106,13 @@ static int64_t field_get(const drdc_jaus_local_pose_t *local,
 }
 
 /* Store the raw value of scaled field `bit` into the body; the value lies
- * within the field's limits (and, for a local X, Y, Z, in Q15.16). */
-static void field_set(drdc_jaus_local_pose_t *local,
-                      drdc_jaus_global_pose_t *global, unsigned bit,
-                      int64_t v)
+ * within the field's limits (and, for a local X, Y, Z, in Q15.16). Out
+ * of line like field_get(): a leaf, off the deepest chain (issue 8,
+ * flash: its switch inlined was 100/120 B of drdc_jaus_body_unpack() on
+ * Cortex-M3/PowerPC). */
+static __attribute__((noinline)) void
+field_set(drdc_jaus_local_pose_t *local, drdc_jaus_global_pose_t *global,
+          unsigned bit, int64_t v)
 {
   drdc_euler_t *e = (local != NULL) ? &local->pose.e : &global->pose.e;
 
