@@ -94,10 +94,11 @@ FLASH_OPTIMISED = {
     # interpolation, frame swaps, 4x4 transforms, DH chains
     "core/orient/axis_angle.c": "size", "core/orient/quat_interp.c": "size",
     "core/orient/frames.c": "compact", "core/orient/transform.c": "compact",
-    "core/orient/dh.c": "compact-no-pre",
+    "core/orient/dh.c": "compact-no-pre", "core/orient/dcm.c": "compact",
     # fixed point without a speed goal
     "fixed/tan.c": "size-inline", "fixed/status.c": "size",
-    "fixed/fix16_interop.c": "size", "fixed/convert.c": "compact",
+    "fixed/fix16_interop.c": "size",
+    "fixed/convert.c": "compact-calls",
     "fixed/div.c": "compact-no-threading",
     "fixed/hyperbolic.c": "compact-no-pre",
     "fixed/hypot.c": "compact", "fixed/rsqrt.c": "compact",
