@@ -95,6 +95,7 @@ FLASH_OPTIMISED = {
     "core/orient/axis_angle.c": "size", "core/orient/quat_interp.c": "size",
     "core/orient/frames.c": "compact", "core/orient/transform.c": "compact",
     "core/orient/dh.c": "compact-no-pre", "core/orient/dcm.c": "compact",
+    "core/orient/quat_ops.c": "size-inline",
     # fixed point without a speed goal
     "fixed/tan.c": "size-inline", "fixed/status.c": "size",
     "fixed/fix16_interop.c": "size",
