@@ -102,7 +102,7 @@ typedef struct drdc_vec3_q47_16 {
 #define DRDC_ORIENT_Q47_16_MAX (INT64_C(1) << 55)
 
 /* ---------------------------------------------------------------- */
-/** @name Quaternion algebra (quat.c)
+/** @name Quaternion algebra (quat.c, quat_ops.c, quat_rotate*.c)
  *  @{ */
 
 /**
