@@ -97,6 +97,7 @@ FLASH_OPTIMISED = {
     "core/orient/dh.c": "compact-no-pre", "core/orient/dcm.c": "compact",
     "core/orient/quat_ops.c": "size-inline",
     "core/orient/quat_rotate_q47_16.c": "compact-no-threading",
+    "core/orient/euler_dcm.c": "size",
     # fixed point without a speed goal
     "fixed/tan.c": "size-inline", "fixed/status.c": "size",
     "fixed/fix16_interop.c": "size",

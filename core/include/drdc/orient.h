@@ -297,7 +297,7 @@ drdc_status_t drdc_quat_angle_between(const drdc_quat_t *a,
 /** @} */
 
 /* ---------------------------------------------------------------- */
-/** @name Conversions (euler.c, dcm.c, axis_angle.c)
+/** @name Conversions (euler*.c, dcm.c, axis_angle.c)
  *  @{ */
 
 /**
