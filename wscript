@@ -90,7 +90,8 @@ FLASH_OPTIMISED = {
     # time off the GPS/UTC path: RTEMS and Unix epochs, weekday, calculus
     "core/time/rtems.c": "size", "core/time/unix.c": "compact",
     "core/time/weekday.c": "compact", "core/time/calculus.c": "compact",
-    "core/time/utc_civil.c": "size",
+    "core/time/utc_civil.c": "size", "core/time/leap_update.c": "size",
+    "core/time/gps_week.c": "size",
     # orientation beyond multiply, rotate and Euler: axis-angle,
     # interpolation, frame swaps, 4x4 transforms, DH chains
     "core/orient/axis_angle.c": "size", "core/orient/quat_interp.c": "size",
