@@ -107,6 +107,7 @@ FLASH_OPTIMISED = {
     "fixed/div.c": "compact-no-threading",
     "fixed/hyperbolic.c": "compact-no-pre",
     "fixed/hypot.c": "compact", "fixed/rsqrt.c": "compact",
+    "fixed/muldiv_s32.c": "size-inline",
     # geodesy off the drdc_geo_to_utm path (tm.c, utm.c, ups.c and
     # geo_math.c keep -O2 for its goal): ECEF, ENU and NED, MGRS text,
     # the pose conversions. Measured on the code of issue 8's fourth
