@@ -64,7 +64,7 @@ FOR_FLASH = {
                              "-fno-tree-ch", "-fno-tree-pre",
                              "-fno-thread-jumps"],
     # and small helpers called rather than copied into each caller, where
-    # that costs no stack (the digit helpers of ISO 8601 text)
+    # that costs no stack (the conversion helpers of fixed/convert.c)
     "compact-calls": ["-freorder-blocks-algorithm=simple", "-fno-tree-ch",
                       "-fno-inline-small-functions"],
 }
@@ -82,13 +82,13 @@ FLASH_OPTIMISED = {
     "core/jaus/date_stamp.c": "size",
     "core/jaus/pose_messages.c": "compact-no-threading",
     "core/jaus/scaled.c": "compact",
-    "core/time/jaus_stamp.c": "size", "core/time/iso8601.c": "compact-calls",
+    "core/time/jaus_stamp.c": "size", "core/time/iso8601.c": "size",
     # unit conversion at the edge: table search and rational scale
     "core/units/convert.c": "size", "core/units/find.c": "size",
     "core/units/rational.c": "compact-no-threading",
     "core/units/scale.c": "compact-no-pre",
     # time off the GPS/UTC path: RTEMS and Unix epochs, weekday, calculus
-    "core/time/rtems.c": "size", "core/time/unix.c": "compact",
+    "core/time/rtems.c": "size", "core/time/unix.c": "size",
     "core/time/weekday.c": "compact", "core/time/calculus.c": "compact",
     "core/time/utc_civil.c": "size", "core/time/leap_update.c": "size",
     "core/time/gps_week.c": "size",
