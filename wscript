@@ -89,7 +89,7 @@ FLASH_OPTIMISED = {
     "core/units/scale.c": "compact-no-pre",
     # time off the GPS/UTC path: RTEMS and Unix epochs, weekday, calculus
     "core/time/rtems.c": "size", "core/time/unix.c": "size",
-    "core/time/weekday.c": "compact", "core/time/calculus.c": "compact",
+    "core/time/weekday.c": "size", "core/time/calculus.c": "compact",
     "core/time/utc_civil.c": "size", "core/time/leap_update.c": "size",
     "core/time/gps_week.c": "size",
     # orientation beyond multiply, rotate and Euler: axis-angle,
