@@ -95,7 +95,8 @@ FLASH_OPTIMISED = {
     # orientation beyond multiply, rotate and Euler: axis-angle,
     # interpolation, frame swaps, 4x4 transforms, DH chains
     "core/orient/axis_angle.c": "size", "core/orient/quat_interp.c": "size",
-    "core/orient/frames.c": "compact", "core/orient/transform.c": "compact",
+    "core/orient/frames.c": "size-inline",
+    "core/orient/transform.c": "compact",
     "core/orient/dh.c": "compact-no-pre", "core/orient/dcm.c": "compact",
     "core/orient/quat_ops.c": "size-inline",
     "core/orient/quat_rotate_q47_16.c": "compact-no-threading",
