@@ -64,7 +64,7 @@ FOR_FLASH = {
                              "-fno-tree-ch", "-fno-tree-pre",
                              "-fno-thread-jumps"],
     # and small helpers called rather than copied into each caller, where
-    # that costs no stack (the digit helpers of ISO 8601 text)
+    # that costs no stack (the conversion helpers of fixed/convert.c)
     "compact-calls": ["-freorder-blocks-algorithm=simple", "-fno-tree-ch",
                       "-fno-inline-small-functions"],
     # -O2 but a loop-invariant address (a table's) computed again in the
@@ -87,25 +87,33 @@ FLASH_OPTIMISED = {
     "core/jaus/pose_body.c": "no-invariant-motion",
     "core/jaus/pose_messages.c": "size",
     "core/jaus/scaled.c": "compact",
-    "core/time/jaus_stamp.c": "size", "core/time/iso8601.c": "compact-calls",
+    "core/time/jaus_stamp.c": "size", "core/time/iso8601.c": "size",
     # unit conversion at the edge: table search and rational scale
     "core/units/convert.c": "size", "core/units/find.c": "size",
     "core/units/rational.c": "compact-no-threading",
     "core/units/scale.c": "compact-no-pre",
     # time off the GPS/UTC path: RTEMS and Unix epochs, weekday, calculus
-    "core/time/rtems.c": "size", "core/time/unix.c": "compact",
-    "core/time/weekday.c": "compact", "core/time/calculus.c": "compact",
+    "core/time/rtems.c": "size", "core/time/unix.c": "size",
+    "core/time/weekday.c": "size", "core/time/calculus.c": "compact",
+    "core/time/utc_civil.c": "size", "core/time/leap_update.c": "size",
+    "core/time/gps_week.c": "size",
     # orientation beyond multiply, rotate and Euler: axis-angle,
     # interpolation, frame swaps, 4x4 transforms, DH chains
     "core/orient/axis_angle.c": "size", "core/orient/quat_interp.c": "size",
-    "core/orient/frames.c": "compact", "core/orient/transform.c": "compact",
-    "core/orient/dh.c": "compact-no-pre",
+    "core/orient/frames.c": "size-inline",
+    "core/orient/transform.c": "compact",
+    "core/orient/dh.c": "compact-no-pre", "core/orient/dcm.c": "compact",
+    "core/orient/quat_ops.c": "size-inline",
+    "core/orient/quat_rotate_q47_16.c": "compact-no-threading",
+    "core/orient/euler_dcm.c": "size",
     # fixed point without a speed goal
     "fixed/tan.c": "size-inline", "fixed/status.c": "size",
-    "fixed/fix16_interop.c": "size", "fixed/convert.c": "compact",
+    "fixed/fix16_interop.c": "size",
+    "fixed/convert.c": "compact-calls",
     "fixed/div.c": "compact-no-threading",
     "fixed/hyperbolic.c": "compact-no-pre",
     "fixed/hypot.c": "compact", "fixed/rsqrt.c": "compact",
+    "fixed/muldiv_s32.c": "size-inline",
     # geodesy off the drdc_geo_to_utm path (tm.c, utm.c, ups.c and
     # geo_math.c keep -O2 for its goal): ECEF, ENU and NED, MGRS text,
     # the pose conversions. Measured on the code of issue 8's fourth

@@ -18,6 +18,14 @@
 #include <drdc/fixed_wide.h>
 #include <drdc/status.h>
 
+/** 1 when the quotient a * b / c is negative: an odd count of negative
+ *  operands (muldiv.c, muldiv_s32.c). */
+static inline int fx_quotient_negative(int a_negative, int b_negative,
+                                       int c_negative)
+{
+  return (a_negative + b_negative + c_negative) & 1;
+}
+
 /** |x| of an int32_t as uint32_t; exact for INT32_MIN (2^31). */
 static inline uint32_t fx_abs32(int32_t x)
 {

@@ -101,7 +101,10 @@ static uint64_t sinh_cosh_mag(uint64_t x, int plus)
   return n.lo;
 }
 
-drdc_status_t drdc_fx_sinh_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
+/* *out = sinh(x) (plus == 0) or cosh(x) (plus == 1): one body for the
+ * two public entries, which call it as their last step. */
+static __attribute__((noinline)) drdc_status_t
+sinh_cosh(drdc_q5_58_t x, int plus, drdc_q5_58_t *out)
 {
   uint64_t r;
 
@@ -111,30 +114,23 @@ drdc_status_t drdc_fx_sinh_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
   if ((x > EXP_ARG_MAX) || (x < -EXP_ARG_MAX)) {
     return DRDC_E_OVERFLOW;
   }
-  r = sinh_cosh_mag(fx_abs64(x), 0);
+  r = sinh_cosh_mag(fx_abs64(x), plus);
   if (r == SINH_COSH_OVERFLOW) {
     return DRDC_E_OVERFLOW;
   }
-  *out = (x < 0) ? -(int64_t)r : (int64_t)r;
+  /* sinh is odd, cosh even */
+  *out = ((plus == 0) && (x < 0)) ? -(int64_t)r : (int64_t)r;
   return DRDC_OK;
+}
+
+drdc_status_t drdc_fx_sinh_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
+{
+  return sinh_cosh(x, 0, out);
 }
 
 drdc_status_t drdc_fx_cosh_q5_58(drdc_q5_58_t x, drdc_q5_58_t *out)
 {
-  uint64_t r;
-
-  if (out == NULL) {
-    return DRDC_E_NULL;
-  }
-  if ((x > EXP_ARG_MAX) || (x < -EXP_ARG_MAX)) {
-    return DRDC_E_OVERFLOW;
-  }
-  r = sinh_cosh_mag(fx_abs64(x), 1);
-  if (r == SINH_COSH_OVERFLOW) {
-    return DRDC_E_OVERFLOW;
-  }
-  *out = (int64_t)r;
-  return DRDC_OK;
+  return sinh_cosh(x, 1, out);
 }
 
 /* atanh(s) in Q62 for |s| <= 0.1716 (magnitude; the sign is the caller's):

@@ -51,6 +51,7 @@ static drdc_status_t tan_bam32(drdc_bam32_t a, int sat, drdc_q15_16_t *out)
   uint64_t den = ((q & 1u) != 0u) ? s : c;
   fx_u128_t n;
   uint64_t t = 0;
+  uint32_t pole;
   int too_big;
 
   if (out == NULL) {
@@ -59,9 +60,10 @@ static drdc_status_t tan_bam32(drdc_bam32_t a, int sat, drdc_q15_16_t *out)
   if (den == 0u) {
     return DRDC_E_DOMAIN;
   }
-  if ((((q & 1u) == 0u) && ((FX_BAM_QUARTER - r) < COT_LIMIT))
-      || (((q & 1u) != 0u) && (r < COT_LIMIT))) {
-    t = cot_near_pole(((q & 1u) != 0u) ? r : (FX_BAM_QUARTER - r));
+  /* the distance from the pole: the denominator's kernel argument */
+  pole = ((q & 1u) != 0u) ? r : (FX_BAM_QUARTER - r);
+  if (pole < COT_LIMIT) {
+    t = cot_near_pole(pole);
     return fx_finish_s32((q & 1u) != 0u, t, sat, out);
   }
   /* num 2^16 / den, num < 2^63: the dividend has 79 bits */

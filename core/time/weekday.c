@@ -11,8 +11,19 @@
 
 int32_t drdc_time_day_of_week(int32_t days)
 {
-  /* int64 so that days + 4 cannot overflow at INT32_MAX. */
-  return (int32_t)drdc_time_floor_mod((int64_t)days + WEEKDAY_OF_EPOCH, 7);
+  /* floor_mod(days + 4, 7) in int32 (days + 4 could overflow at
+   * INT32_MAX): the remainder of days corrected into [0, 7) first, so
+   * no 64-bit division (a libgcc call at -Os) is needed. */
+  int32_t w = days % 7;
+
+  if (w < 0) {
+    w += 7;
+  }
+  w += WEEKDAY_OF_EPOCH;
+  if (w >= 7) {
+    w -= 7;
+  }
+  return w;
 }
 
 drdc_status_t drdc_time_day_of_year(int32_t year, int32_t month, int32_t day,

@@ -269,6 +269,11 @@ static void test_day_of_week_and_year(void)
   TEST_ASSERT_EQUAL_INT32(6, drdc_time_day_of_week(10957));  /* 2000-01-01 */
   TEST_ASSERT_EQUAL_INT32(1, drdc_time_day_of_week(DRDC_TIME_DAYS_MIN)); /* Monday */
   TEST_ASSERT_EQUAL_INT32(5, drdc_time_day_of_week(INT32_MAX));
+  /* a negative remainder corrected, then the epoch's 4 wrapped or not */
+  TEST_ASSERT_EQUAL_INT32(2, drdc_time_day_of_week(INT32_MIN));
+  TEST_ASSERT_EQUAL_INT32(4, drdc_time_day_of_week(-7));
+  TEST_ASSERT_EQUAL_INT32(3, drdc_time_day_of_week(-8));
+  TEST_ASSERT_EQUAL_INT32(0, drdc_time_day_of_week(3));
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_time_day_of_year(2024, 12, 31, &yday));
   TEST_ASSERT_EQUAL_INT32(366, yday);
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_time_day_of_year(2023, 12, 31, &yday));

@@ -102,7 +102,7 @@ typedef struct drdc_vec3_q47_16 {
 #define DRDC_ORIENT_Q47_16_MAX (INT64_C(1) << 55)
 
 /* ---------------------------------------------------------------- */
-/** @name Quaternion algebra (quat.c)
+/** @name Quaternion algebra (quat.c, quat_ops.c, quat_rotate*.c)
  *  @{ */
 
 /**
@@ -297,7 +297,7 @@ drdc_status_t drdc_quat_angle_between(const drdc_quat_t *a,
 /** @} */
 
 /* ---------------------------------------------------------------- */
-/** @name Conversions (euler.c, dcm.c, axis_angle.c)
+/** @name Conversions (euler*.c, dcm.c, axis_angle.c)
  *  @{ */
 
 /**
