@@ -34,9 +34,7 @@ drdc_status_t drdc_dcm_from_quat(const drdc_quat_t *q, drdc_dcm_t *out)
   }
   /* n2 in [2^58, 2^62]: normalised by z = 1..5; one reciprocal for the
    * nine divisions p 2^30 / n2 (|p| <= n2: quotients within 2^30) */
-  z = (unsigned)__builtin_clzll((uint64_t)sq.n2);
-  dn = (uint64_t)sq.n2 << z;
-  rcp = drdc_fx_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
+  rcp = orient_row_divisor(sq.n2, &dn, &z);
   for (i = 0u; i < 3u; i++) {
     drdc_orient_impl_numerator_row(sq.c, i, row);
     for (j = 0u; j < 3u; j++) {

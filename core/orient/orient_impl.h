@@ -116,6 +116,18 @@ static inline uint32_t orient_q60_round_bits(int64_t v, uint32_t *ovf)
   return (uint32_t)(u >> 30u);
 }
 
+/** The divisor n2 of the numerator rows (in [2^58, 2^62]) normalised
+ *  for drdc_fx_div_3by2(): *dn = n2 2^z with bit 63 set (z = 1..5 into
+ *  *z), and its reciprocal returned; one for the nine divisions of a
+ *  matrix. */
+static inline uint32_t orient_row_divisor(int64_t n2, uint64_t *dn,
+                                          unsigned *z)
+{
+  *z = (unsigned)__builtin_clzll((uint64_t)n2);
+  *dn = (uint64_t)n2 << *z;
+  return drdc_fx_reciprocal_3by2((uint32_t)(*dn >> 32u), (uint32_t)*dn);
+}
+
 /** Row i of the exact Q60 numerators p of R(c) for the scaled quaternion
  * c (R(c / |c|) = p / n2, |p| <= n2 <= 2^62), one row at a time so that
  * the whole matrix never sits on the stack. */

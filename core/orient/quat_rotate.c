@@ -117,10 +117,8 @@ drdc_status_t drdc_quat_rotate_q15_16(const drdc_quat_t *q,
   if (st != DRDC_OK) {
     return st;
   }
-  /* n2 in [2^58, 2^62]: normalised by z = 1..5 so that bit 63 is set */
-  z = (unsigned)__builtin_clzll((uint64_t)sq.n2);
-  dn = (uint64_t)sq.n2 << z;
-  rcp = drdc_fx_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
+  /* n2 in [2^58, 2^62] normalised, its reciprocal */
+  rcp = orient_row_divisor(sq.n2, &dn, &z);
   for (i = 0u; i < 3u; i++) {
     drdc_orient_impl_numerator_row(sq.c, i, row);
     if (rotate_part_q15_16(row, v, dn, z, rcp, &res[i]) != 0) {

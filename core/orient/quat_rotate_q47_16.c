@@ -42,9 +42,7 @@ static drdc_status_t rotate(const drdc_quat_t *q, const int64_t in[3],
   if (st != DRDC_OK) {
     return st;
   }
-  z = (unsigned)__builtin_clzll((uint64_t)sq.n2);
-  dn = (uint64_t)sq.n2 << z;
-  rcp = drdc_fx_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
+  rcp = orient_row_divisor(sq.n2, &dn, &z);
   for (i = 0u; i < 3u; i++) {
     int64_t s = 0;
 
