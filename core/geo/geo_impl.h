@@ -221,6 +221,55 @@ int64_t geo_ups_q36(int64_t a);
  *  projection (for MGRS) keeps easting and northing in Q28.36 metres. */
 #define GEO_ZONE_Q36 ((int32_t)256)
 
+/** Metres in Q47.16. */
+#define GEO_METRES(v) ((int64_t)(v) * INT64_C(65536))
+
+/** GeoConvert's UTM coordinate limits (UTMUPS::CheckCoords, including its
+ *  100 km slop), metres; the forward projection checks its result and the
+ *  reverse its input against the same ones. */
+#define GEO_UTM_E_MIN GEO_METRES(0)
+#define GEO_UTM_E_MAX GEO_METRES(1000000)
+#define GEO_UTM_N_NORTH_MIN GEO_METRES(-9100000)
+#define GEO_UTM_N_NORTH_MAX GEO_METRES(9600000)
+#define GEO_UTM_N_SOUTH_MIN GEO_METRES(900000)
+#define GEO_UTM_N_SOUTH_MAX GEO_METRES(19600000)
+#define GEO_UTM_FALSE_EASTING GEO_METRES(500000)
+#define GEO_UTM_FALSE_NORTHING_SOUTH GEO_METRES(10000000)
+
+/** GeoConvert's UPS limits (100 km slop included), metres; the same for
+ *  easting and northing. */
+#define GEO_UPS_NORTH_MIN GEO_METRES(1200000)
+#define GEO_UPS_NORTH_MAX GEO_METRES(2800000)
+#define GEO_UPS_SOUTH_MIN GEO_METRES(700000)
+#define GEO_UPS_SOUTH_MAX GEO_METRES(3300000)
+#define GEO_UPS_FALSE_ORIGIN GEO_METRES(2000000)
+
+/** A UPS easting or northing (Q47.16) within the limits of its
+ *  hemisphere. */
+static inline bool geo_ups_in_range(bool north, drdc_q47_16_t v)
+{
+  return north ? ((v >= GEO_UPS_NORTH_MIN) && (v <= GEO_UPS_NORTH_MAX))
+               : ((v >= GEO_UPS_SOUTH_MIN) && (v <= GEO_UPS_SOUTH_MAX));
+}
+
+/** lon (nas) reduced to [-180, 180) degrees. */
+static inline drdc_nas_t geo_lon_normalize(drdc_nas_t lon)
+{
+  drdc_nas_t turn = 360 * GEO_NAS_DEG;
+  drdc_nas_t r = (lon + (180 * GEO_NAS_DEG)) % turn;
+
+  if (r < 0) {
+    r = r + turn;
+  }
+  return r - (180 * GEO_NAS_DEG);
+}
+
+/** Central meridian of a UTM zone (1..60), nas. */
+static inline drdc_nas_t geo_central_meridian(int32_t zone)
+{
+  return ((6 * (int64_t)zone) - 183) * GEO_NAS_DEG;
+}
+
 /** The last step of drdc_pose_w_from_wutm() (u) and
  *  drdc_pose_w_from_wmgrs() (m, u NULL), in utm.c, after the reverse
  *  projection: the attitude of u or m turned from grid to true north by

@@ -16,31 +16,9 @@
 
 #include "geo_impl.h"
 
-/* Metres in Q47.16. */
-#define M(v) ((int64_t)(v) * INT64_C(65536))
-
 /** Latitude limits of the UTM zones (UPS beyond): [-80, 84) degrees. */
 #define UTM_LAT_MIN (INT64_C(-80) * GEO_NAS_DEG)
 #define UTM_LAT_MAX (INT64_C(84) * GEO_NAS_DEG)
-
-/** GeoConvert's UTM coordinate limits (UTMUPS::CheckCoords, including its
- *  100 km slop), metres. */
-#define UTM_E_MIN M(0)
-#define UTM_E_MAX M(1000000)
-#define UTM_N_NORTH_MIN M(-9100000)
-#define UTM_N_NORTH_MAX M(9600000)
-#define UTM_N_SOUTH_MIN M(900000)
-#define UTM_N_SOUTH_MAX M(19600000)
-#define UTM_FALSE_EASTING M(500000)
-#define UTM_FALSE_NORTHING_SOUTH M(10000000)
-
-/** GeoConvert's UPS limits (100 km slop included), metres; the same for
- *  easting and northing. */
-#define UPS_NORTH_MIN M(1200000)
-#define UPS_NORTH_MAX M(2800000)
-#define UPS_SOUTH_MIN M(700000)
-#define UPS_SOUTH_MAX M(3300000)
-#define UPS_FALSE_ORIGIN M(2000000)
 
 /* Q47.16 metres -> Q28.36 (exact for the false origins used here). */
 #define Q36_FROM_Q16(v) ((v) * INT64_C(1048576))
@@ -59,18 +37,6 @@ static drdc_status_t check_lat_lon(drdc_nas_t lat, drdc_nas_t lon)
   return DRDC_OK;
 }
 
-/* lon reduced to [-180, 180) degrees */
-static drdc_nas_t lon_normalize(drdc_nas_t lon)
-{
-  drdc_nas_t turn = 360 * GEO_NAS_DEG;
-  drdc_nas_t r = (lon + (180 * GEO_NAS_DEG)) % turn;
-
-  if (r < 0) {
-    r = r + turn;
-  }
-  return r - (180 * GEO_NAS_DEG);
-}
-
 /* standard zone of a validated point (0: UPS) */
 static int32_t standard_zone(drdc_nas_t lat, drdc_nas_t lon)
 {
@@ -81,7 +47,7 @@ static int32_t standard_zone(drdc_nas_t lat, drdc_nas_t lon)
   if ((lat >= UTM_LAT_MAX) || (lat < UTM_LAT_MIN)) {
     return 0;
   }
-  ilon = geo_floor_div(lon_normalize(lon), GEO_NAS_DEG);
+  ilon = geo_floor_div(geo_lon_normalize(lon), GEO_NAS_DEG);
   zone = (ilon + 186) / 6;
   band = geo_floor_div(lat, 8 * GEO_NAS_DEG);
   if (band > 9) {
@@ -111,12 +77,6 @@ drdc_status_t drdc_geo_utm_zone(drdc_nas_t lat, drdc_nas_t lon,
   }
   *zone = standard_zone(lat, lon);
   return DRDC_OK;
-}
-
-/* central meridian of a zone, nas */
-static drdc_nas_t central_meridian(int32_t zone)
-{
-  return ((6 * (int64_t)zone) - 183) * GEO_NAS_DEG;
 }
 
 /* an angle on the sphere of radius k0 A (Q5.58) -> metres (Q28.36,
@@ -165,10 +125,10 @@ forward_args(int32_t zone, const void *out, geo_tm_t *tm)
     return -(int32_t)DRDC_E_ZONE;
   }
   if (z == DRDC_GEO_ZONE_UPS) {
-    lon = lon_normalize(lon);
+    lon = geo_lon_normalize(lon);
   } else {
     /* |dlon| <= 180 degrees; the series' domain ends at 90 */
-    lon = lon_normalize(lon - central_meridian(z));
+    lon = geo_lon_normalize(lon - geo_central_meridian(z));
     if ((lon > (90 * GEO_NAS_DEG)) || (lon < (-90 * GEO_NAS_DEG))) {
       return -(int32_t)DRDC_E_RANGE;
     }
@@ -176,12 +136,6 @@ forward_args(int32_t zone, const void *out, geo_tm_t *tm)
   tm->xi = geo_rad_from_nas(lat);
   tm->eta = geo_rad_from_nas(lon);
   return z + fine + ((lat < 0) ? CODE_SOUTH : 0);
-}
-
-static bool ups_in_range(bool north, drdc_q47_16_t v)
-{
-  return north ? ((v >= UPS_NORTH_MIN) && (v <= UPS_NORTH_MAX))
-               : ((v >= UPS_SOUTH_MIN) && (v <= UPS_SOUTH_MAX));
 }
 
 /* UPS forward of phi, lam in tm->xi, tm->eta (forward_args(), whose
@@ -208,15 +162,15 @@ ups_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
   /* Q28.36 offsets in tm's slots; the Q47.16 metres for the checks */
   tm->xi = geo_ups_q36(tm->xi);
   tm->eta = geo_ups_q36(tm->eta);
-  e = UPS_FALSE_ORIGIN + drdc_fx_rshift_round_s64(tm->xi, 20u);
-  n = UPS_FALSE_ORIGIN + drdc_fx_rshift_round_s64(tm->eta, 20u);
-  if (!ups_in_range(north, e) || !ups_in_range(north, n)) {
+  e = GEO_UPS_FALSE_ORIGIN + drdc_fx_rshift_round_s64(tm->xi, 20u);
+  n = GEO_UPS_FALSE_ORIGIN + drdc_fx_rshift_round_s64(tm->eta, 20u);
+  if (!geo_ups_in_range(north, e) || !geo_ups_in_range(north, n)) {
     return DRDC_E_RANGE;
   }
   out->zone = DRDC_GEO_ZONE_UPS;
   out->north = north;
-  out->easting = fine ? (Q36_FROM_Q16(UPS_FALSE_ORIGIN) + tm->xi) : e;
-  out->northing = fine ? (Q36_FROM_Q16(UPS_FALSE_ORIGIN) + tm->eta) : n;
+  out->easting = fine ? (Q36_FROM_Q16(GEO_UPS_FALSE_ORIGIN) + tm->xi) : e;
+  out->northing = fine ? (Q36_FROM_Q16(GEO_UPS_FALSE_ORIGIN) + tm->eta) : n;
   return DRDC_OK;
 }
 
@@ -238,22 +192,22 @@ utm_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
    * away from zero, which the rounding of the sum would not) */
   tm->eta = q36_from_angle(tm->eta);
   tm->xi = q36_from_angle(tm->xi);
-  e = UTM_FALSE_EASTING + drdc_fx_rshift_round_s64(tm->eta, 20u);
+  e = GEO_UTM_FALSE_EASTING + drdc_fx_rshift_round_s64(tm->eta, 20u);
   n = drdc_fx_rshift_round_s64(tm->xi, 20u);
   if (!north) {
-    n = n + UTM_FALSE_NORTHING_SOUTH;
-    tm->xi = tm->xi + Q36_FROM_Q16(UTM_FALSE_NORTHING_SOUTH);
+    n = n + GEO_UTM_FALSE_NORTHING_SOUTH;
+    tm->xi = tm->xi + Q36_FROM_Q16(GEO_UTM_FALSE_NORTHING_SOUTH);
   }
-  if ((e < UTM_E_MIN) || (e > UTM_E_MAX)) {
+  if ((e < GEO_UTM_E_MIN) || (e > GEO_UTM_E_MAX)) {
     return DRDC_E_RANGE;
   }
-  if (north ? ((n < UTM_N_NORTH_MIN) || (n > UTM_N_NORTH_MAX))
-            : ((n < UTM_N_SOUTH_MIN) || (n > UTM_N_SOUTH_MAX))) {
+  if (north ? ((n < GEO_UTM_N_NORTH_MIN) || (n > GEO_UTM_N_NORTH_MAX))
+            : ((n < GEO_UTM_N_SOUTH_MIN) || (n > GEO_UTM_N_SOUTH_MAX))) {
     return DRDC_E_RANGE;
   }
   out->zone = code % GEO_ZONE_Q36;
   out->north = north;
-  out->easting = fine ? (Q36_FROM_Q16(UTM_FALSE_EASTING) + tm->eta) : e;
+  out->easting = fine ? (Q36_FROM_Q16(GEO_UTM_FALSE_EASTING) + tm->eta) : e;
   out->northing = fine ? tm->xi : n;
   return DRDC_OK;
 }
@@ -586,25 +540,25 @@ reverse_args(int32_t code, geo_tm_t *tm)
   drdc_q47_16_t n = tm->xi;
 
   if ((code % CODE_SOUTH) == DRDC_GEO_ZONE_UPS) {
-    if (!ups_in_range(north, tm->eta)) {
+    if (!geo_ups_in_range(north, tm->eta)) {
       return DRDC_E_EASTING;
     }
-    if (!ups_in_range(north, n)) {
+    if (!geo_ups_in_range(north, n)) {
       return DRDC_E_NORTHING;
     }
-    tm->xi = tm->eta - UPS_FALSE_ORIGIN;
-    tm->eta = n - UPS_FALSE_ORIGIN;
+    tm->xi = tm->eta - GEO_UPS_FALSE_ORIGIN;
+    tm->eta = n - GEO_UPS_FALSE_ORIGIN;
     return DRDC_OK;
   }
-  if ((tm->eta < UTM_E_MIN) || (tm->eta > UTM_E_MAX)) {
+  if ((tm->eta < GEO_UTM_E_MIN) || (tm->eta > GEO_UTM_E_MAX)) {
     return DRDC_E_EASTING;
   }
-  if (north ? ((n < UTM_N_NORTH_MIN) || (n > UTM_N_NORTH_MAX))
-            : ((n < UTM_N_SOUTH_MIN) || (n > UTM_N_SOUTH_MAX))) {
+  if (north ? ((n < GEO_UTM_N_NORTH_MIN) || (n > GEO_UTM_N_NORTH_MAX))
+            : ((n < GEO_UTM_N_SOUTH_MIN) || (n > GEO_UTM_N_SOUTH_MAX))) {
     return DRDC_E_NORTHING;
   }
-  tm->xi = angle_from_metres(north ? n : (n - UTM_FALSE_NORTHING_SOUTH));
-  tm->eta = angle_from_metres(tm->eta - UTM_FALSE_EASTING);
+  tm->xi = angle_from_metres(north ? n : (n - GEO_UTM_FALSE_NORTHING_SOUTH));
+  tm->eta = angle_from_metres(tm->eta - GEO_UTM_FALSE_EASTING);
   return DRDC_OK;
 }
 
@@ -640,7 +594,7 @@ reverse_angles(int32_t code, geo_tm_t *tm, drdc_nas_t *lat, drdc_nas_t *lon)
     a = geo_nas_from_rad(tm->eta);
     *lon = (zone == DRDC_GEO_ZONE_UPS)
              ? a
-             : lon_normalize(central_meridian(zone) + a);
+             : geo_lon_normalize(geo_central_meridian(zone) + a);
   }
   return DRDC_OK;
 }
