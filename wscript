@@ -114,8 +114,9 @@ FLASH_OPTIMISED = {
     "fixed/hyperbolic.c": "compact-no-pre",
     "fixed/hypot.c": "compact", "fixed/rsqrt.c": "compact",
     "fixed/muldiv_s32.c": "size-inline",
-    # geodesy off the drdc_geo_to_utm path (tm.c, utm.c, ups.c and
-    # geo_math.c keep -O2 for its goal): ECEF, ENU and NED, MGRS text,
+    # geodesy off the drdc_geo_to_utm path (tm.c, utm_forward.c, ups.c
+    # and geo_math.c keep -O2 for its goal, utm_reverse.c for the timed
+    # drdc_geo_from_utm): ECEF, ENU and NED, MGRS text,
     # the pose conversions. Measured on the code of issue 8's fourth
     # stack round: plain -Os grew the ECEF, MGRS-decode and local-pose
     # stacks (by 8-32 B, two poses over 256 B), size-inline the poses'

@@ -202,7 +202,9 @@ drdc_status_t geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,
 
 /** Added to a zone (0..60) for the southern hemisphere: the code of a
  *  grid position that geo_mgrs_decode_tm() returns and the reverse
- *  projections of utm.c take (and, with GEO_ZONE_Q36, the forward's). */
+ *  projections of utm_reverse.c take; the forward projection of
+ *  utm_forward.c adds it (with GEO_ZONE_Q36) for a point south of the
+ *  equator. */
 #define GEO_CODE_SOUTH ((int32_t)512)
 
 /**
@@ -217,9 +219,20 @@ int32_t geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec);
 /** UPS angle -> metres in Q28.36 (2^-36 m, rounded). */
 int64_t geo_ups_q36(int64_t a);
 
-/** Added to a zone code of drdc_geo_to_utm() (-1..60): utm.c's forward
- *  projection (for MGRS) keeps easting and northing in Q28.36 metres. */
+/** Added to a zone code of drdc_geo_to_utm() (-1..60): utm_forward.c's
+ *  forward projection (for MGRS) keeps easting and northing in Q28.36
+ *  metres. */
 #define GEO_ZONE_Q36 ((int32_t)256)
+
+/**
+ * The forward projection (UPS or transverse Mercator, by the zone of the
+ * code) of phi and lam (radians) in tm's xi and eta slots, into tm as
+ * geo_ups_forward() or geo_tm_forward() leave it: 0 beyond its domain,
+ * else 1 (never 0 after the reverse). In utm_forward.c, out of line, a
+ * sibling call of either projection; the reverse (utm_reverse.c) calls
+ * it for the convergence and scale, so one copy serves both files.
+ */
+int geo_grid_forward_projection(int32_t code, geo_tm_t *tm);
 
 /** Metres in Q47.16. */
 #define GEO_METRES(v) ((int64_t)(v) * INT64_C(65536))
@@ -271,10 +284,10 @@ static inline drdc_nas_t geo_central_meridian(int32_t zone)
 }
 
 /** The last step of drdc_pose_w_from_wutm() (u) and
- *  drdc_pose_w_from_wmgrs() (m, u NULL), in utm.c, after the reverse
- *  projection: the attitude of u or m turned from grid to true north by
- *  the convergence (nas) in tm->gamma straight into out->q, then the
- *  height; out written only on DRDC_OK (else DRDC_E_OVERFLOW). In
+ *  drdc_pose_w_from_wmgrs() (m, u NULL), in utm_reverse.c, after the
+ *  reverse projection: the attitude of u or m turned from grid to true
+ *  north by the convergence (nas) in tm->gamma straight into out->q, then
+ *  the height; out written only on DRDC_OK (else DRDC_E_OVERFLOW). In
  *  pose.c, with the turn: a call to another unit, so the compiler passes
  *  tm's address rather than the 64-bit convergence, which would leave an
  *  argument on the caller's stack on Cortex-M3. */
@@ -282,26 +295,25 @@ drdc_status_t geo_w_attitude(const drdc_WUTMPose_t *u,
                              const drdc_WMGRSPose_t *m, const geo_tm_t *tm,
                              drdc_WPose_t *out);
 
-/** The attitude and height of drdc_pose_wmgrs_from_w() (in utm.c), after
- *  the projection: w's attitude turned from true to grid north by the
- *  convergence (radians) in tm->gamma straight into out->q, then the
- *  height; written only on DRDC_OK (else DRDC_E_OVERFLOW). In pose.c, as
- *  geo_w_attitude(), so the caller passes tm's address, not a 64-bit
- *  argument on its stack. */
+/** The attitude and height of drdc_pose_wmgrs_from_w() (in
+ *  utm_forward.c), after the projection: w's attitude turned from true to
+ *  grid north by the convergence (radians) in tm->gamma straight into
+ *  out->q, then the height; written only on DRDC_OK (else
+ *  DRDC_E_OVERFLOW). In pose.c, as geo_w_attitude(), so the caller passes
+ *  tm's address, not a 64-bit argument on its stack. */
 drdc_status_t geo_wmgrs_attitude(const drdc_WPose_t *w, const geo_tm_t *tm,
                                  drdc_WMGRSPose_t *out);
 
-/** The last step of drdc_pose_weutm_from_we() (in utm.c), after the
- *  projection: height and angles of w into out, the yaw turned from true
- *  to grid north by the convergence parked in out->height. Never
+/** The last step of drdc_pose_weutm_from_we() (in utm_forward.c), after
+ *  the projection: height and angles of w into out, the yaw turned from
+ *  true to grid north by the convergence parked in out->height. Never
  *  fails. */
 void geo_weutm_attitude(const drdc_WePose_t *w, drdc_WeUTMPose_t *out);
 
 /**
  * geo_mgrs_format() of a position whose easting and northing carry
- * frac_bits fraction bits (16: Q47.16; 36: utm.c's projection with
- * GEO_ZONE_Q36): the digits
- * truncate that value.
+ * frac_bits fraction bits (16: Q47.16; 36: utm_forward.c's projection
+ * with GEO_ZONE_Q36): the digits truncate that value.
  */
 drdc_status_t geo_mgrs_format_bits(const drdc_geo_utm_t *u, unsigned frac_bits,
                                    drdc_nas_t lat, int32_t prec, char *text,

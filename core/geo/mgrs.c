@@ -4,15 +4,15 @@
  * @ingroup drdc_geo
  * @brief MGRS encode (truncation) and decode (validation, the row placed
  *        in its latitude band) over UTM/UPS; the decoder also into a
- *        geo_tm_t, for the MGRS poses of utm.c.
+ *        geo_tm_t, for the MGRS poses of utm_reverse.c.
  *
  * Letter sets and the row placement follow the MGRS standard as
  * GeographicLib implements it (NGA.SIG.0012): UTM columns A-H, J-R, S-Z
  * by zone modulo 3, rows A-V (I and O skipped) shifted by 5 in even zones;
  * UPS columns and rows from their own sets per polar half. Coordinates
  * are whole micrometres, truncated: of the Q28.36 metres of the
- * projection (encode from geographic, drdc_geo_mgrs_encode() in utm.c)
- * or of the Q47.16 input (from UTM).
+ * projection (encode from geographic, drdc_geo_mgrs_encode() in
+ * utm_forward.c) or of the Q47.16 input (from UTM).
  */
 #include <drdc/geo_mgrs.h>
 
@@ -208,11 +208,11 @@ drdc_status_t geo_mgrs_format_bits(const drdc_geo_utm_t *u, unsigned frac_bits,
   return DRDC_OK;
 }
 
-/* drdc_geo_mgrs_encode() is in utm.c, in the frame of the projection's
- * body (issue 8's stack) */
-
-/* drdc_geo_mgrs_from_utm() is in utm.c, in the frame of the reverse
+/* drdc_geo_mgrs_encode() is in utm_forward.c, in the frame of the
  * projection's body (issue 8's stack) */
+
+/* drdc_geo_mgrs_from_utm() is in utm_reverse.c, in the frame of the
+ * reverse projection's body (issue 8's stack) */
 
 /* GeographicLib's placement of a UTM row letter (irow 0..19) in latitude
  * band iband (-10..9): the multiple of 20 rows nearest the band's centre,
@@ -260,9 +260,9 @@ static int64_t tiles_q16(int64_t v, int64_t den)
 }
 
 /* drdc_geo_mgrs_decode() into a geo_tm_t, for it and for the pose
- * conversions of utm.c, which run the reverse projection on these slots:
- * no drdc_geo_utm_t in this frame or in the caller's (issue 8's stack),
- * the values written once, after the last check. */
+ * conversions of utm_reverse.c, which run the reverse projection on these
+ * slots: no drdc_geo_utm_t in this frame or in the caller's (issue 8's
+ * stack), the values written once, after the last check. */
 int32_t geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec)
 {
   int32_t p = 0;

@@ -499,10 +499,10 @@ int geo_tm_forward(geo_tm_t *out)
   return tm_forward_stages(&st, out);
 }
 
-/* Here rather than in utm.c: the stages run from this frame, which holds
- * the stages' state and the result, with no geo_tm_forward() frame
- * between (issue 8's stack goal). The checks and statuses are those of
- * the range checks of utm.c. */
+/* Here rather than in utm_forward.c: the stages run from this frame,
+ * which holds the stages' state and the result, with no geo_tm_forward()
+ * frame between (issue 8's stack goal). The checks and statuses are those
+ * of the range checks of utm_forward.c. */
 drdc_status_t drdc_geo_tm_forward(drdc_nas_t lat, drdc_nas_t dlon,
                                   drdc_q47_16_t *x, drdc_q47_16_t *y,
                                   drdc_nas_t *convergence,
