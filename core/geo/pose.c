@@ -153,10 +153,11 @@ static bool separation_ok(drdc_q47_16_t n)
  * {We} reference, in frames that hold one buffer each, so that the pose
  * conversions keep in their own frames, which are on top of the
  * rotation's chain, only the offset (and quaternion) the rotation needs:
- * position_*() holds the geo_bowring_t of the inverse, ecef_at_*() the
+ * position_*() holds the geo_bowring_t of the inverse, ecef_at() the
  * reference's latitude and longitude beside it (16 bytes; the
- * ellipsoidal height waits in the bowring_t's free slot p). The 64-bit
- * separation first: arguments in registers on Cortex-M3. */
+ * ellipsoidal height waits in the bowring_t's free slot p). position_*()
+ * take the 64-bit separation first: arguments in registers on
+ * Cortex-M3. */
 
 /* the offset in b's slots (north, up, east) in Q15.16, as
  * geo_ecef_of_plane() takes it (it scales it there, so that the shifts'
@@ -169,17 +170,24 @@ static void load_ned(const drdc_vec3_q15_16_t *ned, geo_bowring_t *b)
   b->v = ned->y;
 }
 
-/* the ellipsoidal point of ref checked (drdc_geo_from_ned()'s first
- * status), then the ECEF point of b's offset (north b->z, up b->u, east
- * b->v) there, into b */
-static __attribute__((noinline)) drdc_status_t ecef_at_w(
-  drdc_q47_16_t geoid_separation, const drdc_WPose_t *ref, geo_bowring_t *b)
+/* the ellipsoidal point of a {W} or {We} reference, read in place
+ * through pointers to its latitude, longitude and height (the one body
+ * for both pose types; b->p holds the separation, to which the height is
+ * added), checked (drdc_geo_from_ned()'s first status), then the ECEF
+ * point of b's offset (north b->z, up b->u, east b->v) there, into b.
+ * `used` (callers GCC cannot see) keeps the pointers: IPA-SRA would pass
+ * the three values instead, copied in the frames of position_*() (16
+ * bytes more each on both targets); the linker still drops it with
+ * them. */
+static __attribute__((noinline, used)) drdc_status_t ecef_at(
+  const drdc_nas_t *lat, const drdc_nas_t *lon, const drdc_q47_16_t *height,
+  geo_bowring_t *b)
 {
   geo_lat_lon_t ll;
 
-  ll.lat = ref->latitude;
-  ll.lon = ref->longitude;
-  b->p = ref->height + geoid_separation;
+  ll.lat = *lat;
+  ll.lon = *lon;
+  b->p += *height;
   return geo_ecef_of_plane(&ll, b);
 }
 
@@ -195,7 +203,8 @@ static __attribute__((noinline)) drdc_status_t position_w(
   drdc_status_t st;
 
   load_ned(ned, &b);
-  st = ecef_at_w(geoid_separation, ref, &b);
+  b.p = geoid_separation;
+  st = ecef_at(&ref->latitude, &ref->longitude, &ref->height, &b);
   if (st == DRDC_OK) {
     st = geo_geodetic_q36(&b);
   }
@@ -416,18 +425,6 @@ static __attribute__((noinline)) drdc_status_t compose_euler(
   return drdc_quat_compose(inv, &q, inv);
 }
 
-/* ecef_at_w() for a {We} reference (its position read in place) */
-static __attribute__((noinline)) drdc_status_t ecef_at_we(
-  drdc_q47_16_t geoid_separation, const drdc_WePose_t *ref, geo_bowring_t *b)
-{
-  geo_lat_lon_t ll;
-
-  ll.lat = ref->latitude;
-  ll.lon = ref->longitude;
-  b->p = ref->height + geoid_separation;
-  return geo_ecef_of_plane(&ll, b);
-}
-
 /* position_w() for a {We} reference and result */
 static __attribute__((noinline)) drdc_status_t position_we(
   drdc_q47_16_t geoid_separation, const drdc_WePose_t *ref,
@@ -437,7 +434,8 @@ static __attribute__((noinline)) drdc_status_t position_we(
   drdc_status_t st;
 
   load_ned(ned, &b);
-  st = ecef_at_we(geoid_separation, ref, &b);
+  b.p = geoid_separation;
+  st = ecef_at(&ref->latitude, &ref->longitude, &ref->height, &b);
   if (st == DRDC_OK) {
     st = geo_geodetic_q36(&b);
   }
