@@ -90,7 +90,8 @@ static inline int64_t fx_sin_quadrant_q62(uint32_t r)
   uint64_t acc = ((uint64_t)s0 << 31) - (((uint64_t)s0 * d2) >> 16);
 
   if (neg) {
-    acc = (acc - ((t1 + 255u) >> 8)) + ((t3 + ((UINT64_C(1) << 27) - 1u)) >> 27);
+    acc = (acc - ((t1 + 255u) >> 8))
+          + ((t3 + ((UINT64_C(1) << 27) - 1u)) >> 27);
   } else {
     acc = (acc + (t1 >> 8)) - (t3 >> 27);
   }

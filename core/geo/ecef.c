@@ -404,7 +404,8 @@ drdc_status_t drdc_geo_from_ecef(const drdc_vec3_q47_16_t *ecef,
   if ((ecef == NULL) || (p == NULL)) {
     return DRDC_E_NULL;
   }
-  if ((ecef_abs64(ecef->x) >= ECEF_COORD_MAX) || (ecef_abs64(ecef->y) >= ECEF_COORD_MAX)
+  if ((ecef_abs64(ecef->x) >= ECEF_COORD_MAX)
+      || (ecef_abs64(ecef->y) >= ECEF_COORD_MAX)
       || (ecef_abs64(ecef->z) >= ECEF_COORD_MAX)) {
     return DRDC_E_HEIGHT;
   }
@@ -546,14 +547,13 @@ plane_point_status(const geo_lat_lon_t *ref, const bowring_t *b)
   return point_status(ref->lat, ref->lon, b->p);
 }
 
-/* geo_impl.h: the point checked, then b's offset (north b->z, up b->u,
- * east b->v; Q15.16, scaled here) turned to ECEF axes in place (about east by -latitude:
- * (north, up) -> (dz, the horizontal part towards the ref's meridian
- * plane r); about the axis by -longitude: (east, r) -> (dy, dx)), then
- * the point's ECEF added. The check here, and acc_plane()'s DRDC_OK
- * returned by a sibling call: a caller that holds the latitude and
- * longitude alone (16 bytes) saves no register across the check (issue
- * 8's stack). */
+/* geo_impl.h: the point checked, then b's offset (north b->z, up b->u, east
+ * b->v; Q15.16, scaled here) turned to ECEF axes in place (about east by
+ * -latitude: (north, up) -> (dz, the horizontal part towards the ref's meridian
+ * plane r); about the axis by -longitude: (east, r) -> (dy, dx)), then the
+ * point's ECEF added. The check here, and acc_plane()'s DRDC_OK returned by a
+ * sibling call: a caller that holds the latitude and longitude alone (16 bytes)
+ * saves no register across the check (issue 8's stack). */
 __attribute__((noinline)) drdc_status_t
 geo_ecef_of_plane(const geo_lat_lon_t *ref, bowring_t *b)
 {

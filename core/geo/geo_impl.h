@@ -146,8 +146,9 @@ int geo_tm_forward(geo_tm_t *out);
 drdc_q47_16_t geo_metres_from_angle(int64_t a);
 
 /** Inverse of geo_tm_forward(): xi, eta (|eta| <= 0.34) in tm->xi,
- *  tm->eta -> phi, lam in the same slots; tm->gamma and tm->k are its scratch (one struct of
- *  the caller's frame holds every intermediate the stages share). */
+ *  tm->eta -> phi, lam in the same slots; tm->gamma and tm->k are its
+ *  scratch (one struct of the caller's frame holds every intermediate
+ *  the stages share). */
 void geo_tm_reverse(geo_tm_t *tm);
 
 /** cos(chi) / cos(phi) from s = sin(phi), well conditioned up to the

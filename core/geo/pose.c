@@ -89,11 +89,12 @@ drdc_status_t drdc_pose_true_from_grid(const drdc_quat_t *q_grid,
 }
 
 /* drdc_pose_wutm_from_w(), drdc_pose_w_from_wutm() and their Euler forms
- * are in utm.c, in the frame of the projection's body (issue 8's stack) */
+ * are in utm_forward.c and utm_reverse.c, in the frame of the
+ * projection's body (issue 8's stack) */
 
-/* The last step of utm.c's w_from_grid(), after the projection: q_true =
- * q_z(gamma) q_grid straight into out->q, gamma (nas, |gamma| < 180
- * degrees) in tm->gamma, then the height; written only on DRDC_OK. */
+/* The last step of utm_reverse.c's w_from_grid(), after the projection:
+ * q_true = q_z(gamma) q_grid straight into out->q, gamma (nas, |gamma| <
+ * 180 degrees) in tm->gamma, then the height; written only on DRDC_OK. */
 drdc_status_t geo_w_attitude(const drdc_WUTMPose_t *u,
                              const drdc_WMGRSPose_t *m, const geo_tm_t *tm,
                              drdc_WPose_t *out)
@@ -107,10 +108,10 @@ drdc_status_t geo_w_attitude(const drdc_WUTMPose_t *u,
   return st;
 }
 
-/* The attitude and height of utm.c's drdc_pose_wmgrs_from_w(), after the
- * projection: q_grid = q_z(-gamma) q_true straight into out->q, gamma
- * (radians, |gamma| < 180 degrees) in tm->gamma; written only on
- * DRDC_OK. */
+/* The attitude and height of utm_forward.c's drdc_pose_wmgrs_from_w(),
+ * after the projection: q_grid = q_z(-gamma) q_true straight into
+ * out->q, gamma (radians, |gamma| < 180 degrees) in tm->gamma; written
+ * only on DRDC_OK. */
 drdc_status_t geo_wmgrs_attitude(const drdc_WPose_t *w, const geo_tm_t *tm,
                                  drdc_WMGRSPose_t *out)
 {
@@ -123,8 +124,8 @@ drdc_status_t geo_wmgrs_attitude(const drdc_WPose_t *w, const geo_tm_t *tm,
   return st;
 }
 
-/* drdc_pose_weutm_from_we() is in utm.c, in the frame of the projection's
- * body; it ends here */
+/* drdc_pose_weutm_from_we() is in utm_forward.c, in the frame of the
+ * projection's body; it ends here */
 void geo_weutm_attitude(const drdc_WePose_t *w, drdc_WeUTMPose_t *out)
 {
   /* out->height holds the convergence until here */
@@ -153,10 +154,11 @@ static bool separation_ok(drdc_q47_16_t n)
  * {We} reference, in frames that hold one buffer each, so that the pose
  * conversions keep in their own frames, which are on top of the
  * rotation's chain, only the offset (and quaternion) the rotation needs:
- * position_*() holds the geo_bowring_t of the inverse, ecef_at_*() the
+ * position_*() holds the geo_bowring_t of the inverse, ecef_at() the
  * reference's latitude and longitude beside it (16 bytes; the
- * ellipsoidal height waits in the bowring_t's free slot p). The 64-bit
- * separation first: arguments in registers on Cortex-M3. */
+ * ellipsoidal height waits in the bowring_t's free slot p). position_*()
+ * take the 64-bit separation first: arguments in registers on
+ * Cortex-M3. */
 
 /* the offset in b's slots (north, up, east) in Q15.16, as
  * geo_ecef_of_plane() takes it (it scales it there, so that the shifts'
@@ -169,17 +171,24 @@ static void load_ned(const drdc_vec3_q15_16_t *ned, geo_bowring_t *b)
   b->v = ned->y;
 }
 
-/* the ellipsoidal point of ref checked (drdc_geo_from_ned()'s first
- * status), then the ECEF point of b's offset (north b->z, up b->u, east
- * b->v) there, into b */
-static __attribute__((noinline)) drdc_status_t ecef_at_w(
-  drdc_q47_16_t geoid_separation, const drdc_WPose_t *ref, geo_bowring_t *b)
+/* the ellipsoidal point of a {W} or {We} reference, read in place
+ * through pointers to its latitude, longitude and height (the one body
+ * for both pose types; b->p holds the separation, to which the height is
+ * added), checked (drdc_geo_from_ned()'s first status), then the ECEF
+ * point of b's offset (north b->z, up b->u, east b->v) there, into b.
+ * `used` (callers GCC cannot see) keeps the pointers: IPA-SRA would pass
+ * the three values instead, copied in the frames of position_*() (16
+ * bytes more each on both targets); the linker still drops it with
+ * them. */
+static __attribute__((noinline, used)) drdc_status_t ecef_at(
+  const drdc_nas_t *lat, const drdc_nas_t *lon, const drdc_q47_16_t *height,
+  geo_bowring_t *b)
 {
   geo_lat_lon_t ll;
 
-  ll.lat = ref->latitude;
-  ll.lon = ref->longitude;
-  b->p = ref->height + geoid_separation;
+  ll.lat = *lat;
+  ll.lon = *lon;
+  b->p += *height;
   return geo_ecef_of_plane(&ll, b);
 }
 
@@ -195,7 +204,8 @@ static __attribute__((noinline)) drdc_status_t position_w(
   drdc_status_t st;
 
   load_ned(ned, &b);
-  st = ecef_at_w(geoid_separation, ref, &b);
+  b.p = geoid_separation;
+  st = ecef_at(&ref->latitude, &ref->longitude, &ref->height, &b);
   if (st == DRDC_OK) {
     st = geo_geodetic_q36(&b);
   }
@@ -353,7 +363,8 @@ drdc_status_t drdc_pose_l_from_w(const drdc_WPose_t *ref,
   return DRDC_OK;
 }
 
-/* the four MGRS poses are in utm.c, as drdc_pose_w_from_wutm() */
+/* the four MGRS poses are in utm_forward.c (to MGRS) and utm_reverse.c
+ * (from MGRS), as the UTM poses */
 
 drdc_status_t drdc_pose_l_from_le(const drdc_lePose_t *le, drdc_lPose_t *out)
 {
@@ -416,18 +427,6 @@ static __attribute__((noinline)) drdc_status_t compose_euler(
   return drdc_quat_compose(inv, &q, inv);
 }
 
-/* ecef_at_w() for a {We} reference (its position read in place) */
-static __attribute__((noinline)) drdc_status_t ecef_at_we(
-  drdc_q47_16_t geoid_separation, const drdc_WePose_t *ref, geo_bowring_t *b)
-{
-  geo_lat_lon_t ll;
-
-  ll.lat = ref->latitude;
-  ll.lon = ref->longitude;
-  b->p = ref->height + geoid_separation;
-  return geo_ecef_of_plane(&ll, b);
-}
-
 /* position_w() for a {We} reference and result */
 static __attribute__((noinline)) drdc_status_t position_we(
   drdc_q47_16_t geoid_separation, const drdc_WePose_t *ref,
@@ -437,7 +436,8 @@ static __attribute__((noinline)) drdc_status_t position_we(
   drdc_status_t st;
 
   load_ned(ned, &b);
-  st = ecef_at_we(geoid_separation, ref, &b);
+  b.p = geoid_separation;
+  st = ecef_at(&ref->latitude, &ref->longitude, &ref->height, &b);
   if (st == DRDC_OK) {
     st = geo_geodetic_q36(&b);
   }

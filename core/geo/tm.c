@@ -146,8 +146,8 @@ static __attribute__((noinline)) void krueger_sum(const tm_zeta_t *z,
 
 /* After clenshaw() over 2 j times the coefficients: the derivative
  * 1 + cos(2 zeta) b_1 - b_2 = p - i q, p into z->c2[0] and q into
- * z->c2[1]. The series' stages call clenshaw() and these directly (one frame fewer on
- * the chain than a wrapper would add). */
+ * z->c2[1]. The series' stages call clenshaw() and these directly (one
+ * frame fewer on the chain than a wrapper would add). */
 static __attribute__((noinline)) void krueger_deriv(tm_zeta_t *z)
 {
   int64_t d = (GEO_ONE + (geo_mul(z->c2[0], z->r1) - geo_mul(z->c2[1], z->i1)))
@@ -538,9 +538,9 @@ drdc_status_t drdc_geo_tm_forward(drdc_nas_t lat, drdc_nas_t dlon,
 
 /* xi' + i eta' = zeta - Krueger's beta series at zeta = xi + i eta
  * (in tm->xi, tm->eta), into tm->xi, tm->eta (the caller's outputs, its
- * scratch until the end); sin 2 zeta and then the sum wait in tm->gamma, tm->k, free until
- * the caller's forward: no slot of this frame has its address taken but
- * the recurrence's */
+ * scratch until the end); sin 2 zeta and then the sum wait in tm->gamma,
+ * tm->k, free until the caller's forward: no slot of this frame has its
+ * address taken but the recurrence's */
 static __attribute__((noinline)) void rev_series(geo_tm_t *tm)
 {
   tm_zeta_t z;

@@ -118,12 +118,17 @@ static drdc_status_t check(int64_t min, int64_t max, drdc_jaus_type_t type,
   return DRDC_OK;
 }
 
-/* The plain forms do the work in their own frame; the saturating forms
- * clamp an outside input and otherwise call the plain form, which then
- * validates again (cheap) and cannot fail differently. */
-drdc_status_t drdc_jaus_scaled_encode(int64_t value, int64_t min, int64_t max,
-                                      drdc_jaus_type_t type,
-                                      drdc_jaus_form_t form, int64_t *integer)
+/* One body for each direction: the saturating form, which validates, then
+ * clamps an outside input (statuses in the plain form's order, with
+ * DRDC_W_SATURATED last). The plain forms refuse an outside input first
+ * and are otherwise a sibling call of it, which then cannot saturate.
+ * Refusing first does not change a status: every failure of the
+ * validation but a NULL output is DRDC_E_RANGE, as an outside input is,
+ * and a NULL output is left to the body's first test. */
+drdc_status_t drdc_jaus_scaled_encode_sat(int64_t value, int64_t min,
+                                          int64_t max, drdc_jaus_type_t type,
+                                          drdc_jaus_form_t form,
+                                          int64_t *integer)
 {
   int64_t span = 0;
   int64_t ilo = 0;
@@ -142,7 +147,8 @@ drdc_status_t drdc_jaus_scaled_encode(int64_t value, int64_t min, int64_t max,
     return st;
   }
   if ((value < min) || (value > max)) {
-    return DRDC_E_RANGE;
+    *integer = (value < min) ? ilo : ihi;
+    return DRDC_W_SATURATED;
   }
   /* value - min <= span, ihi - ilo < 2^32 */
   offset = value - min;
@@ -153,33 +159,20 @@ drdc_status_t drdc_jaus_scaled_encode(int64_t value, int64_t min, int64_t max,
   return DRDC_OK;
 }
 
-drdc_status_t drdc_jaus_scaled_encode_sat(int64_t value, int64_t min,
-                                          int64_t max, drdc_jaus_type_t type,
-                                          drdc_jaus_form_t form,
-                                          int64_t *integer)
+drdc_status_t drdc_jaus_scaled_encode(int64_t value, int64_t min, int64_t max,
+                                      drdc_jaus_type_t type,
+                                      drdc_jaus_form_t form, int64_t *integer)
 {
-  int64_t span = 0;
-  int64_t ilo = 0;
-  int64_t ihi = 0;
-  drdc_status_t st;
-
-  if (integer == NULL) {
-    return DRDC_E_NULL;
+  if ((integer != NULL) && ((value < min) || (value > max))) {
+    return DRDC_E_RANGE;
   }
-  st = check(min, max, type, form, &span, &ilo, &ihi);
-  if (st != DRDC_OK) {
-    return st;
-  }
-  if ((value < min) || (value > max)) {
-    *integer = (value < min) ? ilo : ihi;
-    return DRDC_W_SATURATED;
-  }
-  return drdc_jaus_scaled_encode(value, min, max, type, form, integer);
+  return drdc_jaus_scaled_encode_sat(value, min, max, type, form, integer);
 }
 
-drdc_status_t drdc_jaus_scaled_decode(int64_t integer, int64_t min,
-                                      int64_t max, drdc_jaus_type_t type,
-                                      drdc_jaus_form_t form, int64_t *value)
+drdc_status_t drdc_jaus_scaled_decode_sat(int64_t integer, int64_t min,
+                                          int64_t max, drdc_jaus_type_t type,
+                                          drdc_jaus_form_t form,
+                                          int64_t *value)
 {
   int64_t span = 0;
   int64_t ilo = 0;
@@ -201,7 +194,8 @@ drdc_status_t drdc_jaus_scaled_decode(int64_t integer, int64_t min,
     return st;
   }
   if ((integer < ilo) || (integer > ihi)) {
-    return DRDC_E_RANGE;
+    *value = (integer < ilo) ? min : max;
+    return DRDC_W_SATURATED;
   }
   /* span = whole r + part, part < r = ihi - ilo < 2^32; then
    * (integer - ilo) span / r = (integer - ilo) whole + (integer - ilo)
@@ -217,26 +211,19 @@ drdc_status_t drdc_jaus_scaled_decode(int64_t integer, int64_t min,
   return DRDC_OK;
 }
 
-drdc_status_t drdc_jaus_scaled_decode_sat(int64_t integer, int64_t min,
-                                          int64_t max, drdc_jaus_type_t type,
-                                          drdc_jaus_form_t form,
-                                          int64_t *value)
+drdc_status_t drdc_jaus_scaled_decode(int64_t integer, int64_t min,
+                                      int64_t max, drdc_jaus_type_t type,
+                                      drdc_jaus_form_t form, int64_t *value)
 {
-  int64_t span = 0;
   int64_t ilo = 0;
   int64_t ihi = 0;
-  drdc_status_t st;
 
-  if (value == NULL) {
-    return DRDC_E_NULL;
+  if (value != NULL) {
+    /* no [ilo, ihi] (a bad type or form): the body's DRDC_E_RANGE */
+    if ((drdc_jaus_scaled_range(type, form, &ilo, &ihi) == DRDC_OK)
+        && ((integer < ilo) || (integer > ihi))) {
+      return DRDC_E_RANGE;
+    }
   }
-  st = check(min, max, type, form, &span, &ilo, &ihi);
-  if (st != DRDC_OK) {
-    return st;
-  }
-  if ((integer < ilo) || (integer > ihi)) {
-    *value = (integer < ilo) ? min : max;
-    return DRDC_W_SATURATED;
-  }
-  return drdc_jaus_scaled_decode(integer, min, max, type, form, value);
+  return drdc_jaus_scaled_decode_sat(integer, min, max, type, form, value);
 }

@@ -223,3 +223,18 @@ drdc_status_t nmea_angle(const nmea_frame_t *fr, size_t i_field,
   }
   return DRDC_OK;
 }
+
+drdc_status_t nmea_fix(const nmea_frame_t *fr, size_t latitude,
+                       drdc_nmea_t *n)
+{
+  drdc_status_t st = nmea_tod(fr, 1u, (n != NULL) ? &n->time : NULL);
+
+  if (st == DRDC_OK) {
+    st = nmea_angle(fr, latitude, 1, (n != NULL) ? &n->latitude : NULL);
+  }
+  if (st == DRDC_OK) {
+    st = nmea_angle(fr, latitude + 2u, 0,
+                    (n != NULL) ? &n->longitude : NULL);
+  }
+  return st;
+}

@@ -32,15 +32,7 @@ drdc_status_t nmea_gga(const nmea_frame_t *fr, drdc_nmea_t *n)
   if (quality > GGA_QUALITY_MAX) {
     return DRDC_E_RANGE;
   }
-  st = nmea_tod(fr, 1u, (n != NULL) ? &n->time : NULL);
-  if (st == DRDC_OK) {
-    st = nmea_angle(fr, 2u, 1,
-                    (n != NULL) ? &n->latitude : NULL);
-  }
-  if (st == DRDC_OK) {
-    st = nmea_angle(fr, 4u, 0,
-                    (n != NULL) ? &n->longitude : NULL);
-  }
+  st = nmea_fix(fr, 2u, n);
   if (st != DRDC_OK) {
     return st;
   }

@@ -102,6 +102,14 @@ drdc_status_t nmea_tod(const nmea_frame_t *fr, size_t i,
 drdc_status_t nmea_angle(const nmea_frame_t *fr, size_t i, int latitude,
                          drdc_nas_t *out);
 
+/** The time and position of a fix (GGA, GNS, RMC): field 1 as nmea_tod(),
+ *  field `latitude` and the one after it as a latitude, the two after
+ *  those as a longitude (nmea_angle()), checked in that order (the first
+ *  failure's status) and written into n->time, n->latitude and
+ *  n->longitude, unless `n` is NULL. */
+drdc_status_t nmea_fix(const nmea_frame_t *fr, size_t latitude,
+                       drdc_nmea_t *n);
+
 /** Sentence decoders: `fr` is framed; they fill `*n` (zeroed by the
  *  caller) or, with `n` NULL, only check the sentence, returning the
  *  same status. */

@@ -42,15 +42,7 @@ drdc_status_t nmea_rmc(const nmea_frame_t *fr, drdc_nmea_t *n)
   if ((s == 'V') || (m == 'N')) {
     return DRDC_E_NO_FIX;
   }
-  st = nmea_tod(fr, 1u, (n != NULL) ? &n->time : NULL);
-  if (st == DRDC_OK) {
-    st = nmea_angle(fr, 3u, 1,
-                    (n != NULL) ? &n->latitude : NULL);
-  }
-  if (st == DRDC_OK) {
-    st = nmea_angle(fr, 5u, 0,
-                    (n != NULL) ? &n->longitude : NULL);
-  }
+  st = nmea_fix(fr, 3u, n);
   if (st == DRDC_OK) {
     st = nmea_uint(fr, 9u, 6u, 6u, &ddmmyy);
   }

@@ -40,9 +40,9 @@ typedef struct link_trig {
   int32_t d;       /**< link offset (plus q if prismatic), Q15.16 */
 } link_trig_t;
 
-static inline __attribute__((always_inline)) drdc_status_t link_trig(drdc_dh_convention_t convention,
-                               const drdc_dh_link_t *link, int32_t q,
-                               link_trig_t *out)
+static inline __attribute__((always_inline)) drdc_status_t
+link_trig(drdc_dh_convention_t convention, const drdc_dh_link_t *link,
+          int32_t q, link_trig_t *out)
 {
   drdc_bam32_t theta = link->theta;
   int64_t d = link->d;

@@ -16,6 +16,23 @@
 
 #include "orient_impl.h"
 
+/* The end of both products: DRDC_E_OVERFLOW when bit 30 or 31 of ovf
+ * is set (a part does not fit int32_t), else the parts' bits into out.
+ * Inline: each product keeps its own copy, with no call. */
+static inline __attribute__((always_inline)) drdc_status_t
+store_parts(uint32_t ovf, uint32_t rs, uint32_t rx, uint32_t ry, uint32_t rz,
+            drdc_quat_t *out)
+{
+  if ((ovf >> 30u) != 0u) {
+    return DRDC_E_OVERFLOW;
+  }
+  out->s = (drdc_q1_30_t)rs;
+  out->x = (drdc_q1_30_t)rx;
+  out->y = (drdc_q1_30_t)ry;
+  out->z = (drdc_q1_30_t)rz;
+  return DRDC_OK;
+}
+
 /* The product for a part of a beyond (-1, 1]: kept out of line
  * (noinline) so that the common case keeps a light frame; each sum is
  * checked for the 2^63 bound by its high words. */
@@ -36,14 +53,7 @@ quat_mul_wide(const drdc_quat_t *a, const drdc_quat_t *b, drdc_quat_t *out)
                  (int64_t)a->y * b->s, (int64_t)a->z * b->x, &ovf);
   rz = orient_sum4_round_bits((int64_t)a->s * b->z, (int64_t)a->x * b->y,
                  -((int64_t)a->y * b->x), (int64_t)a->z * b->s, &ovf);
-  if ((ovf >> 30u) != 0u) {
-    return DRDC_E_OVERFLOW;
-  }
-  out->s = (drdc_q1_30_t)rs;
-  out->x = (drdc_q1_30_t)rx;
-  out->y = (drdc_q1_30_t)ry;
-  out->z = (drdc_q1_30_t)rz;
-  return DRDC_OK;
+  return store_parts(ovf, rs, rx, ry, rz, out);
 }
 
 /* The Q1.30 bits of the exact Q60 sum v (|v| < 2^63), rounded to
@@ -95,14 +105,7 @@ quat_mul_unit(const drdc_quat_t *a, const drdc_quat_t *b, drdc_quat_t *out)
   rx = round_q60_bits((as * bx) + (ax * bs) + (ay * bz) - (az * by), &ovf);
   ry = round_q60_bits((as * by) - (ax * bz) + (ay * bs) + (az * bx), &ovf);
   rz = round_q60_bits((as * bz) + (ax * by) - (ay * bx) + (az * bs), &ovf);
-  if ((ovf >> 30u) != 0u) {
-    return DRDC_E_OVERFLOW;
-  }
-  out->s = (drdc_q1_30_t)rs;
-  out->x = (drdc_q1_30_t)rx;
-  out->y = (drdc_q1_30_t)ry;
-  out->z = (drdc_q1_30_t)rz;
-  return DRDC_OK;
+  return store_parts(ovf, rs, rx, ry, rz, out);
 }
 
 drdc_status_t drdc_quat_mul(const drdc_quat_t *a, const drdc_quat_t *b,

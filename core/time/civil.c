@@ -97,8 +97,8 @@ drdc_status_t drdc_time_civil_from_days(int32_t days, int32_t *year,
    * one leap day per 1460 days, none per 36524, one per 146096. */
   year_of_era = (day_of_era - (day_of_era / 1460) + (day_of_era / 36524)
                  - (day_of_era / 146096)) / 365;
-  day_of_year = day_of_era
-                - ((365 * year_of_era) + (year_of_era / 4) - (year_of_era / 100));
+  day_of_year = day_of_era - ((365 * year_of_era) + (year_of_era / 4)
+                              - (year_of_era / 100));
   mp = ((5 * day_of_year) + 2) / 153;  /* month from March, 0..11 */
   if (mp < 10) {
     m = mp + 3;

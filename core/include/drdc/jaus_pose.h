@@ -265,9 +265,9 @@ drdc_status_t drdc_jaus_global_pose_pack(const drdc_jaus_global_pose_t *body,
  * @retval DRDC_E_NANOSECOND the time stamp has milliseconds 1000..1023
  *
  * Checks in this order: pointers, form, length of the presence vector,
- * reserved bits, length, then the fields in bit order. Accuracy: each raw value is
- * correctly rounded (0 LSB against the exact model). Never reads beyond
- * `buf[length - 1]`.
+ * reserved bits, length, then the fields in bit order. Accuracy: each raw
+ * value is correctly rounded (0 LSB against the exact model). Never reads
+ * beyond `buf[length - 1]`.
  */
 drdc_status_t drdc_jaus_global_pose_unpack(const uint8_t *buf, size_t length,
                                            drdc_jaus_form_t form,
