@@ -19,7 +19,8 @@ import mpmath
 mpmath.mp.dps = 100
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-STEPS = 256                          # intervals per table
+SIN_STEPS = 256                      # intervals of the quarter wave
+ATAN_STEPS = 128                     # intervals of atan's [0, 1]
 B = mpmath.mpf(2) ** 32 / (2 * mpmath.pi)  # binary-angle units per radian
 
 
@@ -36,9 +37,9 @@ def rows(values, per_line=6):
 
 def table_text():
     """The text of fixed/trig_table.c."""
-    sin_q31 = [rnd(mpmath.sin(mpmath.pi / 2 * i / STEPS) * 2 ** 31)
-               for i in range(STEPS + 1)]
-    t0 = [mpmath.mpf(i) / STEPS for i in range(STEPS + 1)]
+    sin_q31 = [rnd(mpmath.sin(mpmath.pi / 2 * i / SIN_STEPS) * 2 ** 31)
+               for i in range(SIN_STEPS + 1)]
+    t0 = [mpmath.mpf(i) / ATAN_STEPS for i in range(ATAN_STEPS + 1)]
     atan_a = [rnd(B * mpmath.atan(t) * 4) for t in t0]
     atan_d1 = [rnd(B / (1 + t * t) * 4) for t in t0]
     atan_c2 = [rnd(B * t / (1 + t * t) ** 2 * 4) for t in t0]
@@ -57,18 +58,20 @@ def table_text():
 #include "trig_impl.h"
 
 /* sin(i pi / 512) in Q0.31 (2^31 = 1.0), i = 0..256: a quarter wave. */
-const uint32_t fx_sin_q31[FX_TRIG_STEPS + 1] = {
+const uint32_t fx_sin_q31[FX_SIN_STEPS + 1] = {
 %s
 };
 
-/* atan on [0, 1] at t = i / 256, i = 0..256, in binary-angle units times
+/* atan on [0, 1] at t = i / 128, i = 0..128, in binary-angle units times
  * 4 (B = 2^32 / (2 pi) units per radian), one node per row so that one
  * base address reaches all four:
  *   a   B atan(t)
  *   d1  B / (1 + t^2): the first derivative of B atan(t)
  *   c2  B t / (1 + t^2)^2: minus the second Taylor coefficient (>= 0)
- *   c3  B (t^2 - 1/3) / (1 + t^2)^3: the third Taylor coefficient */
-const fx_atan_node_t fx_atan_nodes[FX_TRIG_STEPS + 1] = {
+ *   c3  B (t^2 - 1/3) / (1 + t^2)^3: the third Taylor coefficient
+ * 129 nodes (2 064 B): |h| <= 2^-8 from the nearest keeps the cubic's
+ * truncation at 0.031 units (fx_atan_ratio_bam() in trig_impl.h). */
+const fx_atan_node_t fx_atan_nodes[FX_ATAN_STEPS + 1] = {
 %s
 };
 """ % (rows(["%du" % v for v in sin_q31]),

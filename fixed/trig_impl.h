@@ -13,17 +13,20 @@
 
 #include "fixed_impl.h"
 
-/** Intervals per table: 256 per quarter wave, 256 over atan's [0, 1]. */
-#define FX_TRIG_STEPS 256
+/** Intervals of the sine table: 256 per quarter wave (pi / 512 each). */
+#define FX_SIN_STEPS 256
+
+/** Intervals of the atan table: 128 over [0, 1] (1/128 each). */
+#define FX_ATAN_STEPS 128
 
 /** Binary-angle units in a quarter turn (pi/2) and an eighth (pi/4). */
 #define FX_BAM_QUARTER (UINT32_C(1) << 30)
 #define FX_BAM_EIGHTH (UINT32_C(1) << 29)
 
-extern const uint32_t fx_sin_q31[FX_TRIG_STEPS + 1];
+extern const uint32_t fx_sin_q31[FX_SIN_STEPS + 1];
 
 /** A node of the atan table: B atan(t), its first derivative and its second
- *  and third Taylor coefficients at t = i / 256, in binary-angle units
+ *  and third Taylor coefficients at t = i / 128, in binary-angle units
  *  times 4 (trig_table.c). */
 typedef struct fx_atan_node {
   uint32_t a;  /**< B atan(t) */
@@ -32,7 +35,7 @@ typedef struct fx_atan_node {
   int32_t c3;  /**< B (t^2 - 1/3) / (1 + t^2)^3 */
 } fx_atan_node_t;
 
-extern const fx_atan_node_t fx_atan_nodes[FX_TRIG_STEPS + 1];
+extern const fx_atan_node_t fx_atan_nodes[FX_ATAN_STEPS + 1];
 
 /*
  * The kernels below are static inline so that sin, cos, tan and atan2 pay
@@ -72,7 +75,7 @@ static inline int64_t fx_sin_quadrant_q62(uint32_t r)
   bool neg = r < node;                             /* delta < 0 */
   uint32_t ad = neg ? (node - r) : (r - node);     /* |d| <= 2^21 units */
   uint32_t s0 = fx_sin_q31[i];
-  uint32_t c0 = fx_sin_q31[(uint32_t)FX_TRIG_STEPS - i];
+  uint32_t c0 = fx_sin_q31[(uint32_t)FX_SIN_STEPS - i];
   /* |delta| Q39: |d| 2 pi 2^31 / 2^24, the low product (< 2^51) shifted,
    * the 3 2^32 part exact as 768 |d| */
   uint32_t adl = (uint32_t)((((uint64_t)ad * FX_TWO_PI_Q31_LOW)
@@ -150,15 +153,22 @@ static inline uint32_t fx_div_ratio_q32(uint32_t num, uint32_t den)
  * atan(num / den) in binary-angle units, rounded, for 0 <= num <= den,
  * 0 < den <= 2^31. Result 0..2^29.
  *
- * t = num / den in Q32 (rounded, <= 2^-33 error), t0 = i / 256 the
- * nearest table point, h = t - t0, |h| <= 2^-9:
+ * t = num / den in Q32 (rounded, <= 2^-33 error), t0 = i / 128 the
+ * nearest table point, h = t - t0, |h| <= 2^-8:
  *   B atan(t0 + h) = A + D1 h - C2 h^2 + C3 h^3
  * (B = 2^32 / (2 pi) binary-angle units per radian), truncation error
- * <= 0.2 B h^4 = 0.002 units. Intermediates: |h| Q32 (<= 2^23),
- * h^2 Q42 (<= 2^24), |h^3| Q42 (<= 2^15), table values in units times 4,
- * products in units times 2^34 and 2^44 (<= 2^54.4), summed in units
- * times 2^33 (< 2^63); each product term is rounded towards minus
- * infinity, of its signed value.
+ * max |c4| B h^4 = 0.1945 B 2^-32 = 0.031 units (c4 the fourth Taylor
+ * coefficient of atan, largest in magnitude on [0, 1] at t = 0.325).
+ * Intermediates: |h| Q32 (<= 2^24), h^2 Q42 (<= 2^26), |h^3| Q42
+ * (<= 2^18), table values in units times 4 (D1 <= 2^31.35, C2 <= 2^29.73,
+ * |C3| <= 2^29.76), products in units times 2^34 and 2^44 (D1 |h| <=
+ * 2^55.35, C2 h^2 <= 2^55.73, |C3 h^3| <= 2^47.8), summed in units times
+ * 2^33 (A 2^31 <= 2^62, the sum <= 2^62 + 2^54.4 < 2^63); each product
+ * term is rounded towards minus infinity, of its signed value.
+ * Error before the final rounding: t's 2^-33 (0.080 units), A's 1/8
+ * unit, the truncation (0.031), D1's 1/8 unit times |h| (0.0005) and
+ * the roundings of h^2, h^3 and the products (< 0.0001): < 0.24 units,
+ * so the result is within 1 unit of the correctly rounded one.
  */
 static inline uint32_t fx_atan_ratio_bam(uint32_t num, uint32_t den)
 {
@@ -176,15 +186,15 @@ static inline uint32_t fx_atan_ratio_bam(uint32_t num, uint32_t den)
 
   if (num == den) {
     /* t = 1: A = 2^31 is pi/4 exactly, units times 4 */
-    return (fx_atan_nodes[FX_TRIG_STEPS].a + 2u) >> 2;
+    return (fx_atan_nodes[FX_ATAN_STEPS].a + 2u) >> 2;
   }
   /* t = round(num 2^32 / den) < 2^32: the floor of (num 2^32 + den / 2)
    * over den */
   t = fx_div_ratio_q32(num, den);
-  i = (t >> 24) + ((t >> 23) & 1u);                /* nearest, 0..256 */
-  low = t & 0xFFFFFFu;
-  neg = (t & (UINT32_C(1) << 23)) != 0u;           /* rounded up: h < 0 */
-  ah = neg ? ((UINT32_C(1) << 24) - low) : low;    /* |h| <= 2^23 */
+  i = (t >> 25) + ((t >> 24) & 1u);                /* nearest, 0..128 */
+  low = t & 0x1FFFFFFu;
+  neg = (t & (UINT32_C(1) << 24)) != 0u;           /* rounded up: h < 0 */
+  ah = neg ? ((UINT32_C(1) << 25) - low) : low;    /* |h| <= 2^24 */
   h2 = (uint32_t)(((uint64_t)ah * ah) >> 22);      /* Q42 */
   /* |h^3| Q42, the magnitude of floor(h2 h / 2^32) */
   ah3 = (uint32_t)((((uint64_t)h2 * ah)
@@ -198,7 +208,7 @@ static inline uint32_t fx_atan_ratio_bam(uint32_t num, uint32_t den)
     acc += ((uint64_t)node->d1 * ah) >> 1;
   }
   /* C3 h^3: the sign of C3 (negative below t = 1/sqrt(3)) times that of h */
-  p3 = (uint64_t)fx_abs32(node->c3) * ah3;         /* < 2^45 */
+  p3 = (uint64_t)fx_abs32(node->c3) * ah3;         /* <= 2^47.8 */
   c3_neg = node->c3 < 0;
   if (neg == c3_neg) {
     acc += p3 >> 11;

@@ -309,6 +309,54 @@ static void test_atan2_random_and_extremes(void)
   TEST_ASSERT_EQUAL_UINT32(5u, a);
 }
 
+/* atan2 midway between the nodes of the atan table (t = i / 128), where
+ * the cubic's truncation is largest (|h| = 2^-8, 0.031 units): y / x =
+ * (2k + 1) / 256 for k = 0..127, x = 2^30 (t exact in Q32; the tie goes
+ * to the upper node, h = -2^-8). mpmath's atan, rounded. */
+static void test_atan2_between_atan_nodes(void)
+{
+  static const uint32_t want[128] = {
+    2670163u, 8010164u, 13349187u, 18686582u, 24021698u,
+    29353889u, 34682507u, 40006910u, 45326458u, 50640513u,
+    55948444u, 61249621u, 66543421u, 71829226u, 77106424u,
+    82374407u, 87632577u, 92880340u, 98117110u, 103342309u,
+    108555367u, 113755721u, 118942819u, 124116117u, 129275078u,
+    134419178u, 139547900u, 144660738u, 149757197u, 154836791u,
+    159899047u, 164943499u, 169969696u, 174977196u, 179965568u,
+    184934394u, 189883266u, 194811789u, 199719579u, 204606264u,
+    209471483u, 214314887u, 219136141u, 223934919u, 228710908u,
+    233463808u, 238193329u, 242899194u, 247581137u, 252238905u,
+    256872255u, 261480955u, 266064788u, 270623543u, 275157025u,
+    279665048u, 284147437u, 288604026u, 293034664u, 297439207u,
+    301817523u, 306169488u, 310494991u, 314793928u, 319066208u,
+    323311746u, 327530468u, 331722309u, 335887214u, 340025134u,
+    344136031u, 348219874u, 352276640u, 356306316u, 360308894u,
+    364284375u, 368232767u, 372154086u, 376048352u, 379915596u,
+    383755852u, 387569162u, 391355574u, 395115141u, 398847924u,
+    402553986u, 406233399u, 409886237u, 413512582u, 417112518u,
+    420686135u, 424233528u, 427754796u, 431250041u, 434719370u,
+    438162893u, 441580724u, 444972981u, 448339785u, 451681259u,
+    454997530u, 458288728u, 461554985u, 464796437u, 468013221u,
+    471205476u, 474373344u, 477516969u, 480636498u, 483732076u,
+    486803855u, 489851983u, 492876615u, 495877903u, 498856002u,
+    501811068u, 504743258u, 507652730u, 510539643u, 513404156u,
+    516246430u, 519066625u, 521864904u, 524641427u, 527396357u,
+    530129856u, 532842087u, 535533213u,
+  };
+  size_t k;
+
+  worst = 0;
+  for (k = 0; k < COUNT(want); k++) {
+    drdc_bam32_t got = 0;
+
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_fx_atan2_bam32((int32_t)(((2u * k) + 1u) << 22),
+                                              INT32_C(1) << 30, &got));
+    note_angle(got, want[k]);
+  }
+  TEST_ASSERT_LESS_OR_EQUAL_INT32(ATAN2_TOL, worst);
+}
+
 /* asin and acos of the 16 385 grid sines and their negatives. */
 static void test_asin_acos_grid(void)
 {
@@ -396,6 +444,7 @@ void suite_fixed_trig(void)
   RUN_TEST(test_regression_tan_near_pole_precision);
   RUN_TEST(test_atan2_full_circle_grid);
   RUN_TEST(test_atan2_random_and_extremes);
+  RUN_TEST(test_atan2_between_atan_nodes);
   RUN_TEST(test_asin_acos_grid);
   RUN_TEST(test_asin_acos_random_and_bad_inputs);
 }
