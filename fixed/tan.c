@@ -10,7 +10,7 @@
  * tan(-a) = -tan(a) bit for bit). The denominator is zero only at the
  * poles, where the kernel is exactly 0.
  *
- * Near a pole the kernel's absolute precision (2^-40) is not enough
+ * Near a pole the kernel's absolute precision (2^-38.9) is not enough
  * relative to a tiny denominator, so within d < 2^21 units of a pole
  * (|tan| > 326) the series cot(e) = 1/e - e/3 - e^3/45 of the distance
  * e = d 2 pi / 2^32 is used instead; e^3/45 < 6.4e-10 is dropped (4e-5

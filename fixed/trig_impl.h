@@ -13,7 +13,13 @@
 
 #include "fixed_impl.h"
 
-/** Intervals of the sine table: 256 per quarter wave (pi / 512 each). */
+/** Intervals of the sine table: 256 per quarter wave (pi / 512 each).
+ *  Not 128 as the atan table (measured for issue 8): with 129 entries
+ *  sin and cos stay within 1 LSB, but 9 % of them change (the entries'
+ *  own 0.25-LSB roundings), and what multiplies several of them leaves
+ *  its documented bound: Euler to matrix 2 LSB (bound 1), T T^-1 5 LSB
+ *  (4), drdc_pose_we_from_le heights 4 LSB (2), drdc_pose_le_from_we
+ *  Euler angles 12 LSB (8). */
 #define FX_SIN_STEPS 256
 
 /** Intervals of the atan table: 128 over [0, 1] (1/128 each). */
@@ -48,13 +54,14 @@ extern const fx_atan_node_t fx_atan_nodes[FX_ATAN_STEPS + 1];
 
 /* 2 pi 2^31 = 3 2^32 + FX_TWO_PI_Q31_LOW: one binary-angle unit is
  * 2 pi / 2^32 rad, so d units times 2 pi 2^31 is d radians in Q63;
- * rounding the constant to an integer costs 2^-63 relative. */
+ * rounding the constant to an integer (up, by 0.48) adds 0.48 |d| 2^-63
+ * rad, below 0.06 LSB of Q39 for |d| <= 2^21. */
 #define FX_TWO_PI_Q31_LOW UINT32_C(608135817)
 
 /**
  * sin(r 2 pi / 2^32) for 0 <= r <= 2^30 (first quadrant) in Q2.62-ish:
  * the value times 2^62, >= 0, before the final rounding. Error below
- * 2^-32 (from the table) plus 2^-40.
+ * 2^-32 (from the table) plus 2^-38.9.
  *
  * With x0 the nearest of the 257 table angles and delta = x - x0,
  * |delta| <= pi / 1024 = 3.07e-3 rad,
@@ -66,7 +73,10 @@ extern const fx_atan_node_t fx_atan_nodes[FX_ATAN_STEPS + 1];
  *   |delta^3| / 6 Q58 <= 2^30.4 (truncated towards zero), s0 and c0 Q0.31
  *   <= 2^31, products Q70, Q77 and Q89 <= 2^61.7, summed in Q62 (< 2^63).
  * The table entries carry the error (<= 2^-32, 0.25 LSB of Q1.30); the
- * other terms add less than 2^-40.
+ * rounding of |delta| (below 1 LSB of Q39, plus the constant's 0.06)
+ * adds at most 1.06 2^-39 = 2^-38.9 (2^-38.93 measured on 100 000 random
+ * angles and the midpoints between entries, against the exact cubic of
+ * the same entries), the other roundings less than 2^-46.
  */
 static inline int64_t fx_sin_quadrant_q62(uint32_t r)
 {
@@ -167,7 +177,8 @@ static inline uint32_t fx_div_ratio_q32(uint32_t num, uint32_t den)
  * term is rounded towards minus infinity, of its signed value.
  * Error before the final rounding: t's 2^-33 (0.080 units), A's 1/8
  * unit, the truncation (0.031), D1's 1/8 unit times |h| (0.0005) and
- * the roundings of h^2, h^3 and the products (< 0.0001): < 0.24 units,
+ * the roundings of h^2, h^3 and the products (< 0.00011; 0.00007
+ * measured against the exact cubic of the same nodes): < 0.24 units,
  * so the result is within 1 unit of the correctly rounded one.
  */
 static inline uint32_t fx_atan_ratio_bam(uint32_t num, uint32_t den)
