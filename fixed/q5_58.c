@@ -295,7 +295,10 @@ drdc_status_t drdc_fx_atan2_q5_58(int64_t y, int64_t x, drdc_q5_58_t *out)
   /* binary angle -> radians: theta pi / 2^31 = (theta 2^27) pi / 2^58 */
   theta = mul(theta * BAM_TO_Q58, DRDC_Q5_58_PI);
   /* the remaining angle d has tan d = (y cos t - x sin t) / (x cos t +
-   * y sin t); |d| < 2e-9 so atan(q) = q - q^3/3 is q to 3e-27 */
+   * y sin t); |d| < 3e-9: the seed's 1 LSB (1.47e-9 rad) plus the
+   * turn by rounding y and x to 31 bits, at most 0.5 sqrt(2) / (2^29 -
+   * 0.5) = 1.32e-9 rad with the larger part >= 2^29; so atan(q) =
+   * q - q^3/3 + ... is q to 1e-26 */
   sincos_kernel(theta, &sn, &cs);
   num = mul(yn, cs) - mul(xn, sn);
   den = mul(xn, cs) + mul(yn, sn);
