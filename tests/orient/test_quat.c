@@ -56,6 +56,31 @@ static drdc_quat_t quat_of(const int32_t p[4])
   return q;
 }
 
+/* Each product of a table: the status, and on success the four parts,
+ * exactly (the tables hold the correctly rounded product). */
+static void expect_mul_table(const struct orient_mul_vector *vectors,
+                             size_t n)
+{
+  size_t i;
+
+  for (i = 0; i < n; i++) {
+    const struct orient_mul_vector *v = &vectors[i];
+    drdc_quat_t a = quat_of(v->a);
+    drdc_quat_t b = quat_of(v->b);
+    drdc_quat_t p = { 7, 7, 7, 7 };
+
+    TEST_ASSERT_EQUAL_INT(v->status, drdc_quat_mul(&a, &b, &p));
+    if (v->status == 0) {
+      TEST_ASSERT_EQUAL_INT32(v->p[0], p.s);
+      TEST_ASSERT_EQUAL_INT32(v->p[1], p.x);
+      TEST_ASSERT_EQUAL_INT32(v->p[2], p.y);
+      TEST_ASSERT_EQUAL_INT32(v->p[3], p.z);
+    } else {
+      TEST_ASSERT_EQUAL_INT32(7, p.s); /* unchanged on error */
+    }
+  }
+}
+
 static int64_t dcm_diff(const drdc_dcm_t *m, const int32_t r[9])
 {
   return orient_maxdiff32(&m->m[0][0], r, 9u);
@@ -178,48 +203,14 @@ static void test_dcm_to_quat_matches_scipy_at_every_angle(void)
 
 static void test_mul_is_correctly_rounded(void)
 {
-  size_t i;
-
-  for (i = 0; i < COUNT(orient_mul_vectors); i++) {
-    const struct orient_mul_vector *v = &orient_mul_vectors[i];
-    drdc_quat_t a = quat_of(v->a);
-    drdc_quat_t b = quat_of(v->b);
-    drdc_quat_t p = { 7, 7, 7, 7 };
-
-    TEST_ASSERT_EQUAL_INT(v->status, drdc_quat_mul(&a, &b, &p));
-    if (v->status == 0) {
-      TEST_ASSERT_EQUAL_INT32(v->p[0], p.s);
-      TEST_ASSERT_EQUAL_INT32(v->p[1], p.x);
-      TEST_ASSERT_EQUAL_INT32(v->p[2], p.y);
-      TEST_ASSERT_EQUAL_INT32(v->p[3], p.z);
-    } else {
-      TEST_ASSERT_EQUAL_INT32(7, p.s); /* unchanged on error */
-    }
-  }
+  expect_mul_table(orient_mul_vectors, COUNT(orient_mul_vectors));
 }
 
 /* Parts at exactly +-1.0 and one LSB either side: the edge between the
  * product's unchecked sums (parts in (-1, 1]) and its checked ones. */
 static void test_mul_at_the_unit_edges(void)
 {
-  size_t i;
-
-  for (i = 0; i < COUNT(orient_mul_edge_vectors); i++) {
-    const struct orient_mul_vector *v = &orient_mul_edge_vectors[i];
-    drdc_quat_t a = quat_of(v->a);
-    drdc_quat_t b = quat_of(v->b);
-    drdc_quat_t p = { 7, 7, 7, 7 };
-
-    TEST_ASSERT_EQUAL_INT(v->status, drdc_quat_mul(&a, &b, &p));
-    if (v->status == 0) {
-      TEST_ASSERT_EQUAL_INT32(v->p[0], p.s);
-      TEST_ASSERT_EQUAL_INT32(v->p[1], p.x);
-      TEST_ASSERT_EQUAL_INT32(v->p[2], p.y);
-      TEST_ASSERT_EQUAL_INT32(v->p[3], p.z);
-    } else {
-      TEST_ASSERT_EQUAL_INT32(7, p.s); /* unchanged on error */
-    }
-  }
+  expect_mul_table(orient_mul_edge_vectors, COUNT(orient_mul_edge_vectors));
 }
 
 /* Exact rotation (Python integers), rounded once: the first rows are
