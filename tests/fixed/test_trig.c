@@ -49,6 +49,21 @@ static void note_angle(uint32_t got, uint32_t want)
   note((d < INT32_MIN + 1) ? INT32_MAX : (int32_t)((d < 0) ? -d : d), 0);
 }
 
+/* The grids are stored as second differences from R[0] = 0 and R[1] =
+ * `first`: R[k + 1] = 2 R[k] - R[k - 1] + dd[k - 1] (v = R[k], prev =
+ * R[k - 1]) up to the last point n; after it, 0 (never compared). */
+static int32_t grid_next(int32_t k, int32_t n, int32_t first,
+                         const int8_t *dd, int32_t v, int32_t prev)
+{
+  if (k == 0) {
+    return first;
+  }
+  if (k < n) {
+    return (2 * v) - prev + dd[k - 1];
+  }
+  return 0;
+}
+
 /* Every grid angle k 2^16 of the circle, sin and cos (131 072 values),
  * from the stored first quadrant by sin(pi - a) = sin(a), sin(pi + a) =
  * -sin(a), cos(pi/2 -+ a) = +-sin(a), cos(3pi/2 -+ a) = -+sin(a). */
@@ -63,14 +78,7 @@ static void test_sin_cos_full_circle_grid(void)
     uint32_t a = (uint32_t)k * TRIG_GRID_STEP;
     int32_t next;
 
-    /* rebuild R[k] from the second differences */
-    if (k == 0) {
-      next = SIN_GRID_1;
-    } else if (k < TRIG_GRID_QUAD) {
-      next = (2 * v) - prev + sin_dd[k - 1];
-    } else {
-      next = 0;
-    }
+    next = grid_next(k, TRIG_GRID_QUAD, SIN_GRID_1, sin_dd, v, prev);
     note(drdc_fx_sin_bam32(a), v);
     note(drdc_fx_sin_bam32((UINT32_C(1) << 31) - a), v);
     note(drdc_fx_sin_bam32((UINT32_C(1) << 31) + a), -v);
@@ -252,13 +260,7 @@ static void test_atan2_full_circle_grid(void)
     int j;
     int32_t next;
 
-    if (k == 0) {
-      next = ATAN_GRID_1;
-    } else if (k < ATAN_GRID_OCT) {
-      next = (2 * v) - prev + atan_dd[k - 1];
-    } else {
-      next = 0;
-    }
+    next = grid_next(k, ATAN_GRID_OCT, ATAN_GRID_1, atan_dd, v, prev);
     pt[0].y = Y;  pt[0].x = X;  pt[0].want = A;
     pt[1].y = X;  pt[1].x = Y;  pt[1].want = q - A;
     pt[2].y = X;  pt[2].x = -Y; pt[2].want = q + A;
@@ -378,13 +380,7 @@ static void test_asin_acos_grid(void)
       dev = asin_dev_big[big++].dev;
     }
     want = want + (uint32_t)dev;
-    if (k == 0) {
-      next = SIN_GRID_1;
-    } else if (k < TRIG_GRID_QUAD) {
-      next = (2 * v) - prev + sin_dd[k - 1];
-    } else {
-      next = 0;
-    }
+    next = grid_next(k, TRIG_GRID_QUAD, SIN_GRID_1, sin_dd, v, prev);
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_asin_q1_30(v, &got[0]));
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_asin_q1_30(-v, &got[1]));
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_acos_q1_30(v, &got[2]));

@@ -33,7 +33,10 @@
 #define ONE16 INT32_C(0x10000)    /* 1 m in Q15.16 */
 #define C45 INT32_C(759250125)    /* cos 45 deg in Q1.30, rounded */
 
-/* Pre-filled into every output; an error must leave it there. */
+/* Pre-filled into every output; an error must leave it there. Each is
+ * the byte SENTINEL_BYTE repeated, so fill() and untouched() below serve
+ * outputs of any type. */
+#define SENTINEL_BYTE 0x5Au
 #define SENTINEL32 INT32_C(0x5A5A5A5A)
 #define SENTINEL64 INT64_C(0x5A5A5A5A5A5A5A5A)
 #define SENTINEL_BAM UINT32_C(0x5A5A5A5A)
@@ -65,35 +68,27 @@ static const drdc_transform_global_t t_global = {
 
 /* ------------------------------------------------ sentinel helpers */
 
-static void fill_quat(drdc_quat_t *q)
+/* Byte by byte, whatever the output's type: every part then holds its
+ * sentinel (SENTINEL32, SENTINEL64 or SENTINEL_BAM). */
+static void fill(void *out, size_t n)
 {
-  q->s = SENTINEL32;
-  q->x = SENTINEL32;
-  q->y = SENTINEL32;
-  q->z = SENTINEL32;
-}
+  unsigned char *b = out;
+  size_t k;
 
-static int quat_untouched(const drdc_quat_t *q)
-{
-  return (q->s == SENTINEL32) && (q->x == SENTINEL32)
-         && (q->y == SENTINEL32) && (q->z == SENTINEL32);
-}
-
-static void fill_dcm(drdc_dcm_t *m)
-{
-  unsigned k;
-
-  for (k = 0u; k < 9u; k++) {
-    m->m[k / 3u][k % 3u] = SENTINEL32;
+  for (k = 0u; k < n; k++) {
+    b[k] = SENTINEL_BYTE;
   }
 }
 
-static int dcm_untouched(const drdc_dcm_t *m)
+/* Every byte still SENTINEL_BYTE: every part still equals its sentinel,
+ * and no padding byte was written either. */
+static int untouched(const void *out, size_t n)
 {
-  unsigned k;
+  const unsigned char *b = out;
+  size_t k;
 
-  for (k = 0u; k < 9u; k++) {
-    if (m->m[k / 3u][k % 3u] != SENTINEL32) {
+  for (k = 0u; k < n; k++) {
+    if (b[k] != SENTINEL_BYTE) {
       return 0;
     }
   }
@@ -122,67 +117,6 @@ static int dcm_equal(const drdc_dcm_t *a, const drdc_dcm_t *b)
   return 1;
 }
 
-static void fill_local(drdc_vec3_q15_16_t *v)
-{
-  v->x = SENTINEL32;
-  v->y = SENTINEL32;
-  v->z = SENTINEL32;
-}
-
-static int local_untouched(const drdc_vec3_q15_16_t *v)
-{
-  return (v->x == SENTINEL32) && (v->y == SENTINEL32)
-         && (v->z == SENTINEL32);
-}
-
-static void fill_global(drdc_vec3_q47_16_t *v)
-{
-  v->x = SENTINEL64;
-  v->y = SENTINEL64;
-  v->z = SENTINEL64;
-}
-
-static int global_untouched(const drdc_vec3_q47_16_t *v)
-{
-  return (v->x == SENTINEL64) && (v->y == SENTINEL64)
-         && (v->z == SENTINEL64);
-}
-
-static void fill_euler(drdc_euler_t *e)
-{
-  e->yaw = SENTINEL_BAM;
-  e->pitch = SENTINEL_BAM;
-  e->roll = SENTINEL_BAM;
-}
-
-static int euler_untouched(const drdc_euler_t *e)
-{
-  return (e->yaw == SENTINEL_BAM) && (e->pitch == SENTINEL_BAM)
-         && (e->roll == SENTINEL_BAM);
-}
-
-static void fill_transform(drdc_transform_t *t)
-{
-  fill_dcm(&t->r);
-  fill_local(&t->t);
-}
-
-static int transform_untouched(const drdc_transform_t *t)
-{
-  return dcm_untouched(&t->r) && local_untouched(&t->t);
-}
-
-static void fill_transform_global(drdc_transform_global_t *t)
-{
-  fill_dcm(&t->r);
-  fill_global(&t->t);
-}
-
-static int transform_global_untouched(const drdc_transform_global_t *t)
-{
-  return dcm_untouched(&t->r) && global_untouched(&t->t);
-}
-
 /* ------------------------------------------------ quaternion algebra */
 
 static void test_quat_algebra_null_pointers_give_null(void)
@@ -192,9 +126,9 @@ static void test_quat_algebra_null_pointers_give_null(void)
   drdc_vec3_q47_16_t g;
   drdc_bam32_t angle = SENTINEL_BAM;
 
-  fill_quat(&q);
-  fill_local(&v);
-  fill_global(&g);
+  fill(&q, sizeof q);
+  fill(&v, sizeof v);
+  fill(&g, sizeof g);
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_quat_conj(NULL, &q));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_quat_conj(&identity_q, NULL));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_quat_canonical(NULL, &q));
@@ -226,9 +160,9 @@ static void test_quat_algebra_null_pointers_give_null(void)
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
                         drdc_quat_angle_between(&yaw90_q, &yaw90_q, NULL));
   /* nothing was written */
-  TEST_ASSERT_TRUE(quat_untouched(&q));
-  TEST_ASSERT_TRUE(local_untouched(&v));
-  TEST_ASSERT_TRUE(global_untouched(&g));
+  TEST_ASSERT_TRUE(untouched(&q, sizeof q));
+  TEST_ASSERT_TRUE(untouched(&v, sizeof v));
+  TEST_ASSERT_TRUE(untouched(&g, sizeof g));
   TEST_ASSERT_EQUAL_UINT32(SENTINEL_BAM, angle);
 }
 
@@ -237,14 +171,14 @@ static void test_rotate_by_zero_quaternion_gives_domain(void)
   drdc_vec3_q15_16_t v;
   drdc_vec3_q47_16_t g;
 
-  fill_local(&v);
-  fill_global(&g);
+  fill(&v, sizeof v);
+  fill(&g, sizeof g);
   TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN,
                         drdc_quat_rotate_q15_16(&zero_q, &v_local, &v));
   TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN,
                         drdc_quat_rotate_q47_16(&zero_q, &v_global, &g));
-  TEST_ASSERT_TRUE(local_untouched(&v));
-  TEST_ASSERT_TRUE(global_untouched(&g));
+  TEST_ASSERT_TRUE(untouched(&v, sizeof v));
+  TEST_ASSERT_TRUE(untouched(&g, sizeof g));
 }
 
 /* |v| > 32768 m turned so that a part leaves [-32768, 32768) m. */
@@ -260,13 +194,13 @@ static void test_rotate_q15_16_beyond_32768_gives_overflow(void)
   static const drdc_vec3_q15_16_t edge = { 0, INT32_MIN, INT32_MIN };
   drdc_vec3_q15_16_t v;
 
-  fill_local(&v);
+  fill(&v, sizeof v);
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
                         drdc_quat_rotate_q15_16(&q345, &far, &v));
-  TEST_ASSERT_TRUE(local_untouched(&v));
+  TEST_ASSERT_TRUE(untouched(&v, sizeof v));
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
                         drdc_quat_rotate_q15_16(&q90, &edge, &v));
-  TEST_ASSERT_TRUE(local_untouched(&v));
+  TEST_ASSERT_TRUE(untouched(&v, sizeof v));
   /* in place (out == v): v stays as it was */
   v.x = INT32_MAX;
   v.y = INT32_MIN;
@@ -292,10 +226,10 @@ static void test_rotate_q47_16_beyond_max_gives_range(void)
   size_t i;
 
   for (i = 0; i < COUNT(beyond); i++) {
-    fill_global(&g);
+    fill(&g, sizeof g);
     TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
                           drdc_quat_rotate_q47_16(&identity_q, &beyond[i], &g));
-    TEST_ASSERT_TRUE(global_untouched(&g));
+    TEST_ASSERT_TRUE(untouched(&g, sizeof g));
   }
   /* the limit itself is accepted; the identity rotation of it is exact
    * (within 0.53 LSB of an integer result means equal) */
@@ -310,13 +244,13 @@ static void test_compose_with_zero_gives_domain(void)
 {
   drdc_quat_t q;
 
-  fill_quat(&q);
+  fill(&q, sizeof q);
   TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN,
                         drdc_quat_compose(&zero_q, &yaw90_q, &q));
   TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN,
                         drdc_quat_compose(&yaw90_q, &zero_q, &q));
   TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN, drdc_quat_compose(&zero_q, &zero_q, &q));
-  TEST_ASSERT_TRUE(quat_untouched(&q));
+  TEST_ASSERT_TRUE(untouched(&q, sizeof q));
 }
 
 /* A part of a * b at 2.0 or beyond: |a| |b| >= 2. */
@@ -328,7 +262,7 @@ static void test_compose_product_beyond_2_gives_overflow(void)
   static const drdc_quat_t sx_minus = { ONE30, -ONE30, 0, 0 };  /* [1, -1] */
   drdc_quat_t q;
 
-  fill_quat(&q);
+  fill(&q, sizeof q);
   /* -2 * -2 = 4 */
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_quat_compose(&minus2, &minus2,
                                                            &q));
@@ -338,19 +272,19 @@ static void test_compose_product_beyond_2_gives_overflow(void)
   /* [1, 1, 0, 0] [1, -1, 0, 0]: s = 1 - (1)(-1) = 2, x = -1 + 1 = 0 */
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
                         drdc_quat_compose(&sx_plus, &sx_minus, &q));
-  TEST_ASSERT_TRUE(quat_untouched(&q));
+  TEST_ASSERT_TRUE(untouched(&q, sizeof q));
 }
 
 static void test_difference_with_zero_gives_domain(void)
 {
   drdc_quat_t q;
 
-  fill_quat(&q);
+  fill(&q, sizeof q);
   TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN,
                         drdc_quat_difference(&zero_q, &yaw90_q, &q));
   TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN,
                         drdc_quat_difference(&yaw90_q, &zero_q, &q));
-  TEST_ASSERT_TRUE(quat_untouched(&q));
+  TEST_ASSERT_TRUE(untouched(&q, sizeof q));
 }
 
 static void test_angle_between_zero_gives_domain(void)
@@ -375,10 +309,10 @@ static void test_matrix_null_pointers_give_null(void)
   drdc_vec3_q15_16_t v;
   drdc_vec3_q47_16_t g;
 
-  fill_dcm(&m);
-  fill_euler(&e);
-  fill_local(&v);
-  fill_global(&g);
+  fill(&m, sizeof m);
+  fill(&e, sizeof e);
+  fill(&v, sizeof v);
+  fill(&g, sizeof g);
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_dcm_from_euler(NULL, &m));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_dcm_from_euler(&e_level, NULL));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_euler_from_dcm(NULL, &e));
@@ -398,10 +332,10 @@ static void test_matrix_null_pointers_give_null(void)
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
                         drdc_dcm_apply_q47_16(&eye, &v_global, NULL));
   /* nothing was written */
-  TEST_ASSERT_TRUE(dcm_untouched(&m));
-  TEST_ASSERT_TRUE(euler_untouched(&e));
-  TEST_ASSERT_TRUE(local_untouched(&v));
-  TEST_ASSERT_TRUE(global_untouched(&g));
+  TEST_ASSERT_TRUE(untouched(&m, sizeof m));
+  TEST_ASSERT_TRUE(untouched(&e, sizeof e));
+  TEST_ASSERT_TRUE(untouched(&v, sizeof v));
+  TEST_ASSERT_TRUE(untouched(&g, sizeof g));
 }
 
 /* The first column and the third row are zero: neither atan2(R21, R11)
@@ -418,11 +352,11 @@ static void test_euler_from_dcm_zero_column_and_row_gives_domain(void)
                                        { 0, 0, 0 } } };
   drdc_euler_t e;
 
-  fill_euler(&e);
+  fill(&e, sizeof e);
   TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN, drdc_euler_from_dcm(&zero_m, &e));
-  TEST_ASSERT_TRUE(euler_untouched(&e));
+  TEST_ASSERT_TRUE(untouched(&e, sizeof e));
   TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN, drdc_euler_from_dcm(&hollow, &e));
-  TEST_ASSERT_TRUE(euler_untouched(&e));
+  TEST_ASSERT_TRUE(untouched(&e, sizeof e));
 }
 
 static void test_dcm_mul_beyond_2_gives_overflow(void)
@@ -448,13 +382,13 @@ static void test_dcm_mul_beyond_2_gives_overflow(void)
                                        { 0, 0, ONE30 } } };
   drdc_dcm_t m;
 
-  fill_dcm(&m);
+  fill(&m, sizeof m);
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_dcm_mul(&shear, &shear, &m));
-  TEST_ASSERT_TRUE(dcm_untouched(&m));
+  TEST_ASSERT_TRUE(untouched(&m, sizeof m));
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_dcm_mul(&ones, &ones, &m));
-  TEST_ASSERT_TRUE(dcm_untouched(&m));
+  TEST_ASSERT_TRUE(untouched(&m, sizeof m));
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_dcm_mul(&minus2, &minus2, &m));
-  TEST_ASSERT_TRUE(dcm_untouched(&m));
+  TEST_ASSERT_TRUE(untouched(&m, sizeof m));
   /* in place (out == a), with the first six elements of the product in
    * range ([1 0 0], [1 0 0]) and only element (3, 1) = 1 + 1 = 2.0
    * beyond: a stays as it was */
@@ -470,10 +404,10 @@ static void test_dcm_apply_q15_16_beyond_32768_gives_overflow(void)
   static const drdc_vec3_q15_16_t far = { INT32_MAX, INT32_MIN, 0 };
   drdc_vec3_q15_16_t v;
 
-  fill_local(&v);
+  fill(&v, sizeof v);
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
                         drdc_dcm_apply_q15_16(&yaw45, &far, &v));
-  TEST_ASSERT_TRUE(local_untouched(&v));
+  TEST_ASSERT_TRUE(untouched(&v, sizeof v));
   /* in place (out == v): v stays as it was */
   v.x = INT32_MAX;
   v.y = INT32_MIN;
@@ -495,10 +429,10 @@ static void test_dcm_apply_q47_16_beyond_max_gives_range(void)
   size_t i;
 
   for (i = 0; i < COUNT(beyond); i++) {
-    fill_global(&g);
+    fill(&g, sizeof g);
     TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
                           drdc_dcm_apply_q47_16(&eye, &beyond[i], &g));
-    TEST_ASSERT_TRUE(global_untouched(&g));
+    TEST_ASSERT_TRUE(untouched(&g, sizeof g));
   }
 }
 
@@ -518,13 +452,13 @@ static void test_dcm_apply_q47_16_sum_beyond_int64_gives_overflow(void)
                                              DRDC_ORIENT_Q47_16_MAX };
   drdc_vec3_q47_16_t g;
 
-  fill_global(&g);
+  fill(&g, sizeof g);
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
                         drdc_dcm_apply_q47_16(&row_minus2, &at_min, &g));
-  TEST_ASSERT_TRUE(global_untouched(&g));
+  TEST_ASSERT_TRUE(untouched(&g, sizeof g));
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
                         drdc_dcm_apply_q47_16(&row_minus2, &at_max, &g));
-  TEST_ASSERT_TRUE(global_untouched(&g));
+  TEST_ASSERT_TRUE(untouched(&g, sizeof g));
 }
 
 /* ---------------------------------------------------- interpolation */
@@ -537,7 +471,7 @@ static void test_interpolation_null_pointers_give_null(void)
   const drdc_q1_30_t half = ONE30 / 2;
   drdc_quat_t q;
 
-  fill_quat(&q);
+  fill(&q, sizeof q);
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_quat_nlerp(NULL, b, half, &q));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_quat_nlerp(a, NULL, half, &q));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_quat_nlerp(a, b, half, NULL));
@@ -562,7 +496,7 @@ static void test_interpolation_null_pointers_give_null(void)
                         drdc_quat_squad(a, b, a, NULL, half, &q));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
                         drdc_quat_squad(a, b, a, b, half, NULL));
-  TEST_ASSERT_TRUE(quat_untouched(&q));
+  TEST_ASSERT_TRUE(untouched(&q, sizeof q));
 }
 
 /* (1 - t) a + t b' = 0: a zero key weighted alone. */
@@ -570,7 +504,7 @@ static void test_nlerp_to_zero_gives_domain(void)
 {
   drdc_quat_t q;
 
-  fill_quat(&q);
+  fill(&q, sizeof q);
   /* t = 0: 1 * 0 + 0 * b */
   TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN,
                         drdc_quat_nlerp(&zero_q, &yaw90_q, 0, &q));
@@ -579,7 +513,7 @@ static void test_nlerp_to_zero_gives_domain(void)
                         drdc_quat_nlerp(&yaw90_q, &zero_q, ONE30, &q));
   TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN,
                         drdc_quat_nlerp(&zero_q, &zero_q, ONE30 / 2, &q));
-  TEST_ASSERT_TRUE(quat_untouched(&q));
+  TEST_ASSERT_TRUE(untouched(&q, sizeof q));
 }
 
 static void test_slerp_of_zero_gives_domain(void)
@@ -588,21 +522,21 @@ static void test_slerp_of_zero_gives_domain(void)
   drdc_quat_t q;
   size_t i;
 
-  fill_quat(&q);
+  fill(&q, sizeof q);
   for (i = 0; i < COUNT(ts); i++) {
     TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN,
                           drdc_quat_slerp(&zero_q, &yaw90_q, ts[i], &q));
     TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN,
                           drdc_quat_slerp(&yaw90_q, &zero_q, ts[i], &q));
   }
-  TEST_ASSERT_TRUE(quat_untouched(&q));
+  TEST_ASSERT_TRUE(untouched(&q, sizeof q));
 }
 
 static void test_squad_control_zero_key_gives_domain(void)
 {
   drdc_quat_t q;
 
-  fill_quat(&q);
+  fill(&q, sizeof q);
   TEST_ASSERT_EQUAL_INT(
       DRDC_E_DOMAIN,
       drdc_quat_squad_control(&zero_q, &identity_q, &yaw90_q, &q));
@@ -611,7 +545,7 @@ static void test_squad_control_zero_key_gives_domain(void)
   TEST_ASSERT_EQUAL_INT(
       DRDC_E_DOMAIN,
       drdc_quat_squad_control(&roll90_q, &identity_q, &zero_q, &q));
-  TEST_ASSERT_TRUE(quat_untouched(&q));
+  TEST_ASSERT_TRUE(untouched(&q, sizeof q));
 }
 
 static void test_squad_zero_quaternion_gives_domain(void)
@@ -623,7 +557,7 @@ static void test_squad_zero_quaternion_gives_domain(void)
   drdc_quat_t q;
   size_t i;
 
-  fill_quat(&q);
+  fill(&q, sizeof q);
   for (i = 0; i < COUNT(ts); i++) {
     TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN,
                           drdc_quat_squad(z, b, a, b, ts[i], &q));
@@ -634,7 +568,7 @@ static void test_squad_zero_quaternion_gives_domain(void)
     TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN,
                           drdc_quat_squad(a, b, a, z, ts[i], &q));
   }
-  TEST_ASSERT_TRUE(quat_untouched(&q));
+  TEST_ASSERT_TRUE(untouched(&q, sizeof q));
 }
 
 /* ----------------------------------------------------------- frames */
@@ -645,9 +579,9 @@ static void test_frame_null_pointers_give_null(void)
   drdc_vec3_q47_16_t g;
   drdc_quat_t q;
 
-  fill_local(&v);
-  fill_global(&g);
-  fill_quat(&q);
+  fill(&v, sizeof v);
+  fill(&g, sizeof g);
+  fill(&q, sizeof q);
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_frame_frd_flu_q15_16(NULL, &v));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_frame_frd_flu_q15_16(&v_local, NULL));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_frame_ned_enu_q15_16(NULL, &v));
@@ -662,9 +596,9 @@ static void test_frame_null_pointers_give_null(void)
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_frame_frd_flu_quat(&yaw90_q, NULL));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_frame_ned_enu_quat(NULL, &q));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_frame_ned_enu_quat(&yaw90_q, NULL));
-  TEST_ASSERT_TRUE(local_untouched(&v));
-  TEST_ASSERT_TRUE(global_untouched(&g));
-  TEST_ASSERT_TRUE(quat_untouched(&q));
+  TEST_ASSERT_TRUE(untouched(&v, sizeof v));
+  TEST_ASSERT_TRUE(untouched(&g, sizeof g));
+  TEST_ASSERT_TRUE(untouched(&q, sizeof q));
 }
 
 /* ------------------------------------------------------- transforms */
@@ -676,10 +610,10 @@ static void test_transform_null_pointers_give_null(void)
   drdc_vec3_q15_16_t v;
   drdc_vec3_q47_16_t g;
 
-  fill_transform(&t);
-  fill_transform_global(&tg);
-  fill_local(&v);
-  fill_global(&g);
+  fill(&t, sizeof t);
+  fill(&tg, sizeof tg);
+  fill(&v, sizeof v);
+  fill(&g, sizeof g);
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
                         drdc_transform_from_quat(NULL, &v_local, &t));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
@@ -724,20 +658,20 @@ static void test_transform_null_pointers_give_null(void)
   TEST_ASSERT_EQUAL_INT(
       DRDC_E_NULL, drdc_transform_global_to_local(&t_global, &v_global, NULL));
   /* nothing was written */
-  TEST_ASSERT_TRUE(transform_untouched(&t));
-  TEST_ASSERT_TRUE(transform_global_untouched(&tg));
-  TEST_ASSERT_TRUE(local_untouched(&v));
-  TEST_ASSERT_TRUE(global_untouched(&g));
+  TEST_ASSERT_TRUE(untouched(&t, sizeof t));
+  TEST_ASSERT_TRUE(untouched(&tg, sizeof tg));
+  TEST_ASSERT_TRUE(untouched(&v, sizeof v));
+  TEST_ASSERT_TRUE(untouched(&g, sizeof g));
 }
 
 static void test_transform_from_zero_quat_gives_domain(void)
 {
   drdc_transform_t t;
 
-  fill_transform(&t);
+  fill(&t, sizeof t);
   TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN,
                         drdc_transform_from_quat(&zero_q, &v_local, &t));
-  TEST_ASSERT_TRUE(transform_untouched(&t));
+  TEST_ASSERT_TRUE(untouched(&t, sizeof t));
 }
 
 /* t = Ra tb + ta leaves [-32768, 32768) m. */
@@ -759,13 +693,13 @@ static void test_transform_compose_beyond_32768_gives_overflow(void)
   };
   drdc_transform_t t;
 
-  fill_transform(&t);
+  fill(&t, sizeof t);
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
                         drdc_transform_compose(&far_x, &far_x, &t));
-  TEST_ASSERT_TRUE(transform_untouched(&t));
+  TEST_ASSERT_TRUE(untouched(&t, sizeof t));
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
                         drdc_transform_compose(&far_y, &minus_y, &t));
-  TEST_ASSERT_TRUE(transform_untouched(&t));
+  TEST_ASSERT_TRUE(untouched(&t, sizeof t));
   /* in place (out == a): a stays as it was */
   copy_dcm(&far_x.r, &t.r);
   t.t.x = INT32_MAX;
@@ -790,9 +724,9 @@ static void test_transform_invert_beyond_32768_gives_overflow(void)
   };
   drdc_transform_t t;
 
-  fill_transform(&t);
+  fill(&t, sizeof t);
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_transform_invert(&far, &t));
-  TEST_ASSERT_TRUE(transform_untouched(&t));
+  TEST_ASSERT_TRUE(untouched(&t, sizeof t));
   /* in place (out == a): a stays as it was */
   copy_dcm(&far.r, &t.r);
   t.t.x = INT32_MIN;

@@ -56,6 +56,40 @@ static drdc_quat_t quat_of(const int32_t p[4])
   return q;
 }
 
+/* The parts of q in the tables' order, s first. */
+static void parts_of(const drdc_quat_t *q, int32_t p[4])
+{
+  p[0] = q->s;
+  p[1] = q->x;
+  p[2] = q->y;
+  p[3] = q->z;
+}
+
+/* Each product of a table: the status, and on success the four parts,
+ * exactly (the tables hold the correctly rounded product). */
+static void expect_mul_table(const struct orient_mul_vector *vectors,
+                             size_t n)
+{
+  size_t i;
+
+  for (i = 0; i < n; i++) {
+    const struct orient_mul_vector *v = &vectors[i];
+    drdc_quat_t a = quat_of(v->a);
+    drdc_quat_t b = quat_of(v->b);
+    drdc_quat_t p = { 7, 7, 7, 7 };
+
+    TEST_ASSERT_EQUAL_INT(v->status, drdc_quat_mul(&a, &b, &p));
+    if (v->status == 0) {
+      TEST_ASSERT_EQUAL_INT32(v->p[0], p.s);
+      TEST_ASSERT_EQUAL_INT32(v->p[1], p.x);
+      TEST_ASSERT_EQUAL_INT32(v->p[2], p.y);
+      TEST_ASSERT_EQUAL_INT32(v->p[3], p.z);
+    } else {
+      TEST_ASSERT_EQUAL_INT32(7, p.s); /* unchanged on error */
+    }
+  }
+}
+
 static int64_t dcm_diff(const drdc_dcm_t *m, const int32_t r[9])
 {
   return orient_maxdiff32(&m->m[0][0], r, 9u);
@@ -178,48 +212,14 @@ static void test_dcm_to_quat_matches_scipy_at_every_angle(void)
 
 static void test_mul_is_correctly_rounded(void)
 {
-  size_t i;
-
-  for (i = 0; i < COUNT(orient_mul_vectors); i++) {
-    const struct orient_mul_vector *v = &orient_mul_vectors[i];
-    drdc_quat_t a = quat_of(v->a);
-    drdc_quat_t b = quat_of(v->b);
-    drdc_quat_t p = { 7, 7, 7, 7 };
-
-    TEST_ASSERT_EQUAL_INT(v->status, drdc_quat_mul(&a, &b, &p));
-    if (v->status == 0) {
-      TEST_ASSERT_EQUAL_INT32(v->p[0], p.s);
-      TEST_ASSERT_EQUAL_INT32(v->p[1], p.x);
-      TEST_ASSERT_EQUAL_INT32(v->p[2], p.y);
-      TEST_ASSERT_EQUAL_INT32(v->p[3], p.z);
-    } else {
-      TEST_ASSERT_EQUAL_INT32(7, p.s); /* unchanged on error */
-    }
-  }
+  expect_mul_table(orient_mul_vectors, COUNT(orient_mul_vectors));
 }
 
 /* Parts at exactly +-1.0 and one LSB either side: the edge between the
  * product's unchecked sums (parts in (-1, 1]) and its checked ones. */
 static void test_mul_at_the_unit_edges(void)
 {
-  size_t i;
-
-  for (i = 0; i < COUNT(orient_mul_edge_vectors); i++) {
-    const struct orient_mul_vector *v = &orient_mul_edge_vectors[i];
-    drdc_quat_t a = quat_of(v->a);
-    drdc_quat_t b = quat_of(v->b);
-    drdc_quat_t p = { 7, 7, 7, 7 };
-
-    TEST_ASSERT_EQUAL_INT(v->status, drdc_quat_mul(&a, &b, &p));
-    if (v->status == 0) {
-      TEST_ASSERT_EQUAL_INT32(v->p[0], p.s);
-      TEST_ASSERT_EQUAL_INT32(v->p[1], p.x);
-      TEST_ASSERT_EQUAL_INT32(v->p[2], p.y);
-      TEST_ASSERT_EQUAL_INT32(v->p[3], p.z);
-    } else {
-      TEST_ASSERT_EQUAL_INT32(7, p.s); /* unchanged on error */
-    }
-  }
+  expect_mul_table(orient_mul_edge_vectors, COUNT(orient_mul_edge_vectors));
 }
 
 /* Exact rotation (Python integers), rounded once: the first rows are
@@ -433,10 +433,7 @@ static void test_random_dcm_round_trip(void)
     }
     (void)drdc_dcm_from_quat(&q, &m);
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_quat_from_dcm(&m, &back));
-    r[0] = q.s;
-    r[1] = q.x;
-    r[2] = q.y;
-    r[3] = q.z;
+    parts_of(&q, r);
     d = orient_qdiff(&back, r);
     mq = (d > mq) ? d : mq;
   }
@@ -662,10 +659,7 @@ static void test_compose_difference_and_angle(void)
   (void)drdc_quat_from_euler(&e2, &b);
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_quat_difference(&a, &b, &d));
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_quat_compose(&a, &d, &c));
-  want[0] = b.s;
-  want[1] = b.x;
-  want[2] = b.y;
-  want[3] = b.z;
+  parts_of(&b, want);
   TEST_ASSERT_TRUE(orient_qdiff(&c, want) <= 2);
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_quat_angle_between(&a, &b, &ang));
   TEST_ASSERT_TRUE(orient_abs64(orient_bam_diff(ang, UINT32_C(0x2AAAAAAB)))
@@ -716,10 +710,7 @@ static void test_frames(void)
   /* each map is its own inverse (up to the sign of q) */
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_frame_frd_flu_quat(&r, &back));
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_frame_ned_enu_quat(&back, &back));
-  want[0] = q.s;
-  want[1] = q.x;
-  want[2] = q.y;
-  want[3] = q.z;
+  parts_of(&q, want);
   TEST_ASSERT_TRUE(orient_qdiff(&back, want) <= 2);
 }
 
@@ -743,14 +734,8 @@ static void test_nlerp_squad_ends(void)
   (void)drdc_quat_from_euler(&e1, &q1);
   (void)drdc_quat_from_euler(&e2, &q2);
   (void)drdc_quat_from_euler(&e3, &q3);
-  w1[0] = q1.s;
-  w1[1] = q1.x;
-  w1[2] = q1.y;
-  w1[3] = q1.z;
-  w2[0] = q2.s;
-  w2[1] = q2.x;
-  w2[2] = q2.y;
-  w2[3] = q2.z;
+  parts_of(&q1, w1);
+  parts_of(&q2, w2);
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_quat_nlerp(&q1, &q2, 0, &r));
   TEST_ASSERT_TRUE(orient_qdiff(&r, w1) <= 2);
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_quat_nlerp(&q1, &q2, 1 << 30, &r));
