@@ -454,6 +454,22 @@ mgrs_text(int32_t code, drdc_nas_t lat, int32_t prec, geo_tm_t *tm,
   (void)mgrs_from_tm(code, tm, text, DRDC_GEO_MGRS_SIZE);
 }
 
+/* The steps and statuses the MGRS poses share before their attitude:
+ * prec checked first (DRDC_E_RANGE must not depend on the position),
+ * then project_to_grid() of (lat, lon) in its standard zone, in Q28.36
+ * for the text (out only tested for NULL). Inlined, as
+ * project_to_grid(). */
+static inline __attribute__((always_inline)) drdc_status_t
+project_to_mgrs(drdc_nas_t lat, drdc_nas_t lon, int32_t prec,
+                const void *out, geo_tm_t *tm, int32_t *code)
+{
+  if ((prec < DRDC_GEO_MGRS_PREC_MIN) || (prec > DRDC_GEO_MGRS_PREC_MAX)) {
+    return DRDC_E_RANGE;
+  }
+  return project_to_grid(lat, lon, DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36,
+                         out, tm, code);
+}
+
 /* A pose conversion of pose.c, here for the reason of
  * drdc_pose_weutm_from_we(): the body of drdc_geo_mgrs_encode() in its
  * own frame, the position and the convergence waiting in its geo_tm_t
@@ -471,12 +487,7 @@ drdc_status_t drdc_pose_wmgrs_from_w(const drdc_WPose_t *w, int32_t prec,
   if ((w == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  /* prec first: DRDC_E_RANGE must not depend on the position */
-  if ((prec < DRDC_GEO_MGRS_PREC_MIN) || (prec > DRDC_GEO_MGRS_PREC_MAX)) {
-    return DRDC_E_RANGE;
-  }
-  st = project_to_grid(w->latitude, w->longitude,
-                       DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, out, &tm,
+  st = project_to_mgrs(w->latitude, w->longitude, prec, out, &tm,
                        &code);
   if (st != DRDC_OK) {
     return st;
@@ -501,11 +512,7 @@ drdc_status_t drdc_pose_wemgrs_from_we(const drdc_WePose_t *w, int32_t prec,
   if ((w == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  if ((prec < DRDC_GEO_MGRS_PREC_MIN) || (prec > DRDC_GEO_MGRS_PREC_MAX)) {
-    return DRDC_E_RANGE;
-  }
-  st = project_to_grid(w->latitude, w->longitude,
-                       DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, out, &tm,
+  st = project_to_mgrs(w->latitude, w->longitude, prec, out, &tm,
                        &code);
   if (st != DRDC_OK) {
     return st;

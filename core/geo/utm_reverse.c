@@ -198,6 +198,24 @@ grid_of(const drdc_geo_utm_t *in, const char *text, geo_tm_t *tm)
   return geo_mgrs_decode_tm(text, tm, NULL);
 }
 
+/* The position of utm (or of the MGRS text mgrs, utm NULL) reversed:
+ * grid_of() then grid_reverse(), their statuses; the latitude and
+ * longitude into lat and lon (neither written when NULL) and the
+ * convergence (nas) into tm->gamma, where the forward leaves it.
+ * Inlined: each pass of the grid poses is its own copy, a few calls
+ * (see w_from_grid()). */
+static inline __attribute__((always_inline)) drdc_status_t
+grid_position(const drdc_geo_utm_t *utm, const char *mgrs, drdc_nas_t *lat,
+              drdc_nas_t *lon, geo_tm_t *tm)
+{
+  int32_t code = grid_of(utm, mgrs, tm);
+
+  if (code < 0) {
+    return (drdc_status_t)-code;
+  }
+  return grid_reverse(code, lat, lon, &tm->gamma, NULL, tm);
+}
+
 /* Every part of q within [-1, 1] (|raw| <= 2^30): then a turn about the
  * down axis, r q with r = (c, 0, 0, s) from drdc_fx_sincos_bam32(),
  * cannot fail. Each part of the product is c a -/+ s b for two parts a,
@@ -235,17 +253,12 @@ w_from_grid(const drdc_WUTMPose_t *u, const drdc_WMGRSPose_t *m,
             drdc_WPose_t *out)
 {
   geo_tm_t tm;
-  int32_t code;
   drdc_status_t st;
 
   if (!turn_cannot_fail((u != NULL) ? &u->q : &m->q)) {
-    code = grid_of((u != NULL) ? &u->utm : NULL,
-                   (m != NULL) ? m->mgrs : NULL, &tm);
-    if (code < 0) {
-      return (drdc_status_t)-code;
-    }
-    /* the convergence in tm->gamma, where the forward leaves it */
-    st = grid_reverse(code, NULL, NULL, &tm.gamma, NULL, &tm);
+    /* the convergence alone, in tm.gamma */
+    st = grid_position((u != NULL) ? &u->utm : NULL,
+                       (m != NULL) ? m->mgrs : NULL, NULL, NULL, &tm);
     if (st == DRDC_OK) {
       st = geo_w_attitude(u, m, &tm, out);
     }
@@ -255,13 +268,9 @@ w_from_grid(const drdc_WUTMPose_t *u, const drdc_WMGRSPose_t *m,
   }
   /* the position straight into out: nothing after it can fail now (the
    * same turn returns DRDC_OK) */
-  code = grid_of((u != NULL) ? &u->utm : NULL, (m != NULL) ? m->mgrs : NULL,
-                 &tm);
-  if (code < 0) {
-    return (drdc_status_t)-code;
-  }
-  st = grid_reverse(code, &out->latitude, &out->longitude, &tm.gamma, NULL,
-                    &tm);
+  st = grid_position((u != NULL) ? &u->utm : NULL,
+                     (m != NULL) ? m->mgrs : NULL, &out->latitude,
+                     &out->longitude, &tm);
   if (st != DRDC_OK) {
     return st;
   }
@@ -301,16 +310,11 @@ we_from_grid(const drdc_WeUTMPose_t *u, const drdc_WeMGRSPose_t *m,
 {
   const drdc_euler_t *e;
   geo_tm_t tm;
-  int32_t code;
   drdc_status_t st;
 
-  code = grid_of((u != NULL) ? &u->utm : NULL, (m != NULL) ? m->mgrs : NULL,
-                 &tm);
-  if (code < 0) {
-    return (drdc_status_t)-code;
-  }
-  st = grid_reverse(code, &out->latitude, &out->longitude, &tm.gamma, NULL,
-                    &tm);
+  st = grid_position((u != NULL) ? &u->utm : NULL,
+                     (m != NULL) ? m->mgrs : NULL, &out->latitude,
+                     &out->longitude, &tm);
   if (st != DRDC_OK) {
     return st;
   }
