@@ -135,13 +135,32 @@ void geo_weutm_attitude(const drdc_WePose_t *w, drdc_WeUTMPose_t *out)
   out->e.roll = w->e.roll;
 }
 
+/* h + n, the ellipsoidal height of the height h above the geoid (Q47.16
+ * m) for a checked separation |n| <= DRDC_GEO_HEIGHT_MAX (< 2^40),
+ * without signed overflow: the sum is taken modulo 2^64 in uint64_t. A
+ * true sum beyond int64_t lands within 2^40 of the other end, far beyond
+ * +-DRDC_GEO_HEIGHT_MAX, so the point's check refuses it as it would the
+ * true sum (DRDC_E_HEIGHT, after the latitude and longitude); every
+ * other sum is exact. The same add instruction as a signed sum: a
+ * branch here grew the frames under drdc_pose_l_from_w() and
+ * drdc_pose_le_from_we() past 256 B (issue 8). uint64_t -> int64_t of a
+ * value above INT64_MAX is modulo 2^64 in GCC and Clang (implementation-
+ * defined in C99, no undefined behaviour). */
+static inline drdc_q47_16_t ellipsoidal_height(drdc_q47_16_t h,
+                                               drdc_q47_16_t n)
+{
+  uint64_t sum = (uint64_t)h + (uint64_t)n;
+
+  return (drdc_q47_16_t)sum;
+}
+
 /* the ellipsoidal point of a pose */
 static void ellipsoidal(const drdc_WPose_t *w, drdc_q47_16_t n,
                         drdc_geo_point_t *p)
 {
   p->lat = w->latitude;
   p->lon = w->longitude;
-  p->height = w->height + n;
+  p->height = ellipsoidal_height(w->height, n);
 }
 
 /* |N| up to 10 000 km keeps every sum in range */
@@ -178,8 +197,7 @@ static void load_ned(const drdc_vec3_q15_16_t *ned, geo_bowring_t *b)
  * point of b's offset (north b->z, up b->u, east b->v) there, into b.
  * `used` (callers GCC cannot see) keeps the pointers: IPA-SRA would pass
  * the three values instead, copied in the frames of position_*() (16
- * bytes more each on both targets); the linker still drops it with
- * them. */
+ * bytes more each on PowerPC); the linker still drops it with them. */
 static __attribute__((noinline, used)) drdc_status_t ecef_at(
   const drdc_nas_t *lat, const drdc_nas_t *lon, const drdc_q47_16_t *height,
   geo_bowring_t *b)
@@ -188,7 +206,7 @@ static __attribute__((noinline, used)) drdc_status_t ecef_at(
 
   ll.lat = *lat;
   ll.lon = *lon;
-  b->p += *height;
+  b->p = ellipsoidal_height(*height, b->p);
   return geo_ecef_of_plane(&ll, b);
 }
 
@@ -411,7 +429,7 @@ static void ellipsoidal_we(const drdc_WePose_t *we, drdc_q47_16_t n,
 {
   p->lat = we->latitude;
   p->lon = we->longitude;
-  p->height = we->height + n;
+  p->height = ellipsoidal_height(we->height, n);
 }
 
 /* *inv composed in place with the quaternion of the angles e: the

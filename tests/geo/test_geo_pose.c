@@ -650,6 +650,66 @@ static void test_drdc_pose_we_from_le_errors(void)
   TEST_ASSERT_EQUAL_INT64(SENTINEL64, out.height);
 }
 
+/* Regression: a height near the ends of Q47.16 plus the geoid separation
+ * overflowed int64_t (undefined behaviour, caught by UBSan) before the
+ * point's check could refuse it. Each local pose conversion now gives
+ * DRDC_E_HEIGHT for such a reference or pose height with either extreme
+ * separation, and leaves out unchanged. */
+static void test_local_poses_far_heights_do_not_overflow(void)
+{
+  static const int64_t heights[] = { INT64_MAX, INT64_MIN,
+                                     INT64_MAX - M(1), INT64_MIN + M(1) };
+  static const int64_t separations[] = { DRDC_GEO_HEIGHT_MAX,
+                                         -DRDC_GEO_HEIGHT_MAX };
+  const drdc_WPose_t w0 = { 45 * NAS_DEG, 10 * NAS_DEG, 0,
+                            { 1073741824, 0, 0, 0 } };
+  const drdc_WePose_t we0 = { 45 * NAS_DEG, 10 * NAS_DEG, 0,
+                              { 0u, 0u, 0u } };
+  const drdc_lPose_t l = { { M(10), M(20), M(-3) }, { 1073741824, 0, 0, 0 } };
+  const drdc_lePose_t le = { { M(10), M(20), M(-3) }, { 0u, 0u, 0u } };
+  size_t i;
+  size_t j;
+
+  for (i = 0; i < COUNT(heights); i++) {
+    for (j = 0; j < COUNT(separations); j++) {
+      const int64_t n = separations[j];
+      drdc_WPose_t w = w0;
+      drdc_WPose_t far = w0;
+      drdc_WePose_t we = we0;
+      drdc_WePose_t we_far = we0;
+      drdc_WPose_t w_out;
+      drdc_WePose_t we_out;
+      drdc_lPose_t l_out;
+      drdc_lePose_t le_out;
+
+      far.height = heights[i];
+      we_far.height = heights[i];
+      memset(&w_out, 0x5A, sizeof w_out);
+      memset(&we_out, 0x5A, sizeof we_out);
+      memset(&l_out, 0x5A, sizeof l_out);
+      memset(&le_out, 0x5A, sizeof le_out);
+      /* the far height as the reference's */
+      TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT,
+                            drdc_pose_w_from_l(&far, n, &l, &w_out));
+      TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT,
+                            drdc_pose_l_from_w(&far, n, &w, &l_out));
+      TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT,
+                            drdc_pose_we_from_le(&we_far, n, &le, &we_out));
+      TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT,
+                            drdc_pose_le_from_we(&we_far, n, &we, &le_out));
+      /* and as the pose's, at a good reference */
+      TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT,
+                            drdc_pose_l_from_w(&w, n, &far, &l_out));
+      TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT,
+                            drdc_pose_le_from_we(&we, n, &we_far, &le_out));
+      TEST_ASSERT_EACH_EQUAL_HEX8(0x5A, &w_out, sizeof w_out);
+      TEST_ASSERT_EACH_EQUAL_HEX8(0x5A, &we_out, sizeof we_out);
+      TEST_ASSERT_EACH_EQUAL_HEX8(0x5A, &l_out, sizeof l_out);
+      TEST_ASSERT_EACH_EQUAL_HEX8(0x5A, &le_out, sizeof le_out);
+    }
+  }
+}
+
 static void test_drdc_pose_le_from_we_errors(void)
 {
   drdc_WePose_t ref = { 0, 0, 0, { 0u, 0u, 0u } };
@@ -1062,4 +1122,5 @@ void suite_geo_pose(void)
   RUN_TEST(test_drdc_pose_we_from_le_errors);
   RUN_TEST(test_drdc_pose_we_from_le_unchanged_on_error);
   RUN_TEST(test_drdc_pose_le_from_we_errors);
+  RUN_TEST(test_local_poses_far_heights_do_not_overflow);
 }
