@@ -135,6 +135,11 @@ def generate():
             pairs.append((y, x))
     atan_rows = ["  { %s, %s, %du }," % (i32(y), i32(x), bam(mpmath.atan2(y, x)))
                  for y, x in pairs]
+    # atan2 midway between the library's atan nodes (t = i / 128):
+    # y / x = (2k + 1) / 256, x = 2^30, where its cubic's truncation is
+    # largest
+    midnode = [bam(mpmath.atan2((2 * k + 1) << 22, 1 << 30))
+               for k in range(128)]
     # asin of the grid sines, as deviation from k 2^16
     asin_dev = [bam(mpmath.asin(mpmath.mpf(s) / (1 << 30))) - k * GRID
                 for k, s in enumerate(sin_grid)]
@@ -211,6 +216,12 @@ static const struct atan2_vector atan2_vectors[] = {
 %s
 };
 
+/* atan2((2k + 1) 2^22, 2^30), k = 0..127: midway between the nodes of
+ * the library's atan table (fixed/trig_table.c, t = i / 128) */
+static const uint32_t atan2_midnode[128] = {
+%s
+};
+
 /* asin(R[k] / 2^30) = k 2^16 + asin_dev[k] (binary angle), k = 0..16384;
  * -128 means: the deviation is in asin_dev_big */
 static const int8_t asin_dev[] = {
@@ -238,7 +249,8 @@ static const struct asin_vector asin_vectors[] = {
 #endif
 """ % (GRID, QUAD, OCT, sin_grid[1], c_rows(sin_dd), "\n".join(sin_rows),
        c_rows(tan_bytes), "\n".join(tan_rows), atan_grid[1], c_rows(atan_dd),
-       "\n".join(atan_rows), c_rows(asin_dev),
+       "\n".join(atan_rows), c_rows(midnode, 8),
+       c_rows(asin_dev),
        "\n".join("  { %d, %d }," % kd for kd in asin_big),
        "\n".join(asin_rows))
     return {"tests/fixed/vectors_trig.h": text}
