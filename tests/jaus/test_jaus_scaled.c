@@ -155,6 +155,11 @@ static void test_drdc_jaus_scaled_encode_bad_input(void)
 
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_jaus_scaled_encode(0, -1, 1, DRDC_JAUS_INT8,
                                                              DRDC_JAUS_FORM_RA3, NULL));
+  /* a NULL output wins over an outside value (the plain form refuses an
+   * outside value before it hands over to the saturating body) */
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_jaus_scaled_encode(5, -1, 1, DRDC_JAUS_INT8,
+                                                DRDC_JAUS_FORM_RA3, NULL));
   TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_jaus_scaled_encode(2, -1, 1, DRDC_JAUS_INT8,
                                                               DRDC_JAUS_FORM_RA3, &i));
   TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_jaus_scaled_encode(1, 1, 1, DRDC_JAUS_INT8,
@@ -191,6 +196,10 @@ static void test_drdc_jaus_scaled_decode_bad_input(void)
 
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_jaus_scaled_decode(0, -1, 1, DRDC_JAUS_INT8,
                                                              DRDC_JAUS_FORM_RA3, NULL));
+  /* and over an outside integer (200 > 127) */
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_jaus_scaled_decode(200, -1, 1, DRDC_JAUS_INT8,
+                                                DRDC_JAUS_FORM_RA3, NULL));
   /* -32768 is outside the RA 3.x int16 range, inside the AS6009 one */
   TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_jaus_scaled_decode(-32768, -1000, 1000,
                                                               DRDC_JAUS_INT16,
