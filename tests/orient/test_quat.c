@@ -85,7 +85,11 @@ static void expect_mul_table(const struct orient_mul_vector *vectors,
       TEST_ASSERT_EQUAL_INT32(v->p[2], p.y);
       TEST_ASSERT_EQUAL_INT32(v->p[3], p.z);
     } else {
-      TEST_ASSERT_EQUAL_INT32(7, p.s); /* unchanged on error */
+      /* unchanged on error, every part */
+      TEST_ASSERT_EQUAL_INT32(7, p.s);
+      TEST_ASSERT_EQUAL_INT32(7, p.x);
+      TEST_ASSERT_EQUAL_INT32(7, p.y);
+      TEST_ASSERT_EQUAL_INT32(7, p.z);
     }
   }
 }
