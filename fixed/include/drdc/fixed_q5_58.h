@@ -77,7 +77,7 @@ drdc_status_t drdc_fx_sincos_q5_58(drdc_q5_58_t x, drdc_q5_58_t *s,
  * (right shifts round), a binary-angle seed by drdc_fx_atan2_bam32()
  * (1 LSB, 1.5e-9 rad), then the remainder d with tan d =
  * (y cos t - x sin t) / (x cos t + y sin t), |d| < 3e-9 (the seed's
- * 1.5e-9 plus 1.4e-9 from rounding y and x to 31 bits), taken as the
+ * 1.5e-9 plus 1.3e-9 from rounding y and x to 31 bits), taken as the
  * quotient (d^3 / 3 < 1e-26 is below the resolution).
  *
  * Accuracy: measured max error 3 LSB (1.1e-17 rad) over
