@@ -203,6 +203,8 @@ drdc_status_t drdc_geo_to_ecef(const drdc_geo_point_t *p,
   return DRDC_OK;
 }
 
+/* |v| for v > INT64_MIN: its callers pass Q27.36 values below 2^62 in
+ * magnitude (drdc_geo_from_ecef() checks its input without it) */
 static int64_t ecef_abs64(int64_t v)
 {
   return (v < 0) ? -v : v;
@@ -404,9 +406,11 @@ drdc_status_t drdc_geo_from_ecef(const drdc_vec3_q47_16_t *ecef,
   if ((ecef == NULL) || (p == NULL)) {
     return DRDC_E_NULL;
   }
-  if ((ecef_abs64(ecef->x) >= ECEF_COORD_MAX)
-      || (ecef_abs64(ecef->y) >= ECEF_COORD_MAX)
-      || (ecef_abs64(ecef->z) >= ECEF_COORD_MAX)) {
+  /* each bound on both sides, with no negation of the coordinate
+   * (ecef_abs64() of INT64_MIN would overflow) */
+  if ((ecef->x >= ECEF_COORD_MAX) || (ecef->x <= -ECEF_COORD_MAX)
+      || (ecef->y >= ECEF_COORD_MAX) || (ecef->y <= -ECEF_COORD_MAX)
+      || (ecef->z >= ECEF_COORD_MAX) || (ecef->z <= -ECEF_COORD_MAX)) {
     return DRDC_E_HEIGHT;
   }
   /* as geo_geodetic_q36(), reading the coordinates again after each

@@ -12,6 +12,7 @@
 #include <drdc/geo_mgrs.h>
 
 #include <stddef.h>
+#include <string.h>
 
 #include "suites.h"
 #include "unity.h"
@@ -292,6 +293,40 @@ static void test_drdc_geo_to_ecef_errors(void)
   TEST_ASSERT_EQUAL_INT64(SENTINEL64, e.z);
 }
 
+static void test_from_ecef_int64_min_does_not_overflow(void)
+{
+  /* Regression: a coordinate of INT64_MIN was negated in int64_t by the
+   * range check of drdc_geo_from_ecef() (undefined behaviour, caught by
+   * UBSan: ecef.c ecef_abs64()). Each coordinate at INT64_MIN, INT64_MIN + 1
+   * and INT64_MAX, the others on the equator's surface or also extreme:
+   * DRDC_E_HEIGHT, p unchanged. */
+  static const int64_t far[] = { INT64_MIN, INT64_MIN + 1, INT64_MAX };
+  size_t i;
+  size_t axis;
+
+  for (i = 0; i < (sizeof far / sizeof far[0]); i++) {
+    for (axis = 0; axis < 4u; axis++) {
+      drdc_vec3_q47_16_t e = { M(6378137), 0, 0 };
+      drdc_geo_point_t p;
+
+      if (axis == 0u) {
+        e.x = far[i];
+      } else if (axis == 1u) {
+        e.y = far[i];
+      } else if (axis == 2u) {
+        e.z = far[i];
+      } else {
+        e.x = far[i];
+        e.y = far[i];
+        e.z = far[i];
+      }
+      memset(&p, 0x5A, sizeof p);
+      TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT, drdc_geo_from_ecef(&e, &p));
+      TEST_ASSERT_EACH_EQUAL_HEX8(0x5A, &p, sizeof p);
+    }
+  }
+}
+
 static void test_drdc_geo_from_ecef_errors(void)
 {
   drdc_geo_point_t p = { SENTINEL64, SENTINEL64, SENTINEL64 };
@@ -433,6 +468,7 @@ void suite_geo_bad_input(void)
   RUN_TEST(test_drdc_geo_mgrs_decode_errors);
   RUN_TEST(test_drdc_geo_to_ecef_errors);
   RUN_TEST(test_drdc_geo_from_ecef_errors);
+  RUN_TEST(test_from_ecef_int64_min_does_not_overflow);
   RUN_TEST(test_drdc_geo_to_enu_errors);
   RUN_TEST(test_drdc_geo_to_ned_errors);
   RUN_TEST(test_drdc_geo_from_enu_errors);
