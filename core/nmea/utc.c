@@ -7,11 +7,18 @@
  */
 #include "nmea_impl.h"
 
-#define SECONDS_PER_HALF_DAY 43200
+#define SECONDS_PER_HALF_DAY 43200u
+/* 2^31: the bias that maps int32_t order onto uint32_t order */
+#define BIAS 0x80000000u
 
-static int32_t seconds_of_day(const drdc_nmea_tod_t *t)
+/* The seconds of the day modulo 2^32: exact for the times
+ * drdc_nmea_parse() writes (below 86 401); hand-filled fields of any int32
+ * value wrap instead of overflowing (drdc_time_from_civil() then refuses
+ * them). */
+static uint32_t seconds_of_day(const drdc_nmea_tod_t *t)
 {
-  return (((t->hour * 60) + t->minute) * 60) + t->second;
+  return ((((uint32_t)t->hour * 60u) + (uint32_t)t->minute) * 60u)
+         + (uint32_t)t->second;
 }
 
 drdc_status_t drdc_nmea_utc(const drdc_time_leap_t *leap,
@@ -19,7 +26,7 @@ drdc_status_t drdc_nmea_utc(const drdc_time_leap_t *leap,
                             drdc_time_t *utc)
 {
   int32_t days = 0;
-  int32_t shift;
+  uint32_t shift;
   drdc_time_civil_t c;
   drdc_status_t st;
 
@@ -34,11 +41,15 @@ drdc_status_t drdc_nmea_utc(const drdc_time_leap_t *leap,
   if (st != DRDC_OK) {
     return st;
   }
-  /* the day of `s`: the one nearest to the dated time of day */
-  shift = seconds_of_day(&s->time) - seconds_of_day(&dated->time);
-  if (shift < -SECONDS_PER_HALF_DAY) {
+  /* the day of `s`: the one nearest to the dated time of day. shift is
+   * the signed difference d of the two times of day plus 2^31, modulo
+   * 2^32 (d itself in int32_t could overflow for hand-filled fields):
+   * d < -half a day below BIAS - half a day, d > half a day above
+   * BIAS + half a day, the same days as the signed comparisons of d */
+  shift = (seconds_of_day(&s->time) - seconds_of_day(&dated->time)) ^ BIAS;
+  if (shift < (BIAS - SECONDS_PER_HALF_DAY)) {
     days += 1;
-  } else if (shift > SECONDS_PER_HALF_DAY) {
+  } else if (shift > (BIAS + SECONDS_PER_HALF_DAY)) {
     days -= 1;
   } else {
     /* same day */

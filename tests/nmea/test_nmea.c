@@ -9,6 +9,7 @@
  */
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 
 #include <drdc/nmea.h>
 
@@ -256,6 +257,40 @@ static void test_drdc_nmea_utc_bad_input(void)
   TEST_ASSERT_EQUAL_INT32(7, t.nsec);
 }
 
+static void test_nmea_utc_extreme_time_fields_do_not_overflow(void)
+{
+  /* Regression: the seconds of the day of a sentence's time fields were
+   * summed in int32_t before any check (undefined behaviour, caught by
+   * UBSan: utc.c seconds_of_day(), hour INT32_MIN times 60). Hand-filled
+   * fields at the ends of int32_t now wrap modulo 2^32 and reach
+   * drdc_time_from_civil(), which refuses them; utc unchanged. */
+  static const int32_t far[] = { INT32_MIN, INT32_MIN + 1, INT32_MAX };
+  drdc_nmea_t rmc;
+  size_t i;
+
+  parse_text("$GPRMC,161229.487,A,3723.2475,N,12158.3416,W,0.13,309.62,"
+             "120598,,*10\r\n", &rmc);
+  for (i = 0; i < COUNT(far); i++) {
+    drdc_nmea_t s = rmc;
+    drdc_time_t t;
+
+    memset(&t, 0x5A, sizeof t);
+    s.time.hour = far[i];
+    TEST_ASSERT_EQUAL_INT(DRDC_E_HOUR, drdc_nmea_utc(NULL, &rmc, &s, &t));
+    s = rmc;
+    s.time.minute = far[i];
+    TEST_ASSERT_EQUAL_INT(DRDC_E_MINUTE, drdc_nmea_utc(NULL, &rmc, &s, &t));
+    s = rmc;
+    s.time.second = far[i];
+    TEST_ASSERT_EQUAL_INT(DRDC_E_SECOND, drdc_nmea_utc(NULL, &rmc, &s, &t));
+    s = rmc;
+    s.time.nsec = far[i];
+    TEST_ASSERT_EQUAL_INT(DRDC_E_NANOSECOND,
+                          drdc_nmea_utc(NULL, &rmc, &s, &t));
+    TEST_ASSERT_EACH_EQUAL_HEX8(0x5A, &t, sizeof t);
+  }
+}
+
 void suite_nmea(void)
 {
   UnitySetTestFile(__FILE__);
@@ -265,4 +300,5 @@ void suite_nmea(void)
   RUN_TEST(test_never_reads_past_the_buffer);
   RUN_TEST(test_drdc_nmea_utc_stitching);
   RUN_TEST(test_drdc_nmea_utc_bad_input);
+  RUN_TEST(test_nmea_utc_extreme_time_fields_do_not_overflow);
 }

@@ -201,8 +201,13 @@ drdc_status_t drdc_nmea_parse(const char *text, size_t length,
  * @retval DRDC_E_MISSING_FIELD `dated` carries no date
  * @retval DRDC_E_DAY the date's day does not exist in its month (30
  *         February)
+ * @retval DRDC_E_HOUR a time of day's hour outside 0..23 (only in a
+ *         hand-filled `s`: drdc_nmea_parse() never writes one)
+ * @retval DRDC_E_MINUTE a time of day's minute outside 0..59 (the same)
  * @retval DRDC_E_SECOND second 60 other than at the end of a day with a
- *         positive leap second
+ *         positive leap second, or a second outside 0..60 (hand-filled)
+ * @retval DRDC_E_NANOSECOND a time of day's nsec outside
+ *         0..999 999 999 (hand-filled)
  * @retval DRDC_E_RANGE the day before or after the date is outside the
  *         calendar (years 1..9999)
  */
