@@ -21,6 +21,26 @@ static uint32_t seconds_of_day(const drdc_nmea_tod_t *t)
          + (uint32_t)t->second;
 }
 
+/* A time of day in the ranges drdc_time_from_civil() accepts, with its
+ * statuses in its order (second 60 is left to it: whether the day has a
+ * leap second is its question). */
+static drdc_status_t tod_check(const drdc_nmea_tod_t *t)
+{
+  if ((t->hour < 0) || (t->hour > 23)) {
+    return DRDC_E_HOUR;
+  }
+  if ((t->minute < 0) || (t->minute > 59)) {
+    return DRDC_E_MINUTE;
+  }
+  if ((t->second < 0) || (t->second > 60)) {
+    return DRDC_E_SECOND;
+  }
+  if ((t->nsec < 0) || (t->nsec >= DRDC_NS_PER_SECOND)) {
+    return DRDC_E_NANOSECOND;
+  }
+  return DRDC_OK;
+}
+
 drdc_status_t drdc_nmea_utc(const drdc_time_leap_t *leap,
                             const drdc_nmea_t *dated, const drdc_nmea_t *s,
                             drdc_time_t *utc)
@@ -38,6 +58,13 @@ drdc_status_t drdc_nmea_utc(const drdc_time_leap_t *leap,
   }
   st = drdc_time_days_from_civil(dated->year, dated->month, dated->day,
                                  &days);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  /* dated's time of day only chooses the day of s's: checked here, as
+   * drdc_time_from_civil() checks s's below, so that a hand-filled one
+   * out of range is refused instead of moving the day */
+  st = tod_check(&dated->time);
   if (st != DRDC_OK) {
     return st;
   }

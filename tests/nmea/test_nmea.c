@@ -291,6 +291,64 @@ static void test_nmea_utc_extreme_time_fields_do_not_overflow(void)
   }
 }
 
+static void test_nmea_utc_dated_time_out_of_range_is_refused(void)
+{
+  /* Contract fix: `dated`'s time of day only chooses the day of `s`'s, and
+   * was never checked, so a hand-filled hour of 24 or 100 gave DRDC_OK with
+   * a day moved by it. Each field just outside its range and at the ends of
+   * int32_t now gives the status drdc_time_from_civil() gives for `s`'s,
+   * and utc is unchanged. */
+  static const int32_t hours[] = { -1, 24, 100, INT32_MIN, INT32_MAX };
+  static const int32_t minutes[] = { -1, 60, INT32_MIN, INT32_MAX };
+  static const int32_t seconds[] = { -1, 61, INT32_MIN, INT32_MAX };
+  static const int32_t nsecs[] = { -1, 1000000000, INT32_MIN, INT32_MAX };
+  drdc_nmea_t rmc;
+  drdc_nmea_t gga;
+  drdc_nmea_t dated;
+  drdc_time_t t;
+  size_t i;
+
+  parse_text("$GPRMC,161229.487,A,3723.2475,N,12158.3416,W,0.13,309.62,"
+             "120598,,*10\r\n", &rmc);
+  parse_text("$GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,"
+             "M,,*47\r\n", &gga);
+  memset(&t, 0x5A, sizeof t);
+  for (i = 0; i < COUNT(hours); i++) {
+    dated = rmc;
+    dated.time.hour = hours[i];
+    TEST_ASSERT_EQUAL_INT(DRDC_E_HOUR, drdc_nmea_utc(NULL, &dated, &gga, &t));
+  }
+  for (i = 0; i < COUNT(minutes); i++) {
+    dated = rmc;
+    dated.time.minute = minutes[i];
+    TEST_ASSERT_EQUAL_INT(DRDC_E_MINUTE,
+                          drdc_nmea_utc(NULL, &dated, &gga, &t));
+  }
+  for (i = 0; i < COUNT(seconds); i++) {
+    dated = rmc;
+    dated.time.second = seconds[i];
+    TEST_ASSERT_EQUAL_INT(DRDC_E_SECOND,
+                          drdc_nmea_utc(NULL, &dated, &gga, &t));
+  }
+  for (i = 0; i < COUNT(nsecs); i++) {
+    dated = rmc;
+    dated.time.nsec = nsecs[i];
+    TEST_ASSERT_EQUAL_INT(DRDC_E_NANOSECOND,
+                          drdc_nmea_utc(NULL, &dated, &gga, &t));
+    /* the same field of s, refused by drdc_time_from_civil() */
+    TEST_ASSERT_EQUAL_INT(DRDC_E_NANOSECOND,
+                          drdc_nmea_utc(NULL, &rmc, &dated, &t));
+  }
+  TEST_ASSERT_EACH_EQUAL_HEX8(0x5A, &t, sizeof t);
+  /* the edges of the ranges are accepted */
+  dated = rmc;
+  dated.time.hour = 23;
+  dated.time.minute = 59;
+  dated.time.second = 59;
+  dated.time.nsec = 999999999;
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_nmea_utc(NULL, &dated, &gga, &t));
+}
+
 void suite_nmea(void)
 {
   UnitySetTestFile(__FILE__);
@@ -301,4 +359,5 @@ void suite_nmea(void)
   RUN_TEST(test_drdc_nmea_utc_stitching);
   RUN_TEST(test_drdc_nmea_utc_bad_input);
   RUN_TEST(test_nmea_utc_extreme_time_fields_do_not_overflow);
+  RUN_TEST(test_nmea_utc_dated_time_out_of_range_is_refused);
 }

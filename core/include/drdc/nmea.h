@@ -202,7 +202,7 @@ drdc_status_t drdc_nmea_parse(const char *text, size_t length,
  * @retval DRDC_E_DAY the date's day does not exist in its month (30
  *         February)
  * @retval DRDC_E_HOUR a time of day's hour outside 0..23 (only in a
- *         hand-filled `s`: drdc_nmea_parse() never writes one)
+ *         hand-filled `dated` or `s`: drdc_nmea_parse() never writes one)
  * @retval DRDC_E_MINUTE a time of day's minute outside 0..59 (the same)
  * @retval DRDC_E_SECOND second 60 other than at the end of a day with a
  *         positive leap second, or a second outside 0..60 (hand-filled)
