@@ -22,18 +22,21 @@ import argparse
 import os
 import re
 import select
+import shlex
 import signal
 import subprocess
 import sys
 import time
 from xml.sax.saxutils import escape, quoteattr
 
-# Machine profiles: the command that boots an image.
+# Machine profiles: the command that boots an image. -nic none: no
+# network card, whose option ROM (Debian's ipxe-qemu) the images never use.
 PROFILES = {
     "host": ["{image}"],
     "ppc-e500": ["qemu-system-ppc", "-M", "mpc8544ds", "-nographic",
-                 "-no-reboot", "-kernel", "{image}"],
+                 "-nic", "none", "-no-reboot", "-kernel", "{image}"],
     "arm-cm3": ["qemu-system-arm", "-M", "mps2-an385", "-nographic",
+                "-nic", "none",
                 "-semihosting-config", "enable=on,target=native",
                 "-kernel", "{image}"],
 }
@@ -91,6 +94,13 @@ class Verdict:
         return self.count("FAIL") + (1 if extra else 0)
 
 
+def command(profile, image, extra=()):
+    """The command line that boots image on profile."""
+    cmd = [a.format(image=os.path.abspath(image)) for a in PROFILES[profile]]
+    cmd[1:1] = list(extra)
+    return cmd
+
+
 def boot(profile, image, inactivity, timeout, max_bytes, echo=None, extra=()):
     """Run an image; return (console bytes, exit status or None, why killed).
     `extra` arguments go to QEMU (e.g. -icount shift=0 for benchmarks)."""
@@ -99,8 +109,7 @@ def boot(profile, image, inactivity, timeout, max_bytes, echo=None, extra=()):
                          % (profile, ", ".join(PROFILES)))
     if not os.path.exists(image):
         return b"", None, "image not found: %s" % image
-    cmd = [a.format(image=os.path.abspath(image)) for a in PROFILES[profile]]
-    cmd[1:1] = list(extra)
+    cmd = command(profile, image, extra)
     proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, start_new_session=True)
     fd = proc.stdout.fileno()
@@ -269,6 +278,10 @@ def cmd_run(args):
 def cmd_show(args):
     def echo(chunk):
         sys.stdout.write(chunk.decode("ascii", errors="replace").replace("\r", ""))
+        sys.stdout.flush()
+    if args.profile in PROFILES:
+        print("harness: running " + " ".join(
+            shlex.quote(a) for a in command(args.profile, args.image)))
         sys.stdout.flush()
     data, status, killed = boot(args.profile, args.image, args.inactivity,
                                 args.timeout, args.max_bytes, echo)
