@@ -11,6 +11,8 @@
 
 #include <drdc/time_scales.h>
 
+#include <stddef.h>
+
 drdc_status_t drdc_rtems_utc_from_tod(const rtems_time_of_day *tod,
                                       drdc_time_t *utc)
 {
