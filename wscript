@@ -149,18 +149,24 @@ SANITIZE = ["-fsanitize=address,undefined", "-fno-sanitize-recover=all",
 #   intcheck   instruction set of tools/intcheck.py, or None to skip
 #   soft_float_libm  the toolchain has soft-float double and a libm: the
 #              benchmark image times double-precision baselines
+#   apt        groups of Debian packages the target needs (tools/deps.py)
+#   headers    bare metal: the only system include directories, in order,
+#              after -nostdinc ("gcc:DIR" is the compiler's own DIR, as
+#              -print-file-name gives it), so no host header can leak in
+#   hosted_bait  headers of the host's C library (glibc) that the target
+#              must not see: configure proves that each is missing
 TARGETS = {
     "host": {
         "cross": "", "bsp": "host", "qemu": "host", "ext": "",
         "arch": ["-D_POSIX_C_SOURCE=200809L"],
         "link": [], "libs": [], "hard_float": [], "intcheck": "x86-64",
-        "soft_float_libm": False,
+        "soft_float_libm": False, "apt": ["host"],
     },
     "host-asan": {
         "cross": "", "bsp": "host", "qemu": "host", "ext": "",
         "arch": ["-D_POSIX_C_SOURCE=200809L"] + SANITIZE,
         "link": SANITIZE, "libs": [], "hard_float": None, "intcheck": None,
-        "soft_float_libm": False,
+        "soft_float_libm": False, "apt": ["host"],
     },
     "host-fuzz": {
         "cross": "", "compiler": "clang-14", "bsp": "host", "qemu": None,
@@ -170,6 +176,7 @@ TARGETS = {
                  "-fno-sanitize-recover=all", "-fno-omit-frame-pointer"],
         "link": ["-fsanitize=fuzzer,address,undefined"], "libs": [],
         "hard_float": None, "intcheck": None, "soft_float_libm": False,
+        "apt": ["host", "host-fuzz"],
     },
     "ppc-e500": {
         "cross": "powerpc-linux-gnu-", "bsp": "ppc-e500", "qemu": "ppc-e500",
@@ -182,7 +189,12 @@ TARGETS = {
         "libs": ["gcc"],
         "hard_float": ["-mhard-float"], "intcheck": "ppc",
         # Debian's PowerPC libgcc is hard-float: no soft-float routines
-        "soft_float_libm": False,
+        "soft_float_libm": False, "apt": ["ppc-e500"],
+        # freestanding: the compiler's <stdint.h>, <stddef.h>, <stdbool.h>;
+        # the board's own <limits.h> (the compiler's wants a C library's
+        # below it) and <string.h> (the four functions of its mem.c)
+        "headers": ["bsp/ppc-e500/include", "gcc:include"],
+        "hosted_bait": ["math.h", "stdio.h", "features.h"],
     },
     "arm-cm3": {
         "cross": "arm-none-eabi-", "bsp": "arm-cm3", "qemu": "arm-cm3",
@@ -195,7 +207,12 @@ TARGETS = {
         "hard_float": ["-mcpu=cortex-m4", "-mfpu=fpv4-sp-d16",
                        "-mfloat-abi=hard"],
         "intcheck": "arm",
-        "soft_float_libm": True,
+        "soft_float_libm": True, "apt": ["arm-cm3"],
+        # the compiler's own, then newlib's (nano.specs puts newlib nano's
+        # first with -isystem, which -nostdinc keeps)
+        "headers": ["gcc:include", "gcc:include-fixed",
+                    "/usr/lib/arm-none-eabi/include"],
+        "hosted_bait": ["features.h", "argp.h"],
     },
 }
 
@@ -215,6 +232,10 @@ def _tools_module(name):
 def options(opt):
     opt.load("compiler_c")
     _tools_module("waf_rtems").options(opt)
+    opt.add_option("--with-targets", dest="with_targets", default=",".join(TARGETS),
+                   help="configure: the targets to set up and build, comma "
+                   "separated (default: all of %s; ./waf check needs all, "
+                   "./waf demo %s)" % (", ".join(TARGETS), DEFAULT_TARGET))
     opt.add_option("--seconds", type=int, default=60, dest="fuzz_seconds",
                    help="./waf fuzz: seconds per fuzzer (default 60)")
 
@@ -242,14 +263,69 @@ def init(ctx):
     _register_variant_commands(cache.RTEMS_VARIANTS or [])
 
 
+def _selected_targets(conf):
+    names = [n for n in conf.options.with_targets.split(",") if n]
+    unknown = [n for n in names if n not in TARGETS]
+    if unknown or not names:
+        conf.fatal("--with-targets: unknown %s; choose from %s"
+                   % (", ".join(unknown) or "(none)", ", ".join(TARGETS)))
+    return [n for n in TARGETS if n in names]
+
+
+def _system_includes(conf, name, t):
+    """-nostdinc and the include directories of t["headers"], each checked
+    to exist."""
+    flags = ["-nostdinc"]
+    for d in t["headers"]:
+        if d.startswith("gcc:"):
+            d = conf.cmd_and_log(conf.env.CC + t["arch"]
+                                 + ["-print-file-name=" + d[4:]],
+                                 quiet=Context.BOTH).strip()
+        elif not os.path.isabs(d):
+            d = conf.path.make_node(d).abspath()
+        if not os.path.isdir(d):
+            conf.fatal("%s: no include directory %s (TARGETS headers)"
+                       % (name, d))
+        flags += ["-isystem", d]
+    return flags
+
+
+def _check_hermetic(conf, name, t):
+    """Each hosted-only header must be missing for a bare-metal target: the
+    compiler must stop on the bait's own #include line, proof that no host
+    header can leak into its build. (Without -nostdinc, Debian's PowerPC
+    GCC finds the host's <math.h> and only fails inside it.)"""
+    bait = conf.bldnode.make_node("hosted_bait.c")
+    for header in t["hosted_bait"]:
+        conf.start_msg("Checking that %s has no <%s>" % (name, header))
+        bait.write("#include <%s>\nint bait;\n" % header)
+        r = subprocess.run(conf.env.CC + conf.env.ARCH
+                           + ["-c", bait.abspath(), "-o", os.devnull],
+                           capture_output=True, text=True)
+        missing = "hosted_bait.c:1:10: fatal error: %s: No such file" % header
+        if r.returncode == 0 or missing not in r.stderr:
+            conf.end_msg("it has", "RED")
+            conf.fatal("%s: <%s> is not simply missing, so host headers "
+                       "can leak into the bare-metal build (TARGETS headers "
+                       "in wscript); the compiler said:\n%s"
+                       % (name, header, r.stderr))
+        conf.end_msg("none, as it must be")
+
+
 def configure(conf):
     deps = _tools_module("deps")
     prefix = os.path.abspath(conf.options.prefix)
+    targets = _selected_targets(conf)
+    everything = targets == list(TARGETS)
+    # The checks' tools and Python packages only where ./waf check can run.
+    groups = sorted({g for n in targets for g in TARGETS[n]["apt"]}
+                    | ({"check"} if everything else set()))
     try:
-        found = deps.ensure_all()
+        found = deps.ensure_all(groups, python=everything)
     except deps.SetupError as e:
         conf.fatal(str(e))
-    for name, t in TARGETS.items():
+    for name in targets:
+        t = TARGETS[name]
         conf.setenv(name)
         conf.msg("Target", name)
         compiler = t.get("compiler", "gcc")
@@ -262,24 +338,34 @@ def configure(conf):
             # static images only: no -Bstatic/-Bdynamic switching
             conf.env.STLIB_MARKER = []
             conf.env.SHLIB_MARKER = []
-        conf.env.ARCH = t["arch"]
-        conf.env.ASFLAGS = t["arch"] + CODEGEN
-        conf.env.LINKFLAGS = t["arch"] + t["link"]
+        arch = list(t["arch"])
+        if "headers" in t:
+            arch += _system_includes(conf, name, t)
+        conf.env.ARCH = arch
+        conf.env.ASFLAGS = arch + CODEGEN
+        conf.env.LINKFLAGS = arch + t["link"]
         ldscript = conf.path.find_node("bsp/%s/link.ld" % t["bsp"])
         if ldscript:
             conf.env.LINKFLAGS += ["-Wl,-T," + ldscript.abspath()]
         conf.env.LIB = t["libs"]
         conf.env.UNITY = found["unity"]
         conf.env.LIBFIXMATH = found["libfixmath"]
-        conf.env.PYTHONPATH = found["python"]
+        conf.env.PYTHONPATH = found["python"] or ""
         conf.env.PREFIX = prefix
         conf.env.LIBDIR = os.path.join(prefix, "lib")
         conf.env.INCLUDEDIR = os.path.join(prefix, "include")
         conf.env.BINDIR = os.path.join(prefix, "bin")
         conf.check_cc(fragment="int main(void) { return 0; }\n",
-                      features="c", cflags=t["arch"],
+                      features="c", cflags=arch,
                       msg="Checking that %s compiles" % name)
+        if "hosted_bait" in t:
+            _check_hermetic(conf, name, t)
+    # Every variant, the RTEMS BSPs' too, derives from the default one.
     conf.setenv("")
+    conf.env.TARGETS = targets
+    conf.env.UNITY = found["unity"]
+    conf.env.LIBFIXMATH = found["libfixmath"]
+    conf.env.PYTHONPATH = found["python"] or ""
     conf.env.RTEMS_VARIANTS = _tools_module("waf_rtems").configure(
         conf, CODEGEN)
 
@@ -335,8 +421,15 @@ def build_library(bld, cflags):
 
 def build(bld):
     if not bld.variant:
-        bld.fatal("choose a target: ./waf build_<target> with target in %s, "
-                  "or ./waf check" % ", ".join(TARGETS))
+        # ./waf build: every configured target, one after the other
+        _run_now(["build_" + n for n in bld.env.TARGETS])
+        return
+    if bld.variant not in (bld.all_envs[""].TARGETS or []) \
+            and not bld.env.RTEMS_BSP:
+        bld.fatal("target %s is not configured (configured: %s); run "
+                  "./waf configure --with-targets=%s"
+                  % (bld.variant, ", ".join(bld.all_envs[""].TARGETS or []),
+                     ",".join(TARGETS)))
     arch = bld.env.ARCH
     ours = arch + CODEGEN + WARNINGS
     theirs = arch + CODEGEN + ["-w"]
@@ -381,8 +474,9 @@ def build(bld):
                 export_includes=[unity, "tests"],
                 export_defines=["UNITY_INCLUDE_CONFIG_H"])
     fixmath = bld.root.find_dir(bld.env.LIBFIXMATH)
+    # fix16_str.c (text conversion) needs the hosted <ctype.h>
     bld.stlib(source=fixmath.ant_glob("fix16*.c fract32.c uint32.c",
-                                      excl=["fix16_fft.c"]),
+                                      excl=["fix16_fft.c", "fix16_str.c"]),
               target="fixmath", cflags=theirs, includes=[fixmath],
               install_path=None,
               # no 32-80 KiB result caches: no global state, like ours
@@ -468,8 +562,16 @@ class InstallAll(Build.InstallContext):
                                 (self.all_envs[""].RTEMS_VARIANTS or ["host"])]
 
 
+def _run_now(commands):
+    """Run waf commands within the current one, so that waf's closing
+    "'<command>' finished successfully" follows the work."""
+    from waflib import Scripting
+    for cmd in commands:
+        Scripting.run_command(cmd)
+
+
 def _build_all_then(then, targets):
-    Options.commands[:0] = ["build_" + n for n in targets] + [then]
+    _run_now(["build_" + n for n in targets] + [then])
 
 
 def check(ctx):

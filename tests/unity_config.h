@@ -16,6 +16,10 @@
 /* 64-bit assertions: not enabled by default on 32-bit targets. */
 #define UNITY_SUPPORT_64
 
+/* Freestanding headers only: the bare-metal PowerPC build has no C
+ * library (-nostdinc), so no <math.h>; Unity needs none without floats. */
+#define UNITY_EXCLUDE_MATH_H
+
 /* Output through the board console (bsp/bsp.h). */
 #define UNITY_OUTPUT_CHAR(c) bsp_putc(c)
 #define UNITY_OUTPUT_CHAR_HEADER_DECLARATION bsp_putc(int)

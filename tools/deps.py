@@ -21,28 +21,50 @@ import tarfile
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEPS = os.path.join(TOP, ".deps")
 
-# Debian 12 binary packages: cross compilers, newlib for Cortex-M, QEMU.
-APT_PACKAGES = {
-    "gcc-powerpc-linux-gnu": "4:12.2.0-5",
-    "gcc-arm-none-eabi": "15:12.2.rel1-1",
-    "libnewlib-arm-none-eabi": "3.3.0-1.3+deb12u1",
-    "qemu-system-ppc": "1:7.2+dfsg-7+deb12u18+b3",
-    "qemu-system-arm": "1:7.2+dfsg-7+deb12u18+b3",
-    # pkg-config: reads RTEMS BSP flags, checks the installed drdc.pc
-    "pkgconf": "1.8.1-1",
-    # MISRA C:2012 addon (tools/misra.py)
-    "cppcheck": "2.10-2",
-    # API reference (./waf docs)
-    "doxygen": "1.9.4-4",
-    # libFuzzer (tools/fuzz.py)
-    "clang-14": "1:14.0.6-12",
-    "libclang-rt-14-dev": "1:14.0.6-12",
-    # GNU units: oracle of the unit-conversion vectors (tests/ref/gen_units.py)
-    "units": "2.22-2",
-    # GeoConvert, TransverseMercatorProj: oracle of the geodesy vectors
-    # (tests/ref/gen_geo.py)
-    "geographiclib-tools": "2.1.2-1",
+# Debian 12 binary packages by the part of the build that uses them, each
+# pinned by exact version. Set-up installs with --no-install-recommends:
+# whatever a tool needs at run time is named here, never left to a
+# package's Recommends.
+APT_GROUPS = {
+    # the waf launcher: pip installs the pinned waflib and Python wheels
+    # (Debian's python3 has no pip of its own)
+    "pip": {"python3-pip": "23.0.1+dfsg-1"},
+    # host and host-asan: the native compiler (ASan and UBSan come with it)
+    # and the C library's headers (a Recommends of gcc)
+    "host": {"gcc": "4:12.2.0-3", "libc6-dev": "=libc6"},
+    # host-fuzz: libFuzzer (tools/fuzz.py)
+    "host-fuzz": {"clang-14": "1:14.0.6-12",
+                  "libclang-rt-14-dev": "1:14.0.6-12"},
+    # ppc-e500: freestanding, so the cross compiler's own headers only
+    # (tools/deps.py never installs libc6-dev-powerpc-cross); QEMU runs
+    # with -nic none, so without the option ROMs of ipxe-qemu
+    "ppc-e500": {"gcc-powerpc-linux-gnu": "4:12.2.0-5",
+                 "qemu-system-ppc": "1:7.2+dfsg-7+deb12u18+b3"},
+    # arm-cm3: newlib nano and semihosting
+    "arm-cm3": {"gcc-arm-none-eabi": "15:12.2.rel1-1",
+                "libnewlib-arm-none-eabi": "3.3.0-1.3+deb12u1",
+                "qemu-system-arm": "1:7.2+dfsg-7+deb12u18+b3"},
+    # ./waf check beyond the targets' own tools
+    "check": {
+        # pkg-config: reads RTEMS BSP flags, checks the installed drdc.pc
+        "pkgconf": "1.8.1-1",
+        # MISRA C:2012 addon (tools/misra.py)
+        "cppcheck": "2.10-2",
+        # API reference without a warning
+        "doxygen": "1.9.4-4",
+        # GNU units: oracle of the unit-conversion vectors
+        # (tests/ref/gen_units.py) and of tools/test_drdc.py
+        "units": "2.22-2",
+        # GeoConvert, TransverseMercatorProj: oracle of the geodesy
+        # vectors (tests/ref/gen_geo*.py) and of tools/test_drdc.py
+        "geographiclib-tools": "2.1.2-1",
+    },
+    # ./waf docs: the API reference and the error plots of docs/accuracy.md
+    "docs": {"doxygen": "1.9.4-4", "geographiclib-tools": "2.1.2-1"},
 }
+# A version "=PKG" means "the version of the installed PKG": libc6-dev must
+# equal the C library the machine already runs, which apt cannot replace
+# under a running system without a dist-upgrade.
 
 # Debian source packages whose upstream tarball we unpack. The checksum is
 # the one in the package's .dsc (Checksums-Sha256 of the .orig.tar.xz).
@@ -122,9 +144,15 @@ def _is_root():
     return os.geteuid() == 0
 
 
+def _say(text):
+    print("deps: " + text, flush=True)
+
+
 def _run(cmd, **kw):
-    print("deps: " + " ".join(cmd), flush=True)
-    subprocess.check_call(cmd, **kw)
+    _say(" ".join(cmd))
+    status = subprocess.call(cmd, **kw)
+    if status != 0:
+        raise SetupError("%s failed (exit status %d)" % (cmd[0], status))
 
 
 def _apt_env():
@@ -141,17 +169,58 @@ def _installed_version(pkg):
     return r.stdout.split("|", 1)[1]
 
 
-def ensure_apt():
-    missing = ["%s=%s" % (p, v) for p, v in sorted(APT_PACKAGES.items())
-               if _installed_version(p) != v]
+def _wanted_version(version):
+    if version.startswith("="):
+        return _installed_version(version[1:])
+    return version
+
+
+def _have_deb_src():
+    return bool(glob.glob("/var/lib/apt/lists/*_source_Sources*"))
+
+
+class _Apt:
+    """apt-get update at most once a process, with the deb-src entry that
+    the source tarballs need written before it."""
+    updated = False
+
+    @classmethod
+    def update(cls):
+        if cls.updated:
+            return
+        if not os.path.exists(DEB_SRC_LIST):
+            with open(DEB_SRC_LIST, "w") as f:
+                f.write(DEB_SRC_ENTRY)
+        _run(["apt-get", "update", "-q"], env=_apt_env())
+        cls.updated = True
+
+
+def apt_packages(groups):
+    """{package: pinned version} of the named APT_GROUPS."""
+    wanted = {}
+    for g in groups:
+        wanted.update(APT_GROUPS[g])
+    return wanted
+
+
+def ensure_apt(groups):
+    """Install the Debian packages of the named APT_GROUPS that are absent
+    or at another version; as another user, say the command to run."""
+    missing = []
+    for pkg, version in sorted(apt_packages(groups).items()):
+        version = _wanted_version(version)
+        if version is None or _installed_version(pkg) != version:
+            missing.append("%s=%s" % (pkg, version) if version else pkg)
     if not missing:
         return
-    cmd = ["apt-get", "install", "-y", "--no-install-recommends"] + missing
+    cmd = ["apt-get", "install", "-y", "-q", "--no-install-recommends"]
     if not _is_root():
         raise SetupError("missing Debian packages; run as root:\n"
-                         "  apt-get update && " + " ".join(cmd))
-    _run(["apt-get", "update", "-q"], env=_apt_env())
-    _run(cmd, env=_apt_env())
+                         "  apt-get update && " + " ".join(cmd + missing))
+    _say("installing %d Debian packages (%s) with their dependencies"
+         % (len(missing), ", ".join(m.split("=")[0] for m in missing)))
+    _Apt.update()
+    _run(cmd + missing, env=_apt_env())
 
 
 def _sha256(path):
@@ -162,38 +231,37 @@ def _sha256(path):
     return h.hexdigest()
 
 
-def _have_deb_src():
-    lists = glob.glob("/var/lib/apt/lists/*_source_Sources*")
-    return bool(lists)
-
-
 def _fetch_source(spec, dl):
     path = os.path.join(dl, spec["tarball"])
     if os.path.exists(path) and _sha256(path) == spec["sha256"]:
         return path
     os.makedirs(dl, exist_ok=True)
-    if not _have_deb_src():
-        if not _is_root():
-            raise SetupError(
-                "apt has no source-package index; run as root:\n"
-                "  printf '%s' > %s && apt-get update"
-                % (DEB_SRC_ENTRY.replace("\n", "\\n"), DEB_SRC_LIST))
-        with open(DEB_SRC_LIST, "w") as f:
-            f.write(DEB_SRC_ENTRY)
-        _run(["apt-get", "update", "-q"], env=_apt_env())
-    # The Debian part of some source packages answers 404; only the
-    # upstream tarball matters, so the exit status is not trusted: the
-    # checksum below is.
-    subprocess.run(["apt-get", "source", "--download-only", "-q",
-                    "%s=%s" % (spec["package"], spec["version"])],
-                   cwd=dl, env=_apt_env())
+    if _is_root():
+        _Apt.update()
+    elif not _have_deb_src():
+        raise SetupError(
+            "apt has no source-package index; run as root:\n"
+            "  printf '%s' > %s && apt-get update"
+            % (DEB_SRC_ENTRY.replace("\n", "\\n"), DEB_SRC_LIST))
+    what = "%s %s" % (spec["package"], spec["version"])
+    _say("fetching %s from the %s %s source package"
+         % (spec["tarball"], spec["package"], spec["version"]))
+    # Only the upstream tarball is used. The archive may answer 404 for
+    # the Debian part of a source package, so apt's exit status and its
+    # messages are kept for a failure; the checksum below is the test.
+    r = subprocess.run(["apt-get", "source", "--download-only", "-q",
+                        "%s=%s" % (spec["package"], spec["version"])],
+                       cwd=dl, env=_apt_env(), capture_output=True,
+                       text=True)
     if not os.path.exists(path):
-        raise SetupError("could not download %s from the Debian archive"
-                         % spec["tarball"])
+        raise SetupError("could not download %s (%s) from the Debian "
+                         "archive; apt-get said:\n%s%s"
+                         % (spec["tarball"], what, r.stdout, r.stderr))
     got = _sha256(path)
     if got != spec["sha256"]:
         raise SetupError("%s: SHA-256 %s, expected %s"
                          % (spec["tarball"], got, spec["sha256"]))
+    _say("%s: SHA-256 as pinned" % spec["tarball"])
     return path
 
 
@@ -223,6 +291,36 @@ def ensure_source(name):
     return dest
 
 
+def _have_pip():
+    return subprocess.run([sys.executable, "-m", "pip", "--version"],
+                          capture_output=True).returncode == 0
+
+
+def pip_install(dest, requirements, what):
+    """pip-install the hash-pinned requirements (text of a requirements
+    file) into dest, without their dependencies: every package is named."""
+    if not _have_pip():
+        ensure_apt(["pip"])
+    os.makedirs(dest, exist_ok=True)
+    tmp = os.path.join(dest, "requirements.in")
+    with open(tmp, "w") as f:
+        f.write(requirements)
+    _say("installing %s into %s" % (what, dest))
+    _run([sys.executable, "-m", "pip", "install", "--progress-bar", "off",
+          "--disable-pip-version-check", "--root-user-action=ignore",
+          "--no-deps", "--require-hashes", "--target", dest, "-r", tmp])
+
+
+def ensure_waflib(dest, version, sha256):
+    """The pinned waflib wheel in dest (the waf launcher's)."""
+    stamp = os.path.join(dest, "waflib-%s.ok" % version)
+    if os.path.exists(stamp):
+        return
+    pip_install(dest, "waflib==%s --hash=sha256:%s\n" % (version, sha256),
+                "waflib %s" % version)
+    open(stamp, "w").close()
+
+
 def ensure_python():
     """Install the generator's Python packages into .deps/python/."""
     dest = os.path.join(DEPS, "python")
@@ -232,31 +330,29 @@ def ensure_python():
     if os.path.exists(stamp) and open(stamp).read() == req:
         return dest
     shutil.rmtree(dest, ignore_errors=True)
-    os.makedirs(dest)
-    tmp = os.path.join(dest, "requirements.in")
-    with open(tmp, "w") as f:
-        f.write(req)
-    _run([sys.executable, "-m", "pip", "install", "-q",
-          "--disable-pip-version-check", "--root-user-action=ignore",
-          "--no-deps", "--require-hashes", "--target", dest, "-r", tmp])
+    pip_install(dest, req, "%d Python packages of the reference-vector "
+                "generator and the plots (about 90 MB to download)"
+                % len(PYTHON_PACKAGES))
     with open(stamp, "w") as f:
         f.write(req)
     return dest
 
 
-def ensure_all():
-    """Make every dependency present; return the paths of the unpacked ones."""
-    ensure_apt()
+def ensure_all(groups, python=True):
+    """Make the Debian packages of the named APT_GROUPS, the Unity and
+    libfixmath sources and (if python) the Python packages present; return
+    the paths of the unpacked ones (None for what was not asked)."""
+    ensure_apt(groups)
     return {
         "unity": ensure_source("unity"),
         "libfixmath": ensure_source("libfixmath"),
-        "python": ensure_python(),
+        "python": ensure_python() if python else None,
     }
 
 
 if __name__ == "__main__":
     try:
-        for k, v in ensure_all().items():
+        for k, v in ensure_all(sorted(APT_GROUPS)).items():
             print("%s: %s" % (k, v))
     except SetupError as e:
         sys.exit("deps: " + str(e))

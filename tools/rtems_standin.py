@@ -39,12 +39,16 @@ GCC_WRAPPER = """#!/bin/sh
 # Stand-in for RTEMS {ver}'s {arch}-rtems{ver}-gcc, made by ./waf check:
 # Debian's cross compiler with the defaults of an RTEMS tool suite (no PIE,
 # no stack protector, __rtems__ defined). -qrtems selects RTEMS start
-# files, which a stand-in does not have.
+# files, which a stand-in does not have. Debian's cross compiler has no C
+# library headers (an RTEMS tool suite has newlib's): the stand-in compiles
+# freestanding with the compiler's own headers and the BSP's (the stand-in
+# <rtems.h> and <time.h>), so no host header can leak in.
 for a do
   shift
   [ "$a" = -qrtems ] || set -- "$@" "$a"
 done
-exec {cross}gcc -D__rtems__ -fno-pic -fno-pie -fno-stack-protector "$@"
+exec {cross}gcc -D__rtems__ -fno-pic -fno-pie -fno-stack-protector \\
+  -ffreestanding -nostdinc -isystem {gcc_include} "$@"
 """
 TOOL_WRAPPER = """#!/bin/sh
 # Stand-in for RTEMS {ver}'s {arch}-rtems{ver}-{tool}, made by ./waf check.
@@ -77,6 +81,21 @@ rtems_interval rtems_clock_get_ticks_per_second(void);
 #endif
 """
 
+# newlib's struct timespec, as RTEMS 6 has it (a 64-bit time_t), the one
+# POSIX type of <time.h> that the glue uses.
+TIME_H = """/* Stand-in for newlib's <time.h> made by libdrdc-fx's ./waf check: only
+ * what bsp/rtems/drdc_rtems.c uses. */
+#ifndef STANDIN_TIME_H
+#define STANDIN_TIME_H
+#include <stdint.h>
+typedef int64_t time_t;
+struct timespec {{
+  time_t tv_sec;
+  long tv_nsec;
+}};
+#endif
+"""
+
 BSP_PC = """prefix={prefix}
 exec_prefix=${{prefix}}/{arch}-rtems{ver}
 includedir=${{exec_prefix}}/{bsp}/lib/include
@@ -97,10 +116,14 @@ def make_prefix(prefix):
     os.makedirs(os.path.join(prefix, "lib", "pkgconfig"))
     include = os.path.join(prefix, "%s-rtems%s" % (ARCH, VERSION), BSP, "lib", "include")
     os.makedirs(include)
-    with open(os.path.join(include, "rtems.h"), "w") as f:
-        f.write(RTEMS_H.format())
+    for name, text in (("rtems.h", RTEMS_H), ("time.h", TIME_H)):
+        with open(os.path.join(include, name), "w") as f:
+            f.write(text.format())
+    gcc_include = subprocess.run([CROSS + "gcc", "-print-file-name=include"],
+                                 check=True, capture_output=True,
+                                 text=True).stdout.strip()
     kw = dict(ver=VERSION, arch=ARCH, cross=CROSS, bsp=BSP, prefix=prefix,
-              cflags=BSP_CFLAGS)
+              cflags=BSP_CFLAGS, gcc_include=gcc_include)
     tools = {"gcc": GCC_WRAPPER.format(**kw)}
     for tool in ("ar", "as", "ld", "nm", "objdump", "objcopy", "size", "ranlib"):
         tools[tool] = TOOL_WRAPPER.format(tool=tool, **kw)
@@ -146,8 +169,9 @@ def main():
     want = sorted(["libdrdc.a", "libdrdc_rtems.a", "pkgconfig/drdc.pc",
                    "include/drdc/rtems.h"]
                   + ["include/drdc/" + h for h in headers])
-    # everything under the BSP's lib/ except the stand-in's own <rtems.h>
-    got = [p for p in installed_tree(bspdir) if p != "include/rtems.h"]
+    # everything under the BSP's lib/ except the stand-in's own headers
+    got = [p for p in installed_tree(bspdir)
+           if p not in ("include/rtems.h", "include/time.h")]
     if got != want:
         sys.exit("rtems-standin: installed tree differs:\n  got  %s\n  want %s"
                  % (got, want))

@@ -6,12 +6,7 @@
  *        even in freestanding code (structure copies and initialisers), and
  *        requires the environment to provide them.
  */
-#include <stddef.h>
-
-void *memcpy(void *dst, const void *src, size_t n);
-void *memmove(void *dst, const void *src, size_t n);
-void *memset(void *dst, int c, size_t n);
-int memcmp(const void *a, const void *b, size_t n);
+#include <string.h>
 
 void *memcpy(void *dst, const void *src, size_t n)
 {
