@@ -421,15 +421,17 @@ def build_library(bld, cflags):
 
 def build(bld):
     if not bld.variant:
-        # ./waf build: every configured target, one after the other
-        _run_now(["build_" + n for n in bld.env.TARGETS])
+        # ./waf build (and ./waf): every configured target and RTEMS BSP,
+        # one after the other
+        _run_now(["build_" + n for n in (bld.env.TARGETS or [])
+                  + (bld.env.RTEMS_VARIANTS or [])])
         return
     if bld.variant not in (bld.all_envs[""].TARGETS or []) \
             and not bld.env.RTEMS_BSP:
-        bld.fatal("target %s is not configured (configured: %s); run "
-                  "./waf configure --with-targets=%s"
-                  % (bld.variant, ", ".join(bld.all_envs[""].TARGETS or []),
-                     ",".join(TARGETS)))
+        bld.fatal("target %s is not configured (configured: %s): "
+                  "./waf configure sets up every target, or name it in "
+                  "--with-targets"
+                  % (bld.variant, ", ".join(bld.all_envs[""].TARGETS or [])))
     arch = bld.env.ARCH
     ours = arch + CODEGEN + WARNINGS
     theirs = arch + CODEGEN + ["-w"]
@@ -543,7 +545,8 @@ def build(bld):
                     use="libdrdc", cflags=ours)
         # the library's own results for the plots of docs/accuracy.md
         bld.program(source=["tools/accuracy/sample.c"],
-                    target="accuracy-sample", use="libdrdc", cflags=ours)
+                    target="accuracy-sample", use="libdrdc", cflags=ours,
+                    install_path=None)
 
 
 # build_<target>, clean_<target>, install_<target> for every target.
