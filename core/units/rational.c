@@ -116,11 +116,14 @@ drdc_status_t units_rat_inv(const units_rat_t *a, units_rat_t *out)
 drdc_status_t units_rat_sub(int64_t a_num, int64_t a_den,
                             const units_rat_t *b, units_rat_t *out)
 {
-  /* a/b - c/d = (a (d/g) - c (b/g)) / (b/g d), g = gcd(b, d) */
+  /* a/b - c/d = (a (d/g) - c (b/g)) / (b/g d), g = gcd(b, d). The
+   * products are read only after all three succeeded, which GCC 13 does
+   * not see through the || chain (-Wmaybe-uninitialized): they start at
+   * 0. */
   int64_t g;
-  int64_t left;
-  int64_t right;
-  int64_t den;
+  int64_t left = 0;
+  int64_t right = 0;
+  int64_t den = 0;
   int64_t num;
   int64_t r;
 
