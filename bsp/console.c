@@ -6,7 +6,7 @@
  */
 #include "console.h"
 
-#include "bsp.h"
+#include "drdc_board.h"
 
 void bsp_puts(const char *s)
 {

@@ -4,10 +4,12 @@
  * @brief The board interface every bsp/<board>/ folder implements.
  *
  * Firmware images (fw/) use only this header to talk to the board; the
- * library (core/, fixed/) never includes it.
+ * library (core/, fixed/) never includes it. Its name is not bsp.h: an
+ * RTEMS application's <rtems/confdefs.h> includes the RTEMS BSP's own
+ * <bsp.h>, which a bsp.h on the include path would shadow.
  */
-#ifndef DRDC_BSP_H
-#define DRDC_BSP_H
+#ifndef DRDC_BOARD_H
+#define DRDC_BOARD_H
 
 #include <stdint.h>
 
@@ -51,4 +53,4 @@ extern const uint32_t bsp_spin_insns_per_iteration;
 /** Exit status after an exception report. */
 #define BSP_EXIT_EXCEPTION 99
 
-#endif /* DRDC_BSP_H */
+#endif /* DRDC_BOARD_H */

@@ -4,7 +4,7 @@
  * @brief Images that test the harness: one behaviour per SELFTEST_KIND
  *        (numbers in wscript's SELFTEST_KINDS; verdicts in test_harness.py).
  */
-#include "bsp.h"
+#include "drdc_board.h"
 #include "unity.h"
 
 #define KIND_PASS 1

@@ -20,7 +20,7 @@
  * library (-nostdinc), so no <math.h>; Unity needs none without floats. */
 #define UNITY_EXCLUDE_MATH_H
 
-/* Output through the board console (bsp/bsp.h). */
+/* Output through the board console (bsp/drdc_board.h). */
 #define UNITY_OUTPUT_CHAR(c) bsp_putc(c)
 #define UNITY_OUTPUT_CHAR_HEADER_DECLARATION bsp_putc(int)
 

@@ -79,3 +79,16 @@ class ConfigureMessages(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class NoShadowOfTheBspHeader(unittest.TestCase):
+    """RTEMS's <rtems/confdefs.h> includes the BSP's own <bsp.h>, and the
+    RTEMS test-runner is compiled with bsp/, tests/ and fw/test-runner/ on
+    its include path: a bsp.h in any of them takes the BSP's place, its
+    shutdown handler is lost and QEMU hangs after the end of the test."""
+
+    def test_no_bsp_h_on_the_runners_include_path(self):
+        for folder in ("bsp", "bsp/rtems", "tests", "fw/test-runner"):
+            self.assertFalse(os.path.exists(os.path.join(TOP, folder, "bsp.h")),
+                             "%s/bsp.h would shadow the RTEMS BSP's <bsp.h>"
+                             % folder)

@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bsp.h"
+#include "drdc_board.h"
 #include "console.h"
 
 /* Provided by link.ld */

@@ -10,7 +10,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "bsp.h"
+#include "drdc_board.h"
 
 const char bsp_name[] = "host";
 

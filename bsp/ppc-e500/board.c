@@ -6,7 +6,7 @@
  */
 #include <stdint.h>
 
-#include "bsp.h"
+#include "drdc_board.h"
 #include "console.h"
 
 /* CCSR block, mapped by start.S */

@@ -1,13 +1,13 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /**
  * @file
- * @brief The board interface (bsp/bsp.h) on RTEMS: the RTEMS console and
+ * @brief The board interface (bsp/drdc_board.h) on RTEMS: the RTEMS console and
  *        exit(). Any RTEMS BSP, so no board code of ours is involved.
  */
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "bsp.h"
+#include "drdc_board.h"
 
 const char bsp_name[] = "rtems";
 

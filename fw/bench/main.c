@@ -6,7 +6,7 @@
  *        shift=0) turns them into instructions per call and the report.
  */
 #include "bench.h"
-#include "bsp.h"
+#include "drdc_board.h"
 #include "console.h"
 
 uint32_t bench_u32[BENCH_INPUTS];

@@ -32,7 +32,7 @@
 #include <drdc/time_scales.h>
 #include <drdc/version.h>
 
-#include "bsp.h"
+#include "drdc_board.h"
 #include "console.h"
 
 /* The receiver's stream: one GGA and one RMC per second (RTK fixed, near

@@ -8,7 +8,7 @@
  */
 #include <drdc/version.h>
 
-#include "bsp.h"
+#include "drdc_board.h"
 #include "runner.h"
 #include "suites.h"
 #include "unity.h"

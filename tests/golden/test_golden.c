@@ -5,7 +5,7 @@
  *        committed conformance digest. The harness also checks that all
  *        images of one run print the same digest line.
  */
-#include "bsp.h"
+#include "drdc_board.h"
 #include "console.h"
 #include "digest.h"
 #include "golden.h"
