@@ -8,6 +8,9 @@
 
 #define DRDC_SUITE(name) void name(void);
 #include "suites.def"
+#if defined(__rtems__)
+#include "suites_rtems.def"
+#endif
 #undef DRDC_SUITE
 
 #endif /* DRDC_TEST_SUITES_H */

@@ -58,6 +58,12 @@ APT_GROUPS = {
         # GeoConvert, TransverseMercatorProj: oracle of the geodesy
         # vectors (tests/ref/gen_geo*.py) and of tools/test_drdc.py
         "geographiclib-tools": "2.1.2-1",
+        # the real RTEMS 6 job (tools/rtems_qemu.py): the run-time
+        # libraries of the RTEMS tool suite's compiler, and fdtput for
+        # the device tree of QEMU's mpc8544ds
+        "libgmp10": "2:6.2.1+dfsg1-1.1", "libmpfr6": "4.2.0-1",
+        "libmpc3": "1.3.1-1",
+        "device-tree-compiler": "1.6.1-4+b1",
     },
     # ./waf docs: the API reference and the error plots of docs/accuracy.md
     "docs": {"doxygen": "1.9.4-4", "geographiclib-tools": "2.1.2-1"},

@@ -147,4 +147,6 @@ def configure(conf, codegen):
             msg="Checking for rtems/confdefs.h"))
         variants.append(name)
     conf.setenv("")
+    conf.env.RTEMS_PREFIX = rtems
+    conf.env.RTEMS_TOOLS = tools
     return variants

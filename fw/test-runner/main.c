@@ -36,6 +36,9 @@ int test_runner_run(void)
   UnityBegin(__FILE__);
 #define DRDC_SUITE(name) name();
 #include "suites.def"
+#if defined(__rtems__)
+#include "suites_rtems.def"
+#endif
 #undef DRDC_SUITE
   failures = UnityEnd();
 

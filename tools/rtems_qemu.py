@@ -1,0 +1,147 @@
+# SPDX-License-Identifier: BSD-2-Clause
+"""The real RTEMS 6 job of ./waf check.
+
+With a real RTEMS 6 prefix (the one given to ./waf configure --rtems, or
+else the project's shared RTEMS 6 archive, ../shared/rtems/ beside the
+checkout, unpacked into build/rtems-real/), it does what an RTEMS user
+does, in a build of its own (build/rtems-real/build, lock file
+.lock-waf-rtems-real):
+
+    ./waf configure --rtems=PREFIX --rtems-bsps=powerpc/qoriq_e500 --werror
+    ./waf
+    ./waf install
+
+checks that the BSP's prefix then holds the library, the glue, the
+headers and drdc.pc, and makes the device tree that QEMU needs for
+test-runner-qemu.exe: QEMU's own for mpc8544ds with 1 GiB (dumped with
+-machine dumpdtb), with the CPU's bus-frequency set (fdtput), since QEMU
+writes 0 there and RTEMS's clock then never ticks.
+
+It writes the image's path for the harness into build/rtems-real/image.txt,
+or, with no RTEMS 6 prefix at all (or one without that BSP), says in one
+line that the job did not run and writes no such file.
+"""
+import argparse
+import glob
+import hashlib
+import os
+import shutil
+import subprocess
+import sys
+import tarfile
+
+TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+WORK = os.path.join(TOP, "build", "rtems-real")
+ARCHIVE = os.path.join(os.path.dirname(TOP), "shared", "rtems",
+                       "rtems6-powerpc-qoriq_e500.tar.xz")
+ARCH, BSP, VERSION = "powerpc", "qoriq_e500", "6"
+VARIANT = "%s-rtems%s-%s" % (ARCH, VERSION, BSP)
+# QEMU's mpc8544ds CPU node, and a bus frequency (200 MHz) that gives the
+# BSP's decrementer clock its tick.
+CPU_NODE = "/cpus/PowerPC,8544@0"
+BUS_FREQUENCY = "200000000"
+
+
+def run(cmd, **kw):
+    print("rtems: " + " ".join(cmd), flush=True)
+    status = subprocess.run(cmd, **kw).returncode
+    if status != 0:
+        sys.exit("rtems: %s failed (exit status %d)"
+                 % (os.path.basename(cmd[1] if cmd[0] == sys.executable
+                                     else cmd[0]), status))
+
+
+def unpack(archive):
+    """The archive's 6/ under build/rtems-real/, unpacked once per
+    archive content."""
+    h = hashlib.sha256()
+    with open(archive, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            h.update(block)
+    prefix = os.path.join(WORK, "6")
+    stamp = os.path.join(WORK, "6.%s.ok" % h.hexdigest()[:16])
+    if os.path.exists(stamp):
+        return prefix
+    shutil.rmtree(WORK, ignore_errors=True)
+    os.makedirs(WORK)
+    print("rtems: unpacking %s" % archive, flush=True)
+    with tarfile.open(archive) as tar:
+        tar.extractall(WORK)
+    open(stamp, "w").close()
+    return prefix
+
+
+def waf(args):
+    env = dict(os.environ, WAFLOCK=".lock-waf-rtems-real")
+    run([sys.executable, os.path.join(TOP, "waf")] + args, cwd=TOP, env=env,
+        stdout=subprocess.DEVNULL)
+
+
+def check_installed(prefix):
+    libdir = os.path.join(prefix, "%s-rtems%s" % (ARCH, VERSION), BSP, "lib")
+    headers = sorted(os.path.basename(h) for h in
+                     glob.glob(os.path.join(TOP, "fixed/include/drdc/*.h"))
+                     + glob.glob(os.path.join(TOP, "core/include/drdc/*.h")))
+    want = sorted(["libdrdc.a", "libdrdc_rtems.a", "pkgconfig/drdc.pc",
+                   "include/drdc/rtems.h"]
+                  + ["include/drdc/" + h for h in headers])
+    got = sorted(os.path.relpath(p, libdir) for p in
+                 glob.glob(os.path.join(libdir, "**"), recursive=True)
+                 if os.path.isfile(p) and ("drdc" in os.path.relpath(p, libdir)))
+    if got != want:
+        sys.exit("rtems: installed tree differs:\n  got  %s\n  want %s"
+                 % (got, want))
+    print("rtems: installed %d files into %s" % (len(got), libdir))
+
+
+def device_tree(image):
+    dtb = image + ".dtb"
+    run(["qemu-system-ppc", "-M", "mpc8544ds", "-m", "1024", "-nographic",
+         "-nic", "none", "-kernel", image, "-machine", "dumpdtb=" + dtb],
+        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    run(["fdtput", "-t", "i", dtb, CPU_NODE, "bus-frequency", BUS_FREQUENCY])
+    return dtb
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--prefix", help="an installed RTEMS 6 prefix")
+    ap.add_argument("--tools", help="its tool suite (default: --prefix)")
+    args = ap.parse_args()
+    listing = os.path.join(WORK, "image.txt")
+    if os.path.exists(listing):
+        os.remove(listing)
+    if args.prefix and not os.path.exists(os.path.join(
+            args.prefix, "lib", "pkgconfig", VARIANT + ".pc")):
+        print("rtems: the real RTEMS 6 job did not run: the configured "
+              "prefix %s has no %s/%s BSP" % (args.prefix, ARCH, BSP))
+        return 0
+    if args.prefix:
+        prefix = os.path.abspath(args.prefix)
+        tools = os.path.abspath(args.tools or args.prefix)
+    elif os.path.exists(ARCHIVE):
+        prefix = tools = unpack(ARCHIVE)
+    else:
+        print("rtems: the real RTEMS 6 job did not run: no prefix was "
+              "configured (--rtems) and there is no %s" % ARCHIVE)
+        return 0
+    build = os.path.join(WORK, "build")
+    image = os.path.join(build, VARIANT, "fw", "test-runner",
+                         "test-runner-qemu.exe")
+    if os.path.exists(image):
+        os.remove(image)
+    waf(["configure", "--rtems=" + prefix, "--rtems-tools=" + tools,
+         "--rtems-bsps=%s/%s" % (ARCH, BSP), "--werror",
+         "--with-targets=host", "--out=" + build])
+    waf([])
+    waf(["install"])
+    check_installed(prefix)
+    device_tree(image)
+    with open(listing, "w") as f:
+        f.write(image + "\n")
+    print("rtems: %s and its device tree are ready" % image)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
