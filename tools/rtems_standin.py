@@ -146,6 +146,17 @@ def waf(args, lock, out=None):
     subprocess.run(cmd, cwd=TOP, env=env, check=True, stdout=subprocess.DEVNULL)
 
 
+def expected_install():
+    """What ./waf install puts under an RTEMS BSP's lib/ (with the glue),
+    sorted: the libraries, the public headers and drdc.pc."""
+    headers = sorted(os.path.basename(h) for h in
+                     glob.glob(os.path.join(TOP, "fixed/include/drdc/*.h"))
+                     + glob.glob(os.path.join(TOP, "core/include/drdc/*.h")))
+    return sorted(["libdrdc.a", "libdrdc_rtems.a", "pkgconfig/drdc.pc",
+                   "include/drdc/rtems.h"]
+                  + ["include/drdc/" + h for h in headers])
+
+
 def installed_tree(bspdir):
     return sorted(os.path.relpath(p, bspdir) for p in
                   glob.glob(os.path.join(bspdir, "**"), recursive=True)
@@ -163,12 +174,7 @@ def main():
     waf(["install"], lock)
 
     bspdir = os.path.join(prefix, "%s-rtems%s" % (ARCH, VERSION), BSP, "lib")
-    headers = sorted(os.path.basename(h) for h in
-                     glob.glob(os.path.join(TOP, "fixed/include/drdc/*.h"))
-                     + glob.glob(os.path.join(TOP, "core/include/drdc/*.h")))
-    want = sorted(["libdrdc.a", "libdrdc_rtems.a", "pkgconfig/drdc.pc",
-                   "include/drdc/rtems.h"]
-                  + ["include/drdc/" + h for h in headers])
+    want = expected_install()
     # everything under the BSP's lib/ except the stand-in's own headers
     got = [p for p in installed_tree(bspdir)
            if p not in ("include/rtems.h", "include/time.h")]
