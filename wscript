@@ -705,7 +705,10 @@ class RunDocs(Build.BuildContext):
             self.load_envs()
         deps = _tools_module("deps")
         try:
-            deps.ensure_apt()  # Doxygen is one of the pinned packages
+            # Doxygen, TransverseMercatorProj and matplotlib, also where
+            # configure set up the host target alone
+            deps.ensure_apt(["docs"])
+            self.env.PYTHONPATH = deps.ensure_python()
         except deps.SetupError as e:
             self.fatal(str(e))
         if subprocess.call(["doxygen", "docs/Doxyfile"],
