@@ -312,7 +312,9 @@ def pip_install(dest, requirements, what):
     with open(tmp, "w") as f:
         f.write(requirements)
     _say("installing %s into %s" % (what, dest))
-    _run([sys.executable, "-m", "pip", "install", "--progress-bar", "off",
+    # a live bar on a terminal; in a log, one line a download
+    bar = "on" if sys.stdout.isatty() else "off"
+    _run([sys.executable, "-m", "pip", "install", "--progress-bar", bar,
           "--disable-pip-version-check", "--root-user-action=ignore",
           "--no-deps", "--require-hashes", "--target", dest, "-r", tmp])
 
