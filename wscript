@@ -22,8 +22,10 @@ APPNAME = "drdc"
 VERSION = "0.1.0"  # also in core/include/drdc/version.h
 DEFAULT_TARGET = "ppc-e500"
 
-# Re-run configure by itself when it has not run or a wscript changed.
-Configure.autoconfig = True
+# Re-run configure by itself when it has not run or a wscript changed,
+# with the options it was last given ("clobber"; True would drop them,
+# --rtems among them).
+Configure.autoconfig = "clobber"
 
 # Warnings of every file we write, on every target.
 WARNINGS = ["-std=c99", "-Wall", "-Wextra", "-Wconversion",
@@ -632,8 +634,8 @@ class InstallAll(Build.InstallContext):
         self.restore()
         if not self.all_envs:
             self.load_envs()
-        Options.commands[:0] = ["install_" + v for v in
-                                (self.all_envs[""].RTEMS_VARIANTS or ["host"])]
+        _run_now(["install_" + v for v in
+                  (self.all_envs[""].RTEMS_VARIANTS or ["host"])])
 
 
 def _run_now(commands):
