@@ -530,6 +530,10 @@ def build(bld):
         build_rtems_runner(bld, ours)
         return
     t = TARGETS[bld.variant]
+    # An object that exports a name without drdc_: tools/symcheck.py must
+    # reject it (proof that the check of libdrdc.a's names bites).
+    bld.stlib(source=["tests/symcheck/symbol_bait.c"], target="bait-symbols",
+              cflags=arch + CODEGEN + ["-w"], idx=3, install_path=None)
     if not t.get("images", True):
         # libFuzzer targets (tools/fuzz.py), one program per file
         for src in _glob(bld, "tests/fuzz/fuzz_*.c"):
@@ -775,6 +779,9 @@ class RunChecks(Build.BuildContext):
              ["tools/intcheck.py", "--build", out, "--all"]
              + ["%s:%s" % (n, t["intcheck"]) for n, t in TARGETS.items()
                 if t["intcheck"]]),
+            ("every external name of libdrdc.a starts with drdc_",
+             ["tools/symcheck.py", "--build", out]
+             + ["%s:%s" % (n, t["cross"]) for n, t in TARGETS.items()]),
             ("API reference: Doxygen without a warning",
              ["-c", "import subprocess, sys; sys.exit(subprocess.call("
               "['doxygen', 'docs/Doxyfile']))"]),

@@ -14,6 +14,6 @@
 #define FX_SQRT_SEED_FIRST 64u
 #define FX_SQRT_SEED_COUNT 192u
 
-extern const uint16_t fx_sqrt_seed[FX_SQRT_SEED_COUNT];
+extern const uint16_t drdc__fx_sqrt_seed[FX_SQRT_SEED_COUNT];
 
 #endif /* DRDC_SQRT_IMPL_H */

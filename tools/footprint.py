@@ -218,7 +218,9 @@ def footprint(build, target):
     tails = set()
     for path, ci in sorted(cis.items()):
         tails |= tail_calls(target, path, ci)
-    public = sorted(f for f in frames if f.startswith("drdc_"))
+    # drdc__ marks the library's internal external symbols
+    public = sorted(f for f in frames
+                    if f.startswith("drdc_") and not f.startswith("drdc__"))
     stack = {}
     for fn in public:
         try:

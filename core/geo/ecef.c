@@ -36,7 +36,7 @@
 #define ECEF_CORE (INT64_C(1000000) * INT64_C(65536))
 
 /* the checks of a point's latitude, longitude and height, in that
- * order: one body for geo_check_point() and geo_ecef_of_plane() */
+ * order: one body for drdc__geo_check_point() and drdc__geo_ecef_of_plane() */
 static inline drdc_status_t point_status(drdc_nas_t lat, drdc_nas_t lon,
                                          drdc_q47_16_t height)
 {
@@ -54,7 +54,7 @@ static inline drdc_status_t point_status(drdc_nas_t lat, drdc_nas_t lon,
 
 /* out of line (one copy for the functions of ecef.c and pose.c that
  * check points): a leaf, called before any deep chain starts */
-__attribute__((noinline)) drdc_status_t geo_check_point(
+__attribute__((noinline)) drdc_status_t drdc__geo_check_point(
   const drdc_geo_point_t *p)
 {
   return point_status(p->lat, p->lon, p->height);
@@ -73,7 +73,7 @@ static int64_t lon_rad(drdc_nas_t lon)
   } else {
     /* in range */
   }
-  return geo_rad_from_nas(l);
+  return drdc__geo_rad_from_nas(l);
 }
 
 /* (a, b) <- (a c + b s, b c - a s) for c = cos t, s = sin t: the
@@ -84,8 +84,8 @@ static __attribute__((noinline)) void turn_apply(const int64_t sc[2],
 {
   int64_t a0 = *a;
 
-  *a = geo_mul(a0, sc[1]) + geo_mul(*b, sc[0]);
-  *b = geo_mul(*b, sc[1]) - geo_mul(a0, sc[0]);
+  *a = drdc__geo_mul(a0, sc[1]) + drdc__geo_mul(*b, sc[0]);
+  *b = drdc__geo_mul(*b, sc[1]) - drdc__geo_mul(a0, sc[0]);
 }
 
 /* The plane rotation by angle t (radians) in place: (a, b) <- (a cos t +
@@ -127,7 +127,8 @@ static int64_t rsqrt_q58(int64_t x, unsigned steps)
   y = (int64_t)d * INT64_C(4398046511104);
   for (i = 0u; i < steps; i++) {
     y = drdc_fx_rshift_round_s64_inline(
-      geo_mul(y, (3 * GEO_ONE) - geo_mul(x, geo_mul(y, y))), 1u);
+        drdc__geo_mul(y, (3 * GEO_ONE) - drdc__geo_mul(x, drdc__geo_mul(y, y))),
+        1u);
   }
   return y;
 }
@@ -137,12 +138,13 @@ static int64_t rsqrt_q58(int64_t x, unsigned steps)
  * body for acc_body() and acc_plane(). */
 static inline int64_t prime_vertical_q36(int64_t s)
 {
-  return geo_mul(A_Q36,
-                 rsqrt_q58(GEO_ONE - geo_mul(GEO_E2, geo_mul(s, s)), 2u));
+  return drdc__geo_mul(
+      A_Q36,
+      rsqrt_q58(GEO_ONE - drdc__geo_mul(GEO_E2, drdc__geo_mul(s, s)), 2u));
 }
 
 /* ECEF of a checked point in Q27.36, added to (*x, *y, *z), or subtracted
- * when sub (geo_mul() rounds symmetrically, so the difference of two
+ * when sub (drdc__geo_mul() rounds symmetrically, so the difference of two
  * points is exactly that of their coordinates). The sin and cos of the
  * latitude, then those of the longitude, share one pair of slots, and
  * only cos phi and N + h are kept across the second sin/cos: the frame
@@ -155,25 +157,25 @@ static inline __attribute__((always_inline)) void acc_body(
   int64_t n;
   int64_t v;
 
-  geo_sincos(geo_rad_from_nas(p->lat), &sc[0], &sc[1]);
+  geo_sincos(drdc__geo_rad_from_nas(p->lat), &sc[0], &sc[1]);
   n = prime_vertical_q36(sc[0]);
-  v = geo_mul(geo_mul(n, GEO_ONE - GEO_E2) + (p->height * Q36_PER_Q16),
-              sc[0]);
+  v = drdc__geo_mul(
+      drdc__geo_mul(n, GEO_ONE - GEO_E2) + (p->height * Q36_PER_Q16), sc[0]);
   *z = sub ? (*z - v) : (*z + v);
   /* x, y += or -= (N + h) cos phi (cos lam, sin lam) */
   cphi = sc[1];
   n = n + (p->height * Q36_PER_Q16);
   geo_sincos(lon_rad(p->lon), &sc[0], &sc[1]);
-  v = geo_mul(n, geo_mul(cphi, sc[1]));
+  v = drdc__geo_mul(n, drdc__geo_mul(cphi, sc[1]));
   *x = sub ? (*x - v) : (*x + v);
-  v = geo_mul(n, geo_mul(cphi, sc[0]));
+  v = drdc__geo_mul(n, drdc__geo_mul(cphi, sc[0]));
   *y = sub ? (*y - v) : (*y + v);
 }
 
 /* geo_impl.h: acc_body(), one copy of its code per entry (the same
  * bits; no wrapper frame on the chains of drdc_geo_to_ecef() and of the
  * tangent-plane conversions) */
-void geo_ecef_acc_q36(const drdc_geo_point_t *p, bool sub, int64_t *x,
+void drdc__geo_ecef_acc_q36(const drdc_geo_point_t *p, bool sub, int64_t *x,
                       int64_t *y, int64_t *z)
 {
   acc_body(p, sub, x, y, z);
@@ -187,7 +189,7 @@ drdc_status_t drdc_geo_to_ecef(const drdc_geo_point_t *p,
   if ((p == NULL) || (ecef == NULL)) {
     return DRDC_E_NULL;
   }
-  st = geo_check_point(p);
+  st = drdc__geo_check_point(p);
   if (st != DRDC_OK) {
     return st;
   }
@@ -196,7 +198,7 @@ drdc_status_t drdc_geo_to_ecef(const drdc_geo_point_t *p,
   ecef->x = 0;
   ecef->y = 0;
   ecef->z = 0;
-  geo_ecef_acc_q36(p, false, &ecef->x, &ecef->y, &ecef->z);
+  drdc__geo_ecef_acc_q36(p, false, &ecef->x, &ecef->y, &ecef->z);
   ecef->x = drdc_fx_rshift_round_s64_inline(ecef->x, 20u);
   ecef->y = drdc_fx_rshift_round_s64_inline(ecef->y, 20u);
   ecef->z = drdc_fx_rshift_round_s64_inline(ecef->z, 20u);
@@ -258,11 +260,11 @@ static int64_t normalise(bowring_t *b)
    * on the deepest chain of the inverse */
   int k = scale_legs(&b->u, &b->v);
 
-  q = geo_mul(b->u, b->u) + geo_mul(b->v, b->v);
+  q = drdc__geo_mul(b->u, b->u) + drdc__geo_mul(b->v, b->v);
   y = rsqrt_q58(q, 2u);
-  b->u = geo_mul(b->u, y);
-  b->v = geo_mul(b->v, y);
-  q = geo_mul(q, y);
+  b->u = drdc__geo_mul(b->u, y);
+  b->v = drdc__geo_mul(b->v, y);
+  q = drdc__geo_mul(q, y);
   /* q < 2^58.5 and the length below 2^61.5: no overflow either way */
   return (k >= 0) ? (q * (int64_t)(UINT64_C(1) << (unsigned)k))
                   : drdc_fx_rshift_round_s64_inline(q, (unsigned)-k);
@@ -279,8 +281,10 @@ static int64_t normalise(bowring_t *b)
  * every accepted point). */
 static void bowring_step(bowring_t *b)
 {
-  b->u = b->p - geo_mul(GEO_E2A_Q36, geo_mul(geo_mul(b->u, b->u), b->u));
-  b->v = b->z + geo_mul(GEO_EP2B_Q36, geo_mul(geo_mul(b->v, b->v), b->v));
+  b->u = b->p - drdc__geo_mul(GEO_E2A_Q36,
+                              drdc__geo_mul(drdc__geo_mul(b->u, b->u), b->u));
+  b->v = b->z + drdc__geo_mul(GEO_EP2B_Q36,
+                              drdc__geo_mul(drdc__geo_mul(b->v, b->v), b->v));
 }
 
 /* h = p cos phi + z sin phi - a sqrt(1 - e^2 sin^2 phi) (Q27.36) with
@@ -289,10 +293,10 @@ static void bowring_step(bowring_t *b)
  * sqrt(w^2) as w^2 / sqrt(w^2), w^2 in [1 - e^2, 1]. */
 static int64_t height_q36(const bowring_t *b)
 {
-  int64_t w2 = GEO_ONE - geo_mul(GEO_E2, geo_mul(b->v, b->v));
+  int64_t w2 = GEO_ONE - drdc__geo_mul(GEO_E2, drdc__geo_mul(b->v, b->v));
 
-  return (geo_mul(b->p, b->u) + geo_mul(b->z, b->v))
-         - geo_mul(A_Q36, geo_mul(w2, rsqrt_q58(w2, 2u)));
+  return (drdc__geo_mul(b->p, b->u) + drdc__geo_mul(b->z, b->v))
+         - drdc__geo_mul(A_Q36, drdc__geo_mul(w2, rsqrt_q58(w2, 2u)));
 }
 
 /* Below this height (Q27.36: -50 km) the point is less than 6 300 km
@@ -319,17 +323,17 @@ static drdc_status_t geodetic_direction(bowring_t *b)
     return DRDC_E_HEIGHT;
   }
   /* tan beta_0 = a z / (b p), then tan beta = (b / a) tan phi */
-  b->u = geo_mul(b->p, GEO_B_OVER_A);
+  b->u = drdc__geo_mul(b->p, GEO_B_OVER_A);
   b->v = b->z;
   (void)normalise(b);
   bowring_step(b);
-  b->v = geo_mul(b->v, GEO_B_OVER_A);
+  b->v = drdc__geo_mul(b->v, GEO_B_OVER_A);
   (void)normalise(b);
   bowring_step(b);
   (void)normalise(b);
   h = height_q36(b);
   if (h < DEEP_Q36) {
-    b->v = geo_mul(b->v, GEO_B_OVER_A);
+    b->v = drdc__geo_mul(b->v, GEO_B_OVER_A);
     (void)normalise(b);
     bowring_step(b);
     (void)normalise(b);
@@ -352,10 +356,10 @@ static drdc_status_t geodetic_direction(bowring_t *b)
 static inline drdc_nas_t angle_nas(int64_t y, int64_t x, int64_t *slot)
 {
   (void)drdc_fx_atan2_q5_58(y, x, slot);
-  return geo_nas_from_rad(*slot);
+  return drdc__geo_nas_from_rad(*slot);
 }
 
-/* The end of geo_geodetic_q36() once the direction and height are in b:
+/* The end of drdc__geo_geodetic_q36() once the direction and height are in b:
  * the latitude's atan2 (its radians in b->z, no longer needed) into
  * b->v, the longitude into b->u. A sibling call of its caller, so that
  * no status is kept across the atan2 in the caller's frame; never
@@ -375,7 +379,7 @@ static __attribute__((noinline)) drdc_status_t lat_lon_into(bowring_t *b,
  * that keeps only the longitude and b, whose free slots take the
  * radians. Out of line: not merged into the frame of its caller, which
  * holds the bowring_t. */
-__attribute__((noinline)) drdc_status_t geo_geodetic_q36(bowring_t *b)
+__attribute__((noinline)) drdc_status_t drdc__geo_geodetic_q36(bowring_t *b)
 {
   drdc_nas_t lon = 0;
   drdc_status_t st;
@@ -413,7 +417,7 @@ drdc_status_t drdc_geo_from_ecef(const drdc_vec3_q47_16_t *ecef,
       || (ecef->z >= ECEF_COORD_MAX) || (ecef->z <= -ECEF_COORD_MAX)) {
     return DRDC_E_HEIGHT;
   }
-  /* as geo_geodetic_q36(), reading the coordinates again after each
+  /* as drdc__geo_geodetic_q36(), reading the coordinates again after each
    * call rather than keeping them: the longitude from the Q47.16 values
    * (the same angle: atan2 scales its arguments exactly) */
   lon = ((ecef->x == 0) && (ecef->y == 0))
@@ -440,11 +444,11 @@ static bool fits_q15_16(int64_t v)
  * in place; about the axis by the longitude: (dx, dy) -> (towards the
  * ref's meridian plane t, east); about east by the latitude: (t, dz) ->
  * (up, north). */
-drdc_status_t geo_plane_turn(const drdc_geo_point_t *ref, bool ned,
+drdc_status_t drdc__geo_plane_turn(const drdc_geo_point_t *ref, bool ned,
                              int64_t d[3], drdc_vec3_q15_16_t *out)
 {
   turn(lon_rad(ref->lon), &d[0], &d[1]);
-  turn(geo_rad_from_nas(ref->lat), &d[0], &d[2]);
+  turn(drdc__geo_rad_from_nas(ref->lat), &d[0], &d[2]);
   /* east, north, up (Q47.16); NED: north, east, down */
   d[0] = drdc_fx_rshift_round_s64_inline(d[0], 20u);
   d[1] = drdc_fx_rshift_round_s64_inline(d[1], 20u);
@@ -463,7 +467,7 @@ drdc_status_t geo_plane_turn(const drdc_geo_point_t *ref, bool ned,
 
 /* ENU (ned false) or NED (ned true) of p at ref in Q15.16, the pointers
  * checked: the ECEF difference (Q27.36) in one array, then
- * geo_plane_turn() */
+ * drdc__geo_plane_turn() */
 static drdc_status_t plane_of(const drdc_geo_point_t *ref,
                               const drdc_geo_point_t *p, bool ned,
                               drdc_vec3_q15_16_t *out)
@@ -471,16 +475,16 @@ static drdc_status_t plane_of(const drdc_geo_point_t *ref,
   drdc_status_t st;
   int64_t d[3] = { 0, 0, 0 };
 
-  st = geo_check_point(ref);
+  st = drdc__geo_check_point(ref);
   if (st == DRDC_OK) {
-    st = geo_check_point(p);
+    st = drdc__geo_check_point(p);
   }
   if (st != DRDC_OK) {
     return st;
   }
-  geo_ecef_acc_q36(p, false, &d[0], &d[1], &d[2]);
-  geo_ecef_acc_q36(ref, true, &d[0], &d[1], &d[2]);
-  return geo_plane_turn(ref, ned, d, out);
+  drdc__geo_ecef_acc_q36(p, false, &d[0], &d[1], &d[2]);
+  drdc__geo_ecef_acc_q36(ref, true, &d[0], &d[1], &d[2]);
+  return drdc__geo_plane_turn(ref, ned, d, out);
 }
 
 drdc_status_t drdc_geo_to_enu(const drdc_geo_point_t *ref,
@@ -518,7 +522,7 @@ static __attribute__((noinline)) void turn_plane(int64_t t, bowring_t *b,
 /* acc_body() of the point (ref's latitude and longitude, its height
  * (Q47.16) in b->p) into b's ECEF slots (x in b->u, y in b->v, z in
  * b->z), the same operations in the same order: two arguments, so that
- * geo_ecef_of_plane() ends with a sibling call on both targets (no stack
+ * drdc__geo_ecef_of_plane() ends with a sibling call on both targets (no stack
  * argument on Cortex-M3), and cos phi then waits in b->p (free until the
  * inverse) rather than in registers across the second sin/cos: a frame
  * that keeps b, p and N + h only. */
@@ -529,21 +533,22 @@ acc_plane(const geo_lat_lon_t *p, bowring_t *b)
   int64_t n;
   int64_t v;
 
-  geo_sincos(geo_rad_from_nas(p->lat), &sc[0], &sc[1]);
+  geo_sincos(drdc__geo_rad_from_nas(p->lat), &sc[0], &sc[1]);
   n = prime_vertical_q36(sc[0]);
-  v = geo_mul(geo_mul(n, GEO_ONE - GEO_E2) + (b->p * Q36_PER_Q16), sc[0]);
+  v = drdc__geo_mul(drdc__geo_mul(n, GEO_ONE - GEO_E2) + (b->p * Q36_PER_Q16),
+                    sc[0]);
   b->z = b->z + v;
   n = n + (b->p * Q36_PER_Q16);
   b->p = sc[1];
   geo_sincos(lon_rad(p->lon), &sc[0], &sc[1]);
-  v = geo_mul(n, geo_mul(b->p, sc[1]));
+  v = drdc__geo_mul(n, drdc__geo_mul(b->p, sc[1]));
   b->u = b->u + v;
-  v = geo_mul(n, geo_mul(b->p, sc[0]));
+  v = drdc__geo_mul(n, drdc__geo_mul(b->p, sc[0]));
   b->v = b->v + v;
   return DRDC_OK;
 }
 
-/* point_status() of geo_ecef_of_plane()'s point: a leaf, so that its
+/* point_status() of drdc__geo_ecef_of_plane()'s point: a leaf, so that its
  * caller keeps only ref and b across it */
 static __attribute__((noinline)) drdc_status_t
 plane_point_status(const geo_lat_lon_t *ref, const bowring_t *b)
@@ -559,7 +564,7 @@ plane_point_status(const geo_lat_lon_t *ref, const bowring_t *b)
  * sibling call: a caller that holds the latitude and longitude alone (16 bytes)
  * saves no register across the check (issue 8's stack). */
 __attribute__((noinline)) drdc_status_t
-geo_ecef_of_plane(const geo_lat_lon_t *ref, bowring_t *b)
+drdc__geo_ecef_of_plane(const geo_lat_lon_t *ref, bowring_t *b)
 {
   drdc_status_t st = plane_point_status(ref, b);
 
@@ -570,14 +575,14 @@ geo_ecef_of_plane(const geo_lat_lon_t *ref, bowring_t *b)
   b->z = b->z * Q36_PER_Q16;
   b->u = b->u * Q36_PER_Q16;
   b->v = b->v * Q36_PER_Q16;
-  turn_plane(geo_rad_from_nas(ref->lat), b, false);
+  turn_plane(drdc__geo_rad_from_nas(ref->lat), b, false);
   turn_plane(lon_rad(ref->lon), b, true);
   return acc_plane(ref, b);
 }
 
 /* geodetic of ENU (ned false) or NED (ned true) v (Q15.16) at ref: the
- * offset into b's slots (north, up, east), geo_ecef_of_plane() (ref's
- * check first), then geo_geodetic_q36(); the one bowring_t of the chain
+ * offset into b's slots (north, up, east), drdc__geo_ecef_of_plane() (ref's
+ * check first), then drdc__geo_geodetic_q36(); the one bowring_t of the chain
  * lives here, p written only on DRDC_OK */
 static drdc_status_t point_of_plane(const drdc_geo_point_t *ref,
                                     const drdc_vec3_q15_16_t *v, bool ned,
@@ -593,9 +598,9 @@ static drdc_status_t point_of_plane(const drdc_geo_point_t *ref,
   b.p = ref->height;
   ll.lat = ref->lat;
   ll.lon = ref->lon;
-  st = geo_ecef_of_plane(&ll, &b);
+  st = drdc__geo_ecef_of_plane(&ll, &b);
   if (st == DRDC_OK) {
-    st = geo_geodetic_q36(&b);
+    st = drdc__geo_geodetic_q36(&b);
   }
   if (st == DRDC_OK) {
     p->lat = b.v;

@@ -132,10 +132,10 @@ def consts():
 
 
 def tables():
-    return [("geo_chi_from_phi", "GEO_CHI_TERMS", fourier(chi_of_phi, 8)),
-            ("geo_phi_from_chi", "GEO_CHI_TERMS", fourier(phi_of_chi, 8)),
-            ("geo_alpha", "GEO_KRUEGER_TERMS", series(ALPHA)),
-            ("geo_beta", "GEO_KRUEGER_TERMS", series(BETA))]
+    return [("drdc__geo_chi_from_phi", "GEO_CHI_TERMS", fourier(chi_of_phi, 8)),
+            ("drdc__geo_phi_from_chi", "GEO_CHI_TERMS", fourier(phi_of_chi, 8)),
+            ("drdc__geo_alpha", "GEO_KRUEGER_TERMS", series(ALPHA)),
+            ("drdc__geo_beta", "GEO_KRUEGER_TERMS", series(BETA))]
 
 
 HEAD = """/* SPDX-License-Identifier: BSD-2-Clause */

@@ -49,19 +49,19 @@
 #define GEO_KRUEGER_TERMS 6u
 
 /** chi - phi = sum GEO_CHI_FROM_PHI[j] sin(2 (j+1) phi). */
-extern const int64_t geo_chi_from_phi[GEO_CHI_TERMS];
+extern const int64_t drdc__geo_chi_from_phi[GEO_CHI_TERMS];
 /** phi - chi = sum GEO_PHI_FROM_CHI[j] sin(2 (j+1) chi). */
-extern const int64_t geo_phi_from_chi[GEO_CHI_TERMS];
+extern const int64_t drdc__geo_phi_from_chi[GEO_CHI_TERMS];
 /** Krueger alpha_1..6 (geographic -> transverse Mercator). */
-extern const int64_t geo_alpha[GEO_KRUEGER_TERMS];
+extern const int64_t drdc__geo_alpha[GEO_KRUEGER_TERMS];
 /** Krueger beta_1..6 (transverse Mercator -> geographic). */
-extern const int64_t geo_beta[GEO_KRUEGER_TERMS];
+extern const int64_t drdc__geo_beta[GEO_KRUEGER_TERMS];
 
 /** a b / 2^58, rounded to nearest (ties away from zero): the caller keeps
  *  |a b| / 2^58 within Q5.58. One out-of-line copy of
  *  drdc_fx_mul_q5_58_unchecked() (the same bits as drdc_fx_mul_q5_58(),
  *  without its checks and pointer); the hot loops of tm.c inline it. */
-int64_t geo_mul(int64_t a, int64_t b);
+int64_t drdc__geo_mul(int64_t a, int64_t b);
 
 /** a 2^58 / b, rounded; b != 0 and the quotient within int64_t: the
  *  callers keep it so, so it never fails. Inline: an out-of-line wrapper
@@ -75,13 +75,13 @@ static inline int64_t geo_div(int64_t a, int64_t b)
 }
 
 /** a b / c, rounded; c != 0 and the quotient within int64_t. */
-int64_t geo_muldiv(int64_t a, int64_t b, int64_t c);
+int64_t drdc__geo_muldiv(int64_t a, int64_t b, int64_t c);
 
 /** a b / 2^n rounded to nearest, ties away from zero: the bits of
- *  geo_muldiv(a, b, 2^n) for b > 0, 0 < n < 64, the quotient within
+ *  drdc__geo_muldiv(a, b, 2^n) for b > 0, 0 < n < 64, the quotient within
  *  int64_t. A product and a shift, no 128-bit division: a small frame
  *  with no chain under it (issue 8's stack) and fewer cycles. */
-int64_t geo_mul_shift(int64_t a, int64_t b, unsigned n);
+int64_t drdc__geo_mul_shift(int64_t a, int64_t b, unsigned n);
 
 /** sin and cos of x radians: drdc_fx_sincos_q5_58() (s, c not NULL). */
 static inline void geo_sincos(int64_t x, int64_t *s, int64_t *c)
@@ -109,13 +109,13 @@ static inline int64_t geo_sqrt(int64_t x)
 }
 
 /** Nano-arcseconds -> radians (Q5.58), |a| <= 2^49 nas. */
-int64_t geo_rad_from_nas(drdc_nas_t a);
+int64_t drdc__geo_rad_from_nas(drdc_nas_t a);
 
 /** Radians (Q5.58) -> nano-arcseconds, rounded. */
-drdc_nas_t geo_nas_from_rad(int64_t r);
+drdc_nas_t drdc__geo_nas_from_rad(int64_t r);
 
 /** floor(a / b) for b > 0 (integer division rounding towards -inf). */
-int64_t geo_floor_div(int64_t a, int64_t b);
+int64_t drdc__geo_floor_div(int64_t a, int64_t b);
 
 /** Transverse Mercator result on the unit sphere of radius k0 A:
  *  xi and eta (Q5.58), convergence gamma (rad, Q5.58), point scale k. */
@@ -134,62 +134,62 @@ typedef struct geo_tm {
  * beyond the series' domain (cos(chi) |sin(lam)| > tanh(0.34)), else 1
  * with *out written.
  */
-int geo_tm_forward(geo_tm_t *out);
+int drdc__geo_tm_forward(geo_tm_t *out);
 
 /** 2^62, the divisor that takes k0 A (Q40) times an angle (Q58) to
  *  metres in Q36. */
 #define GEO_TWO_POW_62 INT64_C(4611686018427387904)
 
 /** An angle on the sphere of radius k0 A (Q5.58, the xi and eta of
- *  geo_tm_forward()) -> metres (Q47.16): the Q28.36 metres (rounded, by
- *  geo_mul_shift()) rounded again. */
-drdc_q47_16_t geo_metres_from_angle(int64_t a);
+ *  drdc__geo_tm_forward()) -> metres (Q47.16): the Q28.36 metres (rounded, by
+ *  drdc__geo_mul_shift()) rounded again. */
+drdc_q47_16_t drdc__geo_metres_from_angle(int64_t a);
 
-/** Inverse of geo_tm_forward(): xi, eta (|eta| <= 0.34) in tm->xi,
+/** Inverse of drdc__geo_tm_forward(): xi, eta (|eta| <= 0.34) in tm->xi,
  *  tm->eta -> phi, lam in the same slots; tm->gamma and tm->k are its
  *  scratch (one struct of the caller's frame holds every intermediate
  *  the stages share). */
-void geo_tm_reverse(geo_tm_t *tm);
+void drdc__geo_tm_reverse(geo_tm_t *tm);
 
 /** cos(chi) / cos(phi) from s = sin(phi), well conditioned up to the
  *  poles: 2 E / ((1 + s) + (1 - s) E^2) with E = exp(e atanh(e s)). */
-int64_t geo_cos_ratio(int64_t s);
+int64_t drdc__geo_cos_ratio(int64_t s);
 
 /** sum coef[j] sin(2 (j+1) x), j < GEO_CHI_TERMS, from s = sin x and
  *  c = cos x: the series between the geodetic and the conformal
  *  latitude, one copy for both directions. */
-int64_t geo_lat_series(const int64_t *coef, int64_t s, int64_t c);
+int64_t drdc__geo_lat_series(const int64_t *coef, int64_t s, int64_t c);
 
 /** chi - phi of the conformal latitude from sin phi, cos phi. */
 static inline int64_t geo_chi_series(int64_t sphi, int64_t cphi)
 {
-  return geo_lat_series(geo_chi_from_phi, sphi, cphi);
+  return drdc__geo_lat_series(drdc__geo_chi_from_phi, sphi, cphi);
 }
 
 /** phi - chi from sin chi, cos chi. */
 static inline int64_t geo_phi_series(int64_t schi, int64_t cchi)
 {
-  return geo_lat_series(geo_phi_from_chi, schi, cchi);
+  return drdc__geo_lat_series(drdc__geo_phi_from_chi, schi, cchi);
 }
 
 /**
  * Polar stereographic (UPS, k0 = 0.994) of phi, lam (radians, in out->xi,
- * out->eta as geo_tm_forward() takes them) on the north or south sheet
+ * out->eta as drdc__geo_tm_forward() takes them) on the north or south sheet
  * into out: x, y (out->xi, out->eta) as angles of
- * the sphere of radius 2 k0 a / c (geo_ups_q36() makes metres),
+ * the sphere of radius 2 k0 a / c (drdc__geo_ups_q36() makes metres),
  * convergence out->gamma (radians) and scale out->k; one pointer, so that
  * no caller's frame holds outgoing arguments for four. Returns 0 when the
  * point is too far on the other hemisphere (sin chi < -0.9), else 1; out
  * is its scratch (it holds intermediate values after 0: the callers pass
  * scratch).
  */
-int geo_ups_forward(bool north, geo_tm_t *out);
+int drdc__geo_ups_forward(bool north, geo_tm_t *out);
 
-/** Inverse of geo_ups_forward(): x, y from the pole in metres (Q47.16,
+/** Inverse of drdc__geo_ups_forward(): x, y from the pole in metres (Q47.16,
  *  |x|, |y| < 2 000 km) in tm->xi, tm->eta -> phi, lam (radians) in the
  *  same slots; tm->gamma and tm->k are its scratch. No 64-bit argument:
  *  nothing on the caller's stack for the call. */
-void geo_ups_reverse(bool north, geo_tm_t *tm);
+void drdc__geo_ups_reverse(bool north, geo_tm_t *tm);
 
 /**
  * MGRS text of a UTM/UPS position already validated by drdc_geo_to_utm()
@@ -198,11 +198,11 @@ void geo_ups_reverse(bool north, geo_tm_t *tm);
  * (outside the MGRS limits), DRDC_E_BUFFER (size too small); the text is
  * written only on DRDC_OK.
  */
-drdc_status_t geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,
+drdc_status_t drdc__geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,
                               int32_t prec, char *text, size_t size);
 
 /** Added to a zone (0..60) for the southern hemisphere: the code of a
- *  grid position that geo_mgrs_decode_tm() returns and the reverse
+ *  grid position that drdc__geo_mgrs_decode_tm() returns and the reverse
  *  projections of utm_reverse.c take; the forward projection of
  *  utm_forward.c adds it (with GEO_ZONE_Q36) for a point south of the
  *  equator. */
@@ -215,10 +215,10 @@ drdc_status_t geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,
  * southern hemisphere, or minus the status (same checks, same order); tm
  * and *prec (may be NULL) written only when it returns a code.
  */
-int32_t geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec);
+int32_t drdc__geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec);
 
 /** UPS angle -> metres in Q28.36 (2^-36 m, rounded). */
-int64_t geo_ups_q36(int64_t a);
+int64_t drdc__geo_ups_q36(int64_t a);
 
 /** Added to a zone code of drdc_geo_to_utm() (-1..60): utm_forward.c's
  *  forward projection (for MGRS) keeps easting and northing in Q28.36
@@ -228,12 +228,12 @@ int64_t geo_ups_q36(int64_t a);
 /**
  * The forward projection (UPS or transverse Mercator, by the zone of the
  * code) of phi and lam (radians) in tm's xi and eta slots, into tm as
- * geo_ups_forward() or geo_tm_forward() leave it: 0 beyond its domain,
- * else 1 (never 0 after the reverse). In utm_forward.c, out of line, a
+ * drdc__geo_ups_forward() or drdc__geo_tm_forward() leave it: 0 beyond its
+ * domain, else 1 (never 0 after the reverse). In utm_forward.c, out of line, a
  * sibling call of either projection; the reverse (utm_reverse.c) calls
  * it for the convergence and scale, so one copy serves both files.
  */
-int geo_grid_forward_projection(int32_t code, geo_tm_t *tm);
+int drdc__geo_grid_forward_projection(int32_t code, geo_tm_t *tm);
 
 /** Metres in Q47.16. */
 #define GEO_METRES(v) ((int64_t)(v) * INT64_C(65536))
@@ -292,7 +292,7 @@ static inline drdc_nas_t geo_central_meridian(int32_t zone)
  *  pose.c, with the turn: a call to another unit, so the compiler passes
  *  tm's address rather than the 64-bit convergence, which would leave an
  *  argument on the caller's stack on Cortex-M3. */
-drdc_status_t geo_w_attitude(const drdc_WUTMPose_t *u,
+drdc_status_t drdc__geo_w_attitude(const drdc_WUTMPose_t *u,
                              const drdc_WMGRSPose_t *m, const geo_tm_t *tm,
                              drdc_WPose_t *out);
 
@@ -300,29 +300,30 @@ drdc_status_t geo_w_attitude(const drdc_WUTMPose_t *u,
  *  utm_forward.c), after the projection: w's attitude turned from true to
  *  grid north by the convergence (radians) in tm->gamma straight into
  *  out->q, then the height; written only on DRDC_OK (else
- *  DRDC_E_OVERFLOW). In pose.c, as geo_w_attitude(), so the caller passes
+ *  DRDC_E_OVERFLOW). In pose.c, as drdc__geo_w_attitude(), so the caller passes
  *  tm's address, not a 64-bit argument on its stack. */
-drdc_status_t geo_wmgrs_attitude(const drdc_WPose_t *w, const geo_tm_t *tm,
-                                 drdc_WMGRSPose_t *out);
+drdc_status_t drdc__geo_wmgrs_attitude(const drdc_WPose_t *w,
+                                       const geo_tm_t *tm,
+                                       drdc_WMGRSPose_t *out);
 
 /** The last step of drdc_pose_weutm_from_we() (in utm_forward.c), after
  *  the projection: height and angles of w into out, the yaw turned from
  *  true to grid north by the convergence parked in out->height. Never
  *  fails. */
-void geo_weutm_attitude(const drdc_WePose_t *w, drdc_WeUTMPose_t *out);
+void drdc__geo_weutm_attitude(const drdc_WePose_t *w, drdc_WeUTMPose_t *out);
 
 /**
- * geo_mgrs_format() of a position whose easting and northing carry
+ * drdc__geo_mgrs_format() of a position whose easting and northing carry
  * frac_bits fraction bits (16: Q47.16; 36: utm_forward.c's projection
  * with GEO_ZONE_Q36): the digits truncate that value.
  */
-drdc_status_t geo_mgrs_format_bits(const drdc_geo_utm_t *u, unsigned frac_bits,
-                                   drdc_nas_t lat, int32_t prec, char *text,
-                                   size_t size);
+drdc_status_t drdc__geo_mgrs_format_bits(const drdc_geo_utm_t *u,
+                                         unsigned frac_bits, drdc_nas_t lat,
+                                         int32_t prec, char *text, size_t size);
 
 /** The checks of drdc_geo_to_ecef() on a point: DRDC_E_LATITUDE,
  *  DRDC_E_LONGITUDE or DRDC_E_HEIGHT out of range, else DRDC_OK. */
-drdc_status_t geo_check_point(const drdc_geo_point_t *p);
+drdc_status_t drdc__geo_check_point(const drdc_geo_point_t *p);
 
 /**
  * The ECEF coordinates of a checked point in Q27.36 (2^-36 m) added to
@@ -331,16 +332,16 @@ drdc_status_t geo_check_point(const drdc_geo_point_t *p);
  * conversions of ecef.c and pose.c accumulate one point at a time, so
  * that only one point and the three sums are on the stack.
  */
-void geo_ecef_acc_q36(const drdc_geo_point_t *p, bool sub, int64_t *x,
+void drdc__geo_ecef_acc_q36(const drdc_geo_point_t *p, bool sub, int64_t *x,
                       int64_t *y, int64_t *z);
 
 /**
  * ENU (ned false) or NED (ned true) in Q15.16 of the ECEF difference
- * d = p - ref (Q27.36, from geo_ecef_acc_q36(); turned in place, scratch)
+ * d = p - ref (Q27.36, from drdc__geo_ecef_acc_q36(); turned in place, scratch)
  * at the checked ref. Returns DRDC_E_OVERFLOW (out unchanged) when a part
  * is outside Q15.16, else DRDC_OK.
  */
-drdc_status_t geo_plane_turn(const drdc_geo_point_t *ref, bool ned,
+drdc_status_t drdc__geo_plane_turn(const drdc_geo_point_t *ref, bool ned,
                              int64_t d[3], drdc_vec3_q15_16_t *out);
 
 /**
@@ -349,7 +350,7 @@ drdc_status_t geo_plane_turn(const drdc_geo_point_t *ref, bool ned,
  * the frame of a caller of the deep chain, which the stages of ecef.c
  * reach by pointer (no level keeps copies of it). Its entry is an ECEF
  * point (u, v, z) = (x, y, z); p is scratch; on DRDC_OK
- * geo_geodetic_q36() leaves the geodetic point in it (v latitude, u
+ * drdc__geo_geodetic_q36() leaves the geodetic point in it (v latitude, u
  * longitude, p height), so that its caller needs no point beside it.
  */
 typedef struct geo_bowring {
@@ -369,14 +370,15 @@ typedef struct geo_lat_lon {
  * The ECEF point (Q27.36) of an offset from a point given as ref's
  * latitude and longitude and, in b->p, its height (Q47.16), the offset in
  * b as north b->z, up b->u, east b->v (Q15.16 values, |v| < 2^32): the
- * point checked first (geo_check_point()'s statuses, b untouched on
+ * point checked first (drdc__geo_check_point()'s statuses, b untouched on
  * error), then the offset scaled to Q27.36 and turned to ECEF axes in
  * place and the point's ECEF added, so that b->u, b->v, b->z hold x, y, z
- * (as geo_geodetic_q36() takes them); DRDC_OK.
+ * (as drdc__geo_geodetic_q36() takes them); DRDC_OK.
  * The first half of drdc_geo_from_ned() and drdc_geo_from_enu(); its
  * sin/cos and roots run beside, not above, the inverse's chain.
  */
-drdc_status_t geo_ecef_of_plane(const geo_lat_lon_t *ref, geo_bowring_t *b);
+drdc_status_t drdc__geo_ecef_of_plane(const geo_lat_lon_t *ref,
+                                      geo_bowring_t *b);
 
 /**
  * Geodetic of the ECEF point in b (Q27.36, |x|, |y|, |z| < 2^61), the
@@ -386,6 +388,6 @@ drdc_status_t geo_ecef_of_plane(const geo_lat_lon_t *ref, geo_bowring_t *b);
  * 1 000 km of the centre or beyond DRDC_GEO_HEIGHT_MAX (b is scratch
  * then).
  */
-drdc_status_t geo_geodetic_q36(geo_bowring_t *b);
+drdc_status_t drdc__geo_geodetic_q36(geo_bowring_t *b);
 
 #endif /* DRDC_GEO_IMPL_H */

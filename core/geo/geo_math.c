@@ -10,12 +10,12 @@
 #include <drdc/fixed_arith.h>
 #include <drdc/fixed_wide.h>
 
-int64_t geo_mul(int64_t a, int64_t b)
+int64_t drdc__geo_mul(int64_t a, int64_t b)
 {
   return drdc_fx_mul_q5_58_unchecked(a, b);
 }
 
-int64_t geo_muldiv(int64_t a, int64_t b, int64_t c)
+int64_t drdc__geo_muldiv(int64_t a, int64_t b, int64_t c)
 {
   int64_t r = 0;
 
@@ -24,7 +24,7 @@ int64_t geo_muldiv(int64_t a, int64_t b, int64_t c)
   return r;
 }
 
-int64_t geo_mul_shift(int64_t a, int64_t b, unsigned n)
+int64_t drdc__geo_mul_shift(int64_t a, int64_t b, unsigned n)
 {
   uint64_t m = (a < 0) ? (UINT64_C(0) - (uint64_t)a) : (uint64_t)a;
   uint64_t half = UINT64_C(1) << (n - 1u);
@@ -35,7 +35,7 @@ int64_t geo_mul_shift(int64_t a, int64_t b, unsigned n)
 
   /* the exact 128-bit |a| b plus half the divisor, shifted: the quotient
    * rounded half up, which with the sign put back is round to nearest,
-   * ties away from zero, of a b / 2^n: geo_muldiv(a, b, 2^n) (b > 0),
+   * ties away from zero, of a b / 2^n: drdc__geo_muldiv(a, b, 2^n) (b > 0),
    * both being that one rounding of the same rational */
   drdc_fx_mul_u64_u128(m, (uint64_t)b, &hi, &lo);
   lo = lo + half;
@@ -44,14 +44,14 @@ int64_t geo_mul_shift(int64_t a, int64_t b, unsigned n)
   return (a < 0) ? (int64_t)(UINT64_C(0) - q) : (int64_t)q;
 }
 
-drdc_q47_16_t geo_metres_from_angle(int64_t a)
+drdc_q47_16_t drdc__geo_metres_from_angle(int64_t a)
 {
   /* the projection's angles keep the Q36 metres within int64_t */
   return drdc_fx_rshift_round_s64_inline(
-      geo_mul_shift(a, GEO_K0A_Q40, 62u), 20u);
+      drdc__geo_mul_shift(a, GEO_K0A_Q40, 62u), 20u);
 }
 
-int64_t geo_floor_div(int64_t a, int64_t b)
+int64_t drdc__geo_floor_div(int64_t a, int64_t b)
 {
   int64_t q = a / b;
 
@@ -62,18 +62,18 @@ int64_t geo_floor_div(int64_t a, int64_t b)
   return q;
 }
 
-int64_t geo_rad_from_nas(drdc_nas_t a)
+int64_t drdc__geo_rad_from_nas(drdc_nas_t a)
 {
   /* a pi 2^58 / 648e12 = 1397 a + a 0.38029... (the fraction in Q5.58):
    * no division; |a| <= 2^51 keeps 1397 a in range */
-  return (a * 1397) + geo_mul(a, GEO_NAS_RAD_FRACTION);
+  return (a * 1397) + drdc__geo_mul(a, GEO_NAS_RAD_FRACTION);
 }
 
 /** floor(2^63 GEO_NAS_180 / GEO_PI), GEO_PI being pi 2^58 rounded to an
  *  integer: the nas in a radian in Q63, 53 bits. */
 #define NAS_PER_RAD_Q63 INT64_C(6600473799907083)
 
-drdc_nas_t geo_nas_from_rad(int64_t r)
+drdc_nas_t drdc__geo_nas_from_rad(int64_t r)
 {
   const uint64_t c = (uint64_t)GEO_NAS_180;
   const uint64_t d = (uint64_t)GEO_PI;
@@ -83,7 +83,7 @@ drdc_nas_t geo_nas_from_rad(int64_t r)
   uint64_t q;
   uint64_t rem;
 
-  /* geo_muldiv(r, GEO_NAS_180, GEO_PI) bit for bit, without the 128-bit
+  /* drdc__geo_muldiv(r, GEO_NAS_180, GEO_PI) bit for bit, without the 128-bit
    * division (its chain of frames was the deepest of the inverse on
    * Cortex-M3): with x = |r| <= 2^63, c = GEO_NAS_180, d = GEO_PI and
    * f = floor(x c / d), the magnitude is f + [2 rem >= d], rem = x c -

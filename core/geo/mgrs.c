@@ -100,15 +100,15 @@ static int64_t micrometres(int64_t v, unsigned frac_bits)
                    + ((frac * UINT64_C(1000000)) >> frac_bits));
 }
 
-drdc_status_t geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,
+drdc_status_t drdc__geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,
                               int32_t prec, char *text, size_t size)
 {
-  return geo_mgrs_format_bits(u, 16u, lat, prec, text, size);
+  return drdc__geo_mgrs_format_bits(u, 16u, lat, prec, text, size);
 }
 
-drdc_status_t geo_mgrs_format_bits(const drdc_geo_utm_t *u, unsigned frac_bits,
-                                   drdc_nas_t lat, int32_t prec, char *text,
-                                   size_t size)
+drdc_status_t drdc__geo_mgrs_format_bits(const drdc_geo_utm_t *u,
+                                         unsigned frac_bits, drdc_nas_t lat,
+                                         int32_t prec, char *text, size_t size)
 {
   char *buf = text;
   size_t n = 0u;
@@ -126,8 +126,8 @@ drdc_status_t geo_mgrs_format_bits(const drdc_geo_utm_t *u, unsigned frac_bits,
   /* whole micrometres, truncated (-1 below zero: its tile index is -1) */
   x = micrometres(u->easting, frac_bits);
   y = micrometres(u->northing, frac_bits);
-  ix = geo_floor_div(x, TILE_UM);
-  iy = geo_floor_div(y, TILE_UM);
+  ix = drdc__geo_floor_div(x, TILE_UM);
+  iy = drdc__geo_floor_div(y, TILE_UM);
   eastp = (ix >= UPS_POLE_INDEX);
   /* the MGRS limits: UTM columns 1..8, rows 0..94 (north) or 10..99
    * (south); UPS 13..26 (north) or 8..31 (south) on both axes */
@@ -160,7 +160,7 @@ drdc_status_t geo_mgrs_format_bits(const drdc_geo_utm_t *u, unsigned frac_bits,
     return DRDC_E_BUFFER;
   }
   if (u->zone != DRDC_GEO_ZONE_UPS) {
-    int64_t band = geo_floor_div(lat, 8 * GEO_NAS_DEG);
+    int64_t band = drdc__geo_floor_div(lat, 8 * GEO_NAS_DEG);
 
     if (band > 9) {
       band = 9;
@@ -227,8 +227,8 @@ static int32_t utm_row(int32_t iband, int32_t icol, int32_t irow_letter)
    * max = floor(c + 4.4 - 0.1 north), in ninetieths (never a tie) */
   int32_t low = ((800 * iband) + 13) - north9;
   int32_t high = ((800 * iband) + 796) - north9;
-  int32_t minrow = (iband > -10) ? (int32_t)geo_floor_div(low, 90) : -90;
-  int32_t maxrow = (iband < 9) ? (int32_t)geo_floor_div(high, 90) : 94;
+  int32_t minrow = (iband > -10) ? (int32_t)drdc__geo_floor_div(low, 90) : -90;
+  int32_t maxrow = (iband < 9) ? (int32_t)drdc__geo_floor_div(high, 90) : 94;
   /* C's division truncates towards zero, as GeographicLib's does */
   int32_t baserow = ((minrow + maxrow) / 2) - (ROW_PERIOD / 2);
   int32_t irow = (((irow_letter - baserow) + SOUTH_ROWS) % ROW_PERIOD)
@@ -263,7 +263,7 @@ static int64_t tiles_q16(int64_t v, int64_t den)
  * conversions of utm_reverse.c, which run the reverse projection on these
  * slots: no drdc_geo_utm_t in this frame or in the caller's (issue 8's
  * stack), the values written once, after the last check. */
-int32_t geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec)
+int32_t drdc__geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec)
 {
   int32_t p = 0;
   int32_t len = 0;
@@ -310,7 +310,7 @@ int32_t geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec)
      * and centre */
     if (utmp) {
       tm->eta = (((zone == 31) && (iband == 17)) ? 4 : 5) * TILE_Q16;
-      tm->xi = (geo_floor_div((160 * (int64_t)iband) - 1511, 18)
+      tm->xi = (drdc__geo_floor_div((160 * (int64_t)iband) - 1511, 18)
                 + (north ? 0 : SOUTH_ROWS)) * TILE_Q16;
     } else {
       tm->eta = ((((iband % 2) == 1) ? 4 : -4) + UPS_POLE_INDEX)
@@ -389,7 +389,7 @@ drdc_status_t drdc_geo_mgrs_decode(const char *text, drdc_geo_utm_t *corner,
   if ((text == NULL) || (corner == NULL)) {
     return DRDC_E_NULL;
   }
-  code = geo_mgrs_decode_tm(text, &tm, prec);
+  code = drdc__geo_mgrs_decode_tm(text, &tm, prec);
   if (code < 0) {
     return (drdc_status_t)-code;
   }

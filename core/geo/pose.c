@@ -20,7 +20,7 @@
 
 drdc_bam32_t drdc_pose_bam_from_convergence(drdc_nas_t convergence)
 {
-  int64_t b = geo_muldiv(convergence, INT64_C(4294967296), NAS_PER_TURN);
+  int64_t b = drdc__geo_muldiv(convergence, INT64_C(4294967296), NAS_PER_TURN);
 
   /* modulo a turn: the conversion to uint64_t then uint32_t wraps */
   return (drdc_bam32_t)(uint64_t)b;
@@ -51,7 +51,7 @@ static drdc_status_t turn_about_down(const drdc_quat_t *q, drdc_nas_t angle,
                                      drdc_quat_t *out)
 {
   /* half the angle as a binary angle (|half| <= 90 degrees) */
-  int64_t half = geo_muldiv(angle, INT64_C(2147483648), NAS_PER_TURN);
+  int64_t half = drdc__geo_muldiv(angle, INT64_C(2147483648), NAS_PER_TURN);
 
   return turn_by_half(q, (drdc_bam32_t)(uint64_t)half, out);
 }
@@ -95,7 +95,7 @@ drdc_status_t drdc_pose_true_from_grid(const drdc_quat_t *q_grid,
 /* The last step of utm_reverse.c's w_from_grid(), after the projection:
  * q_true = q_z(gamma) q_grid straight into out->q, gamma (nas, |gamma| <
  * 180 degrees) in tm->gamma, then the height; written only on DRDC_OK. */
-drdc_status_t geo_w_attitude(const drdc_WUTMPose_t *u,
+drdc_status_t drdc__geo_w_attitude(const drdc_WUTMPose_t *u,
                              const drdc_WMGRSPose_t *m, const geo_tm_t *tm,
                              drdc_WPose_t *out)
 {
@@ -112,12 +112,13 @@ drdc_status_t geo_w_attitude(const drdc_WUTMPose_t *u,
  * after the projection: q_grid = q_z(-gamma) q_true straight into
  * out->q, gamma (radians, |gamma| < 180 degrees) in tm->gamma; written
  * only on DRDC_OK. */
-drdc_status_t geo_wmgrs_attitude(const drdc_WPose_t *w, const geo_tm_t *tm,
-                                 drdc_WMGRSPose_t *out)
+drdc_status_t drdc__geo_wmgrs_attitude(const drdc_WPose_t *w,
+                                       const geo_tm_t *tm,
+                                       drdc_WMGRSPose_t *out)
 {
   drdc_status_t st;
 
-  st = turn_about_down(&w->q, -geo_nas_from_rad(tm->gamma), &out->q);
+  st = turn_about_down(&w->q, -drdc__geo_nas_from_rad(tm->gamma), &out->q);
   if (st == DRDC_OK) {
     out->height = w->height;
   }
@@ -126,7 +127,7 @@ drdc_status_t geo_wmgrs_attitude(const drdc_WPose_t *w, const geo_tm_t *tm,
 
 /* drdc_pose_weutm_from_we() is in utm_forward.c, in the frame of the
  * projection's body; it ends here */
-void geo_weutm_attitude(const drdc_WePose_t *w, drdc_WeUTMPose_t *out)
+void drdc__geo_weutm_attitude(const drdc_WePose_t *w, drdc_WeUTMPose_t *out)
 {
   /* out->height holds the convergence until here */
   out->e.yaw = w->e.yaw - drdc_pose_bam_from_convergence(out->height);
@@ -180,7 +181,7 @@ static bool separation_ok(drdc_q47_16_t n)
  * Cortex-M3. */
 
 /* the offset in b's slots (north, up, east) in Q15.16, as
- * geo_ecef_of_plane() takes it (it scales it there, so that the shifts'
+ * drdc__geo_ecef_of_plane() takes it (it scales it there, so that the shifts'
  * temporaries take no saved registers in the frames of position_w() and
  * position_we(): issue 8's stack) */
 static void load_ned(const drdc_vec3_q15_16_t *ned, geo_bowring_t *b)
@@ -207,7 +208,7 @@ static __attribute__((noinline, used)) drdc_status_t ecef_at(
   ll.lat = *lat;
   ll.lon = *lon;
   b->p = ellipsoidal_height(*height, b->p);
-  return geo_ecef_of_plane(&ll, b);
+  return drdc__geo_ecef_of_plane(&ll, b);
 }
 
 /* drdc_geo_from_ned() of ned at the ellipsoidal point of ref: on DRDC_OK
@@ -225,7 +226,7 @@ static __attribute__((noinline)) drdc_status_t position_w(
   b.p = geoid_separation;
   st = ecef_at(&ref->latitude, &ref->longitude, &ref->height, &b);
   if (st == DRDC_OK) {
-    st = geo_geodetic_q36(&b);
+    st = drdc__geo_geodetic_q36(&b);
   }
   if ((st == DRDC_OK) && (out != NULL)) {
     out->latitude = b.v;
@@ -312,19 +313,19 @@ static __attribute__((noinline)) drdc_status_t ned_of(
   drdc_status_t st;
 
   ellipsoidal(ref, geoid_separation, &pt);
-  st = geo_check_point(&pt);
+  st = drdc__geo_check_point(&pt);
   if (st == DRDC_OK) {
     ellipsoidal(w, geoid_separation, &pt);
-    st = geo_check_point(&pt);
+    st = drdc__geo_check_point(&pt);
   }
   if (st != DRDC_OK) {
     return st;
   }
   /* pt holds w's point: the difference w - ref */
-  geo_ecef_acc_q36(&pt, false, &d[0], &d[1], &d[2]);
+  drdc__geo_ecef_acc_q36(&pt, false, &d[0], &d[1], &d[2]);
   ellipsoidal(ref, geoid_separation, &pt);
-  geo_ecef_acc_q36(&pt, true, &d[0], &d[1], &d[2]);
-  st = geo_plane_turn(&pt, true, d, ned);
+  drdc__geo_ecef_acc_q36(&pt, true, &d[0], &d[1], &d[2]);
+  st = drdc__geo_plane_turn(&pt, true, d, ned);
   if (st == DRDC_OK) {
     st = drdc_quat_conj(&ref->q, inv);
   }
@@ -457,7 +458,7 @@ static __attribute__((noinline)) drdc_status_t position_we(
   b.p = geoid_separation;
   st = ecef_at(&ref->latitude, &ref->longitude, &ref->height, &b);
   if (st == DRDC_OK) {
-    st = geo_geodetic_q36(&b);
+    st = drdc__geo_geodetic_q36(&b);
   }
   if ((st == DRDC_OK) && (out != NULL)) {
     out->latitude = b.v;
@@ -526,18 +527,18 @@ static __attribute__((noinline)) drdc_status_t ned_of_we(
   drdc_status_t st;
 
   ellipsoidal_we(ref, geoid_separation, &pt);
-  st = geo_check_point(&pt);
+  st = drdc__geo_check_point(&pt);
   if (st == DRDC_OK) {
     ellipsoidal_we(we, geoid_separation, &pt);
-    st = geo_check_point(&pt);
+    st = drdc__geo_check_point(&pt);
   }
   if (st != DRDC_OK) {
     return st;
   }
-  geo_ecef_acc_q36(&pt, false, &d[0], &d[1], &d[2]);
+  drdc__geo_ecef_acc_q36(&pt, false, &d[0], &d[1], &d[2]);
   ellipsoidal_we(ref, geoid_separation, &pt);
-  geo_ecef_acc_q36(&pt, true, &d[0], &d[1], &d[2]);
-  st = geo_plane_turn(&pt, true, d, ned);
+  drdc__geo_ecef_acc_q36(&pt, true, &d[0], &d[1], &d[2]);
+  st = drdc__geo_plane_turn(&pt, true, d, ned);
   if (st == DRDC_OK) {
     (void)drdc_quat_from_euler(&ref->e, inv);
     st = drdc_quat_conj(inv, inv);

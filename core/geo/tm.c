@@ -21,7 +21,7 @@
 #include "geo_impl.h"
 
 /* the product of the series' Horner and sine loops, inlined (one copy
- * per loop); the rest, the complex recurrence included, call geo_mul(),
+ * per loop); the rest, the complex recurrence included, call drdc__geo_mul(),
  * the same bits */
 static inline int64_t tm_mul(int64_t a, int64_t b)
 {
@@ -86,10 +86,10 @@ typedef struct tm_zeta {
 static inline __attribute__((always_inline)) void
 zeta_set(tm_zeta_t *z, int64_t *sr, int64_t *si)
 {
-  z->c2[0] = geo_mul(z->i1, z->i2);
-  z->c2[1] = -geo_mul(z->r1, z->r2);
-  *sr = geo_mul(z->r1, z->i2);
-  *si = geo_mul(z->i1, z->r2);
+  z->c2[0] = drdc__geo_mul(z->i1, z->i2);
+  z->c2[1] = -drdc__geo_mul(z->r1, z->r2);
+  *sr = drdc__geo_mul(z->r1, z->i2);
+  *si = drdc__geo_mul(z->i1, z->r2);
 }
 
 /* the recurrence over coef[0..5] (times 2 j when deriv), from b = 0:
@@ -99,7 +99,7 @@ zeta_set(tm_zeta_t *z, int64_t *sr, int64_t *si)
  * slots leave it unchanged, so it reads A = 2 cos 2 zeta at each product
  * instead of holding it in four registers across the loop (which a
  * 32-bit core spills: 16 bytes more frame on either target). Its
- * products call geo_mul(): four inline 64 x 64-bit products per step
+ * products call drdc__geo_mul(): four inline 64 x 64-bit products per step
  * held 80 bytes of frame on Cortex-M3, the calls 40 + 12 (2 %
  * of drdc_geo_to_utm()'s cycles on PowerPC, the library 1 KB smaller:
  * the loops of horner() are no longer inlined into each series). */
@@ -119,10 +119,10 @@ static __attribute__((noinline)) void clenshaw(const int64_t *coef,
 
     /* the new b_j into the b_(j+2) slots one product at a time, then
      * the slots swapped */
-    z->r2 = (c - z->r2) + geo_mul(2 * c2[0], z->r1);
-    z->r2 = z->r2 - geo_mul(2 * c2[1], z->i1);
-    z->i2 = geo_mul(2 * c2[0], z->i1) - z->i2;
-    z->i2 = z->i2 + geo_mul(2 * c2[1], z->r1);
+    z->r2 = (c - z->r2) + drdc__geo_mul(2 * c2[0], z->r1);
+    z->r2 = z->r2 - drdc__geo_mul(2 * c2[1], z->i1);
+    z->i2 = drdc__geo_mul(2 * c2[0], z->i1) - z->i2;
+    z->i2 = z->i2 + drdc__geo_mul(2 * c2[1], z->r1);
     t = z->r1;
     z->r1 = z->r2;
     z->r2 = t;
@@ -138,9 +138,9 @@ static __attribute__((noinline)) void clenshaw(const int64_t *coef,
 static __attribute__((noinline)) void krueger_sum(const tm_zeta_t *z,
                                                   int64_t *sr, int64_t *si)
 {
-  int64_t d = geo_mul(*sr, z->r1) - geo_mul(*si, z->i1);
+  int64_t d = drdc__geo_mul(*sr, z->r1) - drdc__geo_mul(*si, z->i1);
 
-  *si = geo_mul(*sr, z->i1) + geo_mul(*si, z->r1);
+  *si = drdc__geo_mul(*sr, z->i1) + drdc__geo_mul(*si, z->r1);
   *sr = d;
 }
 
@@ -150,10 +150,13 @@ static __attribute__((noinline)) void krueger_sum(const tm_zeta_t *z,
  * frame fewer on the chain than a wrapper would add). */
 static __attribute__((noinline)) void krueger_deriv(tm_zeta_t *z)
 {
-  int64_t d = (GEO_ONE + (geo_mul(z->c2[0], z->r1) - geo_mul(z->c2[1], z->i1)))
-              - z->r2;
+  int64_t d = (GEO_ONE + (drdc__geo_mul(z->c2[0], z->r1) -
+                          drdc__geo_mul(z->c2[1], z->i1))) -
+              z->r2;
 
-  z->c2[1] = -((geo_mul(z->c2[0], z->i1) + geo_mul(z->c2[1], z->r1)) - z->i2);
+  z->c2[1] =
+      -((drdc__geo_mul(z->c2[0], z->i1) + drdc__geo_mul(z->c2[1], z->r1)) -
+        z->i2);
   z->c2[0] = d;
 }
 
@@ -188,7 +191,7 @@ static int64_t tm_atanh(int64_t t)
     Q58_RECIP(25), Q58_RECIP(27), Q58_RECIP(29), Q58_RECIP(31),
     Q58_RECIP(33), Q58_RECIP(35), Q58_RECIP(37)
   };
-  return geo_mul(horner(coef, 19u, geo_mul(t, t)), t);
+  return drdc__geo_mul(horner(coef, 19u, drdc__geo_mul(t, t)), t);
 }
 
 /* cosh(x) for |x| <= 0.34: sum x^(2k) / (2k)! to k = 8 by Horner in x^2
@@ -202,7 +205,7 @@ static int64_t tm_cosh(int64_t x)
     Q58_RECIP(INT64_C(479001600)),   Q58_RECIP(INT64_C(87178291200)),
     Q58_RECIP(INT64_C(20922789888000))
   };
-  return horner(coef, 9u, geo_mul(x, x));
+  return horner(coef, 9u, drdc__geo_mul(x, x));
 }
 
 /* sinh(x) for |x| <= 0.35: x sum x^(2k) / (2k+1)! to k = 8 by Horner in
@@ -218,7 +221,7 @@ static int64_t tm_sinh(int64_t x)
     Q58_RECIP(INT64_C(355687428096000))
   };
 
-  return geo_mul(horner(coef, 9u, geo_mul(x, x)), x);
+  return drdc__geo_mul(horner(coef, 9u, drdc__geo_mul(x, x)), x);
 }
 
 /* Largest |tan(xi' - chi)| for tm_atan(): 0.25. */
@@ -235,7 +238,7 @@ static int64_t tm_atan(int64_t q)
     Q58_RECIP(17),  -Q58_RECIP(19), Q58_RECIP(21),  -Q58_RECIP(23),
     Q58_RECIP(25),  -Q58_RECIP(27), Q58_RECIP(29)
   };
-  return geo_mul(horner(coef, 15u, geo_mul(q, q)), q);
+  return drdc__geo_mul(horner(coef, 15u, drdc__geo_mul(q, q)), q);
 }
 
 /* sin and cos of x + d from s = sin x, c = cos x and a small d
@@ -247,16 +250,19 @@ static __attribute__((noinline)) void rotate_small(int64_t s, int64_t c,
                                                    int64_t d, int64_t *s_out,
                                                    int64_t *c_out)
 {
-  int64_t d2 = geo_mul(d, d);
-  int64_t sd = geo_mul(d, GEO_ONE - geo_mul(d2, Q58_RECIP(6)
-                                                - geo_mul(d2, Q58_RECIP(120))));
-  int64_t cd = GEO_ONE
-               - geo_mul(d2, Q58_RECIP(2)
-                             - geo_mul(d2, Q58_RECIP(24)
-                                           - geo_mul(d2, Q58_RECIP(720))));
+  int64_t d2 = drdc__geo_mul(d, d);
+  int64_t sd = drdc__geo_mul(
+      d, GEO_ONE - drdc__geo_mul(d2, Q58_RECIP(6) -
+                                         drdc__geo_mul(d2, Q58_RECIP(120))));
+  int64_t cd =
+      GEO_ONE -
+      drdc__geo_mul(
+          d2, Q58_RECIP(2) -
+                  drdc__geo_mul(d2, Q58_RECIP(24) -
+                                        drdc__geo_mul(d2, Q58_RECIP(720))));
 
-  *s_out = geo_mul(s, cd) + geo_mul(c, sd);
-  *c_out = geo_mul(c, cd) - geo_mul(s, sd);
+  *s_out = drdc__geo_mul(s, cd) + drdc__geo_mul(c, sd);
+  *c_out = drdc__geo_mul(c, cd) - drdc__geo_mul(s, sd);
 }
 
 /* Largest |u| for tm_sqrt1p(): 1/80 = 0.0125. */
@@ -278,24 +284,25 @@ static __attribute__((noinline)) int64_t tm_sqrt1p(int64_t u)
   return horner(coef, 10u, u);
 }
 
-int64_t geo_cos_ratio(int64_t s)
+int64_t drdc__geo_cos_ratio(int64_t s)
 {
   /* |e s| <= 0.082 and |w| <= 0.0068: inside the series' domains */
-  int64_t w = geo_mul(GEO_E, tm_atanh(geo_mul(GEO_E, s)));
+  int64_t w = drdc__geo_mul(GEO_E, tm_atanh(drdc__geo_mul(GEO_E, s)));
   int64_t e = tm_sinh(w) + tm_cosh(w);
 
-  return geo_div(2 * e, (GEO_ONE + s) + geo_mul(GEO_ONE - s, geo_mul(e, e)));
+  return geo_div(2 * e, (GEO_ONE + s) +
+                            drdc__geo_mul(GEO_ONE - s, drdc__geo_mul(e, e)));
 }
 
-int64_t geo_lat_series(const int64_t *coef, int64_t s, int64_t c)
+int64_t drdc__geo_lat_series(const int64_t *coef, int64_t s, int64_t c)
 {
   /* the recurrence inline: one frame under the projections' stages */
-  return sine_series(coef, GEO_CHI_TERMS, 2 * geo_mul(s, c),
-                     geo_mul(c, c) - geo_mul(s, s));
+  return sine_series(coef, GEO_CHI_TERMS, 2 * drdc__geo_mul(s, c),
+                     drdc__geo_mul(c, c) - drdc__geo_mul(s, s));
 }
 
 /* What the forward projection keeps between its stages (in the frame of
- * geo_tm_forward() or drdc_geo_tm_forward(), which run the stages by
+ * drdc__geo_tm_forward() or drdc_geo_tm_forward(), which run the stages by
  * tm_forward_stages(); each stage a small out-of-line function that
  * reaches it by pointer, so that the frames under the two atan2 calls
  * and under the Krueger series stay small). cos chi and sinh eta' are
@@ -327,17 +334,17 @@ static __attribute__((noinline)) int fwd_sphere(tm_fwd_t *st, geo_tm_t *out)
   chi = geo_chi_series(out->eta, out->gamma);
   out->xi = out->xi + chi;
   rotate_small(out->eta, out->gamma, chi, &st->schi, &out->k);
-  st->kfac = GEO_ONE - geo_mul(GEO_E2, geo_mul(out->eta, out->eta));
+  st->kfac = GEO_ONE - drdc__geo_mul(GEO_E2, drdc__geo_mul(out->eta, out->eta));
   /* cos phi waits in st->ratio for fwd_ratio() */
   st->ratio = out->gamma;
-  tanh_eta = geo_mul(out->k, st->slam);
+  tanh_eta = drdc__geo_mul(out->k, st->slam);
   if ((tanh_eta > GEO_TM_MAX_TANH_ETA) || (tanh_eta < -GEO_TM_MAX_TANH_ETA)) {
     return 0;
   }
   out->eta = tm_atanh(tanh_eta);
   /* sinh eta' = tanh eta' cosh eta' (see fwd_series()) */
   st->ch = tm_cosh(out->eta);
-  out->gamma = geo_mul(tanh_eta, st->ch);
+  out->gamma = drdc__geo_mul(tanh_eta, st->ch);
   return 1;
 }
 
@@ -360,8 +367,8 @@ static __attribute__((noinline)) int fwd_xi(const tm_fwd_t *st,
 {
   int64_t q = GEO_ONE - st->clam;
 
-  q = geo_div(geo_mul(geo_mul(st->schi, out->k), q),
-              GEO_ONE - geo_mul(geo_mul(out->k, out->k), q));
+  q = geo_div(drdc__geo_mul(drdc__geo_mul(st->schi, out->k), q),
+              GEO_ONE - drdc__geo_mul(drdc__geo_mul(out->k, out->k), q));
   if ((q <= TM_ATAN_MAX) && (q >= -TM_ATAN_MAX)) {
     out->xi = out->xi + tm_atan(q);
     return 1;
@@ -375,12 +382,13 @@ static __attribute__((noinline)) int fwd_xi(const tm_fwd_t *st,
 static __attribute__((noinline)) void fwd_zeta(const tm_fwd_t *st,
                                                geo_tm_t *out, tm_zeta_t *z)
 {
-  z->c2[0] = geo_mul(st->schi, st->ch);                    /* sin xi' */
-  z->c2[1] = geo_mul(geo_mul(out->k, st->clam), st->ch);   /* cos xi' */
-  z->r1 = 2 * geo_mul(z->c2[0], z->c2[1]);
-  z->i1 = geo_mul(z->c2[1], z->c2[1]) - geo_mul(z->c2[0], z->c2[0]);
-  z->r2 = 2 * geo_mul(out->gamma, st->ch);
-  z->i2 = geo_mul(st->ch, st->ch) + geo_mul(out->gamma, out->gamma);
+  z->c2[0] = drdc__geo_mul(st->schi, st->ch);                    /* sin xi' */
+  z->c2[1] =
+      drdc__geo_mul(drdc__geo_mul(out->k, st->clam), st->ch); /* cos xi' */
+  z->r1 = 2 * drdc__geo_mul(z->c2[0], z->c2[1]);
+  z->i1 = drdc__geo_mul(z->c2[1], z->c2[1]) - drdc__geo_mul(z->c2[0], z->c2[0]);
+  z->r2 = 2 * drdc__geo_mul(out->gamma, st->ch);
+  z->i2 = drdc__geo_mul(st->ch, st->ch) + drdc__geo_mul(out->gamma, out->gamma);
   /* sinh eta' and cos chi are used up: sin 2 zeta into their slots */
   zeta_set(z, &out->gamma, &out->k);
 }
@@ -398,11 +406,11 @@ static __attribute__((noinline)) void fwd_series(const tm_fwd_t *st,
   fwd_zeta(st, out, &z);
   /* the sine series, then the derivative's: one series at a time keeps
    * half the state live */
-  clenshaw(geo_alpha, false, &z, z.c2);
+  clenshaw(drdc__geo_alpha, false, &z, z.c2);
   krueger_sum(&z, &out->gamma, &out->k);
   out->xi = out->xi + out->gamma;
   out->eta = out->eta + out->k;
-  clenshaw(geo_alpha, true, &z, z.c2);
+  clenshaw(drdc__geo_alpha, true, &z, z.c2);
   krueger_deriv(&z);
   out->gamma = z.c2[0];
   out->k = z.c2[1];
@@ -415,8 +423,8 @@ static __attribute__((noinline)) void fwd_series(const tm_fwd_t *st,
 static __attribute__((noinline)) void fwd_scale(const tm_fwd_t *st,
                                                 geo_tm_t *out)
 {
-  int64_t p = geo_mul(st->kfac, geo_mul(out->gamma, out->gamma)
-                                    + geo_mul(out->k, out->k))
+  int64_t p = drdc__geo_mul(st->kfac, drdc__geo_mul(out->gamma, out->gamma)
+                                    + drdc__geo_mul(out->k, out->k))
               - GEO_ONE;
 
   /* the root into out->k (0 first, as geo_sqrt() gives on failure): no
@@ -427,8 +435,8 @@ static __attribute__((noinline)) void fwd_scale(const tm_fwd_t *st,
     out->k = 0;
     (void)drdc_fx_sqrt_q5_58(GEO_ONE + p, &out->k);
   }
-  out->k = geo_mul(GEO_K0A_OVER_A,
-                   geo_mul(geo_mul(out->k, st->ratio), st->ch));
+  out->k = drdc__geo_mul(GEO_K0A_OVER_A,
+                   drdc__geo_mul(drdc__geo_mul(out->k, st->ratio), st->ch));
 }
 
 /* the convergence's atan2(y, x) arguments into st->slam, st->clam (no
@@ -437,10 +445,10 @@ static __attribute__((noinline)) void fwd_scale(const tm_fwd_t *st,
 static __attribute__((noinline)) void fwd_conv_args(tm_fwd_t *st,
                                                    const geo_tm_t *out)
 {
-  int64_t y = geo_mul(st->schi, st->slam);
+  int64_t y = drdc__geo_mul(st->schi, st->slam);
 
-  st->slam = geo_mul(st->clam, out->k) + geo_mul(y, out->gamma);
-  st->clam = geo_mul(st->clam, out->gamma) - geo_mul(y, out->k);
+  st->slam = drdc__geo_mul(st->clam, out->k) + drdc__geo_mul(y, out->gamma);
+  st->clam = drdc__geo_mul(st->clam, out->gamma) - drdc__geo_mul(y, out->k);
 }
 
 /* convergence: gamma' = arg(cos lam + i sin chi sin lam) of the sphere
@@ -477,7 +485,7 @@ tm_forward_stages(tm_fwd_t *st, geo_tm_t *out)
    * and leaves it, 0, when both are zero), not in registers across the
    * product */
   if (fwd_xi(st, out) == 0) {
-    out->xi = geo_mul(out->k, st->clam);
+    out->xi = drdc__geo_mul(out->k, st->clam);
     (void)drdc_fx_atan2_q5_58(st->schi, out->xi, &out->xi);
   }
   fwd_series(st, out);
@@ -492,7 +500,7 @@ tm_forward_stages(tm_fwd_t *st, geo_tm_t *out)
   return 1;
 }
 
-int geo_tm_forward(geo_tm_t *out)
+int drdc__geo_tm_forward(geo_tm_t *out)
 {
   tm_fwd_t st;
 
@@ -500,7 +508,7 @@ int geo_tm_forward(geo_tm_t *out)
 }
 
 /* Here rather than in utm_forward.c: the stages run from this frame,
- * which holds the stages' state and the result, with no geo_tm_forward()
+ * which holds the stages' state and the result, with no drdc__geo_tm_forward()
  * frame between (issue 8's stack goal). The checks and statuses are those
  * of the range checks of utm_forward.c. */
 drdc_status_t drdc_geo_tm_forward(drdc_nas_t lat, drdc_nas_t dlon,
@@ -520,15 +528,15 @@ drdc_status_t drdc_geo_tm_forward(drdc_nas_t lat, drdc_nas_t dlon,
   if ((dlon > (90 * GEO_NAS_DEG)) || (dlon < (-90 * GEO_NAS_DEG))) {
     return DRDC_E_LONGITUDE;
   }
-  tm.xi = geo_rad_from_nas(lat);
-  tm.eta = geo_rad_from_nas(dlon);
+  tm.xi = drdc__geo_rad_from_nas(lat);
+  tm.eta = drdc__geo_rad_from_nas(dlon);
   if (tm_forward_stages(&st, &tm) == 0) {
     return DRDC_E_RANGE;
   }
-  *x = geo_metres_from_angle(tm.eta);
-  *y = geo_metres_from_angle(tm.xi);
+  *x = drdc__geo_metres_from_angle(tm.eta);
+  *y = drdc__geo_metres_from_angle(tm.xi);
   if (convergence != NULL) {
-    *convergence = geo_nas_from_rad(tm.gamma);
+    *convergence = drdc__geo_nas_from_rad(tm.gamma);
   }
   if (scale != NULL) {
     *scale = tm.k;
@@ -550,11 +558,11 @@ static __attribute__((noinline)) void rev_series(geo_tm_t *tm)
    * (|eta| <= 0.08 from the eastings' range): no exponential */
   z.r2 = tm_sinh(tm->eta);
   z.i2 = tm_cosh(tm->eta);
-  z.c2[0] = 2 * geo_mul(z.r2, z.i2);
-  z.i2 = geo_mul(z.i2, z.i2) + geo_mul(z.r2, z.r2);
+  z.c2[0] = 2 * drdc__geo_mul(z.r2, z.i2);
+  z.i2 = drdc__geo_mul(z.i2, z.i2) + drdc__geo_mul(z.r2, z.r2);
   z.r2 = z.c2[0];
   zeta_set(&z, &tm->gamma, &tm->k);
-  clenshaw(geo_beta, false, &z, z.c2);
+  clenshaw(drdc__geo_beta, false, &z, z.c2);
   krueger_sum(&z, &tm->gamma, &tm->k);
   tm->xi = tm->xi - tm->gamma;
   tm->eta = tm->eta - tm->k;
@@ -563,7 +571,7 @@ static __attribute__((noinline)) void rev_series(geo_tm_t *tm)
 /* xi', eta' wait in tm->xi, tm->eta, sin xi' and cos xi' in tm->gamma,
  * tm->k; chi = atan2(sin xi', sqrt(sinh^2 eta' + cos^2 xi')) in tm->xi
  * too, before phi = chi + its series */
-void geo_tm_reverse(geo_tm_t *tm)
+void drdc__geo_tm_reverse(geo_tm_t *tm)
 {
   rev_series(tm);
   geo_sincos(tm->xi, &tm->gamma, &tm->k);
@@ -576,7 +584,7 @@ void geo_tm_reverse(geo_tm_t *tm)
   tm->eta = 0;
   (void)drdc_fx_atan2_q5_58(tm->xi, tm->k, &tm->eta);
   /* a sum of squares: the root never fails (0 for 0, as geo_sqrt()) */
-  tm->xi = geo_mul(tm->xi, tm->xi) + geo_mul(tm->k, tm->k);
+  tm->xi = drdc__geo_mul(tm->xi, tm->xi) + drdc__geo_mul(tm->k, tm->k);
   (void)drdc_fx_sqrt_q5_58(tm->xi, &tm->xi);
   (void)drdc_fx_atan2_q5_58(tm->gamma, tm->xi, &tm->xi);
   geo_sincos(tm->xi, &tm->gamma, &tm->k);

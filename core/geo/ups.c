@@ -23,7 +23,7 @@
  *  the UPS ranges end near chi = 65 degrees). */
 #define UPS_MIN_SIN_CHI (-GEO_ONE + (GEO_ONE / 10))
 
-int geo_ups_forward(bool north, geo_tm_t *out)
+int drdc__geo_ups_forward(bool north, geo_tm_t *out)
 {
   int64_t p = north ? out->xi : -out->xi;
   int64_t t;
@@ -36,9 +36,9 @@ int geo_ups_forward(bool north, geo_tm_t *out)
   out->gamma = north ? out->eta : -out->eta;
   geo_sincos(p, &out->xi, &out->eta);
   out->eta = p + geo_chi_series(out->xi, out->eta);
-  out->k = geo_mul(GEO_UPS_2K0_OVER_C, geo_cos_ratio(out->xi));
-  out->k = geo_mul(out->k, geo_sqrt(GEO_ONE - geo_mul(GEO_E2,
-                                                      geo_mul(out->xi,
+  out->k = drdc__geo_mul(GEO_UPS_2K0_OVER_C, drdc__geo_cos_ratio(out->xi));
+  out->k = drdc__geo_mul(out->k, geo_sqrt(GEO_ONE - drdc__geo_mul(GEO_E2,
+                                                      drdc__geo_mul(out->xi,
                                                               out->xi))));
   geo_sincos(out->eta, &out->xi, &out->eta); /* sin chi, cos chi */
   if (out->xi < UPS_MIN_SIN_CHI) {
@@ -48,17 +48,17 @@ int geo_ups_forward(bool north, geo_tm_t *out)
   t = geo_div(out->eta, GEO_ONE + out->xi);
   /* sin lam, cos lam */
   geo_sincos(north ? out->gamma : -out->gamma, &out->xi, &out->eta);
-  out->xi = geo_mul(t, out->xi);
-  out->eta = north ? -geo_mul(t, out->eta) : geo_mul(t, out->eta);
+  out->xi = drdc__geo_mul(t, out->xi);
+  out->eta = north ? -drdc__geo_mul(t, out->eta) : drdc__geo_mul(t, out->eta);
   return 1;
 }
 
-int64_t geo_ups_q36(int64_t a)
+int64_t drdc__geo_ups_q36(int64_t a)
 {
-  return geo_mul_shift(a, GEO_UPS_K_Q39, 61u);
+  return drdc__geo_mul_shift(a, GEO_UPS_K_Q39, 61u);
 }
 
-void geo_ups_reverse(bool north, geo_tm_t *tm)
+void drdc__geo_ups_reverse(bool north, geo_tm_t *tm)
 {
   int64_t t;
 
@@ -76,12 +76,12 @@ void geo_ups_reverse(bool north, geo_tm_t *tm)
   /* the polar distance (hypot of the metres in Q36) and the longitude
    * straight from the exact metres: next to the pole a Q5.58 angle would
    * keep too few bits, and a Q47.16 hypot would cost 7.6 um */
-  t = geo_muldiv((int64_t)drdc_fx_hypot_s64(tm->xi * INT64_C(1048576),
+  t = drdc__geo_muldiv((int64_t)drdc_fx_hypot_s64(tm->xi * INT64_C(1048576),
                                             tm->eta * INT64_C(1048576)),
                  TWO_POW_61, GEO_UPS_K_Q39);
   tm->eta = tm->k;
   tm->xi = 0;
-  (void)drdc_fx_atan2_q5_58(GEO_ONE - geo_mul(t, t), 2 * t, &tm->xi);
+  (void)drdc_fx_atan2_q5_58(GEO_ONE - drdc__geo_mul(t, t), 2 * t, &tm->xi);
   geo_sincos(tm->xi, &tm->gamma, &tm->k);
   tm->xi = tm->xi + geo_phi_series(tm->gamma, tm->k);
   if (!north) {

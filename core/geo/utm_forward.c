@@ -48,9 +48,9 @@ static int32_t standard_zone(drdc_nas_t lat, drdc_nas_t lon)
   if ((lat >= UTM_LAT_MAX) || (lat < UTM_LAT_MIN)) {
     return 0;
   }
-  ilon = geo_floor_div(geo_lon_normalize(lon), GEO_NAS_DEG);
+  ilon = drdc__geo_floor_div(geo_lon_normalize(lon), GEO_NAS_DEG);
   zone = (ilon + 186) / 6;
-  band = geo_floor_div(lat, 8 * GEO_NAS_DEG);
+  band = drdc__geo_floor_div(lat, 8 * GEO_NAS_DEG);
   if (band > 9) {
     band = 9;
   }
@@ -82,10 +82,10 @@ drdc_status_t drdc_geo_utm_zone(drdc_nas_t lat, drdc_nas_t lon,
 
 /* an angle on the sphere of radius k0 A (Q5.58) -> metres (Q28.36,
  * rounded: 2^-36 m = 15 pm, far below the series' own error); a product
- * and a shift (geo_mul_shift()), no division */
+ * and a shift (drdc__geo_mul_shift()), no division */
 static int64_t q36_from_angle(int64_t a)
 {
-  return geo_mul_shift(a, GEO_K0A_Q40, 62u);
+  return drdc__geo_mul_shift(a, GEO_K0A_Q40, 62u);
 }
 
 /* The checks and the projection's arguments of utm_forward(), out of
@@ -124,8 +124,8 @@ forward_args(int32_t zone, const void *out, geo_tm_t *tm)
       return -(int32_t)DRDC_E_RANGE;
     }
   }
-  tm->xi = geo_rad_from_nas(lat);
-  tm->eta = geo_rad_from_nas(lon);
+  tm->xi = drdc__geo_rad_from_nas(lat);
+  tm->eta = drdc__geo_rad_from_nas(lon);
   return z + fine + ((lat < 0) ? GEO_CODE_SOUTH : 0);
 }
 
@@ -139,7 +139,7 @@ forward_args(int32_t zone, const void *out, geo_tm_t *tm)
 static __attribute__((noinline)) drdc_status_t
 ups_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm);
 
-/* After geo_ups_forward(): x and y in tm's xi and eta slots to easting
+/* After drdc__geo_ups_forward(): x and y in tm's xi and eta slots to easting
  * and northing, checked, into out. Out of line, one copy for
  * grid_to_utm() (a sibling call). */
 static __attribute__((noinline)) drdc_status_t
@@ -151,8 +151,8 @@ ups_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
   drdc_q47_16_t n;
 
   /* Q28.36 offsets in tm's slots; the Q47.16 metres for the checks */
-  tm->xi = geo_ups_q36(tm->xi);
-  tm->eta = geo_ups_q36(tm->eta);
+  tm->xi = drdc__geo_ups_q36(tm->xi);
+  tm->eta = drdc__geo_ups_q36(tm->eta);
   e = GEO_UPS_FALSE_ORIGIN + drdc_fx_rshift_round_s64(tm->xi, 20u);
   n = GEO_UPS_FALSE_ORIGIN + drdc_fx_rshift_round_s64(tm->eta, 20u);
   if (!geo_ups_in_range(north, e) || !geo_ups_in_range(north, n)) {
@@ -168,7 +168,7 @@ ups_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
 /* UTM easting and northing of the projection's xi, eta in tm (Q28.36
  * offsets left in tm's slots), checked, into out; the zone, the fine
  * request and the hemisphere from forward_args()'s code. Out of line,
- * after geo_tm_forward() has returned: its values (the offsets, the
+ * after drdc__geo_tm_forward() has returned: its values (the offsets, the
  * rounded metres) are not in the frame under the projection. */
 static __attribute__((noinline)) drdc_status_t
 utm_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
@@ -213,13 +213,13 @@ utm_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
  * poses and the reverse (utm_reverse.c's grid_reverse(), hence external)
  * share one copy of the dispatch. Out of line (noinline): called, never
  * copied, from this file's entries too. */
-__attribute__((noinline)) int geo_grid_forward_projection(int32_t code,
+__attribute__((noinline)) int drdc__geo_grid_forward_projection(int32_t code,
                                                          geo_tm_t *tm)
 {
   if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
-    return geo_ups_forward(code < GEO_CODE_SOUTH, tm);
+    return drdc__geo_ups_forward(code < GEO_CODE_SOUTH, tm);
   }
-  return geo_tm_forward(tm);
+  return drdc__geo_tm_forward(tm);
 }
 
 /* The easting and northing of the forward projection in tm, checked, into
@@ -256,12 +256,12 @@ utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
   if (code < 0) {
     return (drdc_status_t)-code;
   }
-  if ((geo_grid_forward_projection(code, &tm) == 0)
+  if ((drdc__geo_grid_forward_projection(code, &tm) == 0)
       || (grid_to_utm(code, out, &tm) != DRDC_OK)) {
     return DRDC_E_RANGE;
   }
   if (convergence != NULL) {
-    *convergence = geo_nas_from_rad(tm.gamma);
+    *convergence = drdc__geo_nas_from_rad(tm.gamma);
   }
   if (scale != NULL) {
     *scale = tm.k;
@@ -296,14 +296,14 @@ drdc_status_t drdc_pose_weutm_from_we(const drdc_WePose_t *w, int32_t zone,
   }
   /* as drdc_geo_to_utm(); no buffer for the convergence in this frame:
    * out->height receives it, as out->utm the position, only on DRDC_OK,
-   * and geo_weutm_attitude() then overwrites it */
+   * and drdc__geo_weutm_attitude() then overwrites it */
   st = utm_forward(w->latitude, w->longitude,
                    (zone > DRDC_GEO_ZONE_MAX) ? (DRDC_GEO_ZONE_MAX + 1) : zone,
                    &out->utm, &out->height, NULL);
   if (st != DRDC_OK) {
     return st;
   }
-  geo_weutm_attitude(w, out);
+  drdc__geo_weutm_attitude(w, out);
   return DRDC_OK;
 }
 
@@ -332,7 +332,7 @@ grid_metres(int32_t code, geo_tm_t *tm)
  * and statuses that drdc_pose_wutm_from_w(), drdc_geo_mgrs_encode() and
  * the MGRS poses share; the code into *code. Inlined (always_inline) so
  * the projection stays called from their own frames (by
- * geo_grid_forward_projection(), a sibling call). */
+ * drdc__geo_grid_forward_projection(), a sibling call). */
 static inline __attribute__((always_inline)) drdc_status_t
 project_to_grid(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
                 const void *out, geo_tm_t *tm, int32_t *code)
@@ -345,7 +345,7 @@ project_to_grid(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
   if (*code < 0) {
     return (drdc_status_t)-*code;
   }
-  if (geo_grid_forward_projection(*code, tm) == 0) {
+  if (drdc__geo_grid_forward_projection(*code, tm) == 0) {
     return DRDC_E_RANGE;
   }
   /* xi, eta (and gamma) in tm */
@@ -378,7 +378,8 @@ drdc_status_t drdc_pose_wutm_from_w(const drdc_WPose_t *w, int32_t zone,
   }
   /* q_grid = q_z(-gamma) q_true, the last step that can fail, straight
    * into out->q (written only on DRDC_OK); |gamma| < 180 degrees */
-  st = drdc_pose_grid_from_true(&w->q, geo_nas_from_rad(tm.gamma), &out->q);
+  st = drdc_pose_grid_from_true(&w->q, drdc__geo_nas_from_rad(tm.gamma),
+                                &out->q);
   if (st != DRDC_OK) {
     return st;
   }
@@ -406,7 +407,7 @@ mgrs_from_tm(int32_t code, geo_tm_t *tm, char *text, size_t size)
   u.easting = tm->eta;
   u.northing = tm->xi;
   /* the standard zone is always inside the MGRS limits */
-  return geo_mgrs_format_bits(&u, 36u, lat, prec, text, size);
+  return drdc__geo_mgrs_format_bits(&u, 36u, lat, prec, text, size);
 }
 
 /* MGRS text of a geographic position (mgrs.c's encoder), here for the
@@ -473,7 +474,7 @@ project_to_mgrs(drdc_nas_t lat, drdc_nas_t lon, int32_t prec,
 /* A pose conversion of pose.c, here for the reason of
  * drdc_pose_weutm_from_we(): the body of drdc_geo_mgrs_encode() in its
  * own frame, the position and the convergence waiting in its geo_tm_t
- * (as drdc_pose_wutm_from_w()) while pose.c's geo_wmgrs_attitude() turns
+ * (as drdc_pose_wutm_from_w()) while pose.c's drdc__geo_wmgrs_attitude() turns
  * the attitude, the last step that can fail, straight into out->q and
  * writes the height (only on DRDC_OK); then the text. Statuses and their
  * order as before. */
@@ -492,7 +493,7 @@ drdc_status_t drdc_pose_wmgrs_from_w(const drdc_WPose_t *w, int32_t prec,
   if (st != DRDC_OK) {
     return st;
   }
-  st = geo_wmgrs_attitude(w, &tm, out);
+  st = drdc__geo_wmgrs_attitude(w, &tm, out);
   if (st != DRDC_OK) {
     return st;
   }
@@ -518,7 +519,7 @@ drdc_status_t drdc_pose_wemgrs_from_we(const drdc_WePose_t *w, int32_t prec,
     return st;
   }
   out->e.yaw = w->e.yaw - drdc_pose_bam_from_convergence(
-                            geo_nas_from_rad(tm.gamma));
+                            drdc__geo_nas_from_rad(tm.gamma));
   out->e.pitch = w->e.pitch;
   out->e.roll = w->e.roll;
   out->height = w->height;

@@ -17,14 +17,14 @@
 /* metres (Q47.16, |v| < 2^43) -> angle on the sphere of radius k0 A */
 static __attribute__((noinline)) int64_t angle_from_metres(drdc_q47_16_t v)
 {
-  return geo_muldiv(v * INT64_C(1048576), GEO_TWO_POW_62, GEO_K0A_Q40);
+  return drdc__geo_muldiv(v * INT64_C(1048576), GEO_TWO_POW_62, GEO_K0A_Q40);
 }
 
 /* The checks of drdc_geo_from_utm() after the zone's, and the reverse
  * projection's arguments: the metres (Q47.16) of a zone with its
  * hemisphere (code: the zone, 0..60, plus GEO_CODE_SOUTH south), northing in
- * tm->xi and easting in tm->eta, to the angles that geo_tm_reverse()
- * (xi, eta on the sphere of radius k0 A) or geo_ups_reverse() (x, y from
+ * tm->xi and easting in tm->eta, to the angles that drdc__geo_tm_reverse()
+ * (xi, eta on the sphere of radius k0 A) or drdc__geo_ups_reverse() (x, y from
  * the pole) takes in the same slots. Out of line, before the projection:
  * its constants and values are not in the frame under it. */
 static __attribute__((noinline)) drdc_status_t
@@ -64,9 +64,9 @@ static __attribute__((noinline)) void
 grid_reverse_projection(int32_t code, geo_tm_t *tm)
 {
   if ((code % GEO_CODE_SOUTH) == DRDC_GEO_ZONE_UPS) {
-    geo_ups_reverse(code < GEO_CODE_SOUTH, tm);
+    drdc__geo_ups_reverse(code < GEO_CODE_SOUTH, tm);
   } else {
-    geo_tm_reverse(tm);
+    drdc__geo_tm_reverse(tm);
   }
 }
 
@@ -82,10 +82,10 @@ reverse_angles(int32_t code, geo_tm_t *tm, drdc_nas_t *lat, drdc_nas_t *lon)
   drdc_nas_t a;
 
   if (lat != NULL) {
-    *lat = geo_nas_from_rad(tm->xi);
+    *lat = drdc__geo_nas_from_rad(tm->xi);
   }
   if (lon != NULL) {
-    a = geo_nas_from_rad(tm->eta);
+    a = drdc__geo_nas_from_rad(tm->eta);
     *lon = (zone == DRDC_GEO_ZONE_UPS)
              ? a
              : geo_lon_normalize(geo_central_meridian(zone) + a);
@@ -100,7 +100,7 @@ forward_outputs(const geo_tm_t *tm, drdc_nas_t *convergence,
                 drdc_q5_58_t *scale)
 {
   if (convergence != NULL) {
-    *convergence = geo_nas_from_rad(tm->gamma);
+    *convergence = drdc__geo_nas_from_rad(tm->gamma);
   }
   if (scale != NULL) {
     *scale = tm->k;
@@ -138,7 +138,7 @@ grid_reverse(int32_t code, drdc_nas_t *lat, drdc_nas_t *lon,
     return reverse_angles(code, tm, lat, lon);
   }
   (void)reverse_angles(code, tm, lat, lon);
-  (void)geo_grid_forward_projection(code, tm);
+  (void)drdc__geo_grid_forward_projection(code, tm);
   return forward_outputs(tm, convergence, scale);
 }
 
@@ -195,7 +195,7 @@ grid_of(const drdc_geo_utm_t *in, const char *text, geo_tm_t *tm)
   if (n == DRDC_GEO_MGRS_SIZE) {
     return -(int32_t)DRDC_E_MGRS;
   }
-  return geo_mgrs_decode_tm(text, tm, NULL);
+  return drdc__geo_mgrs_decode_tm(text, tm, NULL);
 }
 
 /* The position of utm (or of the MGRS text mgrs, utm NULL) reversed:
@@ -260,7 +260,7 @@ w_from_grid(const drdc_WUTMPose_t *u, const drdc_WMGRSPose_t *m,
     st = grid_position((u != NULL) ? &u->utm : NULL,
                        (m != NULL) ? m->mgrs : NULL, NULL, NULL, &tm);
     if (st == DRDC_OK) {
-      st = geo_w_attitude(u, m, &tm, out);
+      st = drdc__geo_w_attitude(u, m, &tm, out);
     }
     if (st != DRDC_OK) {
       return st;
@@ -274,7 +274,7 @@ w_from_grid(const drdc_WUTMPose_t *u, const drdc_WMGRSPose_t *m,
   if (st != DRDC_OK) {
     return st;
   }
-  return geo_w_attitude(u, m, &tm, out);
+  return drdc__geo_w_attitude(u, m, &tm, out);
 }
 
 /* A pose conversion of pose.c, here for the reason of
@@ -365,5 +365,5 @@ drdc_status_t drdc_geo_mgrs_from_utm(const drdc_geo_utm_t *u, int32_t prec,
   if (st != DRDC_OK) {
     return st;
   }
-  return geo_mgrs_format(u, tm.xi, prec, text, size);
+  return drdc__geo_mgrs_format(u, tm.xi, prec, text, size);
 }

@@ -39,7 +39,7 @@ typedef struct jaus_field {
   drdc_status_t outside;
 } jaus_field_t;
 
-/** Rows of jaus_fields: the 32 fields of the two messages in the two
+/** Rows of drdc__jaus_fields: the 32 fields of the two messages in the two
  *  forms have 12 distinct ones, each stored once; a message's fields in
  *  a form are their rows, one byte each (issue 8, flash). _RA3 and _AS:
  *  the type of RA 3.x and of AS6009. */
@@ -58,7 +58,7 @@ typedef struct jaus_field {
 #define JAUS_FIELDS 12u
 
 /** The distinct fields (pose_messages.c). */
-extern const jaus_field_t jaus_fields[JAUS_FIELDS];
+extern const jaus_field_t drdc__jaus_fields[JAUS_FIELDS];
 
 /** Bytes of the presence vector, before the fields. */
 #define JAUS_PRESENCE_BYTES 2u
@@ -117,7 +117,7 @@ static inline uint32_t jaus_get_le(const uint8_t *p, size_t n)
 /**
  * Validate the fields present in the body (`local` or `global`), check
  * the time stamp and the capacity, then scale the fields by `fields`
- * (their rows of jaus_fields, in presence-bit order) and write them
+ * (their rows of drdc__jaus_fields, in presence-bit order) and write them
  * little-endian. Nothing is written before every check has
  * passed: outputs unchanged on error.
  */

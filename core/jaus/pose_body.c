@@ -192,7 +192,7 @@ drdc_status_t drdc_jaus_body_pack(const uint8_t *fields,
    * its field's limits (in bit order), the time stamp, the capacity */
   for (bit = 0u; bit < JAUS_POSE_SCALED; bit++) {
     if (jaus_present(presence, bit) != 0) {
-      const jaus_field_t *f = &jaus_fields[fields[bit]];
+      const jaus_field_t *f = &drdc__jaus_fields[fields[bit]];
       int64_t v = field_get(local, global, bit);
 
       if ((v < f->min) || (v > f->max)) {
@@ -217,7 +217,7 @@ drdc_status_t drdc_jaus_body_pack(const uint8_t *fields,
        * call, not held across it (on Cortex-M3 a saved register and 16 B
        * of frame) */
       int64_t v = field_get(local, global, bit);
-      const jaus_field_t *f = &jaus_fields[fields[bit]];
+      const jaus_field_t *f = &drdc__jaus_fields[fields[bit]];
       int64_t integer = 0;
 
       st = drdc_jaus_scaled_encode(v, f->min, f->max, f->type, form,
@@ -282,7 +282,7 @@ drdc_status_t drdc_jaus_body_unpack(const uint8_t *fields,
       int64_t v = 0;
 
       if (jaus_present(presence, bit) != 0) {
-        const jaus_field_t *f = &jaus_fields[fields[bit]];
+        const jaus_field_t *f = &drdc__jaus_fields[fields[bit]];
         size_t n = jaus_field_size(bit);
 
         st = drdc_jaus_scaled_decode(

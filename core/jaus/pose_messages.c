@@ -16,7 +16,7 @@
 /* The limit of local X and Y (and of Z in AS6009): 100 km. */
 #define LOCAL_XY JAUS_METRES(100000)
 
-const jaus_field_t jaus_fields[JAUS_FIELDS] = {
+const jaus_field_t drdc__jaus_fields[JAUS_FIELDS] = {
   /* Limits from the JAUS field tables (see jaus_pose.h for the sources),
    * as raw values of the pose types, and the integer type, by form where
    * it differs (RA 3.x signed, AS6009 unsigned); rows JAUS_F_*. */
@@ -36,7 +36,7 @@ const jaus_field_t jaus_fields[JAUS_FIELDS] = {
   { 0, JAUS_BAM_PI, DRDC_JAUS_UINT16, DRDC_E_RANGE },
 };
 
-/* The rows of jaus_fields of a message's fields in a form; NULL for a
+/* The rows of drdc__jaus_fields of a message's fields in a form; NULL for a
  * value that is not a form (the callers report DRDC_E_RANGE) */
 static const uint8_t *fields_of(bool local, drdc_jaus_form_t form)
 {

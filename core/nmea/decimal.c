@@ -11,7 +11,7 @@
 /* Decimals of a number converted with a scale: 3600 x 10^15 < 2^63. */
 #define DECIMALS_MAX 15u
 
-drdc_status_t nmea_decimal(const char *p, size_t n, int64_t *mantissa,
+drdc_status_t drdc__nmea_decimal(const char *p, size_t n, int64_t *mantissa,
                            int64_t *scale)
 {
   size_t i = 0u;

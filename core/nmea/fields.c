@@ -35,7 +35,7 @@ static int64_t pow10_s64(size_t n)
   return p;
 }
 
-drdc_status_t nmea_digits(const char *p, size_t n, size_t min_digits,
+drdc_status_t drdc__nmea_digits(const char *p, size_t n, size_t min_digits,
                           size_t max_digits, int32_t *out)
 {
   int32_t v = 0;
@@ -59,16 +59,17 @@ drdc_status_t nmea_digits(const char *p, size_t n, size_t min_digits,
   return DRDC_OK;
 }
 
-drdc_status_t nmea_uint(const nmea_frame_t *fr, size_t i, size_t min_digits,
-                        size_t max_digits, int32_t *out)
+drdc_status_t drdc__nmea_uint(const nmea_frame_t *fr, size_t i,
+                              size_t min_digits, size_t max_digits,
+                              int32_t *out)
 {
   nmea_field_t f = nmea_field(fr, i);
 
-  return nmea_digits(f.p, f.n, min_digits, max_digits, out);
+  return drdc__nmea_digits(f.p, f.n, min_digits, max_digits, out);
 }
 
-drdc_status_t nmea_fixed(const nmea_frame_t *fr, size_t i, nmea_scale_t scale,
-                         int64_t *out)
+drdc_status_t drdc__nmea_fixed(const nmea_frame_t *fr, size_t i,
+                               nmea_scale_t scale, int64_t *out)
 {
   /* num x 2^frac and den of each scale: metres x 2^16, knots x 1852 m /
    * 3600 s x 2^16, degrees x 2^32 / 360 */
@@ -81,7 +82,7 @@ drdc_status_t nmea_fixed(const nmea_frame_t *fr, size_t i, nmea_scale_t scale,
   nmea_field_t f = nmea_field(fr, i);
   int64_t m = 0;
   int64_t p10 = 1;
-  drdc_status_t st = nmea_decimal(f.p, f.n, &m, &p10);
+  drdc_status_t st = drdc__nmea_decimal(f.p, f.n, &m, &p10);
 
   if ((scale == NMEA_METRES_Q15_16) || (scale == NMEA_KNOTS_Q15_16)) {
     narrow = 1;
@@ -101,7 +102,7 @@ drdc_status_t nmea_fixed(const nmea_frame_t *fr, size_t i, nmea_scale_t scale,
   return DRDC_OK;
 }
 
-drdc_status_t nmea_tod(const nmea_frame_t *fr, size_t i_field,
+drdc_status_t drdc__nmea_tod(const nmea_frame_t *fr, size_t i_field,
                        drdc_nmea_tod_t *out)
 {
   nmea_field_t f = nmea_field(fr, i_field);
@@ -153,7 +154,7 @@ drdc_status_t nmea_tod(const nmea_frame_t *fr, size_t i_field,
   return DRDC_OK;
 }
 
-drdc_status_t nmea_angle(const nmea_frame_t *fr, size_t i_field,
+drdc_status_t drdc__nmea_angle(const nmea_frame_t *fr, size_t i_field,
                          int latitude, drdc_nas_t *out)
 {
   nmea_field_t value = nmea_field(fr, i_field);
@@ -224,16 +225,16 @@ drdc_status_t nmea_angle(const nmea_frame_t *fr, size_t i_field,
   return DRDC_OK;
 }
 
-drdc_status_t nmea_fix(const nmea_frame_t *fr, size_t latitude,
+drdc_status_t drdc__nmea_fix(const nmea_frame_t *fr, size_t latitude,
                        drdc_nmea_t *n)
 {
-  drdc_status_t st = nmea_tod(fr, 1u, (n != NULL) ? &n->time : NULL);
+  drdc_status_t st = drdc__nmea_tod(fr, 1u, (n != NULL) ? &n->time : NULL);
 
   if (st == DRDC_OK) {
-    st = nmea_angle(fr, latitude, 1, (n != NULL) ? &n->latitude : NULL);
+    st = drdc__nmea_angle(fr, latitude, 1, (n != NULL) ? &n->latitude : NULL);
   }
   if (st == DRDC_OK) {
-    st = nmea_angle(fr, latitude + 2u, 0,
+    st = drdc__nmea_angle(fr, latitude + 2u, 0,
                     (n != NULL) ? &n->longitude : NULL);
   }
   return st;

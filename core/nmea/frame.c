@@ -79,7 +79,8 @@ static int line_end_only(const char *rest, size_t n)
   return ok;
 }
 
-drdc_status_t nmea_frame(const char *text, size_t length, nmea_frame_t *fr)
+drdc_status_t drdc__nmea_frame(const char *text, size_t length,
+                               nmea_frame_t *fr)
 {
   size_t i = 1u;
   size_t star = 0u;

@@ -12,7 +12,7 @@
 /* Fix quality 1..8 in NMEA 0183 v4.10 (8: simulator) */
 #define GGA_QUALITY_MAX 8
 
-drdc_status_t nmea_gga(const nmea_frame_t *fr, drdc_nmea_t *n)
+drdc_status_t drdc__nmea_gga(const nmea_frame_t *fr, drdc_nmea_t *n)
 {
   drdc_status_t st;
   int32_t quality = 0;
@@ -22,7 +22,7 @@ drdc_status_t nmea_gga(const nmea_frame_t *fr, drdc_nmea_t *n)
   if (fr->count < GGA_FIELDS) {
     return DRDC_E_MISSING_FIELD;
   }
-  st = nmea_uint(fr, 6u, 1u, 1u, &quality);
+  st = drdc__nmea_uint(fr, 6u, 1u, 1u, &quality);
   if (st != DRDC_OK) {
     return st;
   }
@@ -32,12 +32,12 @@ drdc_status_t nmea_gga(const nmea_frame_t *fr, drdc_nmea_t *n)
   if (quality > GGA_QUALITY_MAX) {
     return DRDC_E_RANGE;
   }
-  st = nmea_fix(fr, 2u, n);
+  st = drdc__nmea_fix(fr, 2u, n);
   if (st != DRDC_OK) {
     return st;
   }
   if (nmea_field(fr, 7u).n != 0u) {
-    st = nmea_uint(fr, 7u, 1u, 2u, &satellites);
+    st = drdc__nmea_uint(fr, 7u, 1u, 2u, &satellites);
     if (st != DRDC_OK) {
       return st;
     }

@@ -21,7 +21,7 @@ static int is_mode(char c)
           || (c == 'N') || (c == 'P') || (c == 'R') || (c == 'S')) ? 1 : 0;
 }
 
-drdc_status_t nmea_gns(const nmea_frame_t *fr, drdc_nmea_t *n)
+drdc_status_t drdc__nmea_gns(const nmea_frame_t *fr, drdc_nmea_t *n)
 {
   nmea_field_t mode = nmea_field(fr, 6u);
   drdc_status_t st;
@@ -51,9 +51,9 @@ drdc_status_t nmea_gns(const nmea_frame_t *fr, drdc_nmea_t *n)
   if (fix == 0) {
     return DRDC_E_NO_FIX;
   }
-  st = nmea_fix(fr, 2u, n);
+  st = drdc__nmea_fix(fr, 2u, n);
   if (st == DRDC_OK) {
-    st = nmea_uint(fr, 7u, 1u, 2u, &satellites);
+    st = drdc__nmea_uint(fr, 7u, 1u, 2u, &satellites);
   }
   if (st != DRDC_OK) {
     return st;

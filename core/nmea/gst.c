@@ -39,7 +39,7 @@ static drdc_q15_16_t *deviation(drdc_nmea_t *n, size_t i)
   return p;
 }
 
-drdc_status_t nmea_gst(const nmea_frame_t *fr, drdc_nmea_t *n)
+drdc_status_t drdc__nmea_gst(const nmea_frame_t *fr, drdc_nmea_t *n)
 {
   /* the deviations in metres -> Q15.16: fields 2, 6, 7, 8 (always) and
    * 3, 4 (the error ellipse) */
@@ -52,7 +52,7 @@ drdc_status_t nmea_gst(const nmea_frame_t *fr, drdc_nmea_t *n)
   if (fr->count < GST_FIELDS) {
     return DRDC_E_MISSING_FIELD;
   }
-  st = nmea_tod(fr, 1u, (n != NULL) ? &n->time : NULL);
+  st = drdc__nmea_tod(fr, 1u, (n != NULL) ? &n->time : NULL);
   /* the error ellipse is optional (many receivers leave it empty), but
    * all three fields or none */
   if ((nmea_field(fr, 3u).n != 0u) || (nmea_field(fr, 4u).n != 0u)
@@ -60,14 +60,14 @@ drdc_status_t nmea_gst(const nmea_frame_t *fr, drdc_nmea_t *n)
     count = GST_DEVIATIONS;
   }
   for (i = 0u; (i < count) && (st == DRDC_OK); i++) {
-    st = nmea_fixed(fr, fields[i], NMEA_METRES_Q15_16, &v);
+    st = drdc__nmea_fixed(fr, fields[i], NMEA_METRES_Q15_16, &v);
     if ((st == DRDC_OK) && (n != NULL)) {
       *deviation(n, i) = (drdc_q15_16_t)v;
     }
   }
   if ((st == DRDC_OK) && (count == GST_DEVIATIONS)) {
     /* degrees from true north -> binary angle, wrapping */
-    st = nmea_fixed(fr, 5u, NMEA_DEGREES_BAM32, &v);
+    st = drdc__nmea_fixed(fr, 5u, NMEA_DEGREES_BAM32, &v);
     if ((st == DRDC_OK) && (n != NULL)) {
       n->orientation = (drdc_bam32_t)(uint64_t)v;
       n->has |= DRDC_NMEA_HAS_ELLIPSE;

@@ -27,7 +27,7 @@ typedef struct nmea_field {
 /** A sentence whose framing, checksum and address are valid. Fields are
  *  kept as one-byte offsets into the text (a sentence has at most 82
  *  characters): 40 bytes instead of a pointer and a length per field. */
-typedef struct nmea_frame {
+typedef struct drdc__nmea_frame {
   const char *text;               /**< the sentence, from `$` (talker at
                                        text[1], text[2]) */
   drdc_nmea_type_t type;
@@ -39,7 +39,8 @@ typedef struct nmea_frame {
 
 /** Check framing, characters, length and checksum, decode the address
  *  and split the fields. */
-drdc_status_t nmea_frame(const char *text, size_t length, nmea_frame_t *fr);
+drdc_status_t drdc__nmea_frame(const char *text, size_t length,
+                               nmea_frame_t *fr);
 
 /** Field `i` (1-based as in the standard), or an empty field when the
  *  sentence has fewer. Inline: a call would return the pair through
@@ -62,21 +63,22 @@ static inline nmea_field_t nmea_field(const nmea_frame_t *fr, size_t i)
 
 /** Unsigned decimal of `min_digits`..`max_digits` digits (<= 9): the
  *  `n` characters at `p`. */
-drdc_status_t nmea_digits(const char *p, size_t n, size_t min_digits,
+drdc_status_t drdc__nmea_digits(const char *p, size_t n, size_t min_digits,
                           size_t max_digits, int32_t *out);
 
-/** nmea_digits() of field `i` (1-based, as nmea_field()). */
-drdc_status_t nmea_uint(const nmea_frame_t *fr, size_t i, size_t min_digits,
-                        size_t max_digits, int32_t *out);
+/** drdc__nmea_digits() of field `i` (1-based, as nmea_field()). */
+drdc_status_t drdc__nmea_uint(const nmea_frame_t *fr, size_t i,
+                              size_t min_digits, size_t max_digits,
+                              int32_t *out);
 
 /** [-]digits[.digits] of the `n` characters at `p` -> mantissa and
  *  10^decimals (at most 18 digits, 15 decimals: DRDC_E_RANGE beyond). In
- *  a file of its own so that it is not inlined into nmea_fixed(), whose
+ *  a file of its own so that it is not inlined into drdc__nmea_fixed(), whose
  *  frame then stays small. */
-drdc_status_t nmea_decimal(const char *p, size_t n, int64_t *mantissa,
+drdc_status_t drdc__nmea_decimal(const char *p, size_t n, int64_t *mantissa,
                            int64_t *scale);
 
-/** Scalings of decimal fields (nmea_fixed()). */
+/** Scalings of decimal fields (drdc__nmea_fixed()). */
 typedef enum nmea_scale {
   NMEA_METRES_Q47_16 = 0, /**< metres -> Q47.16 m */
   NMEA_METRES_Q15_16 = 1, /**< metres -> Q15.16 m (int32_t range) */
@@ -89,25 +91,25 @@ typedef enum nmea_scale {
  *  (drdc_fx_muldiv_s64); DRDC_E_RANGE also for a Q15.16 result outside
  *  int32_t. Four register arguments and no wrapper: this call is on the
  *  deepest stack path of drdc_nmea_parse(). */
-drdc_status_t nmea_fixed(const nmea_frame_t *fr, size_t i, nmea_scale_t scale,
-                         int64_t *out);
+drdc_status_t drdc__nmea_fixed(const nmea_frame_t *fr, size_t i,
+                               nmea_scale_t scale, int64_t *out);
 
 /** Field `i` as hhmmss[.s..s] (up to 9 decimals) -> time of day, exact. */
-drdc_status_t nmea_tod(const nmea_frame_t *fr, size_t i,
+drdc_status_t drdc__nmea_tod(const nmea_frame_t *fr, size_t i,
                        drdc_nmea_tod_t *out);
 
 /** Field `i` as (d)ddmm[.m..m] with up to 10 decimals and field i + 1 as
  *  its hemisphere -> nas, exact. `latitude` selects N/S and 90 degrees,
  *  else E/W and 180. */
-drdc_status_t nmea_angle(const nmea_frame_t *fr, size_t i, int latitude,
+drdc_status_t drdc__nmea_angle(const nmea_frame_t *fr, size_t i, int latitude,
                          drdc_nas_t *out);
 
-/** The time and position of a fix (GGA, GNS, RMC): field 1 as nmea_tod(),
+/** The time and position of a fix (GGA, GNS, RMC): field 1 as drdc__nmea_tod(),
  *  field `latitude` and the one after it as a latitude, the two after
- *  those as a longitude (nmea_angle()), checked in that order (the first
+ *  those as a longitude (drdc__nmea_angle()), checked in that order (the first
  *  failure's status) and written into n->time, n->latitude and
  *  n->longitude, unless `n` is NULL. */
-drdc_status_t nmea_fix(const nmea_frame_t *fr, size_t latitude,
+drdc_status_t drdc__nmea_fix(const nmea_frame_t *fr, size_t latitude,
                        drdc_nmea_t *n);
 
 /** Sentence decoders: `fr` is framed; they fill `*n` (zeroed by the
@@ -116,13 +118,13 @@ drdc_status_t nmea_fix(const nmea_frame_t *fr, size_t latitude,
 /* The optional HDOP (field 8), altitude (field 9) and geoid separation
  * (field `separation`) that GGA and GNS share; each present one is parsed
  * and flagged in n->has. */
-drdc_status_t nmea_precision(const nmea_frame_t *fr, size_t separation,
+drdc_status_t drdc__nmea_precision(const nmea_frame_t *fr, size_t separation,
                              drdc_nmea_t *n);
 
-drdc_status_t nmea_gga(const nmea_frame_t *fr, drdc_nmea_t *n);
-drdc_status_t nmea_rmc(const nmea_frame_t *fr, drdc_nmea_t *n);
-drdc_status_t nmea_gns(const nmea_frame_t *fr, drdc_nmea_t *n);
-drdc_status_t nmea_zda(const nmea_frame_t *fr, drdc_nmea_t *n);
-drdc_status_t nmea_gst(const nmea_frame_t *fr, drdc_nmea_t *n);
+drdc_status_t drdc__nmea_gga(const nmea_frame_t *fr, drdc_nmea_t *n);
+drdc_status_t drdc__nmea_rmc(const nmea_frame_t *fr, drdc_nmea_t *n);
+drdc_status_t drdc__nmea_gns(const nmea_frame_t *fr, drdc_nmea_t *n);
+drdc_status_t drdc__nmea_zda(const nmea_frame_t *fr, drdc_nmea_t *n);
+drdc_status_t drdc__nmea_gst(const nmea_frame_t *fr, drdc_nmea_t *n);
 
 #endif /* DRDC_NMEA_IMPL_H */

@@ -51,32 +51,32 @@ static void clear(drdc_nmea_t *to)
 /* The sentence's decoder; with `n` NULL it only checks. The HDOP,
  * altitude and separation of GGA and GNS are decoded here, after the
  * sentence's own fields, not from inside its decoder: one call level
- * less above the 128-bit division of nmea_fixed(). */
+ * less above the 128-bit division of drdc__nmea_fixed(). */
 static drdc_status_t decode_sentence(const nmea_frame_t *fr, drdc_nmea_t *n)
 {
   drdc_status_t st;
 
   switch (fr->type) {
   case DRDC_NMEA_GGA:
-    st = nmea_gga(fr, n);
+    st = drdc__nmea_gga(fr, n);
     if (st == DRDC_OK) {
-      st = nmea_precision(fr, 11u, n);
+      st = drdc__nmea_precision(fr, 11u, n);
     }
     break;
   case DRDC_NMEA_RMC:
-    st = nmea_rmc(fr, n);
+    st = drdc__nmea_rmc(fr, n);
     break;
   case DRDC_NMEA_GNS:
-    st = nmea_gns(fr, n);
+    st = drdc__nmea_gns(fr, n);
     if (st == DRDC_OK) {
-      st = nmea_precision(fr, 10u, n);
+      st = drdc__nmea_precision(fr, 10u, n);
     }
     break;
   case DRDC_NMEA_ZDA:
-    st = nmea_zda(fr, n);
+    st = drdc__nmea_zda(fr, n);
     break;
   default:
-    st = nmea_gst(fr, n);
+    st = drdc__nmea_gst(fr, n);
     break;
   }
   return st;
@@ -103,7 +103,7 @@ drdc_status_t drdc_nmea_parse(const char *text, size_t length,
   if ((text == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = nmea_frame(text, length, &fr);
+  st = drdc__nmea_frame(text, length, &fr);
   /* one call site of decode_sentence(), so that it is inlined (no frame of its
    * own on the deepest path) */
   for (pass = 0u; (pass < 2u) && (st == DRDC_OK); pass++) {

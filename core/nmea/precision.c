@@ -6,14 +6,14 @@
  */
 #include "nmea_impl.h"
 
-drdc_status_t nmea_precision(const nmea_frame_t *fr, size_t separation,
+drdc_status_t drdc__nmea_precision(const nmea_frame_t *fr, size_t separation,
                              drdc_nmea_t *n)
 {
   drdc_status_t st;
   int64_t v = 0;
 
   if (nmea_field(fr, 8u).n != 0u) {
-    st = nmea_fixed(fr, 8u, NMEA_METRES_Q15_16, &v);
+    st = drdc__nmea_fixed(fr, 8u, NMEA_METRES_Q15_16, &v);
     if (st != DRDC_OK) {
       return st;
     }
@@ -23,7 +23,7 @@ drdc_status_t nmea_precision(const nmea_frame_t *fr, size_t separation,
     }
   }
   if (nmea_field(fr, 9u).n != 0u) {
-    st = nmea_fixed(fr, 9u, NMEA_METRES_Q47_16,
+    st = drdc__nmea_fixed(fr, 9u, NMEA_METRES_Q47_16,
                     (n != NULL) ? &n->altitude : NULL);
     if (st != DRDC_OK) {
       return st;
@@ -33,7 +33,7 @@ drdc_status_t nmea_precision(const nmea_frame_t *fr, size_t separation,
     }
   }
   if (nmea_field(fr, separation).n != 0u) {
-    st = nmea_fixed(fr, separation, NMEA_METRES_Q47_16,
+    st = drdc__nmea_fixed(fr, separation, NMEA_METRES_Q47_16,
                     (n != NULL) ? &n->separation : NULL);
     if (st != DRDC_OK) {
       return st;

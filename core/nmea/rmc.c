@@ -13,7 +13,7 @@
  * 2000..2079. */
 #define RMC_PIVOT 80
 
-drdc_status_t nmea_rmc(const nmea_frame_t *fr, drdc_nmea_t *n)
+drdc_status_t drdc__nmea_rmc(const nmea_frame_t *fr, drdc_nmea_t *n)
 {
   nmea_field_t status = nmea_field(fr, 2u);
   nmea_field_t mode = nmea_field(fr, 12u);
@@ -42,9 +42,9 @@ drdc_status_t nmea_rmc(const nmea_frame_t *fr, drdc_nmea_t *n)
   if ((s == 'V') || (m == 'N')) {
     return DRDC_E_NO_FIX;
   }
-  st = nmea_fix(fr, 3u, n);
+  st = drdc__nmea_fix(fr, 3u, n);
   if (st == DRDC_OK) {
-    st = nmea_uint(fr, 9u, 6u, 6u, &ddmmyy);
+    st = drdc__nmea_uint(fr, 9u, 6u, 6u, &ddmmyy);
   }
   if (st != DRDC_OK) {
     return st;
@@ -68,7 +68,7 @@ drdc_status_t nmea_rmc(const nmea_frame_t *fr, drdc_nmea_t *n)
     n->has |= DRDC_NMEA_HAS_POSITION | DRDC_NMEA_HAS_DATE;
   }
   if (nmea_field(fr, 7u).n != 0u) {
-    st = nmea_fixed(fr, 7u, NMEA_KNOTS_Q15_16, &v);
+    st = drdc__nmea_fixed(fr, 7u, NMEA_KNOTS_Q15_16, &v);
     if (st != DRDC_OK) {
       return st;
     }
@@ -79,7 +79,7 @@ drdc_status_t nmea_rmc(const nmea_frame_t *fr, drdc_nmea_t *n)
   }
   if (nmea_field(fr, 8u).n != 0u) {
     /* course in degrees -> binary angle, 2^32 per turn, wrapping */
-    st = nmea_fixed(fr, 8u, NMEA_DEGREES_BAM32, &v);
+    st = drdc__nmea_fixed(fr, 8u, NMEA_DEGREES_BAM32, &v);
     if (st != DRDC_OK) {
       return st;
     }

@@ -10,7 +10,7 @@
 #define ZDA_FIELDS 6u
 #define ZONE_HOURS_MAX 13
 
-drdc_status_t nmea_zda(const nmea_frame_t *fr, drdc_nmea_t *n)
+drdc_status_t drdc__nmea_zda(const nmea_frame_t *fr, drdc_nmea_t *n)
 {
   nmea_field_t zone = nmea_field(fr, 5u);
   drdc_status_t st;
@@ -23,15 +23,15 @@ drdc_status_t nmea_zda(const nmea_frame_t *fr, drdc_nmea_t *n)
   if (fr->count < ZDA_FIELDS) {
     return DRDC_E_MISSING_FIELD;
   }
-  st = nmea_tod(fr, 1u, (n != NULL) ? &n->time : NULL);
+  st = drdc__nmea_tod(fr, 1u, (n != NULL) ? &n->time : NULL);
   if (st == DRDC_OK) {
-    st = nmea_uint(fr, 2u, 2u, 2u, &day);
+    st = drdc__nmea_uint(fr, 2u, 2u, 2u, &day);
   }
   if (st == DRDC_OK) {
-    st = nmea_uint(fr, 3u, 2u, 2u, &month);
+    st = drdc__nmea_uint(fr, 3u, 2u, 2u, &month);
   }
   if (st == DRDC_OK) {
-    st = nmea_uint(fr, 4u, 4u, 4u, &year);
+    st = drdc__nmea_uint(fr, 4u, 4u, 4u, &year);
   }
   if (st != DRDC_OK) {
     return st;
@@ -59,9 +59,9 @@ drdc_status_t nmea_zda(const nmea_frame_t *fr, drdc_nmea_t *n)
       digits.p = &zone.p[1];
       digits.n = zone.n - 1u;
     }
-    st = nmea_digits(digits.p, digits.n, 1u, 2u, &zone_hours);
+    st = drdc__nmea_digits(digits.p, digits.n, 1u, 2u, &zone_hours);
     if (st == DRDC_OK) {
-      st = nmea_uint(fr, 6u, 2u, 2u, &zone_minutes);
+      st = drdc__nmea_uint(fr, 6u, 2u, 2u, &zone_minutes);
     }
     if (st != DRDC_OK) {
       return st;

@@ -18,7 +18,7 @@ drdc_status_t drdc_units_compatible(const drdc_unit_t *a,
     return DRDC_E_NULL;
   }
   for (i = 0u; i < (size_t)DRDC_UNITS_DIMENSIONS; i++) {
-    if (units_dimension(a, i) != units_dimension(b, i)) {
+    if (drdc__units_dimension(a, i) != drdc__units_dimension(b, i)) {
       return DRDC_E_DIMENSION;
     }
   }
@@ -45,7 +45,8 @@ drdc_status_t drdc_units_convert(int64_t raw, unsigned from_frac,
   }
   /* the exact rationals in a function of their own: not in this frame
    * while the 128-bit division runs */
-  if (units_prepare(from_frac, from, to_frac, to, &a, &factor) != DRDC_OK) {
+  if (drdc__units_prepare(from_frac, from, to_frac, to, &a, &factor) !=
+      DRDC_OK) {
     return DRDC_E_RANGE;
   }
   /* the one rounding: 128-bit product, nearest, ties away from zero */

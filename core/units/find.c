@@ -34,7 +34,7 @@ drdc_status_t drdc_units_find(const char *name, size_t length,
                               const drdc_unit_t **unit)
 {
   size_t count = drdc_units_count();
-  const char *s = units_names_first();
+  const char *s = drdc__units_names_first();
   size_t i;
 
   if ((name == NULL) || (unit == NULL)) {
@@ -58,7 +58,7 @@ drdc_status_t drdc_units_find(const char *name, size_t length,
 drdc_status_t drdc_units_describe(const drdc_unit_t *unit,
                                   drdc_unit_info_t *info)
 {
-  const char *s = units_names_first();
+  const char *s = drdc__units_names_first();
   size_t row;
   size_t i = 0u;
   units_rat_t offset;
@@ -66,7 +66,7 @@ drdc_status_t drdc_units_describe(const drdc_unit_t *unit,
   if ((unit == NULL) || (info == NULL)) {
     return DRDC_E_NULL;
   }
-  row = units_index(unit);
+  row = drdc__units_index(unit);
   if (row >= drdc_units_count()) {
     return DRDC_E_UNKNOWN_UNIT;
   }
@@ -79,11 +79,11 @@ drdc_status_t drdc_units_describe(const drdc_unit_t *unit,
   }
   info->name = &s[i];
   for (i = 0u; i < (size_t)DRDC_UNITS_DIMENSIONS; i++) {
-    info->dimension[i] = units_dimension(unit, i);
+    info->dimension[i] = drdc__units_dimension(unit, i);
   }
-  info->factor_num = units_number(unit->factor_num);
-  info->factor_den = units_number(unit->factor_den);
-  offset = units_offset(unit);
+  info->factor_num = drdc__units_number(unit->factor_num);
+  info->factor_den = drdc__units_number(unit->factor_den);
+  offset = drdc__units_offset(unit);
   info->offset_num = offset.num;
   info->offset_den = offset.den;
   return DRDC_OK;

@@ -48,7 +48,7 @@ static int64_t gcd_s64(int64_t a, int64_t b)
   return (int64_t)g;
 }
 
-drdc_status_t units_mul_s64(int64_t x, int64_t y, int64_t *out)
+drdc_status_t drdc__units_mul_s64(int64_t x, int64_t y, int64_t *out)
 {
   uint64_t ux = abs_u64(x);
   uint64_t uy = abs_u64(y);
@@ -72,7 +72,7 @@ drdc_status_t units_mul_s64(int64_t x, int64_t y, int64_t *out)
   return DRDC_OK;
 }
 
-drdc_status_t units_rat_scale(const units_rat_t *a, int64_t num,
+drdc_status_t drdc__units_rat_scale(const units_rat_t *a, int64_t num,
                               int64_t den, units_rat_t *out)
 {
   int64_t g1 = gcd_s64(a->num, den);
@@ -84,10 +84,10 @@ drdc_status_t units_rat_scale(const units_rat_t *a, int64_t num,
       || (den <= 0)) {
     return DRDC_E_RANGE;
   }
-  if (units_mul_s64(a->num / g1, num / g2, &n) != DRDC_OK) {
+  if (drdc__units_mul_s64(a->num / g1, num / g2, &n) != DRDC_OK) {
     return DRDC_E_RANGE;
   }
-  if (units_mul_s64(a->den / g2, den / g1, &d) != DRDC_OK) {
+  if (drdc__units_mul_s64(a->den / g2, den / g1, &d) != DRDC_OK) {
     return DRDC_E_RANGE;
   }
   out->num = n;
@@ -95,7 +95,7 @@ drdc_status_t units_rat_scale(const units_rat_t *a, int64_t num,
   return DRDC_OK;
 }
 
-drdc_status_t units_rat_inv(const units_rat_t *a, units_rat_t *out)
+drdc_status_t drdc__units_rat_inv(const units_rat_t *a, units_rat_t *out)
 {
   int64_t num = a->num;
   int64_t den = a->den;
@@ -113,7 +113,7 @@ drdc_status_t units_rat_inv(const units_rat_t *a, units_rat_t *out)
   return DRDC_OK;
 }
 
-drdc_status_t units_rat_sub(int64_t a_num, int64_t a_den,
+drdc_status_t drdc__units_rat_sub(int64_t a_num, int64_t a_den,
                             const units_rat_t *b, units_rat_t *out)
 {
   /* a/b - c/d = (a (d/g) - c (b/g)) / (b/g d), g = gcd(b, d). The
@@ -131,9 +131,9 @@ drdc_status_t units_rat_sub(int64_t a_num, int64_t a_den,
     return DRDC_E_RANGE;
   }
   g = gcd_s64(a_den, b->den);
-  if ((units_mul_s64(a_num, b->den / g, &left) != DRDC_OK)
-      || (units_mul_s64(b->num, a_den / g, &right) != DRDC_OK)
-      || (units_mul_s64(a_den / g, b->den, &den) != DRDC_OK)) {
+  if ((drdc__units_mul_s64(a_num, b->den / g, &left) != DRDC_OK)
+      || (drdc__units_mul_s64(b->num, a_den / g, &right) != DRDC_OK)
+      || (drdc__units_mul_s64(a_den / g, b->den, &den) != DRDC_OK)) {
     return DRDC_E_RANGE;
   }
   /* both terms are within +-INT64_MAX: check the difference */

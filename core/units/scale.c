@@ -36,7 +36,7 @@ static int64_t pow2(unsigned n)
  * the factor as fit and the rest into the input (an exact left shift);
  * DRDC_E_RANGE when neither can take them.
  */
-drdc_status_t units_prepare(unsigned from_frac, const drdc_unit_t *from,
+drdc_status_t drdc__units_prepare(unsigned from_frac, const drdc_unit_t *from,
                             unsigned to_frac, const drdc_unit_t *to,
                             int64_t *a, units_rat_t *factor)
 {
@@ -45,10 +45,10 @@ drdc_status_t units_prepare(unsigned from_frac, const drdc_unit_t *from,
   int64_t in = raw;
   drdc_status_t st = DRDC_OK;
 
-  f->num = units_number(to->factor_den);
-  f->den = units_number(to->factor_num);
-  if (units_rat_scale(f, units_number(from->factor_num),
-                      units_number(from->factor_den), f)
+  f->num = drdc__units_number(to->factor_den);
+  f->den = drdc__units_number(to->factor_num);
+  if (drdc__units_rat_scale(f, drdc__units_number(from->factor_num),
+                      drdc__units_number(from->factor_den), f)
       != DRDC_OK) {
     return DRDC_E_RANGE;
   }
@@ -57,21 +57,21 @@ drdc_status_t units_prepare(unsigned from_frac, const drdc_unit_t *from,
     int64_t scaled;
     units_rat_t h;
 
-    if ((units_rat_inv(f, &h) != DRDC_OK)
-        || (units_rat_scale(&h, units_offset_part(to, 0u),
-                            units_offset_part(to, 1u), &h)
+    if ((drdc__units_rat_inv(f, &h) != DRDC_OK)
+        || (drdc__units_rat_scale(&h, drdc__units_offset_part(to, 0u),
+                            drdc__units_offset_part(to, 1u), &h)
             != DRDC_OK)) {
       return DRDC_E_RANGE;
     }
-    if ((units_rat_sub(units_offset_part(from, 0u),
-                       units_offset_part(from, 1u), &h, &h)
+    if ((drdc__units_rat_sub(drdc__units_offset_part(from, 0u),
+                       drdc__units_offset_part(from, 1u), &h, &h)
          != DRDC_OK)
-        || (units_rat_scale(&h, pow2(from_frac), 1, &h) != DRDC_OK)) {
+        || (drdc__units_rat_scale(&h, pow2(from_frac), 1, &h) != DRDC_OK)) {
       return DRDC_E_RANGE;
     }
     /* raw x Hd goes to *a (no local whose address is taken) */
-    if ((units_mul_s64(raw, h.den, a) != DRDC_OK)
-        || (units_rat_scale(f, 1, h.den, f) != DRDC_OK)) {
+    if ((drdc__units_mul_s64(raw, h.den, a) != DRDC_OK)
+        || (drdc__units_rat_scale(f, 1, h.den, f) != DRDC_OK)) {
       return DRDC_E_RANGE;
     }
     scaled = *a;
@@ -95,14 +95,14 @@ drdc_status_t units_prepare(unsigned from_frac, const drdc_unit_t *from,
       k--;
       rest = shift - k;
       *a = in;
-      if (((rest == 0u) || (units_mul_s64(in, pow2(rest), a) == DRDC_OK))
-          && (units_rat_scale(f, pow2(k), 1, f) == DRDC_OK)) {
+      if (((rest == 0u) || (drdc__units_mul_s64(in, pow2(rest), a) == DRDC_OK))
+          && (drdc__units_rat_scale(f, pow2(k), 1, f) == DRDC_OK)) {
         in = *a;
         st = DRDC_OK;
       }
     }
   } else {
-    st = units_rat_scale(f, 1, pow2(from_frac - to_frac), f);
+    st = drdc__units_rat_scale(f, 1, pow2(from_frac - to_frac), f);
   }
   if (st != DRDC_OK) {
     return DRDC_E_RANGE;

@@ -439,7 +439,7 @@ const drdc_unit_t *drdc_units_at(size_t index)
   return unit;
 }
 
-const char *units_names_first(void)
+const char *drdc__units_names_first(void)
 {
   /* The names, NUL-terminated, in row order. */
   static const char units_names[] =
@@ -471,7 +471,7 @@ const char *units_names_first(void)
   return units_names;
 }
 
-size_t units_index(const drdc_unit_t *unit)
+size_t drdc__units_index(const drdc_unit_t *unit)
 {
   size_t row = 0u;
 
@@ -481,7 +481,7 @@ size_t units_index(const drdc_unit_t *unit)
   return row;
 }
 
-int8_t units_dimension(const drdc_unit_t *unit, size_t i)
+int8_t drdc__units_dimension(const drdc_unit_t *unit, size_t i)
 {
   /* Exponents of m, kg, s, K, bit. */
   static const int8_t units_dimensions[][DRDC_UNITS_DIMENSIONS] = {
@@ -506,7 +506,7 @@ int8_t units_dimension(const drdc_unit_t *unit, size_t i)
   return units_dimensions[units_dimension_row(unit)][i];
 }
 
-int64_t units_number(uint8_t index)
+int64_t drdc__units_number(uint8_t index)
 {
   /* Factor numbers below 2^32, ascending. */
   static const uint32_t units_small[] = {
@@ -558,7 +558,7 @@ int64_t units_number(uint8_t index)
              : units_large[index - UNITS_SMALL_COUNT];
 }
 
-int64_t units_offset_part(const drdc_unit_t *unit, unsigned part)
+int64_t drdc__units_offset_part(const drdc_unit_t *unit, unsigned part)
 {
   /* Offsets num / den (the scale's zero in the unit); 0: linear. */
   static const int64_t units_offsets[][2] = {
@@ -570,11 +570,11 @@ int64_t units_offset_part(const drdc_unit_t *unit, unsigned part)
   return units_offsets[units_offset_row(unit)][(part != 0u) ? 1 : 0];
 }
 
-units_rat_t units_offset(const drdc_unit_t *unit)
+units_rat_t drdc__units_offset(const drdc_unit_t *unit)
 {
   units_rat_t r;
 
-  r.num = units_offset_part(unit, 0u);
-  r.den = units_offset_part(unit, 1u);
+  r.num = drdc__units_offset_part(unit, 0u);
+  r.den = drdc__units_offset_part(unit, 1u);
   return r;
 }

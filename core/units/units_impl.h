@@ -29,20 +29,20 @@ typedef struct units_rat {
  *  as a product of two rationals, with the second one passed as its two
  *  parts (no rational on the caller's stack). DRDC_E_RANGE when a part
  *  does not fit int64_t (outputs unchanged). */
-drdc_status_t units_rat_scale(const units_rat_t *a, int64_t num,
+drdc_status_t drdc__units_rat_scale(const units_rat_t *a, int64_t num,
                               int64_t den, units_rat_t *out);
 
 /** 1 / a for a != 0 (sign moved to the numerator); DRDC_E_RANGE for
  *  a == 0 or a numerator of INT64_MIN. */
-drdc_status_t units_rat_inv(const units_rat_t *a, units_rat_t *out);
+drdc_status_t drdc__units_rat_inv(const units_rat_t *a, units_rat_t *out);
 
 /** a_num / a_den - b (a_den > 0), exact; DRDC_E_RANGE when a part does
  *  not fit int64_t. */
-drdc_status_t units_rat_sub(int64_t a_num, int64_t a_den,
+drdc_status_t drdc__units_rat_sub(int64_t a_num, int64_t a_den,
                             const units_rat_t *b, units_rat_t *out);
 
 /** x * y when it fits int64_t; DRDC_E_RANGE otherwise. */
-drdc_status_t units_mul_s64(int64_t x, int64_t y, int64_t *out);
+drdc_status_t drdc__units_mul_s64(int64_t x, int64_t y, int64_t *out);
 
 /** Everything of drdc_units_convert() before its one rounding, for
  *  validated arguments: from the raw input in `*a`, the exact input `*a`
@@ -50,7 +50,7 @@ drdc_status_t units_mul_s64(int64_t x, int64_t y, int64_t *out);
  *  (core/units/scale.c). DRDC_E_RANGE when they do not fit 63-bit
  *  integers; `*a` and `*factor` are then undefined (the factor is worked
  *  on in place, in the caller's frame). */
-drdc_status_t units_prepare(unsigned from_frac, const drdc_unit_t *from,
+drdc_status_t drdc__units_prepare(unsigned from_frac, const drdc_unit_t *from,
                             unsigned to_frac, const drdc_unit_t *to,
                             int64_t *a, units_rat_t *factor);
 
@@ -59,8 +59,8 @@ drdc_status_t units_prepare(unsigned from_frac, const drdc_unit_t *from,
  *  names, in row order. Three bytes a unit instead of a pointer and four
  *  int64_t: the dimension (16 rows) and offset (3 rows) share a byte. */
 struct drdc_unit {
-  uint8_t factor_num; /**< factor numerator: units_number() index */
-  uint8_t factor_den; /**< factor denominator: units_number() index */
+  uint8_t factor_num; /**< factor numerator: drdc__units_number() index */
+  uint8_t factor_den; /**< factor denominator: drdc__units_number() index */
   uint8_t dim_offset; /**< UNITS_DIM_OFFSET(dimension row, offset row) */
 };
 
@@ -81,23 +81,23 @@ static inline unsigned units_offset_row(const drdc_unit_t *unit)
 
 /** The first name; the names follow each other, NUL-terminated, in the
  *  order of the rows. */
-const char *units_names_first(void);
+const char *drdc__units_names_first(void);
 
 /** Row number of a unit of the table; drdc_units_count() for a pointer
  *  that is no row of the table. */
-size_t units_index(const drdc_unit_t *unit);
+size_t drdc__units_index(const drdc_unit_t *unit);
 
 /** Exponent `i` (DRDC_UNITS_DIM_*) of the unit's dimension. */
-int8_t units_dimension(const drdc_unit_t *unit, size_t i);
+int8_t drdc__units_dimension(const drdc_unit_t *unit, size_t i);
 
 /** Factor number `index` (a drdc_unit field), 1..2^56. */
-int64_t units_number(uint8_t index);
+int64_t drdc__units_number(uint8_t index);
 
 /** The unit's offset num / den (0 / 1 for linear units). */
-units_rat_t units_offset(const drdc_unit_t *unit);
+units_rat_t drdc__units_offset(const drdc_unit_t *unit);
 
 /** The numerator (`part` 0) or denominator (`part` 1) of the unit's
  *  offset, as a value (no rational on the caller's stack). */
-int64_t units_offset_part(const drdc_unit_t *unit, unsigned part);
+int64_t drdc__units_offset_part(const drdc_unit_t *unit, unsigned part);
 
 #endif /* DRDC_UNITS_IMPL_H */

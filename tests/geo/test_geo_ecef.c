@@ -165,7 +165,7 @@ static void test_local_pose_against_cartconvert(void)
   TEST_ASSERT_LESS_OR_EQUAL_INT64(TRIP_TOL, w_trip);
 }
 
-/* geo_nas_from_rad(r) against drdc_fx_muldiv_s64(r, GEO_NAS_180, GEO_PI)
+/* drdc__geo_nas_from_rad(r) against drdc_fx_muldiv_s64(r, GEO_NAS_180, GEO_PI)
  * (the 128-bit division it replaced), bit for bit, on both signs of: the
  * extremes of int64_t and of the angles (0, 1, pi, pi/2, INT64_MAX,
  * INT64_MIN), the radians nearest to a whole and to a half nas (where
@@ -178,7 +178,7 @@ static void check_nas_from_rad(int64_t r)
 
   TEST_ASSERT_EQUAL_INT(DRDC_OK,
                         drdc_fx_muldiv_s64(r, GEO_NAS_180, GEO_PI, &want));
-  TEST_ASSERT_EQUAL_INT64(want, geo_nas_from_rad(r));
+  TEST_ASSERT_EQUAL_INT64(want, drdc__geo_nas_from_rad(r));
 }
 
 static void test_geo_nas_from_rad_is_muldiv(void)

@@ -307,7 +307,7 @@ static void test_wutm_round_trip(void)
   }
 }
 
-/* geo_mul_shift(a, b, n) against drdc_fx_muldiv_s64(a, b, 2^n) (the
+/* drdc__geo_mul_shift(a, b, n) against drdc_fx_muldiv_s64(a, b, 2^n) (the
  * division it replaced in the Q28.36 metres of UTM and UPS), bit for bit:
  * both round the same rational a b / 2^n to nearest, ties away from
  * zero. Checked for both constants on random values of every magnitude
@@ -336,7 +336,7 @@ static void check_mul_shift(int64_t b, unsigned n)
     want = 0;
     TEST_ASSERT_EQUAL_INT(DRDC_OK,
                           drdc_fx_muldiv_s64(a, b, INT64_C(1) << n, &want));
-    TEST_ASSERT_EQUAL_INT64(want, geo_mul_shift(a, b, n));
+    TEST_ASSERT_EQUAL_INT64(want, drdc__geo_mul_shift(a, b, n));
   }
   for (k = -1; k <= 1; k++) {
     for (i = 0u; i < (2u * COUNT(named)); i++) {
@@ -345,7 +345,7 @@ static void check_mul_shift(int64_t b, unsigned n)
       want = 0;
       TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_muldiv_s64(
                                          a, b, INT64_C(1) << n, &want));
-      TEST_ASSERT_EQUAL_INT64(want, geo_mul_shift(a, b, n));
+      TEST_ASSERT_EQUAL_INT64(want, drdc__geo_mul_shift(a, b, n));
     }
   }
 }
