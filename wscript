@@ -310,7 +310,7 @@ def _system_includes(conf, name, t):
                                  quiet=Context.BOTH).strip()
         elif not os.path.isabs(d):
             d = conf.path.make_node(d).abspath()
-        if not os.path.isdir(d):
+        if not os.path.isabs(d) or not os.path.isdir(d):
             conf.fatal("%s: no include directory %s (TARGETS headers)"
                        % (name, d))
         flags += ["-isystem", d]
@@ -388,7 +388,8 @@ def configure(conf):
                       msg="Checking that %s compiles" % name)
         if "hosted_bait" in t:
             _check_hermetic(conf, name, t)
-    # Every variant, the RTEMS BSPs' too, derives from the default one.
+    # The RTEMS BSP variants derive from the default environment (the
+    # targets' own are set above).
     conf.setenv("")
     conf.env.TARGETS = targets
     conf.env.WERROR = conf.options.werror
@@ -461,9 +462,11 @@ def _qemu_linkcmds(task):
     line, replacement = task.generator.replace
     text = task.inputs[0].read()
     if text.count(line + "\n") != 1:
-        task.generator.bld.fatal("%s: no line %r to change for QEMU"
-                                 % (task.inputs[0].abspath(), line))
+        Logs.error("%s: no line %r to change for QEMU (RTEMS_QEMU in wscript)"
+                   % (task.inputs[0].abspath(), line))
+        return 1
     task.outputs[0].write(text.replace(line + "\n", replacement + "\n"))
+    return 0
 
 
 def build_rtems_runner(bld, cflags):
@@ -673,6 +676,17 @@ def bench(ctx):
     _build_all_then("run_bench", BENCH_TARGETS)
 
 
+def _ensure_for(ctx, groups):
+    """The Debian packages of groups and the Python packages, for commands
+    that need them whatever configure set up."""
+    deps = _tools_module("deps")
+    try:
+        deps.ensure_apt(groups)
+        ctx.env.PYTHONPATH = deps.ensure_python()
+    except deps.SetupError as e:
+        ctx.fatal(str(e))
+
+
 def _python(ctx, args, **kw):
     env = dict(os.environ)
     env["PYTHONPATH"] = ctx.env.PYTHONPATH or ""
@@ -709,14 +723,9 @@ class RunDocs(Build.BuildContext):
         self.restore()
         if not self.all_envs:
             self.load_envs()
-        deps = _tools_module("deps")
-        try:
-            # Doxygen, TransverseMercatorProj and matplotlib, also where
-            # configure set up the host target alone
-            deps.ensure_apt(["docs"])
-            self.env.PYTHONPATH = deps.ensure_python()
-        except deps.SetupError as e:
-            self.fatal(str(e))
+        # Doxygen, TransverseMercatorProj and matplotlib, also where
+        # configure set up the host target alone
+        _ensure_for(self, ["docs"])
         if subprocess.call(["doxygen", "docs/Doxyfile"],
                            cwd=self.path.abspath()) != 0:
             self.fatal("Doxygen found undocumented or badly documented "
@@ -756,6 +765,7 @@ class RunBench(Build.BuildContext):
         self.restore()
         if not self.all_envs:
             self.load_envs()
+        _ensure_for(self, [])  # matplotlib, for the chart
         if _python(self, ["tools/bench.py", "--build", out, "--out",
                           os.path.join(out, "bench", "report.json"),
                           "--docs", "docs"]) != 0:

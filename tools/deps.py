@@ -31,7 +31,7 @@ APT_GROUPS = {
     "pip": {"python3-pip": "23.0.1+dfsg-1"},
     # host and host-asan: the native compiler (ASan and UBSan come with it)
     # and the C library's headers (a Recommends of gcc)
-    "host": {"gcc": "4:12.2.0-3", "libc6-dev": "=libc6"},
+    "host": {"gcc": "4:12.2.0-3", "libc6-dev": None},
     # host-fuzz: libFuzzer (tools/fuzz.py)
     "host-fuzz": {"clang-14": "1:14.0.6-12",
                   "libclang-rt-14-dev": "1:14.0.6-12"},
@@ -65,12 +65,13 @@ APT_GROUPS = {
         "libmpc3": "1.3.1-1",
         "device-tree-compiler": "1.6.1-4+b1",
     },
-    # ./waf docs: the API reference and the error plots of docs/accuracy.md
-    "docs": {"doxygen": "1.9.4-4", "geographiclib-tools": "2.1.2-1"},
 }
-# A version "=PKG" means "the version of the installed PKG": libc6-dev must
-# equal the C library the machine already runs, which apt cannot replace
-# under a running system without a dist-upgrade.
+# ./waf docs: the API reference and the error plots of docs/accuracy.md
+APT_GROUPS["docs"] = {p: APT_GROUPS["check"][p]
+                      for p in ("doxygen", "geographiclib-tools")}
+# A version None: any version will do, apt installs the archive's.
+# libc6-dev must be the very version of the machine's libc6, so it cannot
+# be pinned apart from it; apt upgrades libc6 along with it where needed.
 
 # Debian source packages whose upstream tarball we unpack. The checksum is
 # the one in the package's .dsc (Checksums-Sha256 of the .orig.tar.xz).
@@ -175,12 +176,6 @@ def _installed_version(pkg):
     return r.stdout.split("|", 1)[1]
 
 
-def _wanted_version(version):
-    if version.startswith("="):
-        return _installed_version(version[1:])
-    return version
-
-
 def _have_deb_src():
     return bool(glob.glob("/var/lib/apt/lists/*_source_Sources*"))
 
@@ -214,8 +209,8 @@ def ensure_apt(groups):
     or at another version; as another user, say the command to run."""
     missing = []
     for pkg, version in sorted(apt_packages(groups).items()):
-        version = _wanted_version(version)
-        if version is None or _installed_version(pkg) != version:
+        have = _installed_version(pkg)
+        if have is None or (version is not None and have != version):
             missing.append("%s=%s" % (pkg, version) if version else pkg)
     if not missing:
         return
@@ -315,7 +310,8 @@ def pip_install(dest, requirements, what):
     # a live bar on a terminal; in a log, one line a download
     bar = "on" if sys.stdout.isatty() else "off"
     _run([sys.executable, "-m", "pip", "install", "--progress-bar", bar,
-          "--disable-pip-version-check", "--root-user-action=ignore",
+          "--upgrade", "--disable-pip-version-check",
+          "--root-user-action=ignore",
           "--no-deps", "--require-hashes", "--target", dest, "-r", tmp])
 
 
