@@ -7,15 +7,20 @@ checkout, unpacked into build/rtems-real/), it does what an RTEMS user
 does, in a build of its own (build/rtems-real/build, lock file
 .lock-waf-rtems-real):
 
-    ./waf configure --rtems=PREFIX --rtems-bsps=powerpc/qoriq_e500 --werror
+    ./waf configure --rtems=PREFIX --rtems-bsps=powerpc/qoriq_e500 [--werror]
     ./waf
-    ./waf install
+    ./waf install --destdir=build/rtems-real/destdir
 
-checks that the BSP's prefix then holds the library, the glue, the
+checks that the BSP's prefix (under that DESTDIR, so a user's RTEMS
+installation is never written) then holds the library, the glue, the
 headers and drdc.pc, and makes the device tree that QEMU needs for
 test-runner-qemu.exe: QEMU's own for mpc8544ds with 1 GiB (dumped with
 -machine dumpdtb), with the CPU's bus-frequency set (fdtput), since QEMU
 writes 0 there and RTEMS's clock then never ticks.
+
+Warnings are errors (--werror) with the project's archive, whose compiler
+(gcc 13.3) is a tried one; a user's tool suite only warns, as in their own
+build.
 
 It writes the image's path for the harness into build/rtems-real/image.txt,
 or, with no RTEMS 6 prefix at all (or one without that BSP), says in one
@@ -29,14 +34,17 @@ import subprocess
 import sys
 import tarfile
 
-import rtems_standin
 
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, TOP)
+from qemu import harness  # noqa: E402
+import rtems_standin  # noqa: E402  (beside this file)
 WORK = os.path.join(TOP, "build", "rtems-real")
 ARCHIVE = os.path.join(os.path.dirname(TOP), "shared", "rtems",
                        "rtems6-powerpc-qoriq_e500.tar.xz")
 ARCH, BSP, VERSION = "powerpc", "qoriq_e500", "6"
 VARIANT = "%s-rtems%s-%s" % (ARCH, VERSION, BSP)
+PROFILE = "rtems-qoriq_e500"  # of qemu/harness.py
 # QEMU's mpc8544ds CPU node, and a bus frequency (200 MHz) that gives the
 # BSP's decrementer clock its tick.
 CPU_NODE = "/cpus/PowerPC,8544@0"
@@ -78,10 +86,11 @@ def waf(args):
         stdout=subprocess.DEVNULL)
 
 
-def check_installed(prefix):
+def check_installed(destdir, prefix):
     """The BSP's lib/ holds, of the project's files, exactly those of the
     stand-in's install (the BSP's own files are not ours to list)."""
-    libdir = os.path.join(prefix, "%s-rtems%s" % (ARCH, VERSION), BSP, "lib")
+    libdir = destdir + os.path.join(prefix, "%s-rtems%s" % (ARCH, VERSION),
+                                    BSP, "lib")
     want = rtems_standin.expected_install()
     got = [p for p in rtems_standin.installed_tree(libdir) if "drdc" in p]
     if got != want:
@@ -91,10 +100,12 @@ def check_installed(prefix):
 
 
 def device_tree(image):
+    """QEMU's own tree of the harness's machine, its bus frequency set."""
     dtb = image + ".dtb"
-    run(["qemu-system-ppc", "-M", "mpc8544ds", "-m", "1024", "-nographic",
-         "-nic", "none", "-kernel", image, "-machine", "dumpdtb=" + dtb],
-        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    machine = harness.command(PROFILE, image)
+    i = machine.index("-dtb")
+    del machine[i:i + 2]
+    run(machine + ["-machine", "dumpdtb=" + dtb], stdout=subprocess.DEVNULL)
     run(["fdtput", "-t", "i", dtb, CPU_NODE, "bus-frequency", BUS_FREQUENCY])
     return dtb
 
@@ -115,8 +126,10 @@ def main():
     if args.prefix:
         prefix = os.path.abspath(args.prefix)
         tools = os.path.abspath(args.tools or args.prefix)
+        werror = []
     elif os.path.exists(ARCHIVE):
         prefix = tools = unpack(ARCHIVE)
+        werror = ["--werror"]
     else:
         print("rtems: the real RTEMS 6 job did not run: no prefix was "
               "configured (--rtems) and there is no %s" % ARCHIVE)
@@ -127,11 +140,15 @@ def main():
     if os.path.exists(image):
         os.remove(image)
     waf(["configure", "--rtems=" + prefix, "--rtems-tools=" + tools,
-         "--rtems-bsps=%s/%s" % (ARCH, BSP), "--werror",
-         "--with-targets=host", "--out=" + build])
+         "--rtems-bsps=%s/%s" % (ARCH, BSP), "--with-targets=host",
+         "--out=" + build] + werror)
     waf([])
-    waf(["install"])
-    check_installed(prefix)
+    destdir = os.path.join(WORK, "destdir")
+    shutil.rmtree(destdir, ignore_errors=True)
+    waf(["install", "--destdir=" + destdir])
+    check_installed(destdir, prefix)
+    if not os.path.exists(image):
+        sys.exit("rtems: no %s: the BSP has no <rtems/confdefs.h>?" % image)
     device_tree(image)
     with open(listing, "w") as f:
         f.write(image + "\n")

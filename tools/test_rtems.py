@@ -77,9 +77,6 @@ class ConfigureMessages(unittest.TestCase):
         self.expect("is not of the form arch/bsp", "--rtems-bsps=qoriq_e500")
 
 
-if __name__ == "__main__":
-    unittest.main()
-
 
 class NoShadowOfTheBspHeader(unittest.TestCase):
     """RTEMS's <rtems/confdefs.h> includes the BSP's own <bsp.h>, and the
@@ -92,3 +89,7 @@ class NoShadowOfTheBspHeader(unittest.TestCase):
             self.assertFalse(os.path.exists(os.path.join(TOP, folder, "bsp.h")),
                              "%s/bsp.h would shadow the RTEMS BSP's <bsp.h>"
                              % folder)
+
+
+if __name__ == "__main__":
+    unittest.main()
