@@ -156,6 +156,48 @@ static void test_status_names(void)
   TEST_ASSERT_EQUAL_STRING("DRDC_E_?", drdc_status_name((drdc_status_t)-1));
 }
 
+/* The name of each code says its kind: DRDC_OK, DRDC_W_* (warning) or
+ * DRDC_E_* (error). */
+static void test_status_kinds_follow_their_names(void)
+{
+  int code;
+
+  for (code = 0; code < (int)DRDC_STATUS_COUNT; code++) {
+    drdc_status_t s = (drdc_status_t)code;
+    const char *name = drdc_status_name(s);
+    bool warning = (name[5] == 'W') && (name[6] == '_');
+    bool error = (name[5] == 'E') && (name[6] == '_');
+
+    TEST_ASSERT_EQUAL_INT(warning, drdc_status_is_warning(s));
+    TEST_ASSERT_EQUAL_INT(error, drdc_status_is_error(s));
+    TEST_ASSERT_EQUAL_INT(code == 0, !warning && !error);
+  }
+  TEST_ASSERT_TRUE(drdc_status_is_error(DRDC_STATUS_COUNT));
+}
+
+static int status_calls;
+
+static drdc_status_t counted(drdc_status_t s)
+{
+  status_calls++;
+  return s;
+}
+
+/* Regression: drdc_status_is_error() was a macro that evaluated its
+ * argument up to three times, so a call inside it ran again. */
+static void test_status_is_error_evaluates_its_argument_once(void)
+{
+  status_calls = 0;
+  TEST_ASSERT_TRUE(drdc_status_is_error(counted(DRDC_E_RANGE)));
+  TEST_ASSERT_EQUAL_INT(1, status_calls);
+  status_calls = 0;
+  TEST_ASSERT_FALSE(drdc_status_is_error(counted(DRDC_W_SATURATED)));
+  TEST_ASSERT_EQUAL_INT(1, status_calls);
+  status_calls = 0;
+  TEST_ASSERT_TRUE(drdc_status_is_warning(counted(DRDC_W_LEAP_EXPIRED)));
+  TEST_ASSERT_EQUAL_INT(1, status_calls);
+}
+
 void suite_time_civil(void)
 {
   UnitySetTestFile(__FILE__);
@@ -166,4 +208,6 @@ void suite_time_civil(void)
   RUN_TEST(test_bad_dates_give_their_status);
   RUN_TEST(test_bad_day_counts_give_range);
   RUN_TEST(test_status_names);
+  RUN_TEST(test_status_kinds_follow_their_names);
+  RUN_TEST(test_status_is_error_evaluates_its_argument_once);
 }

@@ -7,6 +7,8 @@
 #ifndef DRDC_STATUS_H
 #define DRDC_STATUS_H
 
+#include <stdbool.h>
+
 /**
  * @defgroup drdc_status Status codes
  *
@@ -93,12 +95,31 @@ typedef enum drdc_status {
  */
 const char *drdc_status_name(drdc_status_t status);
 
-/** Whether `status` is an error (outputs unchanged), as opposed to
- *  DRDC_OK or a DRDC_W_* warning (outputs written). Errors appended after
- *  the warnings count as errors. */
-#define drdc_status_is_error(status) \
-  (((status) != DRDC_OK) && ((status) != DRDC_W_LEAP_EXPIRED) \
-   && ((status) != DRDC_W_SATURATED))
+/**
+ * Whether `status` is a warning: DRDC_W_LEAP_EXPIRED or DRDC_W_SATURATED,
+ * the outputs written. The warnings keep their numbers among the errors'
+ * (values are stable), so test with this function, never with a range.
+ *
+ * @param status the value a library call returned (evaluated once)
+ * @return true for a DRDC_W_* code, false for DRDC_OK and every error
+ */
+static inline bool drdc_status_is_warning(drdc_status_t status)
+{
+  return (status == DRDC_W_LEAP_EXPIRED) || (status == DRDC_W_SATURATED);
+}
+
+/**
+ * Whether `status` is an error (outputs unchanged), as opposed to DRDC_OK
+ * or a warning (outputs written). Codes appended after the warnings, and
+ * values that are no status at all, count as errors.
+ *
+ * @param status the value a library call returned (evaluated once)
+ * @return true for a DRDC_E_* code, false for DRDC_OK and the warnings
+ */
+static inline bool drdc_status_is_error(drdc_status_t status)
+{
+  return (status != DRDC_OK) && !drdc_status_is_warning(status);
+}
 
 /** @} */
 
