@@ -157,6 +157,9 @@ SANITIZE = ["-fsanitize=address,undefined", "-fno-sanitize-recover=all",
 #   soft_float_libm  the toolchain has soft-float double and a libm: the
 #              benchmark image times double-precision baselines
 #   apt        groups of Debian packages the target needs (tools/deps.py)
+#   abi        flags an application must compile with to link the library
+#              (in the installed drdc-<target>.pc); None: a test build
+#              that ./waf install leaves out
 #   headers    bare metal: the only system include directories, in order,
 #              after -nostdinc ("gcc:DIR" is the compiler's own DIR, as
 #              -print-file-name gives it), so no host header can leak in
@@ -167,13 +170,13 @@ TARGETS = {
         "cross": "", "bsp": "host", "qemu": "host", "ext": "",
         "arch": ["-D_POSIX_C_SOURCE=200809L"],
         "link": [], "libs": [], "hard_float": [], "intcheck": "x86-64",
-        "soft_float_libm": False, "apt": ["host"],
+        "soft_float_libm": False, "apt": ["host"], "abi": [],
     },
     "host-asan": {
         "cross": "", "bsp": "host", "qemu": "host", "ext": "",
         "arch": ["-D_POSIX_C_SOURCE=200809L"] + SANITIZE,
         "link": SANITIZE, "libs": [], "hard_float": None, "intcheck": None,
-        "soft_float_libm": False, "apt": ["host"],
+        "soft_float_libm": False, "apt": ["host"], "abi": None,
     },
     "host-fuzz": {
         "cross": "", "compiler": "clang-14", "bsp": "host", "qemu": None,
@@ -183,7 +186,7 @@ TARGETS = {
                  "-fno-sanitize-recover=all", "-fno-omit-frame-pointer"],
         "link": ["-fsanitize=fuzzer,address,undefined"], "libs": [],
         "hard_float": None, "intcheck": None, "soft_float_libm": False,
-        "apt": ["host", "host-fuzz"],
+        "apt": ["host", "host-fuzz"], "abi": None,
     },
     "ppc-e500": {
         "cross": "powerpc-linux-gnu-", "bsp": "ppc-e500", "qemu": "ppc-e500",
@@ -197,6 +200,7 @@ TARGETS = {
         "hard_float": ["-mhard-float"], "intcheck": "ppc",
         # Debian's PowerPC libgcc is hard-float: no soft-float routines
         "soft_float_libm": False, "apt": ["ppc-e500"],
+        "abi": ["-mcpu=powerpc", "-msoft-float", "-msdata=none", "-G0"],
         # freestanding: the compiler's <stdint.h>, <stddef.h>, <stdbool.h>;
         # the board's own <limits.h> (the compiler's wants a C library's
         # below it) and <string.h> (the four functions of its mem.c)
@@ -215,6 +219,7 @@ TARGETS = {
                        "-mfloat-abi=hard"],
         "intcheck": "arm",
         "soft_float_libm": True, "apt": ["arm-cm3"],
+        "abi": ["-mcpu=cortex-m3", "-mthumb", "-mfloat-abi=soft"],
         # the compiler's own, then newlib's (nano.specs puts newlib nano's
         # first with -isystem, which -nostdinc keeps)
         "headers": ["gcc:include", "gcc:include-fixed",
@@ -379,10 +384,24 @@ def configure(conf):
         conf.env.UNITY = found["unity"]
         conf.env.LIBFIXMATH = found["libfixmath"]
         conf.env.PYTHONPATH = found["python"] or ""
+        # Install layout: one library directory and one pkg-config name a
+        # target, so that targets installed into one prefix never clobber
+        # each other; the headers are the same for all.
         conf.env.PREFIX = prefix
-        conf.env.LIBDIR = os.path.join(prefix, "lib")
+        conf.env.LIBDIR = os.path.join(prefix, "lib", name)
+        conf.env.PKGCONFIGDIR = os.path.join(prefix, "lib", "pkgconfig")
+        # drdc-<target>.pc names its directories relative to its prefix,
+        # so that pkg-config --define-variable=prefix=... can move them
+        conf.env.PC_PREFIX = prefix
+        conf.env.PC_LIBDIR = "${prefix}/lib/" + name
+        conf.env.PC_INCLUDEDIR = "${prefix}/include"
+        conf.env.PC_NAME = "drdc-" + name
+        conf.env.PC_CFLAGS = " ".join(t["abi"] or [])
+        conf.env.PC_LIBS = "".join(" -l" + lib for lib in t["libs"])
         conf.env.INCLUDEDIR = os.path.join(prefix, "include")
         conf.env.BINDIR = os.path.join(prefix, "bin")
+        conf.env.DOCDIR = os.path.join(prefix, "share", "doc", "drdc")
+        conf.env.INSTALLABLE = t["abi"] is not None
         conf.check_cc(fragment="int main(void) { return 0; }\n",
                       features="c", cflags=arch,
                       msg="Checking that %s compiles" % name)
@@ -444,9 +463,20 @@ def build_library(bld, cflags):
                   cflags=cflags, includes=["bsp/rtems"],
                   install_path="${LIBDIR}")
         bld.install_as("${INCLUDEDIR}/drdc/rtems.h", "bsp/rtems/drdc_rtems.h")
-    bld(features="subst", source="tools/drdc.pc.in", target="drdc.pc",
-        install_path="${LIBDIR}/pkgconfig", VERSION=VERSION,
-        EXTRA_LIBS=" -ldrdc_rtems" if glue else "")
+    name = bld.env.PC_NAME or "drdc"
+    bld(features="subst", source="tools/drdc.pc.in", target=name + ".pc",
+        install_path=bld.env.PKGCONFIGDIR or "${LIBDIR}/pkgconfig",
+        VERSION=VERSION, NAME=name, ABI_CFLAGS=bld.env.PC_CFLAGS or "",
+        PC_PREFIX=bld.env.PC_PREFIX or bld.env.PREFIX,
+        PC_LIBDIR=bld.env.PC_LIBDIR or bld.env.LIBDIR,
+        PC_INCLUDEDIR=bld.env.PC_INCLUDEDIR or bld.env.INCLUDEDIR,
+        EXTRA_LIBS=" -ldrdc_rtems" if glue else "",
+        LIBS_AFTER=bld.env.PC_LIBS or "")
+    if bld.env.DOCDIR:
+        # the documents the headers cite as docs/<name>.md
+        bld.install_files("${DOCDIR}/docs",
+                          ["docs/conventions.md", "docs/accuracy.md",
+                           "docs/performance.md", "docs/bad-input.md"])
 
 
 def _suite_sources(bld):
@@ -634,15 +664,24 @@ _register_variant_commands(TARGETS)
 
 
 class InstallAll(Build.InstallContext):
-    """install every configured RTEMS BSP, or else the host target"""
+    """install every configured RTEMS BSP, or else every configured
+    target (lib/<target>/, lib/pkgconfig/drdc-<target>.pc)"""
     cmd = "install"
 
     def execute(self):
         self.restore()
         if not self.all_envs:
             self.load_envs()
-        _run_now(["install_" + v for v in
-                  (self.all_envs[""].RTEMS_VARIANTS or ["host"])])
+        variants = self.all_envs[""].RTEMS_VARIANTS or [
+            n for n in (self.all_envs[""].TARGETS or [])
+            if self.all_envs[n].INSTALLABLE]
+        Logs.info("install: %s" % ", ".join(variants))
+        _run_now(["install_" + v for v in variants])
+
+    # configure first where it has not run or a wscript changed, as the
+    # build commands do
+    from waflib import Scripting
+    execute = Scripting.autoconfigure(execute)
 
 
 def _run_now(commands):
@@ -809,6 +848,8 @@ class RunChecks(Build.BuildContext):
             ("host tool drdc, the demo against it, the benchmark guard",
              ["-m", "unittest", "-q", "tools.test_drdc", "tools.test_demo",
               "tools.test_bench"]),
+            ("installed tree: every target side by side, a client of it",
+             ["-m", "unittest", "-q", "tools.test_install"]),
             ("RTEMS build path through a stand-in prefix",
              ["-m", "unittest", "-q", "tools.test_rtems"]),
             ("RTEMS 6 (real): configure, build, install, QEMU image",

@@ -1,0 +1,122 @@
+# SPDX-License-Identifier: BSD-2-Clause
+"""The installed tree, as a firmware team gets it: './waf install' of every
+configured target into one prefix (under a scratch DESTDIR), each target
+in its own lib/<target>/ with its own lib/pkgconfig/drdc-<target>.pc, so
+that none overwrites another; and a program outside the tree built from
+that prefix alone with pkg-config, whose results equal the drdc tool's.
+Run by ./waf check after every target is built.
+"""
+import glob
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+from fractions import Fraction
+
+TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+PREFIX = "/usr/local"  # configure's default --prefix, the one ./waf check uses
+# target: (its archive's object format, ABI flags its .pc must carry)
+TARGETS = {
+    "host": ("elf64-x86-64", []),
+    "ppc-e500": ("elf32-powerpc", ["-mcpu=powerpc", "-msoft-float"]),
+    "arm-cm3": ("elf32-littlearm", ["-mcpu=cortex-m3", "-mthumb",
+                                    "-mfloat-abi=soft"]),
+}
+OBJDUMP = {"host": "objdump", "ppc-e500": "powerpc-linux-gnu-objdump",
+           "arm-cm3": "arm-none-eabi-objdump"}
+# LAT LON in degrees: Baghdad, Sydney, Norway's zone 32, DRDC Suffield
+POINTS = [("33.3", "44.4"), ("-33.9", "151.2"), ("60.5", "5.3"),
+          ("50.27", "-111.17")]
+NAS_PER_DEGREE = 3600000000000
+
+
+class InstalledTree(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.destdir = tempfile.mkdtemp(prefix="drdc-install-")
+        r = subprocess.run([sys.executable, os.path.join(TOP, "waf"),
+                            "install", "--destdir=" + cls.destdir],
+                           cwd=TOP, capture_output=True, text=True)
+        if r.returncode != 0:
+            raise AssertionError("./waf install failed:\n" + r.stdout
+                                 + r.stderr)
+        cls.prefix = cls.destdir + PREFIX
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.destdir, ignore_errors=True)
+
+    def pkg_config(self, target, *what):
+        env = dict(os.environ, PKG_CONFIG_PATH=os.path.join(
+            self.prefix, "lib", "pkgconfig"))
+        r = subprocess.run(["pkg-config", "--define-variable=prefix="
+                            + self.prefix, "drdc-" + target] + list(what),
+                           env=env, capture_output=True, text=True)
+        self.assertEqual(0, r.returncode, r.stderr)
+        return r.stdout.split()
+
+    def test_every_target_has_its_own_library_and_pc(self):
+        for target, (fmt, abi) in TARGETS.items():
+            lib = os.path.join(self.prefix, "lib", target, "libdrdc.a")
+            self.assertTrue(os.path.exists(lib), lib)
+            out = subprocess.run([OBJDUMP[target], "-f", lib], check=True,
+                                 capture_output=True, text=True).stdout
+            self.assertIn("file format " + fmt, out)
+            cflags = self.pkg_config(target, "--cflags")
+            for flag in abi:
+                self.assertIn(flag, cflags, target)
+            libs = self.pkg_config(target, "--libs")
+            self.assertIn("-L" + os.path.dirname(lib), libs)
+        # freestanding PowerPC links libgcc for 64-bit division
+        self.assertIn("-lgcc", self.pkg_config("ppc-e500", "--libs"))
+
+    def test_headers_and_the_documents_they_cite(self):
+        headers = sorted(os.path.basename(h) for pattern in
+                         ("fixed/include/drdc/*.h", "core/include/drdc/*.h")
+                         for h in glob.glob(os.path.join(TOP, pattern)))
+        installed = sorted(os.listdir(os.path.join(self.prefix, "include",
+                                                   "drdc")))
+        self.assertEqual(headers, installed)
+        docs = os.path.join(self.prefix, "share", "doc", "drdc")
+        for h in headers:
+            for d in ("fixed", "core"):
+                path = os.path.join(TOP, d, "include", "drdc", h)
+                if not os.path.exists(path):
+                    continue
+                with open(path) as f:
+                    text = f.read()
+                for word in text.replace("(", " ").replace(")", " ").split():
+                    if word.startswith("docs/") and word.rstrip(".,;:") \
+                            .endswith(".md"):
+                        cited = os.path.join(docs, word.rstrip(".,;:"))
+                        self.assertTrue(os.path.exists(cited),
+                                        "%s cites %s" % (h, word))
+
+    def test_a_program_outside_the_tree_equals_the_drdc_tool(self):
+        exe = os.path.join(self.destdir, "client")
+        subprocess.run(["gcc", "-std=c99", "-Wall", "-Werror",
+                        os.path.join(TOP, "tests", "install", "client.c"),
+                        "-o", exe] + self.pkg_config("host", "--cflags",
+                                                     "--libs"),
+                       check=True)
+        nas = "".join("%d %d\n" % tuple(Fraction(x) * NAS_PER_DEGREE
+                                        for x in p) for p in POINTS)
+        got = subprocess.run([exe], input=nas, check=True,
+                             capture_output=True, text=True).stdout.splitlines()
+        tool = os.path.join(self.prefix, "bin", "drdc")
+        deg = "".join("%s %s\n" % p for p in POINTS)
+        want = subprocess.run([tool, "geo", "-u", "-p", "3"], input=deg,
+                              check=True, capture_output=True,
+                              text=True).stdout.splitlines()
+        for g, w in zip(got, want):
+            zone, east, north = w.split()
+            self.assertEqual("%s %s %s" % (zone, east.replace(".", ""),
+                                           north.replace(".", "")), g)
+        self.assertEqual(len(POINTS), len(got))
+        self.assertEqual(len(POINTS), len(want))
+
+
+if __name__ == "__main__":
+    unittest.main()
