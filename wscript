@@ -157,6 +157,7 @@ SANITIZE = ["-fsanitize=address,undefined", "-fno-sanitize-recover=all",
 #   soft_float_libm  the toolchain has soft-float double and a libm: the
 #              benchmark image times double-precision baselines
 #   apt        groups of Debian packages the target needs (tools/deps.py)
+#   library_arch  flags for the library's objects only (default none)
 #   abi        flags an application must compile with to link the library
 #              (in the installed drdc-<target>.pc); None: a test build
 #              that ./waf install leaves out
@@ -207,6 +208,23 @@ TARGETS = {
         "headers": ["bsp/ppc-e500/include", "gcc:include"],
         "hosted_bait": ["math.h", "stdio.h", "features.h"],
     },
+    # The same board with code for the e500 core itself (-mcpu=8540, as
+    # RTEMS's qoriq_e500 BSP compiles), soft-float: e500 scheduling and
+    # instructions (isel) that generic PowerPC lacks.
+    "ppc-8540": {
+        "cross": "powerpc-linux-gnu-", "bsp": "ppc-e500", "qemu": "ppc-e500",
+        "ext": ".elf",
+        "arch": ["-mcpu=8540", "-msoft-float", "-ffreestanding", "-fno-pic",
+                 "-fno-pie", "-msdata=none", "-G0", "-fno-stack-protector"],
+        "link": ["-nostdlib", "-static", "-no-pie", "-Wl,--gc-sections",
+                 "-Wl,--build-id=none", "-Wl,--no-warn-rwx-segments"],
+        "libs": ["gcc"],
+        "hard_float": ["-mhard-float"], "intcheck": "ppc",
+        "soft_float_libm": False, "apt": ["ppc-e500"],
+        "abi": ["-mcpu=8540", "-msoft-float", "-msdata=none", "-G0"],
+        "headers": ["bsp/ppc-e500/include", "gcc:include"],
+        "hosted_bait": ["math.h", "stdio.h", "features.h"],
+    },
     "arm-cm3": {
         "cross": "arm-none-eabi-", "bsp": "arm-cm3", "qemu": "arm-cm3",
         "ext": ".elf",
@@ -222,6 +240,55 @@ TARGETS = {
         "abi": ["-mcpu=cortex-m3", "-mthumb", "-mfloat-abi=soft"],
         # the compiler's own, then newlib's (nano.specs puts newlib nano's
         # first with -isystem, which -nostdinc keeps)
+        "headers": ["gcc:include", "gcc:include-fixed",
+                    "/usr/lib/arm-none-eabi/include"],
+        "hosted_bait": ["features.h", "argp.h"],
+    },
+    # Cortex-M4F (armv7e-m, hard-float ABI): the library stays integer-
+    # only (tools/intcheck.py), but links into applications that pass
+    # floats in FPU registers. QEMU's mps2-an386 is the AN385 board with a
+    # Cortex-M4, the same memory map and board code.
+    "arm-cm4f": {
+        "cross": "arm-none-eabi-", "bsp": "arm-cm3", "qemu": "arm-cm4f",
+        "ext": ".elf",
+        "arch": ["-mcpu=cortex-m4", "-mthumb", "-mfloat-abi=hard",
+                 "-mfpu=fpv4-sp-d16", "--specs=nano.specs"],
+        # GCC would otherwise keep 64-bit integers in FPU registers across
+        # calls (vstr d8): FP instructions in an integer-only library. The
+        # ABI (floats in s0-s15) is unchanged.
+        "library_arch": ["-mgeneral-regs-only"],
+        "link": ["--specs=rdimon.specs", "-nostartfiles",
+                 "-Wl,--gc-sections"],
+        "libs": [],
+        "hard_float": [],
+        "intcheck": "arm",
+        "soft_float_libm": False, "apt": ["arm-cm3"],
+        "abi": ["-mcpu=cortex-m4", "-mthumb", "-mfloat-abi=hard",
+                "-mfpu=fpv4-sp-d16"],
+        "headers": ["gcc:include", "gcc:include-fixed",
+                    "/usr/lib/arm-none-eabi/include"],
+        "hosted_bait": ["features.h", "argp.h"],
+    },
+    # Cortex-M0/M0+ (armv6-m, Thumb-1 only, no divide instruction): the
+    # most common FPU-less MCUs. Its code runs unchanged on the Cortex-M3
+    # of QEMU's mps2-an385, whose memory holds the suites' vectors (the
+    # Cortex-M0 machines of QEMU 7.2 have 16 KiB of RAM), with the same
+    # board code.
+    "arm-cm0": {
+        "cross": "arm-none-eabi-", "bsp": "arm-cm3", "qemu": "arm-cm3",
+        "ext": ".elf",
+        # inline assembly in unified syntax, as on Thumb-2 (GCC's default
+        # for Thumb-1 is the old divided syntax)
+        "arch": ["-mcpu=cortex-m0", "-mthumb", "-mfloat-abi=soft",
+                 "-masm-syntax-unified", "--specs=nano.specs"],
+        "link": ["--specs=rdimon.specs", "-nostartfiles",
+                 "-Wl,--gc-sections"],
+        "libs": [],
+        "hard_float": ["-mcpu=cortex-m4", "-mfpu=fpv4-sp-d16",
+                       "-mfloat-abi=hard"],
+        "intcheck": "arm",
+        "soft_float_libm": True, "apt": ["arm-cm3"],
+        "abi": ["-mcpu=cortex-m0", "-mthumb", "-mfloat-abi=soft"],
         "headers": ["gcc:include", "gcc:include-fixed",
                     "/usr/lib/arm-none-eabi/include"],
         "hosted_bait": ["features.h", "argp.h"],
@@ -261,7 +328,7 @@ def _tools_module(name):
 def options(opt):
     opt.load("compiler_c")
     _tools_module("waf_rtems").options(opt)
-    opt.add_option("--with-targets", dest="with_targets", default=",".join(TARGETS),
+    opt.add_option("--with-targets", dest="with_targets", default=None,
                    help="configure: the targets to set up and build, comma "
                    "separated (default: all of %s; ./waf check needs all, "
                    "./waf demo %s)" % (", ".join(TARGETS), DEFAULT_TARGET))
@@ -296,6 +363,8 @@ def init(ctx):
 
 
 def _selected_targets(conf):
+    if conf.options.with_targets is None:
+        return list(TARGETS)  # also those a later wscript adds
     names = [n for n in conf.options.with_targets.split(",") if n]
     unknown = [n for n in names if n not in TARGETS]
     if unknown or not names:
@@ -374,6 +443,7 @@ def configure(conf):
         if "headers" in t:
             arch += _system_includes(conf, name, t)
         conf.env.ARCH = arch
+        conf.env.LIBRARY_ARCH = t.get("library_arch", [])
         conf.env.ASFLAGS = arch + CODEGEN
         conf.env.LINKFLAGS = arch + t["link"]
         ldscript = conf.path.find_node("bsp/%s/link.ld" % t["bsp"])
@@ -558,7 +628,7 @@ def build(bld):
     arch = bld.env.ARCH
     ours = arch + CODEGEN + WARNINGS + (["-Werror"] if bld.env.WERROR else [])
     theirs = arch + CODEGEN + ["-w"]
-    build_library(bld, ours)
+    build_library(bld, ours + (bld.env.LIBRARY_ARCH or []))
     if bld.env.RTEMS_BSP:
         build_rtems_runner(bld, ours)
         return

@@ -10,8 +10,9 @@ What is checked, per object file or static library:
        x86-64  x87 (f*) and SSE/AVX scalar or packed floating-point
                arithmetic, comparison and conversion
   2. No call to anything outside the library except the integer helpers of
-     libgcc listed in INTEGER_HELPERS: so no soft-float routine (__adddf3,
-     __aeabi_dmul, ...), no libm (sin, sqrt, ...), no libc, no heap.
+     libgcc listed in INTEGER_HELPERS and the four memory functions GCC
+     requires of every environment: so no soft-float routine (__adddf3,
+     __aeabi_dmul, ...), no libm (sin, sqrt, ...), no other libc, no heap.
 
   intcheck.py ARCH FILE...            check files; exit 1 on any finding
   intcheck.py --build DIR --all T:ARCH...
@@ -53,6 +54,14 @@ INTEGER_HELPERS = {
     "_%sgpr_%d%s" % (op, reg, tail) for op in ("save", "rest")
     for reg in range(14, 32) for tail in ("", "_x")
 }
+# Thumb-1 (Cortex-M0) switch tables: libgcc's case-table dispatchers.
+INTEGER_HELPERS |= {"__gnu_thumb1_case_%s" % k
+                    for k in ("uqi", "sqi", "uhi", "shi", "si")}
+# GCC may call these four for structure copies and initialisers even in
+# freestanding code, and requires every environment to provide them (GCC
+# manual, "C Language": the freestanding environment); on Cortex-M0 it
+# calls memcpy and memset where Thumb-2 cores copy inline.
+FREESTANDING_REQUIRED = {"memcpy", "memmove", "memset", "memcmp"}
 SOFT_FLOAT = re.compile(r"^__(aeabi_[dfi]\w*|\w*[sdtx]f\d?|float\w*|fix\w*|"
                         r"extend\w*|trunc\w*|unord\w*|pow\w+|mul[sdt]c3|div[sdt]c3)$")
 
@@ -91,7 +100,8 @@ def outside_calls(nm, path):
             continue
         (undefined if parts[2] in ("U", "w", "v") else defined).add(parts[1])
     found = []
-    for sym in sorted(undefined - defined - INTEGER_HELPERS):
+    for sym in sorted(undefined - defined - INTEGER_HELPERS
+                      - FREESTANDING_REQUIRED):
         kind = "soft-float routine" if SOFT_FLOAT.match(sym) else "outside call"
         found.append("%s: %s %s" % (path, kind, sym))
     return found

@@ -23,9 +23,19 @@ TARGETS = {
     "ppc-e500": ("elf32-powerpc", ["-mcpu=powerpc", "-msoft-float"]),
     "arm-cm3": ("elf32-littlearm", ["-mcpu=cortex-m3", "-mthumb",
                                     "-mfloat-abi=soft"]),
+    "arm-cm0": ("elf32-littlearm", ["-mcpu=cortex-m0", "-mthumb",
+                                    "-mfloat-abi=soft"]),
+    "arm-cm4f": ("elf32-littlearm", ["-mcpu=cortex-m4", "-mthumb",
+                                     "-mfloat-abi=hard", "-mfpu=fpv4-sp-d16"]),
+    "ppc-8540": ("elf32-powerpc", ["-mcpu=8540", "-msoft-float"]),
 }
-OBJDUMP = {"host": "objdump", "ppc-e500": "powerpc-linux-gnu-objdump",
-           "arm-cm3": "arm-none-eabi-objdump"}
+OBJDUMP = {t: ("powerpc-linux-gnu-" if t.startswith("ppc") else
+               "arm-none-eabi-" if t.startswith("arm") else "") + "objdump"
+           for t in TARGETS}
+# The Arm architecture every object of an Arm library is built for (its
+# build attributes): Thumb-1 only for the Cortex-M0 build, which an
+# armv6-m core must be able to run.
+ARM_ARCH = {"arm-cm3": "v7", "arm-cm0": "v6S-M", "arm-cm4f": "v7E-M"}
 # LAT LON in degrees: Baghdad, Sydney, Norway's zone 32, DRDC Suffield
 POINTS = [("33.3", "44.4"), ("-33.9", "151.2"), ("60.5", "5.3"),
           ("50.27", "-111.17")]
@@ -69,6 +79,13 @@ class InstalledTree(unittest.TestCase):
                 self.assertIn(flag, cflags, target)
             libs = self.pkg_config(target, "--libs")
             self.assertIn("-L" + os.path.dirname(lib), libs)
+            if target in ARM_ARCH:
+                attrs = subprocess.run(["arm-none-eabi-readelf", "-A", lib],
+                                       check=True, capture_output=True,
+                                       text=True).stdout
+                archs = {l.split(":", 1)[1].strip() for l in attrs.splitlines()
+                         if l.strip().startswith("Tag_CPU_arch:")}
+                self.assertEqual({ARM_ARCH[target]}, archs, target)
         # freestanding PowerPC links libgcc for 64-bit division
         self.assertIn("-lgcc", self.pkg_config("ppc-e500", "--libs"))
 

@@ -30,6 +30,8 @@ int main(void);
 /* CCR.DIV_0_TRP: make integer division by zero fault instead of giving 0 */
 #define SCB_CCR (*(volatile uint32_t *)0xE000ED14u)
 #define SCB_CCR_DIV_0_TRP (1u << 4)
+#define SCB_CPACR (*(volatile uint32_t *)0xE000ED88u)
+#define SCB_CPACR_CP10_CP11_FULL (0xFu << 20)
 
 const char bsp_name[] = "arm-cm3";
 
@@ -83,16 +85,22 @@ void bsp_fault_report(const uint32_t *frame, uint32_t ipsr)
 }
 
 /* Every fault and unexpected interrupt: find the frame on the stack that
- * was in use (EXC_RETURN bit 2) and report it. */
+ * was in use (EXC_RETURN bit 2) and report it. Thumb-1 instructions only,
+ * so that the Cortex-M0 build (armv6-m) assembles the same code. */
 __attribute__((__naked__)) static void fault_entry(void)
 {
   __asm__ volatile(
-    "tst lr, #4\n"
-    "ite eq\n"
-    "mrseq r0, msp\n"
-    "mrsne r0, psp\n"
-    "mrs r1, ipsr\n"
-    "b bsp_fault_report\n");
+    "movs r0, #4\n"
+    "mov r1, lr\n"
+    "tst r1, r0\n"
+    "bne 1f\n"
+    "mrs r0, msp\n"
+    "b 2f\n"
+    "1: mrs r0, psp\n"
+    "2: mrs r1, ipsr\n"
+    "ldr r2, =bsp_fault_report\n"
+    "bx r2\n"
+    ".ltorg\n");
 }
 
 void bsp_reset(void) __attribute__((__noreturn__));
@@ -109,6 +117,16 @@ void bsp_reset(void)
   for (dst = &__bss_start; dst < &__bss_end; dst++) {
     *dst = 0u;
   }
+#if defined(__ARM_FP)
+  /* A hard-float build (Cortex-M4F): CP10 and CP11 full access before any
+   * code of the image's ABI may touch the FPU (the library never does). */
+  SCB_CPACR |= SCB_CPACR_CP10_CP11_FULL;
+  __asm__ volatile("dsb\n"
+                   "isb\n"
+                   :
+                   :
+                   : "memory");
+#endif
   SCB_CCR |= SCB_CCR_DIV_0_TRP;
   initialise_monitor_handles();
   /* Line-buffered: the harness sees each line as it is printed. */
