@@ -29,6 +29,10 @@
  * north, GeographicLib's gamma); the point scale is drdc_q5_58_t
  * (LSB 3.5e-18).
  *
+ * **Order**: these functions take latitude first, as GeographicLib does;
+ * the pose structures of pose.h keep the paper's order, longitude first
+ * (docs/conventions.md, section 9: initialise them by field name).
+ *
  * **Method**: the conformal latitude by its Fourier series (8 terms,
  * exact for WGS-84), the spherical transverse Mercator, Krueger's series
  * to 6th order in n (as GeographicLib's TransverseMercator), all in Q5.58

@@ -20,7 +20,9 @@
  * @{
  */
 
-/** Global pose {W}: [longitude, latitude, height, q] (paper eq. 1).
+/** Global pose {W}: [longitude, latitude, height, q] (paper eq. 1):
+ *  longitude first, where the geodesy functions take latitude first
+ *  (docs/conventions.md, section 9), so initialise it by field name.
  *  Height above mean sea level; q body -> north-east-down, true north. */
 typedef struct drdc_WPose {
   drdc_nas_t longitude;  /**< longitude, nas, east positive */
