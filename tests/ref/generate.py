@@ -30,6 +30,7 @@ GENERATORS = [
     "gen_fixed_q5_58",
     "gen_fixed_wide",
     "gen_fixed_tables",
+    "gen_fixed_format",
     "gen_orient_quat",
     "gen_orient_dh",
     "gen_units",

@@ -19,5 +19,6 @@
 #include <drdc/fixed_hyper.h>
 #include <drdc/fixed_q5_58.h>
 #include <drdc/fixed_fix16.h>
+#include <drdc/fixed_format.h>
 
 #endif /* DRDC_FIXED_H */
