@@ -48,6 +48,8 @@ APT_GROUPS = {
     "check": {
         # pkg-config: reads RTEMS BSP flags, checks the installed drdc.pc
         "pkgconf": "1.8.1-1",
+        # make: the Makefiles of examples/ (tools/test_install.py)
+        "make": "4.3-4.1",
         # MISRA C:2012 addon (tools/misra.py)
         "cppcheck": "2.10-2",
         # API reference without a warning

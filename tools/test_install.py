@@ -2,8 +2,10 @@
 """The installed tree, as a firmware team gets it: './waf install' of every
 configured target into one prefix (under a scratch DESTDIR), each target
 in its own lib/<target>/ with its own lib/pkgconfig/drdc-<target>.pc, so
-that none overwrites another; and a program outside the tree built from
-that prefix alone with pkg-config, whose results equal the drdc tool's.
+that none overwrites another; a program outside the tree built from that
+prefix alone with pkg-config, whose results equal the drdc tool's; and
+the examples/ of every firmware target, built by their Makefiles from the
+prefix and run under QEMU.
 Run by ./waf check after every target is built.
 """
 import glob
@@ -42,21 +44,30 @@ POINTS = [("33.3", "44.4"), ("-33.9", "151.2"), ("60.5", "5.3"),
 NAS_PER_DEGREE = 3600000000000
 
 
-class InstalledTree(unittest.TestCase):
-    @classmethod
-    def setUpClass(cls):
-        cls.destdir = tempfile.mkdtemp(prefix="drdc-install-")
-        r = subprocess.run([sys.executable, os.path.join(TOP, "waf"),
-                            "install", "--destdir=" + cls.destdir],
-                           cwd=TOP, capture_output=True, text=True)
-        if r.returncode != 0:
-            raise AssertionError("./waf install failed:\n" + r.stdout
-                                 + r.stderr)
-        cls.prefix = cls.destdir + PREFIX
+class Prefix:
+    """The scratch DESTDIR that ./waf install filled, one for the module."""
+    destdir = None
+    prefix = None
 
-    @classmethod
-    def tearDownClass(cls):
-        shutil.rmtree(cls.destdir, ignore_errors=True)
+
+def setUpModule():
+    Prefix.destdir = tempfile.mkdtemp(prefix="drdc-install-")
+    r = subprocess.run([sys.executable, os.path.join(TOP, "waf"),
+                        "install", "--destdir=" + Prefix.destdir],
+                       cwd=TOP, capture_output=True, text=True)
+    if r.returncode != 0:
+        raise AssertionError("./waf install failed:\n" + r.stdout + r.stderr)
+    Prefix.prefix = Prefix.destdir + PREFIX
+
+
+def tearDownModule():
+    shutil.rmtree(Prefix.destdir, ignore_errors=True)
+
+
+class InstalledTree(unittest.TestCase):
+    def setUp(self):
+        self.destdir = Prefix.destdir
+        self.prefix = Prefix.prefix
 
     def pkg_config(self, target, *what):
         env = dict(os.environ, PKG_CONFIG_PATH=os.path.join(
@@ -133,6 +144,71 @@ class InstalledTree(unittest.TestCase):
                                            north.replace(".", "")), g)
         self.assertEqual(len(POINTS), len(got))
         self.assertEqual(len(POINTS), len(want))
+
+
+# Each firmware target of examples/: its folder and the QEMU profile of
+# qemu/harness.py that runs it.
+EXAMPLES = {
+    "arm-cm3": ("cortex-m", "arm-cm3"),
+    "arm-cm0": ("cortex-m", "arm-cm3"),
+    "arm-cm4f": ("cortex-m", "arm-cm4f"),
+    "ppc-e500": ("powerpc", "ppc-e500"),
+    "ppc-8540": ("powerpc", "ppc-e500"),
+}
+
+
+class Examples(unittest.TestCase):
+    """examples/: built with make from the installed prefix alone (the
+    module's tree), run on the host and under QEMU; every
+    firmware prints exactly the host's text, whose values equal the drdc
+    tool's."""
+
+    def setUp(self):
+        self.destdir = Prefix.destdir
+        self.prefix = Prefix.prefix
+
+    def make(self, folder, out, *args):
+        subprocess.run(["make", "-s", "-C", self.destdir, "-f",
+                        os.path.join(TOP, "examples", folder, "Makefile"),
+                        "PREFIX=" + self.prefix, "OUT=" + out] + list(args),
+                       check=True)
+
+    def host_text(self):
+        exe = os.path.join(self.destdir, "example-host")
+        self.make("host", exe)
+        return subprocess.run([exe], check=True, capture_output=True,
+                              text=True).stdout
+
+    def test_host_example_equals_the_drdc_tool(self):
+        lines = dict(l.split(" ", 1) for l in self.host_text().splitlines())
+        tool = os.path.join(self.prefix, "bin", "drdc")
+
+        def drdc(stdin, *args):
+            return subprocess.run([tool] + list(args), input=stdin,
+                                  check=True, capture_output=True,
+                                  text=True).stdout.strip()
+        # the sentence's position, 5016.20000 N 11110.20000 W, in degrees
+        self.assertEqual(drdc("50.27 -111.17\n", "geo", "-u", "-p", "3"),
+                         lines["UTM"])
+        self.assertEqual(drdc("50.27 -111.17\n", "geo", "-m", "-p", "0"),
+                         lines["MGRS"])
+        week, tow = drdc(lines["UTC"] + "\n", "time", "--from", "utc",
+                         "--to", "gps").split()
+        self.assertEqual("%s %s" % (week, tow.split(".")[0]), lines["GPS"])
+
+    def test_firmware_examples_print_the_hosts_text(self):
+        sys.path.insert(0, TOP)
+        from qemu import harness
+        want = self.host_text()
+        for target, (folder, profile) in EXAMPLES.items():
+            image = os.path.join(self.destdir, "example-%s.elf" % target)
+            self.make(folder, image, "TARGET=" + target)
+            data, status, killed = harness.boot(profile, image, 10, 60,
+                                                1 << 16)
+            got = data.decode("ascii", "replace").replace("\r", "")
+            self.assertIsNone(killed, target)
+            self.assertIn(status, (0, None), target)
+            self.assertEqual(want, got, target)
 
 
 if __name__ == "__main__":
