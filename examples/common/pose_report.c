@@ -64,6 +64,28 @@ static void write_hex(const uint8_t *bytes, size_t n)
   }
 }
 
+/* The body of Report Global Pose: position and time stamp. Fields by
+ * name: the pose structures put longitude first, the geodesy functions
+ * take latitude first (docs/conventions.md, section 9). */
+static drdc_status_t pose_body(const drdc_nmea_t *gga, const drdc_time_t *utc,
+                               uint8_t *wire, size_t size, size_t *length)
+{
+  drdc_jaus_global_pose_t body = {
+    .presence = DRDC_JAUS_PV_LATITUDE | DRDC_JAUS_PV_LONGITUDE
+                | DRDC_JAUS_PV_ALTITUDE | DRDC_JAUS_PV_TIME_STAMP,
+    .pose = { .latitude = gga->latitude,
+              .longitude = gga->longitude,
+              .height = gga->altitude },
+  };
+  drdc_status_t st = drdc_time_jaus_pack(NULL, utc, &body.time_stamp);
+
+  if (st == DRDC_OK) {
+    st = drdc_jaus_global_pose_pack(&body, DRDC_JAUS_FORM_AS6009, wire,
+                                    size, length);
+  }
+  return st;
+}
+
 static int fail(const char *what, drdc_status_t st)
 {
   example_write("ERROR ");
@@ -81,7 +103,6 @@ int example_run(void)
   drdc_time_t utc;
   drdc_time_gps_t gps;
   drdc_geo_utm_t utm;
-  drdc_jaus_global_pose_t body = { 0 };
   char iso[DRDC_TIME_ISO8601_SIZE];
   char mgrs[DRDC_GEO_MGRS_SIZE];
   uint8_t wire[DRDC_JAUS_POSE_BODY_MAX];
@@ -116,16 +137,7 @@ int example_run(void)
   if (st != DRDC_OK) {
     return fail("geodesy", st);
   }
-  body.presence = DRDC_JAUS_PV_LATITUDE | DRDC_JAUS_PV_LONGITUDE
-                  | DRDC_JAUS_PV_ALTITUDE | DRDC_JAUS_PV_TIME_STAMP;
-  body.pose.latitude = gga.latitude;
-  body.pose.longitude = gga.longitude;
-  body.pose.height = gga.altitude;
-  st = drdc_time_jaus_pack(NULL, &utc, &body.time_stamp);
-  if (st == DRDC_OK) {
-    st = drdc_jaus_global_pose_pack(&body, DRDC_JAUS_FORM_AS6009, wire,
-                                    sizeof wire, &wire_length);
-  }
+  st = pose_body(&gga, &utc, wire, sizeof wire, &wire_length);
   if (st != DRDC_OK) {
     return fail("JAUS", st);
   }
