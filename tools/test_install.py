@@ -18,7 +18,6 @@ import unittest
 from fractions import Fraction
 
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-PREFIX = "/usr/local"  # configure's default --prefix, the one ./waf check uses
 # target: (its archive's object format, ABI flags its .pc must carry)
 TARGETS = {
     "host": ("elf64-x86-64", []),
@@ -51,13 +50,22 @@ class Prefix:
 
 
 def setUpModule():
+    # each target by name: a tree configured with --rtems installs its BSPs
+    # on a bare './waf install'
     Prefix.destdir = tempfile.mkdtemp(prefix="drdc-install-")
-    r = subprocess.run([sys.executable, os.path.join(TOP, "waf"),
-                        "install", "--destdir=" + Prefix.destdir],
+    r = subprocess.run([sys.executable, os.path.join(TOP, "waf")]
+                       + ["install_" + t for t in TARGETS]
+                       + ["--destdir=" + Prefix.destdir],
                        cwd=TOP, capture_output=True, text=True)
     if r.returncode != 0:
         raise AssertionError("./waf install failed:\n" + r.stdout + r.stderr)
-    Prefix.prefix = Prefix.destdir + PREFIX
+    # the configured --prefix, wherever it is, under the destdir
+    pcs = glob.glob(os.path.join(Prefix.destdir, "**", "lib", "pkgconfig",
+                                 "drdc-host.pc"), recursive=True)
+    if len(pcs) != 1:
+        raise AssertionError("no single drdc-host.pc under %s: %s"
+                             % (Prefix.destdir, pcs))
+    Prefix.prefix = os.path.dirname(os.path.dirname(os.path.dirname(pcs[0])))
 
 
 def tearDownModule():
@@ -90,6 +98,10 @@ class InstalledTree(unittest.TestCase):
                 self.assertIn(flag, cflags, target)
             libs = self.pkg_config(target, "--libs")
             self.assertIn("-L" + os.path.dirname(lib), libs)
+            # a link step of its own (CMake, most Makefiles) must pick the
+            # same multilib of libgcc and libc as the compile
+            for flag in abi:
+                self.assertIn(flag, libs, target)
             if target in ARM_ARCH:
                 attrs = subprocess.run(["arm-none-eabi-readelf", "-A", lib],
                                        check=True, capture_output=True,
@@ -195,6 +207,37 @@ class Examples(unittest.TestCase):
         week, tow = drdc(lines["UTC"] + "\n", "time", "--from", "utc",
                          "--to", "gps").split()
         self.assertEqual("%s %s" % (week, tow.split(".")[0]), lines["GPS"])
+
+    def test_cortex_m0_linked_in_steps_is_thumb1_throughout(self):
+        """Compile with --cflags, link with --libs alone: every input of
+        the image, libgcc's 64-bit division included, must be armv6-m."""
+        env = dict(os.environ, PKG_CONFIG_PATH=os.path.join(
+            self.prefix, "lib", "pkgconfig"))
+
+        def pc(what):
+            return subprocess.run(
+                ["pkg-config", "--define-variable=prefix=" + self.prefix,
+                 "drdc-arm-cm0", what], env=env, check=True,
+                capture_output=True, text=True).stdout.split()
+        here = os.path.join(TOP, "examples")
+        objects = []
+        for src in ("common/pose_report.c", "cortex-m/platform.c"):
+            obj = os.path.join(self.destdir, os.path.basename(src) + ".o")
+            subprocess.run(["arm-none-eabi-gcc", "-std=c99", "-O2", "-c",
+                            "-I" + os.path.join(here, "common")] + pc("--cflags")
+                           + [os.path.join(here, src), "-o", obj], check=True)
+            objects.append(obj)
+        image = os.path.join(self.destdir, "steps-arm-cm0.elf")
+        subprocess.run(["arm-none-eabi-gcc", "-nostartfiles",
+                        "--specs=nano.specs", "--specs=nosys.specs",
+                        "-Wl,--gc-sections", "-T",
+                        os.path.join(here, "cortex-m", "link.ld")] + objects
+                       + pc("--libs") + ["-o", image], check=True)
+        attrs = subprocess.run(["arm-none-eabi-readelf", "-A", image],
+                               check=True, capture_output=True,
+                               text=True).stdout
+        self.assertIn("Tag_CPU_arch: v6S-M", attrs)
+        self.assertNotIn("Tag_ARM_ISA_use: Yes", attrs)
 
     def test_firmware_examples_print_the_hosts_text(self):
         sys.path.insert(0, TOP)
