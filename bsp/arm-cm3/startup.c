@@ -110,16 +110,10 @@ void bsp_reset(void)
   const uint32_t *src = &__data_load;
   uint32_t *dst;
 
-  for (dst = &__data_start; dst < &__data_end; dst++) {
-    *dst = *src;
-    src++;
-  }
-  for (dst = &__bss_start; dst < &__bss_end; dst++) {
-    *dst = 0u;
-  }
 #if defined(__ARM_FP)
-  /* A hard-float build (Cortex-M4F): CP10 and CP11 full access before any
-   * code of the image's ABI may touch the FPU (the library never does). */
+  /* A hard-float build (Cortex-M4F): CP10 and CP11 full access first,
+   * before any code of the image's ABI may touch the FPU (the copy loops
+   * below may become newlib's memcpy and memset; the library never does). */
   SCB_CPACR |= SCB_CPACR_CP10_CP11_FULL;
   __asm__ volatile("dsb\n"
                    "isb\n"
@@ -127,6 +121,13 @@ void bsp_reset(void)
                    :
                    : "memory");
 #endif
+  for (dst = &__data_start; dst < &__data_end; dst++) {
+    *dst = *src;
+    src++;
+  }
+  for (dst = &__bss_start; dst < &__bss_end; dst++) {
+    *dst = 0u;
+  }
   SCB_CCR |= SCB_CCR_DIV_0_TRP;
   initialise_monitor_handles();
   /* Line-buffered: the harness sees each line as it is printed. */

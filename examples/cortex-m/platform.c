@@ -5,8 +5,12 @@
  *        boards: vector table, reset, and a console and an exit through
  *        Arm semihosting, with no C library I/O at all.
  *
- * A board of your own replaces example_write() with its UART and the
- * exit with what the board does at the end; link.ld with its memory.
+ * On a real board, replace all three, not only the text: semihosting's
+ * BKPT 0xAB without a debugger attached is a HardFault (the core then
+ * locks up), so write example_write() for the board's UART and stop()
+ * for what the board does at the end; and give link.ld the MCU's own
+ * flash and RAM (the MPS2 boards have 4 MiB of SRAM at 0x20000000, so
+ * the initial stack pointer here is 0x20400000).
  */
 #include <stdint.h>
 
@@ -43,9 +47,11 @@ static void stop(int status)
   }
 }
 
+/* A fault ends the run: semihosting first says so under QEMU or a
+ * debugger (a fault inside this handler locks the core up, which stops it
+ * all the same on a board without one). */
 static void fault(void)
 {
-  example_write("ERROR fault\n");
   stop(1);
 }
 
@@ -56,6 +62,13 @@ void reset(void)
   const uint32_t *src = &__data_load;
   uint32_t *dst;
 
+#if defined(__ARM_FP)
+  /* hard-float ABI (Cortex-M4F): CP10 and CP11 full access first (the
+   * loops below may become calls of memcpy and memset) */
+  *(volatile uint32_t *)0xE000ED88u |= 0xFu << 20;
+  __asm__ volatile("dsb\n"
+                   "isb\n" ::: "memory");
+#endif
   for (dst = &__data_start; dst < &__data_end; dst++) {
     *dst = *src;
     src++;
@@ -63,12 +76,6 @@ void reset(void)
   for (dst = &__bss_start; dst < &__bss_end; dst++) {
     *dst = 0u;
   }
-#if defined(__ARM_FP)
-  /* hard-float ABI (Cortex-M4F): CP10 and CP11 full access first */
-  *(volatile uint32_t *)0xE000ED88u |= 0xFu << 20;
-  __asm__ volatile("dsb\n"
-                   "isb\n" ::: "memory");
-#endif
   stop(example_run());
 }
 

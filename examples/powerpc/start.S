@@ -2,8 +2,10 @@
 /* Start-up of the example on QEMU's mpc8544ds (e500v2): map the CCSR
  * (the UART and the reset register) with one TLB1 entry, set the stack,
  * clear .bss, run the example and reset. QEMU has already mapped the image
- * at 0. No interrupts are enabled, so no vectors are needed here; a board
- * of your own sets its IVORs as its BSP does. */
+ * at 0. No interrupts are enabled, so no vectors are needed here. On a
+ * real board: the CCSR comes out of reset at 0xFF700000 (QEMU puts it at
+ * 0xE0000000), a boot loader may own TLB1 entry 1 (perhaps for the running
+ * code), and the IVORs want setting as the board's BSP does. */
 #define SPR_MAS0 624
 #define SPR_MAS1 625
 #define SPR_MAS2 626
