@@ -5,7 +5,8 @@
   ./waf check   build every target and run every check and test suite
   ./waf build_<target>, clean_<target>, install_<target>   one target only
   ./waf install  every configured RTEMS BSP into its prefix (tools/waf_rtems.py),
-                 or, without RTEMS, the host target into --prefix
+                 or, without RTEMS, every configured target into --prefix
+                 (lib/<target>/, lib/pkgconfig/drdc-<target>.pc)
 """
 import glob
 import logging

@@ -29,13 +29,14 @@ def _rows():
         for dec in (0, 1, 3, 9, 18):
             for v in edges:
                 rows.append((v, fb, dec))
-            # ties at the last decimal: (k + 1/2) 10^-dec, where exact
-            if fb >= 1:
-                half = (1 << fb) // 2
-                rows.append((half, fb, 0))
-                rows.append((-half, fb, 0))
-                rows.append((3 * half, fb, 0))
-                rows.append((-3 * half, fb, 0))
+            # exact ties at the last decimal, (2k + 1) / (2 10^dec): the
+            # value (2k + 1) 5^dec 2^(fb - dec - 1), where fb > dec
+            if fb > dec:
+                for k in (0, 1, 12345):
+                    tie = (2 * k + 1) * 5 ** dec << (fb - dec - 1)
+                    if tie <= INT64_MAX:
+                        rows.append((tie, fb, dec))
+                        rows.append((-tie, fb, dec))
     rng = random.Random(20261126)
     for _ in range(COUNT_RANDOM):
         fb = rng.choice([0, 16, 30, 36, 58, 60, rng.randint(0, 60)])
@@ -44,7 +45,7 @@ def _rows():
                         rng.randint(-(1 << 40), 1 << 40),
                         rng.randint(-(1 << 20), 1 << 20)])
         rows.append((v, fb, dec))
-    return rows
+    return list(dict.fromkeys(rows))  # in order, without repeats
 
 
 def generate():

@@ -19,9 +19,9 @@
  * newlib-nano's printf, the one small firmware links, has neither %lld
  * nor floating point. drdc_fx_format() writes any of the library's
  * integer and Q-format values as decimal text: drdc_q47_16_t metres with
- * frac_bits 16, drdc_q1_30_t with 30, drdc_nas_t or a 64-bit count with
- * 0 (then scaled by the caller's choice of decimals, if any, in the value
- * itself).
+ * frac_bits 16, drdc_q1_30_t with 30, drdc_nas_t or any 64-bit count with
+ * 0. The scale is a power of two only: decimals of an integer are zeros,
+ * so a value in nas, nanoseconds or millimetres prints in those units.
  * @{
  */
 
