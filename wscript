@@ -167,6 +167,39 @@ SANITIZE = ["-fsanitize=address,undefined", "-fno-sanitize-recover=all",
 #              -print-file-name gives it), so no host header can leak in
 #   hosted_bait  headers of the host's C library (glibc) that the target
 #              must not see: configure proves that each is missing
+# What the bare-metal targets of one family share; each row of TARGETS
+# adds its core's flags.
+PPC_BARE_METAL = {
+    "cross": "powerpc-linux-gnu-", "bsp": "ppc-e500", "qemu": "ppc-e500",
+    "ext": ".elf",
+    "arch": ["-msoft-float", "-ffreestanding", "-fno-pic", "-fno-pie",
+             "-msdata=none", "-G0", "-fno-stack-protector"],
+    "link": ["-nostdlib", "-static", "-no-pie", "-Wl,--gc-sections",
+             "-Wl,--build-id=none", "-Wl,--no-warn-rwx-segments"],
+    # libgcc: 64-bit integer division (__udivdi3, __divdi3)
+    "libs": ["gcc"],
+    "hard_float": ["-mhard-float"], "intcheck": "ppc",
+    # Debian's PowerPC libgcc is hard-float: no soft-float routines
+    "soft_float_libm": False, "apt": ["ppc-e500"],
+    # freestanding: the compiler's <stdint.h>, <stddef.h>, <stdbool.h>;
+    # the board's own <limits.h> (the compiler's wants a C library's
+    # below it) and <string.h> (the four functions of its mem.c)
+    "headers": ["bsp/ppc-e500/include", "gcc:include"],
+    "hosted_bait": ["math.h", "stdio.h", "features.h"],
+}
+# Cortex-M on QEMU's MPS2 boards, newlib nano, semihosting console and exit
+ARM_NEWLIB = {
+    "cross": "arm-none-eabi-", "bsp": "arm-cm3", "qemu": "arm-cm3",
+    "ext": ".elf",
+    "link": ["--specs=rdimon.specs", "-nostartfiles", "-Wl,--gc-sections"],
+    "libs": [], "intcheck": "arm", "apt": ["arm-cm3"],
+    # the compiler's own, then newlib's (nano.specs puts newlib nano's
+    # first with -isystem, which -nostdinc keeps)
+    "headers": ["gcc:include", "gcc:include-fixed",
+                "/usr/lib/arm-none-eabi/include"],
+    "hosted_bait": ["features.h", "argp.h"],
+}
+
 TARGETS = {
     "host": {
         "cross": "", "bsp": "host", "qemu": "host", "ext": "",
@@ -190,110 +223,55 @@ TARGETS = {
         "hard_float": None, "intcheck": None, "soft_float_libm": False,
         "apt": ["host", "host-fuzz"], "abi": None,
     },
-    "ppc-e500": {
-        "cross": "powerpc-linux-gnu-", "bsp": "ppc-e500", "qemu": "ppc-e500",
-        "ext": ".elf",
-        "arch": ["-mcpu=powerpc", "-msoft-float", "-ffreestanding", "-fno-pic",
-                 "-fno-pie", "-msdata=none", "-G0", "-fno-stack-protector"],
-        "link": ["-nostdlib", "-static", "-no-pie", "-Wl,--gc-sections",
-                 "-Wl,--build-id=none", "-Wl,--no-warn-rwx-segments"],
-        # libgcc: 64-bit integer division (__udivdi3, __divdi3)
-        "libs": ["gcc"],
-        "hard_float": ["-mhard-float"], "intcheck": "ppc",
-        # Debian's PowerPC libgcc is hard-float: no soft-float routines
-        "soft_float_libm": False, "apt": ["ppc-e500"],
-        "abi": ["-mcpu=powerpc", "-msoft-float", "-msdata=none", "-G0"],
-        # freestanding: the compiler's <stdint.h>, <stddef.h>, <stdbool.h>;
-        # the board's own <limits.h> (the compiler's wants a C library's
-        # below it) and <string.h> (the four functions of its mem.c)
-        "headers": ["bsp/ppc-e500/include", "gcc:include"],
-        "hosted_bait": ["math.h", "stdio.h", "features.h"],
-    },
+    "ppc-e500": dict(
+        PPC_BARE_METAL,
+        arch=["-mcpu=powerpc"] + PPC_BARE_METAL["arch"],
+        abi=["-mcpu=powerpc", "-msoft-float", "-msdata=none", "-G0"]),
     # The same board with code for the e500 core itself (-mcpu=8540, as
     # RTEMS's qoriq_e500 BSP compiles), soft-float: e500 scheduling and
     # instructions (isel) that generic PowerPC lacks.
-    "ppc-8540": {
-        "cross": "powerpc-linux-gnu-", "bsp": "ppc-e500", "qemu": "ppc-e500",
-        "ext": ".elf",
-        "arch": ["-mcpu=8540", "-msoft-float", "-ffreestanding", "-fno-pic",
-                 "-fno-pie", "-msdata=none", "-G0", "-fno-stack-protector"],
-        "link": ["-nostdlib", "-static", "-no-pie", "-Wl,--gc-sections",
-                 "-Wl,--build-id=none", "-Wl,--no-warn-rwx-segments"],
-        "libs": ["gcc"],
-        "hard_float": ["-mhard-float"], "intcheck": "ppc",
-        "soft_float_libm": False, "apt": ["ppc-e500"],
-        "abi": ["-mcpu=8540", "-msoft-float", "-msdata=none", "-G0"],
-        "headers": ["bsp/ppc-e500/include", "gcc:include"],
-        "hosted_bait": ["math.h", "stdio.h", "features.h"],
-    },
-    "arm-cm3": {
-        "cross": "arm-none-eabi-", "bsp": "arm-cm3", "qemu": "arm-cm3",
-        "ext": ".elf",
-        "arch": ["-mcpu=cortex-m3", "-mthumb", "-mfloat-abi=soft",
-                 "--specs=nano.specs"],
-        "link": ["--specs=rdimon.specs", "-nostartfiles",
-                 "-Wl,--gc-sections"],
-        "libs": [],
-        "hard_float": ["-mcpu=cortex-m4", "-mfpu=fpv4-sp-d16",
-                       "-mfloat-abi=hard"],
-        "intcheck": "arm",
-        "soft_float_libm": True, "apt": ["arm-cm3"],
-        "abi": ["-mcpu=cortex-m3", "-mthumb", "-mfloat-abi=soft"],
-        # the compiler's own, then newlib's (nano.specs puts newlib nano's
-        # first with -isystem, which -nostdinc keeps)
-        "headers": ["gcc:include", "gcc:include-fixed",
-                    "/usr/lib/arm-none-eabi/include"],
-        "hosted_bait": ["features.h", "argp.h"],
-    },
+    "ppc-8540": dict(
+        PPC_BARE_METAL,
+        arch=["-mcpu=8540"] + PPC_BARE_METAL["arch"],
+        abi=["-mcpu=8540", "-msoft-float", "-msdata=none", "-G0"]),
+    "arm-cm3": dict(
+        ARM_NEWLIB,
+        arch=["-mcpu=cortex-m3", "-mthumb", "-mfloat-abi=soft",
+              "--specs=nano.specs"],
+        hard_float=["-mcpu=cortex-m4", "-mfpu=fpv4-sp-d16",
+                    "-mfloat-abi=hard"],
+        soft_float_libm=True,
+        abi=["-mcpu=cortex-m3", "-mthumb", "-mfloat-abi=soft"]),
     # Cortex-M4F (armv7e-m, hard-float ABI): the library stays integer-
     # only (tools/intcheck.py), but links into applications that pass
     # floats in FPU registers. QEMU's mps2-an386 is the AN385 board with a
     # Cortex-M4, the same memory map and board code.
-    "arm-cm4f": {
-        "cross": "arm-none-eabi-", "bsp": "arm-cm3", "qemu": "arm-cm4f",
-        "ext": ".elf",
-        "arch": ["-mcpu=cortex-m4", "-mthumb", "-mfloat-abi=hard",
-                 "-mfpu=fpv4-sp-d16", "--specs=nano.specs"],
+    "arm-cm4f": dict(
+        ARM_NEWLIB, qemu="arm-cm4f",
+        arch=["-mcpu=cortex-m4", "-mthumb", "-mfloat-abi=hard",
+              "-mfpu=fpv4-sp-d16", "--specs=nano.specs"],
         # GCC would otherwise keep 64-bit integers in FPU registers across
         # calls (vstr d8): FP instructions in an integer-only library. The
         # ABI (floats in s0-s15) is unchanged.
-        "library_arch": ["-mgeneral-regs-only"],
-        "link": ["--specs=rdimon.specs", "-nostartfiles",
-                 "-Wl,--gc-sections"],
-        "libs": [],
-        "hard_float": [],
-        "intcheck": "arm",
-        "soft_float_libm": False, "apt": ["arm-cm3"],
-        "abi": ["-mcpu=cortex-m4", "-mthumb", "-mfloat-abi=hard",
-                "-mfpu=fpv4-sp-d16"],
-        "headers": ["gcc:include", "gcc:include-fixed",
-                    "/usr/lib/arm-none-eabi/include"],
-        "hosted_bait": ["features.h", "argp.h"],
-    },
+        library_arch=["-mgeneral-regs-only"],
+        hard_float=[], soft_float_libm=False,
+        abi=["-mcpu=cortex-m4", "-mthumb", "-mfloat-abi=hard",
+             "-mfpu=fpv4-sp-d16"]),
     # Cortex-M0/M0+ (armv6-m, Thumb-1 only, no divide instruction): the
     # most common FPU-less MCUs. Its code runs unchanged on the Cortex-M3
     # of QEMU's mps2-an385, whose memory holds the suites' vectors (the
     # Cortex-M0 machines of QEMU 7.2 have 16 KiB of RAM), with the same
     # board code.
-    "arm-cm0": {
-        "cross": "arm-none-eabi-", "bsp": "arm-cm3", "qemu": "arm-cm3",
-        "ext": ".elf",
+    "arm-cm0": dict(
+        ARM_NEWLIB,
         # inline assembly in unified syntax, as on Thumb-2 (GCC's default
         # for Thumb-1 is the old divided syntax)
-        "arch": ["-mcpu=cortex-m0", "-mthumb", "-mfloat-abi=soft",
-                 "-masm-syntax-unified", "--specs=nano.specs"],
-        "link": ["--specs=rdimon.specs", "-nostartfiles",
-                 "-Wl,--gc-sections"],
-        "libs": [],
-        "hard_float": ["-mcpu=cortex-m4", "-mfpu=fpv4-sp-d16",
-                       "-mfloat-abi=hard"],
-        "intcheck": "arm",
-        "soft_float_libm": True, "apt": ["arm-cm3"],
-        "abi": ["-mcpu=cortex-m0", "-mthumb", "-mfloat-abi=soft"],
-        "headers": ["gcc:include", "gcc:include-fixed",
-                    "/usr/lib/arm-none-eabi/include"],
-        "hosted_bait": ["features.h", "argp.h"],
-    },
+        arch=["-mcpu=cortex-m0", "-mthumb", "-mfloat-abi=soft",
+              "-masm-syntax-unified", "--specs=nano.specs"],
+        hard_float=["-mcpu=cortex-m4", "-mfpu=fpv4-sp-d16",
+                    "-mfloat-abi=hard"],
+        soft_float_libm=True,
+        abi=["-mcpu=cortex-m0", "-mthumb", "-mfloat-abi=soft"]),
 }
 
 # RTEMS BSPs that QEMU runs. Their test-runner is linked a second time,
