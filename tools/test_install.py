@@ -68,6 +68,16 @@ def setUpModule():
     Prefix.prefix = os.path.dirname(os.path.dirname(os.path.dirname(pcs[0])))
 
 
+def pkg_config(target, *what):
+    """pkg-config of drdc-<target> in the installed prefix, as words."""
+    env = dict(os.environ, PKG_CONFIG_PATH=os.path.join(
+        Prefix.prefix, "lib", "pkgconfig"))
+    return subprocess.run(["pkg-config", "--define-variable=prefix="
+                           + Prefix.prefix, "drdc-" + target] + list(what),
+                          env=env, check=True, capture_output=True,
+                          text=True).stdout.split()
+
+
 def tearDownModule():
     shutil.rmtree(Prefix.destdir, ignore_errors=True)
 
@@ -77,15 +87,6 @@ class InstalledTree(unittest.TestCase):
         self.destdir = Prefix.destdir
         self.prefix = Prefix.prefix
 
-    def pkg_config(self, target, *what):
-        env = dict(os.environ, PKG_CONFIG_PATH=os.path.join(
-            self.prefix, "lib", "pkgconfig"))
-        r = subprocess.run(["pkg-config", "--define-variable=prefix="
-                            + self.prefix, "drdc-" + target] + list(what),
-                           env=env, capture_output=True, text=True)
-        self.assertEqual(0, r.returncode, r.stderr)
-        return r.stdout.split()
-
     def test_every_target_has_its_own_library_and_pc(self):
         for target, (fmt, abi) in TARGETS.items():
             lib = os.path.join(self.prefix, "lib", target, "libdrdc.a")
@@ -93,10 +94,10 @@ class InstalledTree(unittest.TestCase):
             out = subprocess.run([OBJDUMP[target], "-f", lib], check=True,
                                  capture_output=True, text=True).stdout
             self.assertIn("file format " + fmt, out)
-            cflags = self.pkg_config(target, "--cflags")
+            cflags = pkg_config(target, "--cflags")
             for flag in abi:
                 self.assertIn(flag, cflags, target)
-            libs = self.pkg_config(target, "--libs")
+            libs = pkg_config(target, "--libs")
             self.assertIn("-L" + os.path.dirname(lib), libs)
             # a link step of its own (CMake, most Makefiles) must pick the
             # same multilib of libgcc and libc as the compile
@@ -110,7 +111,7 @@ class InstalledTree(unittest.TestCase):
                          if l.strip().startswith("Tag_CPU_arch:")}
                 self.assertEqual({ARM_ARCH[target]}, archs, target)
         # freestanding PowerPC links libgcc for 64-bit division
-        self.assertIn("-lgcc", self.pkg_config("ppc-e500", "--libs"))
+        self.assertIn("-lgcc", pkg_config("ppc-e500", "--libs"))
 
     def test_headers_and_the_documents_they_cite(self):
         headers = sorted(os.path.basename(h) for pattern in
@@ -138,8 +139,7 @@ class InstalledTree(unittest.TestCase):
         exe = os.path.join(self.destdir, "client")
         subprocess.run(["gcc", "-std=c99", "-Wall", "-Werror",
                         os.path.join(TOP, "tests", "install", "client.c"),
-                        "-o", exe] + self.pkg_config("host", "--cflags",
-                                                     "--libs"),
+                        "-o", exe] + pkg_config("host", "--cflags", "--libs"),
                        check=True)
         nas = "".join("%d %d\n" % tuple(Fraction(x) * NAS_PER_DEGREE
                                         for x in p) for p in POINTS)
@@ -211,20 +211,13 @@ class Examples(unittest.TestCase):
     def test_cortex_m0_linked_in_steps_is_thumb1_throughout(self):
         """Compile with --cflags, link with --libs alone: every input of
         the image, libgcc's 64-bit division included, must be armv6-m."""
-        env = dict(os.environ, PKG_CONFIG_PATH=os.path.join(
-            self.prefix, "lib", "pkgconfig"))
-
-        def pc(what):
-            return subprocess.run(
-                ["pkg-config", "--define-variable=prefix=" + self.prefix,
-                 "drdc-arm-cm0", what], env=env, check=True,
-                capture_output=True, text=True).stdout.split()
         here = os.path.join(TOP, "examples")
         objects = []
         for src in ("common/pose_report.c", "cortex-m/platform.c"):
             obj = os.path.join(self.destdir, os.path.basename(src) + ".o")
             subprocess.run(["arm-none-eabi-gcc", "-std=c99", "-O2", "-c",
-                            "-I" + os.path.join(here, "common")] + pc("--cflags")
+                            "-I" + os.path.join(here, "common")]
+                           + pkg_config("arm-cm0", "--cflags")
                            + [os.path.join(here, src), "-o", obj], check=True)
             objects.append(obj)
         image = os.path.join(self.destdir, "steps-arm-cm0.elf")
@@ -232,7 +225,8 @@ class Examples(unittest.TestCase):
                         "--specs=nano.specs", "--specs=nosys.specs",
                         "-Wl,--gc-sections", "-T",
                         os.path.join(here, "cortex-m", "link.ld")] + objects
-                       + pc("--libs") + ["-o", image], check=True)
+                       + pkg_config("arm-cm0", "--libs") + ["-o", image],
+                       check=True)
         attrs = subprocess.run(["arm-none-eabi-readelf", "-A", image],
                                check=True, capture_output=True,
                                text=True).stdout
