@@ -25,7 +25,7 @@
 #include <drdc/fixed_types.h>
 #include <drdc/geo.h>
 #include <drdc/geo_ecef.h>
-#include <drdc/pose.h>
+#include <drdc/geo_pose.h>
 #include <drdc/types.h>
 
 #include "geo_consts.h"

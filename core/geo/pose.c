@@ -6,7 +6,7 @@
  *        convergence, {W} <-> {W-UTM}, {W-MGRS}, {l} <-> {W} through
  *        NED, and their Euler forms {We}, {We-UTM}, {We-MGRS}, {le}.
  */
-#include <drdc/pose.h>
+#include <drdc/geo_pose.h>
 
 #include <stddef.h>
 

@@ -12,7 +12,7 @@
  * value (Q46), so the only roundings are those of the trig values and
  * one per element per link (2^-61 and 2^-46 m: negligible).
  */
-#include <drdc/kinematics.h>
+#include <drdc/orient_kinematics.h>
 
 #include <stddef.h>
 

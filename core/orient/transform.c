@@ -4,7 +4,7 @@
  * @ingroup drdc_transform
  * @brief Homogeneous transforms, local (Q15.16) and global (Q47.16).
  */
-#include <drdc/transform.h>
+#include <drdc/orient_transform.h>
 
 #include <stddef.h>
 

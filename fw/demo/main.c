@@ -25,7 +25,7 @@
 #include <drdc/jaus_scaled.h>
 #include <drdc/nmea.h>
 #include <drdc/orient.h>
-#include <drdc/pose.h>
+#include <drdc/geo_pose.h>
 #include <drdc/time.h>
 #include <drdc/time_iso8601.h>
 #include <drdc/time_jaus.h>

@@ -5,7 +5,7 @@
  *        2 009 points forward and reverse, 1 000 local points, round trips.
  */
 #include <drdc/geo_ecef.h>
-#include <drdc/pose.h>
+#include <drdc/geo_pose.h>
 
 #include <stddef.h>
 
@@ -120,8 +120,8 @@ static void test_enu_and_ned(void)
 }
 
 #define M(v) ((int64_t)(v) * INT64_C(65536))
-#define LOCAL_TOL 1     /* pose.h: LSB of Q15.16 */
-#define TRIP_TOL 2      /* pose.h: LSB of Q47.16 height */
+#define LOCAL_TOL 1     /* geo_pose.h: LSB of Q15.16 */
+#define TRIP_TOL 2      /* geo_pose.h: LSB of Q47.16 height */
 
 /* {l} at a reference facing north (q = 1) is NED; facing east (yaw 90)
  * x is east, y south. */

@@ -1,12 +1,12 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /**
  * @file
- * @brief The bad-input rows of pose.h, and {W-MGRS}, {We-MGRS} and
+ * @brief The bad-input rows of geo_pose.h, and {W-MGRS}, {We-MGRS} and
  *        {le} <-> {We} against GeoConvert, CartConvert and SciPy
  *        (vectors_pose.h; the {W-UTM} and {l} conversions are checked in
  *        test_geo_utm.c and test_geo_ecef.c, next to their vectors).
  */
-#include <drdc/pose.h>
+#include <drdc/geo_pose.h>
 
 #include <stddef.h>
 #include <string.h>
@@ -295,7 +295,7 @@ static void test_we_round_trip_turns_the_yaw(void)
                             drdc_pose_bam_from_convergence(gamma));
 }
 
-/* pose.h bounds, the maxima measured on vectors_pose.h */
+/* geo_pose.h bounds, the maxima measured on vectors_pose.h */
 #define MGRS_Q_TOL 2     /* LSB of Q1.30 per quaternion part */
 #define MGRS_YAW_TOL 1   /* binary-angle LSB */
 #define CENTRE_TOL 1     /* nas: drdc_geo_from_utm()'s bound */

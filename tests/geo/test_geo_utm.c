@@ -7,7 +7,7 @@
  *        to 500 km outside a zone, and named zone-rule cases.
  */
 #include <drdc/geo.h>
-#include <drdc/pose.h>
+#include <drdc/geo_pose.h>
 
 #include <stddef.h>
 
@@ -236,7 +236,7 @@ static int64_t bam_dist(drdc_bam32_t a, drdc_bam32_t b)
 }
 
 #define M(v) ((int64_t)(v) * INT64_C(65536))
-/* pose.h bounds, the maxima measured here */
+/* geo_pose.h bounds, the maxima measured here */
 #define YAW_TOL 4       /* binary-angle LSB (3.4e-7 degree) */
 #define PR_TOL 3        /* pitch and roll, binary-angle LSB */
 #define POSE_ROWS 2000u /* rows of the 22 000 used (QEMU time) */

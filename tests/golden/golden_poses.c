@@ -10,7 +10,7 @@
 #include <stddef.h>
 
 #include <drdc/jaus_pose.h>
-#include <drdc/pose.h>
+#include <drdc/geo_pose.h>
 
 #include "golden.h"
 

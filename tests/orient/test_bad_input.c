@@ -21,7 +21,7 @@
  * until this suite found that the scalar part and the parts of b do not.
  */
 #include <drdc/orient.h>
-#include <drdc/transform.h>
+#include <drdc/orient_transform.h>
 
 #include <stddef.h>
 

@@ -9,8 +9,8 @@
  * Issue 5's bounds: position under 10 um, rotation within 8 LSB per
  * element; the tolerances below are the measured maxima.
  */
-#include <drdc/kinematics.h>
-#include <drdc/transform.h>
+#include <drdc/orient_kinematics.h>
+#include <drdc/orient_transform.h>
 
 #include <stddef.h>
 

@@ -7,7 +7,7 @@
 
 #include <stdint.h>
 
-#include <drdc/kinematics.h>
+#include <drdc/orient_kinematics.h>
 
 #include "orient_test_util.h"
 

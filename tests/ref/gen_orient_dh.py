@@ -143,7 +143,7 @@ def generate():
 
 #include <stdint.h>
 
-#include <drdc/kinematics.h>
+#include <drdc/orient_kinematics.h>
 
 #include "orient_test_util.h"
 

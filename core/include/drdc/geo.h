@@ -30,7 +30,7 @@
  * (LSB 3.5e-18).
  *
  * **Order**: these functions take latitude first, as GeographicLib does;
- * the pose structures of pose.h keep the paper's order, longitude first
+ * the pose structures of geo_pose.h keep the paper's order, longitude first
  * (docs/conventions.md, section 9: initialise them by field name).
  *
  * **Method**: the conformal latitude by its Fourier series (8 terms,

@@ -13,7 +13,7 @@
 #include <stdint.h>
 
 #include <drdc/jaus_scaled.h>
-#include <drdc/pose.h>
+#include <drdc/geo_pose.h>
 #include <drdc/status.h>
 
 /**

@@ -8,7 +8,7 @@
 #ifndef DRDC_KINEMATICS_H
 #define DRDC_KINEMATICS_H
 
-#include <drdc/transform.h>
+#include <drdc/orient_transform.h>
 
 /**
  * @defgroup drdc_kinematics Manipulator kinematics
