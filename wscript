@@ -494,11 +494,11 @@ def build_library(bld, cflags):
         bld.objects(source=nodes, target="drdc_" + kind,
                     # GCC's flags; clang (the fuzz build) keeps its own
                     cflags=lib_cflags + (flags if gcc else []),
-                    includes=["fixed/include", "core/include"], idx=1)
+                    includes=["fixed/internal", "fixed/include", "core/include"], idx=1)
     bld.stlib(source=[n for n in sources if n not in for_flash],
               target="drdc", name="libdrdc", idx=1, cflags=lib_cflags,
               use=["drdc_" + kind for kind in sorted(FOR_FLASH)],
-              includes=["fixed/include", "core/include"],
+              includes=["fixed/internal", "fixed/include", "core/include"],
               export_includes=["fixed/include", "core/include"],
               install_path="${LIBDIR}")
     bld.install_files("${INCLUDEDIR}/drdc",

@@ -13,6 +13,7 @@
 #ifndef DRDC_FIXED_IMPL_H
 #define DRDC_FIXED_IMPL_H
 
+#include <drdc/compiler.h>
 #include <stdint.h>
 
 #include <drdc/fixed_wide.h>
@@ -205,7 +206,7 @@ static inline int fx_le_u128(fx_u128_t a, fx_u128_t b)
  * its 64-byte PowerPC frame, stacked on log_parts(), took
  * drdc_fx_asinh_q5_58() to 272 bytes of stack, over issue 8's 256.
  */
-static inline __attribute__((always_inline)) int
+static inline DRDC_ALWAYS_INLINE int
 fx_div_round_u128(fx_u128_t n, uint64_t d, uint64_t *q)
 {
   unsigned s;

@@ -15,6 +15,7 @@
  * |s| <= 3 - 2 sqrt 2 = 0.1716, ln y = e ln 2 + 2 atanh(s), atanh(s) by
  * its series s + s^3/3 + ... (s^2 <= 0.0295: <= 13 terms to 2^-62).
  */
+#include <drdc/compiler.h>
 #include <drdc/fixed_hyper.h>
 
 #include <stddef.h>
@@ -103,7 +104,7 @@ static uint64_t sinh_cosh_mag(uint64_t x, int plus)
 
 /* *out = sinh(x) (plus == 0) or cosh(x) (plus == 1): one body for the
  * two public entries, which call it as their last step. */
-static __attribute__((noinline)) drdc_status_t
+static DRDC_NOINLINE drdc_status_t
 sinh_cosh(drdc_q5_58_t x, int plus, drdc_q5_58_t *out)
 {
   uint64_t r;
@@ -170,7 +171,7 @@ static unsigned top_bit(uint64_t v)
  * fx_div_round_u128() of (x 2^62, d) bit for bit. A leaf, out of line
  * so that its registers are not saved under any call (#3: worst-case
  * stack). */
-static __attribute__((noinline)) uint64_t div_q62_rcp(uint64_t x, uint64_t d,
+static DRDC_NOINLINE uint64_t div_q62_rcp(uint64_t x, uint64_t d,
                                                       uint32_t rcp)
 {
   unsigned s;
@@ -220,7 +221,7 @@ static inline uint64_t div_q62(uint64_t x, uint64_t d)
 
 /* ln(num / den) = e ln 2 + 2 atanh(s), for num, den > 0: writes e and
  * s (Q62 magnitude, sign in *s_neg). */
-static inline __attribute__((always_inline)) void
+static inline DRDC_ALWAYS_INLINE void
 log_parts(uint64_t num, uint64_t den, int32_t *e, uint64_t *s, int *s_neg)
 {
   unsigned pn = top_bit(num);
@@ -270,7 +271,7 @@ static uint64_t log_q58(int32_t e, uint64_t at, int s_neg, unsigned half)
 
 /* *out = atanh(s) / 16 rounded (Q62 -> Q58), negated when neg != 0:
  * |s| <= 0.1716 in Q62 */
-static __attribute__((noinline)) drdc_status_t series_out(uint64_t s, int neg,
+static DRDC_NOINLINE drdc_status_t series_out(uint64_t s, int neg,
                                                           drdc_q5_58_t *out)
 {
   uint64_t r = (atanh_series_q62(s) + 8u) >> 4;
@@ -283,7 +284,7 @@ static __attribute__((noinline)) drdc_status_t series_out(uint64_t s, int neg,
  * logarithm: the large-argument branch of each, inlined (with log_parts())
  * into the public function so that no frame of its own stacks between it
  * and the divisions and the series (#3: worst-case stack) */
-static inline __attribute__((always_inline)) drdc_status_t
+static inline DRDC_ALWAYS_INLINE drdc_status_t
 log_out(drdc_q5_58_t x, int asinh, drdc_q5_58_t *out)
 {
   uint64_t ax = fx_abs64(x);
@@ -317,7 +318,7 @@ log_out(drdc_q5_58_t x, int asinh, drdc_q5_58_t *out)
 /* x / sqrt(1 + x^2) in Q62 (magnitude): the atanh argument of asinh(x)
  * for |x| <= 3 - 2 sqrt 2, out of line so that its calls do not stack
  * under the series (#3) */
-static __attribute__((noinline)) uint64_t asinh_series_arg(drdc_q5_58_t x)
+static DRDC_NOINLINE uint64_t asinh_series_arg(drdc_q5_58_t x)
 {
   uint64_t h = drdc_fx_hypot_s64(x, INT64_C(1) << 58); /* Q58 */
 

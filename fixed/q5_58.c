@@ -5,6 +5,7 @@
  * @brief Q5.58 sin/cos, atan2, sqrt and quotient (see fixed_q5_58.h for
  *        the method and error of each).
  */
+#include <drdc/compiler.h>
 #include <drdc/fixed_q5_58.h>
 
 #include <stdbool.h>
@@ -47,7 +48,7 @@ static int64_t mul(int64_t a, int64_t b)
  * overflow). A leaf on magnitudes, out of line, so that its registers are
  * saved under no call and the signs wait in the caller (#3, #8:
  * worst-case stack). */
-static __attribute__((noinline)) uint64_t quotient_mag(uint64_t ma,
+static DRDC_NOINLINE uint64_t quotient_mag(uint64_t ma,
                                                        uint64_t mb,
                                                        uint32_t rcp)
 {
@@ -158,7 +159,7 @@ drdc_q5_58_t drdc_fx_div_q5_58_unchecked(drdc_q5_58_t a, drdc_q5_58_t b)
 /* sin and cos of x (Q5.58 radians, |x| <= 16): the body of
  * drdc_fx_sincos_q5_58(), inlined into atan2 so that its frame does not
  * stack on atan2's (#3) */
-static inline __attribute__((always_inline)) void
+static inline DRDC_ALWAYS_INLINE void
 sincos_kernel(drdc_q5_58_t x, drdc_q5_58_t *s, drdc_q5_58_t *c)
 {
   /* (-1)^i / (2i+1)! and (-1)^i / (2i)! in Q5.58, i = 0..9: on |r| <= pi/4

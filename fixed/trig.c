@@ -8,6 +8,7 @@
  * sin and cos are +-S(r) or +-S(2^30 - r), S the first-quadrant kernel,
  * so every symmetry of sin and cos holds bit for bit.
  */
+#include <drdc/compiler.h>
 #include <drdc/fixed_trig.h>
 
 #include <stddef.h>
@@ -53,7 +54,7 @@ void drdc_fx_sincos_bam32(drdc_bam32_t a, drdc_q1_30_t *s, drdc_q1_30_t *c)
 }
 
 /* Not inlined into cos below, which would copy the kernel again. */
-__attribute__((noinline)) drdc_q1_30_t drdc_fx_sin_bam32(drdc_bam32_t a)
+DRDC_NOINLINE drdc_q1_30_t drdc_fx_sin_bam32(drdc_bam32_t a)
 {
   return sin_of(a >> 30, a & (FX_BAM_QUARTER - 1u));
 }

@@ -47,7 +47,7 @@ def main():
     r = subprocess.run(["cppcheck", "--addon=misra", "--std=c99", "-q",
                         "--error-exitcode=0", "--suppress=missingIncludeSystem",
                         "--template={file}:{line}:{column}: {severity}: {message} [{id}]",
-                        "-Ifixed/include", "-Icore/include"] + sources,
+                        "-Ifixed/internal", "-Ifixed/include", "-Icore/include"] + sources,
                        cwd=TOP, capture_output=True, text=True)
     covered = collections.Counter()
     bad = []

@@ -16,6 +16,7 @@
  * deep call (atan2, sin/cos, the roots) runs from a frame that keeps
  * only what it needs (issue 8's stack goal).
  */
+#include <drdc/compiler.h>
 #include <drdc/geo_ecef.h>
 
 #include <stddef.h>
@@ -54,7 +55,7 @@ static inline drdc_status_t point_status(drdc_nas_t lat, drdc_nas_t lon,
 
 /* out of line (one copy for the functions of ecef.c and pose.c that
  * check points): a leaf, called before any deep chain starts */
-__attribute__((noinline)) drdc_status_t drdc__geo_check_point(
+DRDC_NOINLINE drdc_status_t drdc__geo_check_point(
   const drdc_geo_point_t *p)
 {
   return point_status(p->lat, p->lon, p->height);
@@ -79,7 +80,7 @@ static int64_t lon_rad(drdc_nas_t lon)
 /* (a, b) <- (a c + b s, b c - a s) for c = cos t, s = sin t: the
  * products of turn(), out of line so that the two old values and a sum
  * it keeps across them are not on the stack under the sin/cos */
-static __attribute__((noinline)) void turn_apply(const int64_t sc[2],
+static DRDC_NOINLINE void turn_apply(const int64_t sc[2],
                                                  int64_t *a, int64_t *b)
 {
   int64_t a0 = *a;
@@ -149,7 +150,7 @@ static inline int64_t prime_vertical_q36(int64_t s)
  * latitude, then those of the longitude, share one pair of slots, and
  * only cos phi and N + h are kept across the second sin/cos: the frame
  * under the roots and sin/cos of every tangent-plane chain stays small. */
-static inline __attribute__((always_inline)) void acc_body(
+static inline DRDC_ALWAYS_INLINE void acc_body(
   const drdc_geo_point_t *p, bool sub, int64_t *x, int64_t *y, int64_t *z)
 {
   int64_t sc[2] = { 0, 0 };
@@ -364,7 +365,7 @@ static inline drdc_nas_t angle_nas(int64_t y, int64_t x, int64_t *slot)
  * b->v, the longitude into b->u. A sibling call of its caller, so that
  * no status is kept across the atan2 in the caller's frame; never
  * fails. */
-static __attribute__((noinline)) drdc_status_t lat_lon_into(bowring_t *b,
+static DRDC_NOINLINE drdc_status_t lat_lon_into(bowring_t *b,
                                                             drdc_nas_t lon)
 {
   b->v = angle_nas(b->v, b->u, &b->z);
@@ -379,7 +380,7 @@ static __attribute__((noinline)) drdc_status_t lat_lon_into(bowring_t *b,
  * that keeps only the longitude and b, whose free slots take the
  * radians. Out of line: not merged into the frame of its caller, which
  * holds the bowring_t. */
-__attribute__((noinline)) drdc_status_t drdc__geo_geodetic_q36(bowring_t *b)
+DRDC_NOINLINE drdc_status_t drdc__geo_geodetic_q36(bowring_t *b)
 {
   drdc_nas_t lon = 0;
   drdc_status_t st;
@@ -510,7 +511,7 @@ drdc_status_t drdc_geo_to_ned(const drdc_geo_point_t *ref,
 /* turn() of b's (north, up) by -latitude (lon false) or of its (east,
  * horizontal) by -longitude (lon true), the slots chosen here: its
  * caller keeps b alone, not the addresses of two of its slots */
-static __attribute__((noinline)) void turn_plane(int64_t t, bowring_t *b,
+static DRDC_NOINLINE void turn_plane(int64_t t, bowring_t *b,
                                                  bool lon)
 {
   int64_t sc[2] = { 0, 0 };
@@ -526,7 +527,7 @@ static __attribute__((noinline)) void turn_plane(int64_t t, bowring_t *b,
  * argument on Cortex-M3), and cos phi then waits in b->p (free until the
  * inverse) rather than in registers across the second sin/cos: a frame
  * that keeps b, p and N + h only. */
-static __attribute__((noinline)) drdc_status_t
+static DRDC_NOINLINE drdc_status_t
 acc_plane(const geo_lat_lon_t *p, bowring_t *b)
 {
   int64_t sc[2] = { 0, 0 };
@@ -550,7 +551,7 @@ acc_plane(const geo_lat_lon_t *p, bowring_t *b)
 
 /* point_status() of drdc__geo_ecef_of_plane()'s point: a leaf, so that its
  * caller keeps only ref and b across it */
-static __attribute__((noinline)) drdc_status_t
+static DRDC_NOINLINE drdc_status_t
 plane_point_status(const geo_lat_lon_t *ref, const bowring_t *b)
 {
   return point_status(ref->lat, ref->lon, b->p);
@@ -563,7 +564,7 @@ plane_point_status(const geo_lat_lon_t *ref, const bowring_t *b)
  * point's ECEF added. The check here, and acc_plane()'s DRDC_OK returned by a
  * sibling call: a caller that holds the latitude and longitude alone (16 bytes)
  * saves no register across the check (issue 8's stack). */
-__attribute__((noinline)) drdc_status_t
+DRDC_NOINLINE drdc_status_t
 drdc__geo_ecef_of_plane(const geo_lat_lon_t *ref, bowring_t *b)
 {
   drdc_status_t st = plane_point_status(ref, b);

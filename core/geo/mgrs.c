@@ -14,6 +14,7 @@
  * projection (encode from geographic, drdc_geo_mgrs_encode() in
  * utm_forward.c) or of the Q47.16 input (from UTM).
  */
+#include <drdc/compiler.h>
 #include <drdc/geo_mgrs.h>
 
 #include <stdbool.h>
@@ -53,7 +54,7 @@ static const char *const upsrows[2] = { "ABCDEFGHJKLMNPQRSTUVWXYZ",
 /* index of c in set, letters in either case; -1 when absent. Out of
  * line: the decoder calls it at seven places, a copy each when inlined
  * (240/412 B of flash on Cortex-M3/PowerPC, issue 8) */
-static __attribute__((noinline)) int32_t lookup(const char *set, char c)
+static DRDC_NOINLINE int32_t lookup(const char *set, char c)
 {
   static const char upper[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZ";
   static const char lower[] = "abcdefghijklmnopqrstuvwxyz";

@@ -6,6 +6,7 @@
  *        convergence, {W} <-> {W-UTM}, {W-MGRS}, {l} <-> {W} through
  *        NED, and their Euler forms {We}, {We-UTM}, {We-MGRS}, {le}.
  */
+#include <drdc/compiler.h>
 #include <drdc/geo_pose.h>
 
 #include <stddef.h>
@@ -31,7 +32,7 @@ drdc_bam32_t drdc_pose_bam_from_convergence(drdc_nas_t convergence)
  * turn_about_down() once the half angle is known: r and the sine and
  * cosine are not in a frame under the division that finds it (issue 8's
  * stack). */
-static __attribute__((noinline)) drdc_status_t
+static DRDC_NOINLINE drdc_status_t
 turn_by_half(const drdc_quat_t *q, drdc_bam32_t half, drdc_quat_t *out)
 {
   drdc_q1_30_t s = 0;
@@ -199,7 +200,7 @@ static void load_ned(const drdc_vec3_q15_16_t *ned, geo_bowring_t *b)
  * `used` (callers GCC cannot see) keeps the pointers: IPA-SRA would pass
  * the three values instead, copied in the frames of position_*() (16
  * bytes more each on PowerPC); the linker still drops it with them. */
-static __attribute__((noinline, used)) drdc_status_t ecef_at(
+static DRDC_NOINLINE __attribute__((used)) drdc_status_t ecef_at(
   const drdc_nas_t *lat, const drdc_nas_t *lon, const drdc_q47_16_t *height,
   geo_bowring_t *b)
 {
@@ -215,7 +216,7 @@ static __attribute__((noinline, used)) drdc_status_t ecef_at(
  * the latitude, longitude and ellipsoidal height into out, unless out is
  * NULL (the status alone); out unchanged on error. Only out is kept
  * across the calls. */
-static __attribute__((noinline)) drdc_status_t position_w(
+static DRDC_NOINLINE drdc_status_t position_w(
   drdc_q47_16_t geoid_separation, const drdc_WPose_t *ref,
   const drdc_vec3_q15_16_t *ned, drdc_WPose_t *out)
 {
@@ -238,7 +239,7 @@ static __attribute__((noinline)) drdc_status_t position_w(
 
 /* the status of drdc_pose_w_from_l()'s relative attitude alone (the
  * product in this frame, discarded) */
-static __attribute__((noinline)) drdc_status_t compose_status(
+static DRDC_NOINLINE drdc_status_t compose_status(
   const drdc_WPose_t *ref, const drdc_lPose_t *l)
 {
   drdc_quat_t q = { 0, 0, 0, 0 };
@@ -249,7 +250,7 @@ static __attribute__((noinline)) drdc_status_t compose_status(
 /* drdc_pose_w_from_l()'s relative attitude straight into out->q (written
  * only on DRDC_OK); taking the poses, so that the caller keeps no
  * pointer to their quaternions beside them */
-static __attribute__((noinline)) drdc_status_t compose_into(
+static DRDC_NOINLINE drdc_status_t compose_into(
   const drdc_WPose_t *ref, const drdc_lPose_t *l, drdc_WPose_t *out)
 {
   return drdc_quat_compose(&ref->q, &l->q, &out->q);
@@ -304,7 +305,7 @@ drdc_status_t drdc_pose_w_from_l(const drdc_WPose_t *ref,
  * the caller keeps no pointer to ref across this call (the 64-bit
  * separation first: on Cortex-M3 the arguments then leave one word
  * fewer on the caller's stack). */
-static __attribute__((noinline)) drdc_status_t ned_of(
+static DRDC_NOINLINE drdc_status_t ned_of(
   drdc_q47_16_t geoid_separation, const drdc_WPose_t *ref,
   const drdc_WPose_t *w, drdc_vec3_q15_16_t *ned, drdc_quat_t *inv)
 {
@@ -337,7 +338,7 @@ static __attribute__((noinline)) drdc_status_t ned_of(
  * attitude is composed into inv, no longer needed, for its status
  * alone). Out of line, so that no status is kept across a call in the
  * caller's frame. */
-static __attribute__((noinline)) drdc_status_t first_error(
+static DRDC_NOINLINE drdc_status_t first_error(
   drdc_quat_t *inv, const drdc_quat_t *wq, drdc_status_t rot)
 {
   drdc_status_t st = drdc_quat_compose(inv, wq, inv);
@@ -437,7 +438,7 @@ static void ellipsoidal_we(const drdc_WePose_t *we, drdc_q47_16_t n,
  * relative attitude of drdc_pose_le_from_we() and of
  * drdc_pose_we_from_le(), in its own frame (the second quaternion is not
  * on the caller's stack under the rotation) */
-static __attribute__((noinline)) drdc_status_t compose_euler(
+static DRDC_NOINLINE drdc_status_t compose_euler(
   drdc_quat_t *inv, const drdc_euler_t *e)
 {
   drdc_quat_t q = { 0, 0, 0, 0 };
@@ -447,7 +448,7 @@ static __attribute__((noinline)) drdc_status_t compose_euler(
 }
 
 /* position_w() for a {We} reference and result */
-static __attribute__((noinline)) drdc_status_t position_we(
+static DRDC_NOINLINE drdc_status_t position_we(
   drdc_q47_16_t geoid_separation, const drdc_WePose_t *ref,
   const drdc_vec3_q15_16_t *ned, drdc_WePose_t *out)
 {
@@ -518,7 +519,7 @@ drdc_status_t drdc_pose_we_from_le(const drdc_WePose_t *ref,
 /* ned_of() for two {We} poses, read in place (no {W} copy of either on
  * the stack): the same checks, sums and statuses; the conjugate of the
  * quaternion of ref's angles into *inv. */
-static __attribute__((noinline)) drdc_status_t ned_of_we(
+static DRDC_NOINLINE drdc_status_t ned_of_we(
   drdc_q47_16_t geoid_separation, const drdc_WePose_t *ref,
   const drdc_WePose_t *we, drdc_vec3_q15_16_t *ned, drdc_quat_t *inv)
 {

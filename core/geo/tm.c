@@ -18,6 +18,7 @@
  * series. Every term is Q5.58; the series' own truncation (n^7 = 4e-20)
  * is far below the 2^-58 resolution of the arithmetic.
  */
+#include <drdc/compiler.h>
 #include "geo_impl.h"
 
 /* the product of the series' Horner and sine loops, inlined (one copy
@@ -35,7 +36,7 @@ static inline int64_t tm_mul(int64_t a, int64_t b)
  * recurrence (the Chebyshev polynomials of the second kind, |U_n| <= n+1)
  * amplifies them to a few LSB at most. Trailing zero coefficients are
  * skipped (exact zeros). */
-static inline __attribute__((always_inline)) int64_t
+static inline DRDC_ALWAYS_INLINE int64_t
 sine_series(const int64_t *coef, unsigned terms, int64_t s2, int64_t c2)
 {
   int64_t a = 2 * c2;
@@ -83,7 +84,7 @@ typedef struct tm_zeta {
  * and sinh, cosh of 2 eta, which the caller leaves in z->r1, i1, r2, i2
  * (the recurrence's slots, free until it starts): cos 2 zeta = c2 ch2 -
  * i s2 sh2, sin 2 zeta = s2 ch2 + i c2 sh2 */
-static inline __attribute__((always_inline)) void
+static inline DRDC_ALWAYS_INLINE void
 zeta_set(tm_zeta_t *z, int64_t *sr, int64_t *si)
 {
   z->c2[0] = drdc__geo_mul(z->i1, z->i2);
@@ -103,7 +104,7 @@ zeta_set(tm_zeta_t *z, int64_t *sr, int64_t *si)
  * held 80 bytes of frame on Cortex-M3, the calls 40 + 12 (2 %
  * of drdc_geo_to_utm()'s cycles on PowerPC, the library 1 KB smaller:
  * the loops of horner() are no longer inlined into each series). */
-static __attribute__((noinline)) void clenshaw(const int64_t *coef,
+static DRDC_NOINLINE void clenshaw(const int64_t *coef,
                                                bool deriv, tm_zeta_t *z,
                                                const int64_t c2[2])
 {
@@ -135,7 +136,7 @@ static __attribute__((noinline)) void clenshaw(const int64_t *coef,
 /* After clenshaw() over the coefficients: the sum sin(2 zeta) b_1 =
  * dxi + i deta into *sr, *si, which held sin 2 zeta (zeta_set()): no
  * second copy is on the stack. */
-static __attribute__((noinline)) void krueger_sum(const tm_zeta_t *z,
+static DRDC_NOINLINE void krueger_sum(const tm_zeta_t *z,
                                                   int64_t *sr, int64_t *si)
 {
   int64_t d = drdc__geo_mul(*sr, z->r1) - drdc__geo_mul(*si, z->i1);
@@ -148,7 +149,7 @@ static __attribute__((noinline)) void krueger_sum(const tm_zeta_t *z,
  * 1 + cos(2 zeta) b_1 - b_2 = p - i q, p into z->c2[0] and q into
  * z->c2[1]. The series' stages call clenshaw() and these directly (one
  * frame fewer on the chain than a wrapper would add). */
-static __attribute__((noinline)) void krueger_deriv(tm_zeta_t *z)
+static DRDC_NOINLINE void krueger_deriv(tm_zeta_t *z)
 {
   int64_t d = (GEO_ONE + (drdc__geo_mul(z->c2[0], z->r1) -
                           drdc__geo_mul(z->c2[1], z->i1))) -
@@ -246,7 +247,7 @@ static int64_t tm_atan(int64_t q)
  * d^2/6 + d^4/120) and cos d = 1 - d^2/2 + d^4/24 - d^6/720 (first omitted
  * terms d^7/5040 and d^8/40320 below 1e-20), then the addition theorems:
  * 11 products instead of a full sin/cos. */
-static __attribute__((noinline)) void rotate_small(int64_t s, int64_t c,
+static DRDC_NOINLINE void rotate_small(int64_t s, int64_t c,
                                                    int64_t d, int64_t *s_out,
                                                    int64_t *c_out)
 {
@@ -273,7 +274,7 @@ static __attribute__((noinline)) void rotate_small(int64_t s, int64_t c,
  * term is below 2e-21 and the 10 rounded products add about 1 LSB. The
  * point scale needs sqrt((1 - e^2 sin^2 phi) (p^2 + q^2)), whose argument
  * lies within 1 - 0.0113 .. 1 + 0.0046 in the whole domain. */
-static __attribute__((noinline)) int64_t tm_sqrt1p(int64_t u)
+static DRDC_NOINLINE int64_t tm_sqrt1p(int64_t u)
 {
   static const int64_t coef[10] = {
     INT64_C(1) << 58,          INT64_C(1) << 57,         -(INT64_C(1) << 55),
@@ -321,7 +322,7 @@ typedef struct tm_fwd {
  * = chi (xi' - chi is added by fwd_xi()), out->eta = eta', out->k = cos
  * chi, out->gamma = sinh eta', st->ratio = cos phi (fwd_ratio()
  * divides); 0 beyond the series' domain */
-static __attribute__((noinline)) int fwd_sphere(tm_fwd_t *st, geo_tm_t *out)
+static DRDC_NOINLINE int fwd_sphere(tm_fwd_t *st, geo_tm_t *out)
 {
   int64_t chi;
   int64_t tanh_eta;
@@ -351,7 +352,7 @@ static __attribute__((noinline)) int fwd_sphere(tm_fwd_t *st, geo_tm_t *out)
 /* the scale's cos chi / cos phi (cos chi in out->k, cos phi in
  * st->ratio, from fwd_sphere()) into st->ratio, its limit at the poles:
  * the division's chain from a frame of its own */
-static __attribute__((noinline)) void fwd_ratio(tm_fwd_t *st,
+static DRDC_NOINLINE void fwd_ratio(tm_fwd_t *st,
                                                 const geo_tm_t *out)
 {
   st->ratio = (st->ratio > 0) ? geo_div(out->k, st->ratio) : GEO_POLE_RATIO;
@@ -362,7 +363,7 @@ static __attribute__((noinline)) void fwd_ratio(tm_fwd_t *st,
  * domain); far from the central meridian near the poles |q| exceeds
  * tm_atan()'s 0.25: then 0, and the caller takes the full atan2 (from
  * its own small frame). out->xi holds chi, out->k cos chi. */
-static __attribute__((noinline)) int fwd_xi(const tm_fwd_t *st,
+static DRDC_NOINLINE int fwd_xi(const tm_fwd_t *st,
                                             geo_tm_t *out)
 {
   int64_t q = GEO_ONE - st->clam;
@@ -379,7 +380,7 @@ static __attribute__((noinline)) int fwd_xi(const tm_fwd_t *st,
 /* cos 2 zeta at xi' + i eta' into z, sin 2 zeta into out->gamma and
  * out->k (see fwd_series()); out of line: its products' temporaries are
  * not in the frame that holds z under the recurrence */
-static __attribute__((noinline)) void fwd_zeta(const tm_fwd_t *st,
+static DRDC_NOINLINE void fwd_zeta(const tm_fwd_t *st,
                                                geo_tm_t *out, tm_zeta_t *z)
 {
   z->c2[0] = drdc__geo_mul(st->schi, st->ch);                    /* sin xi' */
@@ -398,7 +399,7 @@ static __attribute__((noinline)) void fwd_zeta(const tm_fwd_t *st,
  * cos xi' = cos chi cos lam cosh eta': no exponential and no sin/cos of
  * xi'. Adds the sum to out->xi, out->eta; p and q to out->gamma, out->k
  * (which held sinh eta' and cos chi). */
-static __attribute__((noinline)) void fwd_series(const tm_fwd_t *st,
+static DRDC_NOINLINE void fwd_series(const tm_fwd_t *st,
                                                  geo_tm_t *out)
 {
   tm_zeta_t z;
@@ -420,7 +421,7 @@ static __attribute__((noinline)) void fwd_series(const tm_fwd_t *st,
  * out->k) into out->k: k0 A/a sqrt(1 - e^2 sin^2 phi) (cos chi / cos
  * phi) cosh eta' times |p + i q|, the two roots as one. Out of line, so
  * that the root's chain starts from a frame that keeps one value. */
-static __attribute__((noinline)) void fwd_scale(const tm_fwd_t *st,
+static DRDC_NOINLINE void fwd_scale(const tm_fwd_t *st,
                                                 geo_tm_t *out)
 {
   int64_t p = drdc__geo_mul(st->kfac, drdc__geo_mul(out->gamma, out->gamma)
@@ -442,7 +443,7 @@ static __attribute__((noinline)) void fwd_scale(const tm_fwd_t *st,
 /* the convergence's atan2(y, x) arguments into st->slam, st->clam (no
  * longer needed there) from p, q in out->gamma, out->k, before
  * fwd_scale() overwrites q */
-static __attribute__((noinline)) void fwd_conv_args(tm_fwd_t *st,
+static DRDC_NOINLINE void fwd_conv_args(tm_fwd_t *st,
                                                    const geo_tm_t *out)
 {
   int64_t y = drdc__geo_mul(st->schi, st->slam);
@@ -458,7 +459,7 @@ static __attribute__((noinline)) void fwd_conv_args(tm_fwd_t *st,
  * of the quotient, |y| <= x / 4 tested before dividing (so the quotient
  * cannot overflow and is at most 0.25): 1; beyond, 0, and the caller
  * takes the full atan2 from its own small frame. */
-static __attribute__((noinline)) int fwd_gamma(const tm_fwd_t *st,
+static DRDC_NOINLINE int fwd_gamma(const tm_fwd_t *st,
                                                geo_tm_t *out)
 {
   if ((st->clam > 0) && (st->slam <= (st->clam / 4))
@@ -472,7 +473,7 @@ static __attribute__((noinline)) int fwd_gamma(const tm_fwd_t *st,
 /* the forward projection's stages in the caller's frame, on its state
  * (inline, so that no frame of its own lies between the caller and the
  * stages) */
-static inline __attribute__((always_inline)) int
+static inline DRDC_ALWAYS_INLINE int
 tm_forward_stages(tm_fwd_t *st, geo_tm_t *out)
 {
   if (fwd_sphere(st, out) == 0) {
@@ -549,7 +550,7 @@ drdc_status_t drdc_geo_tm_forward(drdc_nas_t lat, drdc_nas_t dlon,
  * scratch until the end); sin 2 zeta and then the sum wait in tm->gamma,
  * tm->k, free until the caller's forward: no slot of this frame has its
  * address taken but the recurrence's */
-static __attribute__((noinline)) void rev_series(geo_tm_t *tm)
+static DRDC_NOINLINE void rev_series(geo_tm_t *tm)
 {
   tm_zeta_t z;
 

@@ -9,6 +9,7 @@
  *        projection's body in their own frames (issue 8's stack); the
  *        reverse is in utm_reverse.c.
  */
+#include <drdc/compiler.h>
 #include <drdc/geo.h>
 
 #include <stddef.h>
@@ -97,7 +98,7 @@ static int64_t q36_from_angle(int64_t a)
  * status of the first check that fails. The caller's frame then keeps
  * this one code and out across the projection, not lat, lon, zone and
  * the flags (issue 8's stack). */
-static __attribute__((noinline)) int32_t
+static DRDC_NOINLINE int32_t
 forward_args(int32_t zone, const void *out, geo_tm_t *tm)
 {
   drdc_nas_t lat = tm->xi;
@@ -136,13 +137,13 @@ forward_args(int32_t zone, const void *out, geo_tm_t *tm)
  * utm_forward() share one struct on the stack, and the caller writes
  * convergence and scale from it. Out of line with three arguments (no
  * stack argument): its values are not in utm_forward()'s frame. */
-static __attribute__((noinline)) drdc_status_t
+static DRDC_NOINLINE drdc_status_t
 ups_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm);
 
 /* After drdc__geo_ups_forward(): x and y in tm's xi and eta slots to easting
  * and northing, checked, into out. Out of line, one copy for
  * grid_to_utm() (a sibling call). */
-static __attribute__((noinline)) drdc_status_t
+static DRDC_NOINLINE drdc_status_t
 ups_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
 {
   bool north = (code < GEO_CODE_SOUTH);
@@ -170,7 +171,7 @@ ups_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
  * request and the hemisphere from forward_args()'s code. Out of line,
  * after drdc__geo_tm_forward() has returned: its values (the offsets, the
  * rounded metres) are not in the frame under the projection. */
-static __attribute__((noinline)) drdc_status_t
+static DRDC_NOINLINE drdc_status_t
 utm_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
 {
   bool north = (code < GEO_CODE_SOUTH);
@@ -213,7 +214,7 @@ utm_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
  * poses and the reverse (utm_reverse.c's grid_reverse(), hence external)
  * share one copy of the dispatch. Out of line (noinline): called, never
  * copied, from this file's entries too. */
-__attribute__((noinline)) int drdc__geo_grid_forward_projection(int32_t code,
+DRDC_NOINLINE int drdc__geo_grid_forward_projection(int32_t code,
                                                          geo_tm_t *tm)
 {
   if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
@@ -226,7 +227,7 @@ __attribute__((noinline)) int drdc__geo_grid_forward_projection(int32_t code,
  * out: ups_from_tm() or utm_from_tm() by the zone of forward_args()'s
  * code, each a sibling call; one copy of the dispatch for utm_forward()
  * and grid_metres(). */
-static __attribute__((noinline)) drdc_status_t
+static DRDC_NOINLINE drdc_status_t
 grid_to_utm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
 {
   if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
@@ -241,7 +242,7 @@ grid_to_utm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
  * dozen instructions: the stages are out of line), so that none stacks a
  * frame of its own on top of this one: a wrapper's frame, even a sibling
  * call's, counts on issue 8's chain (16 B on PowerPC). */
-static inline __attribute__((always_inline)) drdc_status_t
+static inline DRDC_ALWAYS_INLINE drdc_status_t
 utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
             drdc_geo_utm_t *out, drdc_nas_t *convergence, drdc_q5_58_t *scale)
 {
@@ -312,7 +313,7 @@ drdc_status_t drdc_pose_weutm_from_we(const drdc_WePose_t *w, int32_t zone,
  * (same statuses), left in tm->eta and tm->xi rather than in out: the
  * attitude, which can still fail, comes first. Out of line, after the
  * projection has returned: its drdc_geo_utm_t is not under it. */
-static __attribute__((noinline)) drdc_status_t
+static DRDC_NOINLINE drdc_status_t
 grid_metres(int32_t code, geo_tm_t *tm)
 {
   drdc_geo_utm_t u;
@@ -333,7 +334,7 @@ grid_metres(int32_t code, geo_tm_t *tm)
  * the MGRS poses share; the code into *code. Inlined (always_inline) so
  * the projection stays called from their own frames (by
  * drdc__geo_grid_forward_projection(), a sibling call). */
-static inline __attribute__((always_inline)) drdc_status_t
+static inline DRDC_ALWAYS_INLINE drdc_status_t
 project_to_grid(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
                 const void *out, geo_tm_t *tm, int32_t *code)
 {
@@ -395,7 +396,7 @@ drdc_status_t drdc_pose_wutm_from_w(const drdc_WPose_t *w, int32_t zone,
  * its drdc_geo_utm_t is not under the projection. tm holds
  * grid_metres()'s easting and northing (Q28.36) in its eta and xi slots,
  * and in its gamma and k slots the latitude (nas) and the precision. */
-static __attribute__((noinline)) drdc_status_t
+static DRDC_NOINLINE drdc_status_t
 mgrs_from_tm(int32_t code, geo_tm_t *tm, char *text, size_t size)
 {
   drdc_geo_utm_t u;
@@ -446,7 +447,7 @@ drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
  * standard zone's position is always inside the MGRS limits, the size
  * holds the longest text), so the MGRS poses write it last, after the
  * attitude and height; tm is left holding lat and prec. */
-static inline __attribute__((always_inline)) void
+static inline DRDC_ALWAYS_INLINE void
 mgrs_text(int32_t code, drdc_nas_t lat, int32_t prec, geo_tm_t *tm,
           char *text)
 {
@@ -460,7 +461,7 @@ mgrs_text(int32_t code, drdc_nas_t lat, int32_t prec, geo_tm_t *tm,
  * then project_to_grid() of (lat, lon) in its standard zone, in Q28.36
  * for the text (out only tested for NULL). Inlined, as
  * project_to_grid(). */
-static inline __attribute__((always_inline)) drdc_status_t
+static inline DRDC_ALWAYS_INLINE drdc_status_t
 project_to_mgrs(drdc_nas_t lat, drdc_nas_t lon, int32_t prec,
                 const void *out, geo_tm_t *tm, int32_t *code)
 {

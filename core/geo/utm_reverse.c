@@ -8,6 +8,7 @@
  *        MGRS from UTM, which run the reverse projection's body in their
  *        own frames (issue 8's stack); the forward is in utm_forward.c.
  */
+#include <drdc/compiler.h>
 #include <drdc/geo.h>
 
 #include <stddef.h>
@@ -15,7 +16,7 @@
 #include "geo_impl.h"
 
 /* metres (Q47.16, |v| < 2^43) -> angle on the sphere of radius k0 A */
-static __attribute__((noinline)) int64_t angle_from_metres(drdc_q47_16_t v)
+static DRDC_NOINLINE int64_t angle_from_metres(drdc_q47_16_t v)
 {
   return drdc__geo_muldiv(v * INT64_C(1048576), GEO_TWO_POW_62, GEO_K0A_Q40);
 }
@@ -27,7 +28,7 @@ static __attribute__((noinline)) int64_t angle_from_metres(drdc_q47_16_t v)
  * (xi, eta on the sphere of radius k0 A) or drdc__geo_ups_reverse() (x, y from
  * the pole) takes in the same slots. Out of line, before the projection:
  * its constants and values are not in the frame under it. */
-static __attribute__((noinline)) drdc_status_t
+static DRDC_NOINLINE drdc_status_t
 reverse_args(int32_t code, geo_tm_t *tm)
 {
   bool north = (code < GEO_CODE_SOUTH);
@@ -60,7 +61,7 @@ reverse_args(int32_t code, geo_tm_t *tm)
  * reverse_args()) on tm's slots. A sibling call of either: no frame of
  * its own on their chains, and its callers keep no hemisphere flag
  * across them. */
-static __attribute__((noinline)) void
+static DRDC_NOINLINE void
 grid_reverse_projection(int32_t code, geo_tm_t *tm)
 {
   if ((code % GEO_CODE_SOUTH) == DRDC_GEO_ZONE_UPS) {
@@ -75,7 +76,7 @@ grid_reverse_projection(int32_t code, geo_tm_t *tm)
  * into *lat and *lon, either NULL when not wanted, each written after its
  * slot is last read (they may point into tm's xi and eta). Out of line,
  * after the projection; DRDC_OK, for its callers' sibling call. */
-static __attribute__((noinline)) drdc_status_t
+static DRDC_NOINLINE drdc_status_t
 reverse_angles(int32_t code, geo_tm_t *tm, drdc_nas_t *lat, drdc_nas_t *lon)
 {
   int32_t zone = code % GEO_CODE_SOUTH;
@@ -95,7 +96,7 @@ reverse_angles(int32_t code, geo_tm_t *tm, drdc_nas_t *lat, drdc_nas_t *lon)
 
 /* The convergence (nas) and scale of the forward projection in tm into
  * *convergence and *scale, either NULL; DRDC_OK, as reverse_angles(). */
-static __attribute__((noinline)) drdc_status_t
+static DRDC_NOINLINE drdc_status_t
 forward_outputs(const geo_tm_t *tm, drdc_nas_t *convergence,
                 drdc_q5_58_t *scale)
 {
@@ -121,7 +122,7 @@ forward_outputs(const geo_tm_t *tm, drdc_nas_t *convergence,
  * wanted). tm is the entry's scratch; with convergence and scale NULL (no
  * forward after the reverse), lat and lon may point into its xi and eta,
  * so an entry that needs only the angles keeps no buffer for them. */
-static inline __attribute__((always_inline)) drdc_status_t
+static inline DRDC_ALWAYS_INLINE drdc_status_t
 grid_reverse(int32_t code, drdc_nas_t *lat, drdc_nas_t *lon,
              drdc_nas_t *convergence, drdc_q5_58_t *scale, geo_tm_t *tm)
 {
@@ -143,7 +144,7 @@ grid_reverse(int32_t code, drdc_nas_t *lat, drdc_nas_t *lon,
 }
 
 /* grid_reverse() of a drdc_geo_utm_t, its zone checked first */
-static inline __attribute__((always_inline)) drdc_status_t
+static inline DRDC_ALWAYS_INLINE drdc_status_t
 utm_reverse(const drdc_geo_utm_t *in, drdc_nas_t *lat, drdc_nas_t *lon,
             drdc_nas_t *convergence, drdc_q5_58_t *scale, geo_tm_t *tm)
 {
@@ -175,7 +176,7 @@ drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
  * statuses). Returns grid_reverse()'s code or minus the status. Out of
  * line, one copy for the four reverse poses, called before their
  * projection; the decoder a sibling call, its drdc_geo_utm_t nowhere. */
-static __attribute__((noinline)) int32_t
+static DRDC_NOINLINE int32_t
 grid_of(const drdc_geo_utm_t *in, const char *text, geo_tm_t *tm)
 {
   size_t n = 0u;
@@ -204,7 +205,7 @@ grid_of(const drdc_geo_utm_t *in, const char *text, geo_tm_t *tm)
  * convergence (nas) into tm->gamma, where the forward leaves it.
  * Inlined: each pass of the grid poses is its own copy, a few calls
  * (see w_from_grid()). */
-static inline __attribute__((always_inline)) drdc_status_t
+static inline DRDC_ALWAYS_INLINE drdc_status_t
 grid_position(const drdc_geo_utm_t *utm, const char *mgrs, drdc_nas_t *lat,
               drdc_nas_t *lon, geo_tm_t *tm)
 {
@@ -248,7 +249,7 @@ static bool turn_cannot_fail(const drdc_quat_t *q)
  * as before: the position's, then the turn's. Each pass a copy of
  * grid_reverse(), a few calls: no loop whose state would stay in this
  * frame across the projections. */
-static __attribute__((noinline)) drdc_status_t
+static DRDC_NOINLINE drdc_status_t
 w_from_grid(const drdc_WUTMPose_t *u, const drdc_WMGRSPose_t *m,
             drdc_WPose_t *out)
 {
@@ -304,7 +305,7 @@ drdc_status_t drdc_pose_w_from_wmgrs(const drdc_WMGRSPose_t *m,
  * NULL), as w_from_grid(); nothing can fail after the projection, so the
  * position goes straight into out, the convergence waits in tm, and then
  * the yaw is turned. */
-static __attribute__((noinline)) drdc_status_t
+static DRDC_NOINLINE drdc_status_t
 we_from_grid(const drdc_WeUTMPose_t *u, const drdc_WeMGRSPose_t *m,
              drdc_WePose_t *out)
 {

@@ -6,6 +6,7 @@
  *        sizes, the checks before packing and unpacking, and the time
  *        stamp, little-endian by shifts.
  */
+#include <drdc/compiler.h>
 #include <stddef.h>
 
 #include <drdc/jaus_pose.h>
@@ -110,7 +111,7 @@ static int64_t field_get(const drdc_jaus_local_pose_t *local,
  * of line like field_get(): a leaf, off the deepest chain (issue 8,
  * flash: its switch inlined was 100/120 B of drdc_jaus_body_unpack() on
  * Cortex-M3/PowerPC). */
-static __attribute__((noinline)) void
+static DRDC_NOINLINE void
 field_set(drdc_jaus_local_pose_t *local, drdc_jaus_global_pose_t *global,
           unsigned bit, int64_t v)
 {

@@ -12,6 +12,7 @@
  * value (Q46), so the only roundings are those of the trig values and
  * one per element per link (2^-61 and 2^-46 m: negligible).
  */
+#include <drdc/compiler.h>
 #include <drdc/orient_kinematics.h>
 
 #include <stddef.h>
@@ -40,7 +41,7 @@ typedef struct link_trig {
   int32_t d;       /**< link offset (plus q if prismatic), Q15.16 */
 } link_trig_t;
 
-static inline __attribute__((always_inline)) drdc_status_t
+static inline DRDC_ALWAYS_INLINE drdc_status_t
 link_trig(drdc_dh_convention_t convention, const drdc_dh_link_t *link,
           int32_t q, link_trig_t *out)
 {
@@ -211,7 +212,7 @@ drdc_status_t drdc_dh_link_transform(drdc_dh_convention_t convention,
 /* round(a b / 2^n): out of line (noinline), so that the twelve products
  * of a link do not spill their 128-bit temporaries into the frame of
  * drdc_dh_forward(). */
-static __attribute__((noinline)) int64_t mul_round(int64_t a, int64_t b,
+static DRDC_NOINLINE int64_t mul_round(int64_t a, int64_t b,
                                                    unsigned n)
 {
   return drdc_fx_mul_rshift_round(a, b, n);

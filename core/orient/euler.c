@@ -6,6 +6,7 @@
  *        (to them in euler_dcm.c), with the gimbal-lock rule (roll 0,
  *        all rotation in yaw).
  */
+#include <drdc/compiler.h>
 #include <drdc/orient.h>
 
 #include <stddef.h>
@@ -123,7 +124,7 @@ static drdc_status_t euler_from_elements(const int64_t p[3][3], int64_t one,
  * integers: the same bits whatever the order of the sums). One at a time
  * and out of line: drdc_euler_from_quat() keeps no 3x3 matrix of int64_t
  * on the stack under its atan2 calls (issue 8's stack goal). */
-static __attribute__((noinline)) int64_t numerator(const int32_t c[4],
+static DRDC_NOINLINE int64_t numerator(const int32_t c[4],
                                                    unsigned i, unsigned j)
 {
   int64_t a;

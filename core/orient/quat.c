@@ -6,6 +6,7 @@
  *        difference and angle between (conjugate, inverse and canonical
  *        sign in quat_ops.c, compiled for flash).
  */
+#include <drdc/compiler.h>
 #include <drdc/orient.h>
 
 #include <stddef.h>
@@ -19,7 +20,7 @@
 /* The end of both products: DRDC_E_OVERFLOW when bit 30 or 31 of ovf
  * is set (a part does not fit int32_t), else the parts' bits into out.
  * Inline: each product keeps its own copy, with no call. */
-static inline __attribute__((always_inline)) drdc_status_t
+static inline DRDC_ALWAYS_INLINE drdc_status_t
 store_parts(uint32_t ovf, uint32_t rs, uint32_t rx, uint32_t ry, uint32_t rz,
             drdc_quat_t *out)
 {
@@ -36,7 +37,7 @@ store_parts(uint32_t ovf, uint32_t rs, uint32_t rx, uint32_t ry, uint32_t rz,
 /* The product for a part of a beyond (-1, 1]: kept out of line
  * (noinline) so that the common case keeps a light frame; each sum is
  * checked for the 2^63 bound by its high words. */
-static __attribute__((noinline)) drdc_status_t
+static DRDC_NOINLINE drdc_status_t
 quat_mul_wide(const drdc_quat_t *a, const drdc_quat_t *b, drdc_quat_t *out)
 {
   uint32_t ovf = 0u;
@@ -84,7 +85,7 @@ static inline uint32_t round_q60_bits(int64_t v, uint32_t *ovf)
  * reused and no second call is paid on the common path; the rare
  * quat_mul_wide() is tail-called before this frame is set up, so the
  * worst-case stack is the larger frame, not their sum. */
-static inline __attribute__((always_inline)) drdc_status_t
+static inline DRDC_ALWAYS_INLINE drdc_status_t
 quat_mul_unit(const drdc_quat_t *a, const drdc_quat_t *b, drdc_quat_t *out)
 {
   const int64_t as = a->s;

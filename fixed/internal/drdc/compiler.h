@@ -1,0 +1,24 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @brief Compiler attributes of the library's own code (internal, not
+ *        installed): the one place that names them.
+ *
+ * The library is C99 built by GCC (every target) and clang (the fuzz
+ * build); both take these GNU attributes. A function carries one only
+ * where a budget of tools/footprint.py (stack depth, linked flash) or a
+ * speed goal of docs/performance.md fails without it; the line above it
+ * says which.
+ */
+#ifndef DRDC_COMPILER_H
+#define DRDC_COMPILER_H
+
+/** Keep the function out of line: its frame is not added to the
+ *  caller's, so the deepest chain stays that of its deepest callee. */
+#define DRDC_NOINLINE __attribute__((noinline))
+
+/** Inline the (static inline) function into every caller, also where
+ *  the optimiser's heuristics would call it out of line. */
+#define DRDC_ALWAYS_INLINE __attribute__((always_inline))
+
+#endif /* DRDC_COMPILER_H */
