@@ -39,104 +39,13 @@ WARNINGS = ["-std=c99", "-Wall", "-Wextra", "-Wconversion",
 # do not: its build warns but completes.
 # Code generation of every file, ours and third-party.
 CODEGEN = ["-O2", "-g", "-ffunction-sections", "-fdata-sections"]
-# Every library file, on top of CODEGEN (issue #8, flash): no padding to
-# align function entries (Cortex-M3: 160 B of the library). Cycles under
-# QEMU are the same to the instruction; on a real Cortex-M3 a 32-bit first
-# instruction on a half-word boundary may cost one fetch per call.
+# Every library file, on top of CODEGEN: no padding to align function
+# entries, for flash. Instruction counts are the same; on a real
+# Cortex-M3 a 32-bit first instruction on a half-word boundary may cost
+# one fetch per call.
 LIBRARY_CODEGEN = ["-fno-align-functions"]
-# Library files compiled for flash instead of speed (issue #8), on top of
-# CODEGEN. No speed goal of docs/performance.md runs through these files:
-# the call graphs of the functions with a goal reach none of them (sinh
-# and atanh_q5_58 are timed, without a goal). Each file's kind was chosen
-# by measurement: the smallest that keeps every function's worst-case
-# stack (tools/footprint.py) at or under its -O2 value on both targets.
-# Every library file not listed is a hot path or a table and keeps plain
-# -O2, or is cold but each kind below grew a stack or its code:
-# core/jaus/pose_stamp.c, core/units/table.c.
-FOR_FLASH = {
-    # -Os; GCC keeps the last -O.
-    "size": ["-Os"],
-    # -Os that still inlines helpers of up to 30 insns: plain -Os would
-    # call them out of line, one frame deeper.
-    "size-inline": ["-Os", "--param=max-inline-insns-size=30"],
-    # -O2's inlining, so the same frames, without the block copies of
-    # -O2's block layout and loop header copying.
-    "compact": ["-freorder-blocks-algorithm=simple", "-fno-tree-ch"],
-    # and without partial redundancy elimination, which copies
-    # expressions into the branches that lack them
-    "compact-no-pre": ["-freorder-blocks-algorithm=simple", "-fno-tree-ch",
-                       "-fno-tree-pre"],
-    # and without jump threading either, which copies blocks to skip a
-    # test whose outcome a path already knows
-    "compact-no-threading": ["-freorder-blocks-algorithm=simple",
-                             "-fno-tree-ch", "-fno-tree-pre",
-                             "-fno-thread-jumps"],
-    # and small helpers called rather than copied into each caller, where
-    # that costs no stack (the conversion helpers of fixed/convert.c)
-    "compact-calls": ["-freorder-blocks-algorithm=simple", "-fno-tree-ch",
-                      "-fno-inline-small-functions"],
-    # -O2 but a loop-invariant address (a table's) computed again in the
-    # loop rather than held in a register across the loop's calls: one
-    # saved register less (the JAUS pose bodies' field rows)
-    "no-invariant-motion": ["-fno-move-loop-invariants"],
-}
-# On PowerPC, -Os saves and restores registers through libgcc's
-# _savegpr_*/_restgpr_* sequences (tools/intcheck.py allows them): 4 KB
-# less than the compact kinds there, and no stack grew.
-FLASH_OPTIMISED = {
-    # text in and out: NMEA sentences, JAUS messages, a few per second
-    "core/nmea/decimal.c": "size", "core/nmea/fields.c": "size-inline",
-    "core/nmea/frame.c": "size", "core/nmea/gga.c": "size",
-    "core/nmea/gns.c": "size", "core/nmea/gst.c": "size",
-    "core/nmea/parse.c": "compact", "core/nmea/precision.c": "size",
-    "core/nmea/rmc.c": "compact", "core/nmea/utc.c": "size",
-    "core/nmea/zda.c": "size",
-    "core/jaus/date_stamp.c": "size",
-    "core/jaus/pose_body.c": "no-invariant-motion",
-    "core/jaus/pose_messages.c": "size",
-    "core/jaus/scaled.c": "compact",
-    "core/time/jaus_stamp.c": "size", "core/time/iso8601.c": "size",
-    # unit conversion at the edge: table search and rational scale
-    "core/units/convert.c": "size", "core/units/find.c": "size",
-    "core/units/rational.c": "compact-no-threading",
-    "core/units/scale.c": "compact-no-pre",
-    # time off the GPS/UTC path: RTEMS and Unix epochs, weekday, calculus
-    "core/time/rtems.c": "size", "core/time/unix.c": "size",
-    "core/time/weekday.c": "size", "core/time/calculus.c": "compact",
-    "core/time/utc_civil.c": "size", "core/time/leap_update.c": "size",
-    "core/time/gps_week.c": "size",
-    # orientation beyond multiply, rotate and Euler: axis-angle,
-    # interpolation, frame swaps, 4x4 transforms, DH chains
-    "core/orient/axis_angle.c": "size", "core/orient/quat_interp.c": "size",
-    "core/orient/frames.c": "size-inline",
-    "core/orient/transform.c": "compact",
-    "core/orient/dh.c": "compact-no-pre", "core/orient/dcm.c": "compact",
-    "core/orient/quat_ops.c": "size-inline",
-    "core/orient/quat_rotate_q47_16.c": "compact-no-threading",
-    "core/orient/euler_dcm.c": "size",
-    # fixed point without a speed goal
-    "fixed/tan.c": "size-inline", "fixed/status.c": "size",
-    "fixed/fix16_interop.c": "size",
-    "fixed/convert.c": "compact-calls",
-    "fixed/div.c": "compact-no-threading",
-    "fixed/hyperbolic.c": "compact-no-pre",
-    "fixed/hypot.c": "compact", "fixed/rsqrt.c": "compact",
-    "fixed/muldiv_s32.c": "size-inline",
-    # geodesy off the drdc_geo_to_utm path (tm.c, utm_forward.c, ups.c
-    # and geo_math.c keep -O2 for its goal): ECEF, ENU and NED, MGRS text,
-    # the pose conversions. Measured on the code of issue 8's fourth
-    # stack round: plain -Os grew the ECEF, MGRS-decode and local-pose
-    # stacks (by 8-32 B, two poses over 256 B), size-inline the poses'
-    # (by 8-32 B); these kinds grew none and shrank some.
-    "core/geo/ecef.c": "size-inline", "core/geo/mgrs.c": "size-inline",
-    "core/geo/pose.c": "compact-calls",
-    # the reverse projection's stages and its grid poses (drdc_geo_from_utm
-    # is timed, without a goal: +2.5 of 18 631 cycles on Cortex-M3): -Os,
-    # size-inline and compact-no-threading grew we_from_weutm's and
-    # we_from_wemgrs's stacks (256 -> 272 B on PowerPC); compact,
-    # compact-no-pre and compact-calls save the same and grow none.
-    "core/geo/utm_reverse.c": "compact",
-}
+# Which library files are compiled for speed or size: the footprint
+# policy of tools/footprint.py (MODULE_OPTIMISE, FILE_OPTIMISE).
 SANITIZE = ["-fsanitize=address,undefined", "-fno-sanitize-recover=all",
             "-fno-omit-frame-pointer"]
 
@@ -475,30 +384,31 @@ def _glob(bld, pattern):
 def build_library(bld, cflags):
     """libdrdc.a, its headers and drdc.pc, installed under the variant's
     LIBDIR and INCLUDEDIR. Each object gets a call graph with stack usage
-    (.ci) for the footprint report (tools/footprint.py). The files of
-    FLASH_OPTIMISED are compiled apart with their flags, into the same
-    archive."""
+    (.ci) for the footprint report (tools/footprint.py), each file
+    compiled for speed or size as the footprint policy says."""
     gcc = bld.env.CC_NAME == "gcc"
     lib_cflags = cflags + LIBRARY_CODEGEN + (["-fcallgraph-info=su"]
                                              if gcc else [])
     sources = _glob(bld, "fixed/**/*.c") + _glob(bld, "core/**/*.c")
-    for_flash = []
-    for kind in sorted(FOR_FLASH):
-        files = [f for f, k in sorted(FLASH_OPTIMISED.items()) if k == kind]
-        nodes = [bld.path.find_node(f) for f in files]
-        if None in nodes:
-            bld.fatal("FLASH_OPTIMISED: no file " + files[nodes.index(None)])
-        for_flash += nodes
-        # idx=1: objects named x.c.1.o, as those of the library's own task
-        flags = FOR_FLASH[kind]
-        bld.objects(source=nodes, target="drdc_" + kind,
-                    # GCC's flags; clang (the fuzz build) keeps its own
-                    cflags=lib_cflags + (flags if gcc else []),
-                    includes=["fixed/internal", "fixed/include", "core/include"], idx=1)
-    bld.stlib(source=[n for n in sources if n not in for_flash],
-              target="drdc", name="libdrdc", idx=1, cflags=lib_cflags,
-              use=["drdc_" + kind for kind in sorted(FOR_FLASH)],
-              includes=["fixed/internal", "fixed/include", "core/include"],
+    policy = _tools_module("footprint")
+    includes = ["fixed/internal", "fixed/include", "core/include"]
+    by_kind = {}
+    for node in sources:
+        kind = policy.optimise_kind(node.path_from(bld.path))
+        by_kind.setdefault(kind, []).append(node)
+    # the library's own task compiles for speed; the other kinds are
+    # object groups it archives with its own
+    others = sorted(k for k in by_kind if k != "speed")
+    for kind in others:
+        # idx=1: objects named x.c.1.o, as those of the library's own task;
+        # GCC's flags: clang (the fuzz build) keeps its own
+        bld.objects(source=by_kind[kind], target="drdc_" + kind, idx=1,
+                    cflags=lib_cflags + (policy.OPTIMISE_FLAGS[kind]
+                                         if gcc else []),
+                    includes=includes)
+    bld.stlib(source=by_kind.get("speed", []), target="drdc",
+              name="libdrdc", idx=1, cflags=lib_cflags, includes=includes,
+              use=["drdc_" + kind for kind in others],
               export_includes=["fixed/include", "core/include"],
               install_path="${LIBDIR}")
     bld.install_files("${INCLUDEDIR}/drdc",

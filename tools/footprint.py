@@ -23,6 +23,48 @@ import re
 import subprocess
 import sys
 
+# The footprint policy: how the library is compiled and what it may cost.
+# wscript compiles by these tables; tools/bench.py guards the budgets.
+#
+# How each kind of file is compiled, on top of -O2 (GCC keeps the last -O).
+OPTIMISE_FLAGS = {"speed": [], "size": ["-Os"]}
+# Every file of a module folder is compiled as its module says: "speed"
+# where a speed goal of docs/performance.md runs through the module,
+# "size" where the module turns text and messages at a few per second.
+MODULE_OPTIMISE = {
+    "fixed": "speed",
+    "core/geo": "speed",
+    "core/orient": "speed",
+    "core/time": "speed",
+    "core/jaus": "size",
+    "core/nmea": "size",
+    "core/units": "size",
+}
+# Files compiled otherwise than their module, each with its measured
+# reason. Empty: no budget needs one.
+FILE_OPTIMISE = {}
+# No public function's worst-case stack deeper than this on any target
+# (bytes; tools/bench.py fails the check above it).
+STACK_LIMIT = 512
+# What the demo pose node (fw/demo: NMEA, time scales, the paper's poses,
+# MGRS, JAUS Report Global Pose) links of libdrdc.a, flash bytes (.text +
+# .rodata + .data) per target: guarded by tools/bench.py. The whole
+# library's size is reported in docs/performance.md, not budgeted.
+LINKED_BUDGET = {"arm-cm3": 36 * 1024, "ppc-e500": 64 * 1024}
+
+
+def optimise_kind(path):
+    """"speed" or "size" for a library source (path from the top: core/geo/tm.c)."""
+    if path in FILE_OPTIMISE:
+        return FILE_OPTIMISE[path]
+    module = os.path.dirname(path)
+    while module and module not in MODULE_OPTIMISE:
+        module = os.path.dirname(module)
+    if not module:
+        raise KeyError("footprint: no module of MODULE_OPTIMISE holds " + path)
+    return MODULE_OPTIMISE[module]
+
+
 PREFIX = {"host": "", "host-asan": "", "ppc-e500": "powerpc-linux-gnu-",
           "arm-cm3": "arm-none-eabi-"}
 NODE = re.compile(r'node: \{ title: "([^"]+)" label: "([^"]*)"')

@@ -12,7 +12,10 @@ REPORT = {
     "functions": [{"function": "drdc_f", "target": "arm-cm3", "cycles": 100.0}],
     "footprint": {"arm-cm3": {"library": {"text": 1000, "rodata": 100, "data": 0,
                                           "bss": 0},
-                              "stack": {"drdc_f": {"bytes": 200}}}},
+                              "stack": {"drdc_f": {"bytes": 200}},
+                              "linked": {"image": "fw/demo/demo", "sections": {
+                                  "text": 30000, "rodata": 1000, "data": 0,
+                                  "bss": 0}}}},
 }
 
 
@@ -43,14 +46,24 @@ class Guard(unittest.TestCase):
         new["footprint"]["arm-cm3"]["library"]["text"] = 1066
         self.assertFalse(self.check(new))
 
-    def test_stack_of_256_bytes_passes(self):
+    def test_stack_at_the_limit_passes(self):
         new = copy.deepcopy(REPORT)
-        new["footprint"]["arm-cm3"]["stack"]["drdc_f"]["bytes"] = 256
+        new["footprint"]["arm-cm3"]["stack"]["drdc_f"]["bytes"] = 512
         self.assertTrue(self.check(new))
 
-    def test_stack_over_256_bytes_fails(self):
+    def test_stack_over_the_limit_fails(self):
         new = copy.deepcopy(REPORT)
-        new["footprint"]["arm-cm3"]["stack"]["drdc_f"]["bytes"] = 264
+        new["footprint"]["arm-cm3"]["stack"]["drdc_f"]["bytes"] = 520
+        self.assertFalse(self.check(new))
+
+    def test_demo_at_its_budget_passes(self):
+        new = copy.deepcopy(REPORT)
+        new["footprint"]["arm-cm3"]["linked"]["sections"]["text"] = 36 * 1024 - 1000
+        self.assertTrue(self.check(new))
+
+    def test_demo_over_its_budget_fails(self):
+        new = copy.deepcopy(REPORT)
+        new["footprint"]["arm-cm3"]["linked"]["sections"]["text"] = 36 * 1024 - 999
         self.assertFalse(self.check(new))
 
     def test_unbounded_stack_fails(self):
