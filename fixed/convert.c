@@ -113,8 +113,7 @@ drdc_status_t drdc_fx_q1_30_from_q15_16(drdc_q15_16_t x, drdc_q1_30_t *out)
   return q1_30_from_q15_16(x, 0, out);
 }
 
-drdc_status_t drdc_fx_q1_30_from_q15_16_sat(drdc_q15_16_t x,
-                                            drdc_q1_30_t *out)
+drdc_status_t drdc_fx_q1_30_from_q15_16_sat(drdc_q15_16_t x, drdc_q1_30_t *out)
 {
   return q1_30_from_q15_16(x, 1, out);
 }

@@ -24,10 +24,9 @@ static drdc_status_t div_s32(int32_t a, int32_t b, unsigned shift, int sat,
   if (b == 0) {
     return DRDC_E_DIVIDE_BY_ZERO;
   }
-  return fx_finish_s32((a < 0) != (b < 0),
-                       fx_div_round_u64((uint64_t)fx_abs32(a) << shift,
-                                        fx_abs32(b)),
-                       sat, out);
+  return fx_finish_s32(
+      (a < 0) != (b < 0),
+      fx_div_round_u64((uint64_t)fx_abs32(a) << shift, fx_abs32(b)), sat, out);
 }
 
 drdc_status_t drdc_fx_div_q1_30(drdc_q1_30_t a, drdc_q1_30_t b,

@@ -206,8 +206,8 @@ static inline int fx_le_u128(fx_u128_t a, fx_u128_t b)
  * its 64-byte PowerPC frame, stacked on log_parts(), took
  * drdc_fx_asinh_q5_58() to 272 bytes of stack, over issue 8's 256.
  */
-static inline DRDC_ALWAYS_INLINE int
-fx_div_round_u128(fx_u128_t n, uint64_t d, uint64_t *q)
+static inline DRDC_ALWAYS_INLINE int fx_div_round_u128(fx_u128_t n, uint64_t d,
+                                                       uint64_t *q)
 {
   unsigned s;
   uint64_t v;

@@ -11,15 +11,14 @@
 /* Fraction bits and decimals the arithmetic below allows: the fraction
  * f < 2^60 times 10 stays below 2^64, and 18 decimals of it fit the text. */
 #define FORMAT_FRAC_BITS_MAX 60u
-#define FORMAT_DECIMALS_MAX 18u
+#define FORMAT_DECIMALS_MAX  18u
 /* Decimal digits of the largest integer part, 2^63 (after rounding up). */
 #define FORMAT_INTEGER_DIGITS_MAX 19u
 
 /* The magnitude's text in `text` (room for DRDC_FX_FORMAT_MAX - 1
  * characters), without its sign or NUL; returns its length. */
 static size_t magnitude_text(uint64_t integer_part, uint64_t fraction_part,
-                             uint32_t frac_bits, uint32_t decimals,
-                             char *text)
+                             uint32_t frac_bits, uint32_t decimals, char *text)
 {
   /* decimal digits by value, without arithmetic on characters */
   static const char digits[] = "0123456789";
@@ -107,9 +106,8 @@ drdc_status_t drdc_fx_format(int64_t value, uint32_t frac_bits,
     return DRDC_E_RANGE;
   }
   integer = magnitude >> frac_bits;
-  fraction = (frac_bits == 0u)
-               ? 0u
-               : (magnitude & ((UINT64_C(1) << frac_bits) - 1u));
+  fraction =
+      (frac_bits == 0u) ? 0u : (magnitude & ((UINT64_C(1) << frac_bits) - 1u));
   n = magnitude_text(integer, fraction, frac_bits, decimals, &text[1]);
   negative = (value < 0) && !all_zero(&text[1], n);
   if (negative) {

@@ -104,8 +104,8 @@ static uint64_t sinh_cosh_mag(uint64_t x, int plus)
 
 /* *out = sinh(x) (plus == 0) or cosh(x) (plus == 1): one body for the
  * two public entries, which call it as their last step. */
-static DRDC_NOINLINE drdc_status_t
-sinh_cosh(drdc_q5_58_t x, int plus, drdc_q5_58_t *out)
+static DRDC_NOINLINE drdc_status_t sinh_cosh(drdc_q5_58_t x, int plus,
+                                             drdc_q5_58_t *out)
 {
   uint64_t r;
 
@@ -171,8 +171,7 @@ static unsigned top_bit(uint64_t v)
  * fx_div_round_u128() of (x 2^62, d) bit for bit. A leaf, out of line
  * so that its registers are not saved under any call (#3: worst-case
  * stack). */
-static DRDC_NOINLINE uint64_t div_q62_rcp(uint64_t x, uint64_t d,
-                                                      uint32_t rcp)
+static DRDC_NOINLINE uint64_t div_q62_rcp(uint64_t x, uint64_t d, uint32_t rcp)
 {
   unsigned s;
   uint64_t v;
@@ -197,8 +196,8 @@ static DRDC_NOINLINE uint64_t div_q62_rcp(uint64_t x, uint64_t d,
   quo = (uint64_t)drdc_fx_div_3by2((uint32_t)(un32 >> 32), (uint32_t)un32,
                                    (uint32_t)(un10 >> 32), v, rcp, &r)
         << 32;
-  quo |= drdc_fx_div_3by2((uint32_t)(r >> 32), (uint32_t)r, (uint32_t)un10,
-                          v, rcp, &r);
+  quo |= drdc_fx_div_3by2((uint32_t)(r >> 32), (uint32_t)r, (uint32_t)un10, v,
+                          rcp, &r);
   r = r >> s;
   if (r >= (d - r)) {
     if (quo == UINT64_MAX) {
@@ -215,8 +214,8 @@ static inline uint64_t div_q62(uint64_t x, uint64_t d)
 {
   uint64_t v = d << (unsigned)__builtin_clzll(d);
 
-  return div_q62_rcp(
-      x, d, drdc_fx_reciprocal_3by2((uint32_t)(v >> 32), (uint32_t)v));
+  return div_q62_rcp(x, d,
+                     drdc_fx_reciprocal_3by2((uint32_t)(v >> 32), (uint32_t)v));
 }
 
 /* ln(num / den) = e ln 2 + 2 atanh(s), for num, den > 0: writes e and
@@ -272,7 +271,7 @@ static uint64_t log_q58(int32_t e, uint64_t at, int s_neg, unsigned half)
 /* *out = atanh(s) / 16 rounded (Q62 -> Q58), negated when neg != 0:
  * |s| <= 0.1716 in Q62 */
 static DRDC_NOINLINE drdc_status_t series_out(uint64_t s, int neg,
-                                                          drdc_q5_58_t *out)
+                                              drdc_q5_58_t *out)
 {
   uint64_t r = (atanh_series_q62(s) + 8u) >> 4;
 
@@ -284,8 +283,9 @@ static DRDC_NOINLINE drdc_status_t series_out(uint64_t s, int neg,
  * logarithm: the large-argument branch of each, inlined (with log_parts())
  * into the public function so that no frame of its own stacks between it
  * and the divisions and the series (#3: worst-case stack) */
-static inline DRDC_ALWAYS_INLINE drdc_status_t
-log_out(drdc_q5_58_t x, int asinh, drdc_q5_58_t *out)
+static inline DRDC_ALWAYS_INLINE drdc_status_t log_out(drdc_q5_58_t x,
+                                                       int asinh,
+                                                       drdc_q5_58_t *out)
 {
   uint64_t ax = fx_abs64(x);
   int32_t e = 0;

@@ -36,8 +36,8 @@ static inline drdc_status_t mul_s32(int32_t a, int32_t b, unsigned shift,
     return DRDC_E_NULL;
   }
   p = (int64_t)a * b;
-  v = (uint64_t)p
-      + ((UINT32_C(1) << (shift - 1u)) - (uint32_t)((uint64_t)p >> 63));
+  v = (uint64_t)p +
+      ((UINT32_C(1) << (shift - 1u)) - (uint32_t)((uint64_t)p >> 63));
   high = (uint32_t)(v >> 32);
   if (((high + (UINT32_C(1) << (shift - 1u))) >> shift) == 0u) {
     *out = fx_s32_from_bits((uint32_t)(v >> shift));

@@ -22,15 +22,13 @@ static drdc_status_t muldiv_s32(int32_t a, int32_t b, int32_t c, int sat,
     return DRDC_E_DIVIDE_BY_ZERO;
   }
   /* |a b| <= 2^62: exact in uint64_t */
-  return fx_finish_s32(fx_quotient_negative((a < 0) ? 1 : 0,
-                                            (b < 0) ? 1 : 0, (c < 0) ? 1 : 0),
-                       fx_div_round_u64((uint64_t)fx_abs32(a) * fx_abs32(b),
-                                        fx_abs32(c)),
-                       sat, out);
+  return fx_finish_s32(
+      fx_quotient_negative((a < 0) ? 1 : 0, (b < 0) ? 1 : 0, (c < 0) ? 1 : 0),
+      fx_div_round_u64((uint64_t)fx_abs32(a) * fx_abs32(b), fx_abs32(c)), sat,
+      out);
 }
 
-drdc_status_t drdc_fx_muldiv_s32(int32_t a, int32_t b, int32_t c,
-                                 int32_t *out)
+drdc_status_t drdc_fx_muldiv_s32(int32_t a, int32_t b, int32_t c, int32_t *out)
 {
   return muldiv_s32(a, b, c, 0, out);
 }

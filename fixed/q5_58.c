@@ -48,9 +48,8 @@ static int64_t mul(int64_t a, int64_t b)
  * overflow). A leaf on magnitudes, out of line, so that its registers are
  * saved under no call and the signs wait in the caller (#3, #8:
  * worst-case stack). */
-static DRDC_NOINLINE uint64_t quotient_mag(uint64_t ma,
-                                                       uint64_t mb,
-                                                       uint32_t rcp)
+static DRDC_NOINLINE uint64_t quotient_mag(uint64_t ma, uint64_t mb,
+                                           uint32_t rcp)
 {
   unsigned s;
   unsigned back;
@@ -100,8 +99,9 @@ static inline int64_t quotient(int64_t a, int64_t b)
   q = quotient_mag(fx_abs64(a), fx_abs64(b),
                    drdc_fx_reciprocal_3by2((uint32_t)(v >> 32), (uint32_t)v));
   if ((a != 0) && ((a < 0) != (b < 0))) {
-    return (q > (UINT64_C(1) << 63)) ? 0
-           : ((q == (UINT64_C(1) << 63)) ? (-INT64_MAX - 1) : -(int64_t)q);
+    return (q > (UINT64_C(1) << 63))
+               ? 0
+               : ((q == (UINT64_C(1) << 63)) ? (-INT64_MAX - 1) : -(int64_t)q);
   }
   return (q > (uint64_t)INT64_MAX) ? 0 : (int64_t)q;
 }
@@ -111,9 +111,9 @@ static inline int64_t quotient(int64_t a, int64_t b)
 static inline int64_t quotient_pos(int64_t a, int64_t b)
 {
   uint64_t v = (uint64_t)b << (unsigned)__builtin_clzll((uint64_t)b);
-  uint64_t q = quotient_mag((uint64_t)a, (uint64_t)b,
-                            drdc_fx_reciprocal_3by2((uint32_t)(v >> 32),
-                                                    (uint32_t)v));
+  uint64_t q =
+      quotient_mag((uint64_t)a, (uint64_t)b,
+                   drdc_fx_reciprocal_3by2((uint32_t)(v >> 32), (uint32_t)v));
 
   return (q > (uint64_t)INT64_MAX) ? 0 : (int64_t)q;
 }
@@ -164,20 +164,26 @@ sincos_kernel(drdc_q5_58_t x, drdc_q5_58_t *s, drdc_q5_58_t *c)
 {
   /* (-1)^i / (2i+1)! and (-1)^i / (2i)! in Q5.58, i = 0..9: on |r| <= pi/4
    * the first omitted terms are below 1e-19. */
-  static const int64_t sin_coef[10] = {
-    INT64_C(288230376151711744), INT64_C(-48038396025285291),
-    INT64_C(2401919801264265),   INT64_C(-57188566696768),
-    INT64_C(794285648566),       INT64_C(-7220778623),
-    INT64_C(46287042),           INT64_C(-220414),
-    INT64_C(810),                INT64_C(-2)
-  };
-  static const int64_t cos_coef[10] = {
-    INT64_C(288230376151711744), INT64_C(-144115188075855872),
-    INT64_C(12009599006321323),  INT64_C(-400319966877377),
-    INT64_C(7148570837096),      INT64_C(-79428564857),
-    INT64_C(601731552),          INT64_C(-3306217),
-    INT64_C(13776),              INT64_C(-45)
-  };
+  static const int64_t sin_coef[10] = {INT64_C(288230376151711744),
+                                       INT64_C(-48038396025285291),
+                                       INT64_C(2401919801264265),
+                                       INT64_C(-57188566696768),
+                                       INT64_C(794285648566),
+                                       INT64_C(-7220778623),
+                                       INT64_C(46287042),
+                                       INT64_C(-220414),
+                                       INT64_C(810),
+                                       INT64_C(-2)};
+  static const int64_t cos_coef[10] = {INT64_C(288230376151711744),
+                                       INT64_C(-144115188075855872),
+                                       INT64_C(12009599006321323),
+                                       INT64_C(-400319966877377),
+                                       INT64_C(7148570837096),
+                                       INT64_C(-79428564857),
+                                       INT64_C(601731552),
+                                       INT64_C(-3306217),
+                                       INT64_C(13776),
+                                       INT64_C(-45)};
   int64_t k;
   int64_t r;
   int64_t r2;

@@ -46,8 +46,7 @@ drdc_status_t drdc_fx_rsqrt_q15_16(drdc_q15_16_t x, drdc_q15_16_t *out)
     return DRDC_E_DOMAIN;
   }
   /* x >= 1: 2^50 / x < 2^51, r <= 2^24 */
-  *out = (drdc_q15_16_t)rsqrt_from_quotient((UINT64_C(1) << 50) /
-                                            (uint32_t)x);
+  *out = (drdc_q15_16_t)rsqrt_from_quotient((UINT64_C(1) << 50) / (uint32_t)x);
   return DRDC_OK;
 }
 

@@ -113,8 +113,8 @@ drdc_status_t drdc_fx_sqrt_q15_16(drdc_q15_16_t x, drdc_q15_16_t *out)
   }
   /* r1 = h - s1^2 <= 2 s1 < 2^14: num < 2^27 + 2^13 */
   num = ((h - (s1 * s1)) << SQRT_DIGIT_BITS) | ((m & 0x3Fu) << 7);
-  q = num / (s1 << 1);                       /* <= b */
-  u = num - (q * (s1 << 1));                 /* < 2 s1 < 2^14 */
+  q = num / (s1 << 1);       /* <= b */
+  u = num - (q * (s1 << 1)); /* < 2 s1 < 2^14 */
   s = (s1 << SQRT_DIGIT_BITS) + q;
   if ((u << SQRT_DIGIT_BITS) < (q * q)) {
     s--;

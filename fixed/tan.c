@@ -35,8 +35,8 @@
  * the result is at most 2^48 / (2 pi) < 2^46. */
 static uint64_t cot_near_pole(uint32_t d)
 {
-  uint64_t inv = COT_NUM / ((uint64_t)d << 5);        /* 1/e, Q24 */
-  uint64_t third = ((uint64_t)d * COT_E3) >> 48;      /* e/3, Q24 */
+  uint64_t inv = COT_NUM / ((uint64_t)d << 5);   /* 1/e, Q24 */
+  uint64_t third = ((uint64_t)d * COT_E3) >> 48; /* e/3, Q24 */
 
   return ((inv - third) + 128u) >> 8;
 }

@@ -27,7 +27,7 @@
 
 /** Binary-angle units in a quarter turn (pi/2) and an eighth (pi/4). */
 #define FX_BAM_QUARTER (UINT32_C(1) << 30)
-#define FX_BAM_EIGHTH (UINT32_C(1) << 29)
+#define FX_BAM_EIGHTH  (UINT32_C(1) << 29)
 
 extern const uint32_t drdc__fx_sin_q31[FX_SIN_STEPS + 1];
 
@@ -80,31 +80,33 @@ extern const fx_atan_node_t drdc__fx_atan_nodes[FX_ATAN_STEPS + 1];
  */
 static inline int64_t fx_sin_quadrant_q62(uint32_t r)
 {
-  uint32_t i = (r + (UINT32_C(1) << 21)) >> 22;  /* nearest table point */
+  uint32_t i = (r + (UINT32_C(1) << 21)) >> 22; /* nearest table point */
   uint32_t node = i << 22;
-  bool neg = r < node;                             /* delta < 0 */
-  uint32_t ad = neg ? (node - r) : (r - node);     /* |d| <= 2^21 units */
+  bool neg = r < node;                         /* delta < 0 */
+  uint32_t ad = neg ? (node - r) : (r - node); /* |d| <= 2^21 units */
   uint32_t s0 = drdc__fx_sin_q31[i];
   uint32_t c0 = drdc__fx_sin_q31[(uint32_t)FX_SIN_STEPS - i];
   /* |delta| Q39: |d| 2 pi 2^31 / 2^24, the low product (< 2^51) shifted,
    * the 3 2^32 part exact as 768 |d| */
-  uint32_t adl = (uint32_t)((((uint64_t)ad * FX_TWO_PI_Q31_LOW)
-                             + (neg ? ((UINT64_C(1) << 24) - 1u) : 0u)) >> 24)
-                 + (ad * 768u);
-  uint32_t d2 = (uint32_t)(((uint64_t)adl * adl) >> 32);        /* Q46 */
+  uint32_t adl = (uint32_t)((((uint64_t)ad * FX_TWO_PI_Q31_LOW) +
+                             (neg ? ((UINT64_C(1) << 24) - 1u) : 0u)) >>
+                            24) +
+                 (ad * 768u);
+  uint32_t d2 = (uint32_t)(((uint64_t)adl * adl) >> 32); /* Q46 */
   /* |delta^3| / 6 in Q58: floor(floor(m / 2^27) / 6) = floor(m / 3 2^28)
    * for the magnitude m (< 2^60) rounded as the signed floor demands */
-  uint32_t d3 = (uint32_t)((((uint64_t)d2 * adl)
-                            + (neg ? ((UINT64_C(1) << 27) - 1u) : 0u)) >> 28)
-                / 3u;
-  uint64_t t1 = (uint64_t)c0 * adl;                 /* |c0 delta|: Q70 */
-  uint64_t t3 = (uint64_t)c0 * d3;                  /* c0 |delta^3| / 6: Q89 */
+  uint32_t d3 = (uint32_t)((((uint64_t)d2 * adl) +
+                            (neg ? ((UINT64_C(1) << 27) - 1u) : 0u)) >>
+                           28) /
+                3u;
+  uint64_t t1 = (uint64_t)c0 * adl; /* |c0 delta|: Q70 */
+  uint64_t t3 = (uint64_t)c0 * d3;  /* c0 |delta^3| / 6: Q89 */
   /* s0 - s0 delta^2 / 2 in Q62; s0 2^31 <= 2^62 */
   uint64_t acc = ((uint64_t)s0 << 31) - (((uint64_t)s0 * d2) >> 16);
 
   if (neg) {
-    acc = (acc - ((t1 + 255u) >> 8))
-          + ((t3 + ((UINT64_C(1) << 27) - 1u)) >> 27);
+    acc =
+        (acc - ((t1 + 255u) >> 8)) + ((t3 + ((UINT64_C(1) << 27) - 1u)) >> 27);
   } else {
     acc = (acc + (t1 >> 8)) - (t3 >> 27);
   }
@@ -202,16 +204,17 @@ static inline uint32_t fx_atan_ratio_bam(uint32_t num, uint32_t den)
   /* t = round(num 2^32 / den) < 2^32: the floor of (num 2^32 + den / 2)
    * over den */
   t = fx_div_ratio_q32(num, den);
-  i = (t >> 25) + ((t >> 24) & 1u);                /* nearest, 0..128 */
+  i = (t >> 25) + ((t >> 24) & 1u); /* nearest, 0..128 */
   low = t & 0x1FFFFFFu;
-  neg = (t & (UINT32_C(1) << 24)) != 0u;           /* rounded up: h < 0 */
-  ah = neg ? ((UINT32_C(1) << 25) - low) : low;    /* |h| <= 2^24 */
-  h2 = (uint32_t)(((uint64_t)ah * ah) >> 22);      /* Q42 */
+  neg = (t & (UINT32_C(1) << 24)) != 0u;        /* rounded up: h < 0 */
+  ah = neg ? ((UINT32_C(1) << 25) - low) : low; /* |h| <= 2^24 */
+  h2 = (uint32_t)(((uint64_t)ah * ah) >> 22);   /* Q42 */
   /* |h^3| Q42, the magnitude of floor(h2 h / 2^32) */
-  ah3 = (uint32_t)((((uint64_t)h2 * ah)
-                    + (neg ? ((UINT64_C(1) << 32) - 1u) : 0u)) >> 32);
+  ah3 = (uint32_t)((((uint64_t)h2 * ah) +
+                    (neg ? ((UINT64_C(1) << 32) - 1u) : 0u)) >>
+                   32);
   node = &drdc__fx_atan_nodes[i];
-  acc = (uint64_t)node->a << 31;                   /* units 2^33 */
+  acc = (uint64_t)node->a << 31; /* units 2^33 */
   acc -= ((uint64_t)node->c2 * h2) >> 11;
   if (neg) {
     acc -= (((uint64_t)node->d1 * ah) + 1u) >> 1;
@@ -219,7 +222,7 @@ static inline uint32_t fx_atan_ratio_bam(uint32_t num, uint32_t den)
     acc += ((uint64_t)node->d1 * ah) >> 1;
   }
   /* C3 h^3: the sign of C3 (negative below t = 1/sqrt(3)) times that of h */
-  p3 = (uint64_t)fx_abs32(node->c3) * ah3;         /* <= 2^47.8 */
+  p3 = (uint64_t)fx_abs32(node->c3) * ah3; /* <= 2^47.8 */
   c3_neg = node->c3 < 0;
   if (neg == c3_neg) {
     acc += p3 >> 11;
@@ -253,7 +256,7 @@ static inline uint32_t fx_atan2_bam(int32_t y, int32_t x)
   if (x < 0) {
     a = (FX_BAM_QUARTER << 1) - a; /* pi - a */
   }
-  return (y < 0) ? (0u - a) : a;  /* -a modulo one turn */
+  return (y < 0) ? (0u - a) : a; /* -a modulo one turn */
 }
 
 /** floor(x / 2^n) for 0 < n < 64, shifting only unsigned values. */

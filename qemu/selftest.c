@@ -7,13 +7,13 @@
 #include "drdc_board.h"
 #include "unity.h"
 
-#define KIND_PASS 1
-#define KIND_FAIL 2
-#define KIND_HANG 3
-#define KIND_CRASH 4
-#define KIND_FLOOD 5
+#define KIND_PASS         1
+#define KIND_FAIL         2
+#define KIND_HANG         3
+#define KIND_CRASH        4
+#define KIND_FLOOD        5
 #define KIND_FAKE_SUMMARY 6
-#define KIND_SILENT 7
+#define KIND_SILENT       7
 
 void setUp(void)
 {

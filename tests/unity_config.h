@@ -21,7 +21,7 @@
 #define UNITY_EXCLUDE_MATH_H
 
 /* Output through the board console (bsp/drdc_board.h). */
-#define UNITY_OUTPUT_CHAR(c) bsp_putc(c)
+#define UNITY_OUTPUT_CHAR(c)                 bsp_putc(c)
 #define UNITY_OUTPUT_CHAR_HEADER_DECLARATION bsp_putc(int)
 
 /* Unity 2.5.1 declares UnityFail() and UnityIgnore() noreturn whatever

@@ -23,14 +23,14 @@ extern void initialise_monitor_handles(void);
 int main(void);
 
 /* System control block fault status registers (ARMv7-M) */
-#define SCB_CFSR (*(volatile uint32_t *)0xE000ED28u)
-#define SCB_HFSR (*(volatile uint32_t *)0xE000ED2Cu)
+#define SCB_CFSR  (*(volatile uint32_t *)0xE000ED28u)
+#define SCB_HFSR  (*(volatile uint32_t *)0xE000ED2Cu)
 #define SCB_MMFAR (*(volatile uint32_t *)0xE000ED34u)
-#define SCB_BFAR (*(volatile uint32_t *)0xE000ED38u)
+#define SCB_BFAR  (*(volatile uint32_t *)0xE000ED38u)
 /* CCR.DIV_0_TRP: make integer division by zero fault instead of giving 0 */
-#define SCB_CCR (*(volatile uint32_t *)0xE000ED14u)
-#define SCB_CCR_DIV_0_TRP (1u << 4)
-#define SCB_CPACR (*(volatile uint32_t *)0xE000ED88u)
+#define SCB_CCR                  (*(volatile uint32_t *)0xE000ED14u)
+#define SCB_CCR_DIV_0_TRP        (1u << 4)
+#define SCB_CPACR                (*(volatile uint32_t *)0xE000ED88u)
 #define SCB_CPACR_CP10_CP11_FULL (0xFu << 20)
 
 const char bsp_name[] = "arm-cm3";
@@ -49,9 +49,10 @@ void bsp_exit(int status)
 static const char *exception_name(uint32_t number)
 {
   static const char *const names[16] = {
-    "thread", "reset", "NMI", "HardFault", "MemManage", "BusFault",
-    "UsageFault", "reserved", "reserved", "reserved", "reserved", "SVCall",
-    "DebugMonitor", "reserved", "PendSV", "SysTick",
+      "thread",       "reset",    "NMI",        "HardFault",
+      "MemManage",    "BusFault", "UsageFault", "reserved",
+      "reserved",     "reserved", "reserved",   "SVCall",
+      "DebugMonitor", "reserved", "PendSV",     "SysTick",
   };
 
   return (number < 16u) ? names[number] : "IRQ";
@@ -89,18 +90,17 @@ void bsp_fault_report(const uint32_t *frame, uint32_t ipsr)
  * so that the Cortex-M0 build (armv6-m) assembles the same code. */
 __attribute__((__naked__)) static void fault_entry(void)
 {
-  __asm__ volatile(
-    "movs r0, #4\n"
-    "mov r1, lr\n"
-    "tst r1, r0\n"
-    "bne 1f\n"
-    "mrs r0, msp\n"
-    "b 2f\n"
-    "1: mrs r0, psp\n"
-    "2: mrs r1, ipsr\n"
-    "ldr r2, =bsp_fault_report\n"
-    "bx r2\n"
-    ".ltorg\n");
+  __asm__ volatile("movs r0, #4\n"
+                   "mov r1, lr\n"
+                   "tst r1, r0\n"
+                   "bne 1f\n"
+                   "mrs r0, msp\n"
+                   "b 2f\n"
+                   "1: mrs r0, psp\n"
+                   "2: mrs r1, ipsr\n"
+                   "ldr r2, =bsp_fault_report\n"
+                   "bx r2\n"
+                   ".ltorg\n");
 }
 
 void bsp_reset(void) __attribute__((__noreturn__));
@@ -138,26 +138,26 @@ void bsp_reset(void)
 typedef void (*vector_t)(void);
 
 /* Cortex-M vector table: initial stack pointer, then the handlers. */
-__attribute__((__section__(".isr_vector"), __used__))
-static const vector_t vectors[16 + 48] = {
-  [0] = (vector_t)(uintptr_t)&__stack_top,
-  [1] = bsp_reset,
-  [2] = fault_entry,  /* NMI */
-  [3] = fault_entry,  /* HardFault */
-  [4] = fault_entry,  /* MemManage */
-  [5] = fault_entry,  /* BusFault */
-  [6] = fault_entry,  /* UsageFault */
-  [11] = fault_entry, /* SVCall */
-  [12] = fault_entry, /* DebugMonitor */
-  [14] = fault_entry, /* PendSV */
-  [15] = fault_entry, /* SysTick */
-  [16 ... 63] = fault_entry,
+__attribute__((__section__(".isr_vector"),
+               __used__)) static const vector_t vectors[16 + 48] = {
+    [0] = (vector_t)(uintptr_t)&__stack_top,
+    [1] = bsp_reset,
+    [2] = fault_entry,  /* NMI */
+    [3] = fault_entry,  /* HardFault */
+    [4] = fault_entry,  /* MemManage */
+    [5] = fault_entry,  /* BusFault */
+    [6] = fault_entry,  /* UsageFault */
+    [11] = fault_entry, /* SVCall */
+    [12] = fault_entry, /* DebugMonitor */
+    [14] = fault_entry, /* PendSV */
+    [15] = fault_entry, /* SysTick */
+    [16 ... 63] = fault_entry,
 };
 
 /* Benchmark counter: SysTick, a 24-bit down-counter at the core clock. */
-#define SYST_CSR (*(volatile uint32_t *)0xE000E010u)
-#define SYST_RVR (*(volatile uint32_t *)0xE000E014u)
-#define SYST_CVR (*(volatile uint32_t *)0xE000E018u)
+#define SYST_CSR                   (*(volatile uint32_t *)0xE000E010u)
+#define SYST_RVR                   (*(volatile uint32_t *)0xE000E014u)
+#define SYST_CVR                   (*(volatile uint32_t *)0xE000E018u)
 #define SYST_CSR_ENABLE_CORE_CLOCK 5u /* ENABLE | CLKSOURCE, no interrupt */
 
 const uint32_t bsp_spin_insns_per_iteration = 2u;

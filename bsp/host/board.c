@@ -35,11 +35,11 @@ static void write_text(const char *s)
 static void on_fatal_signal(int sig)
 {
   write_text("\n" BSP_EXCEPTION_MARKER "signal ");
-  write_text(sig == SIGSEGV   ? "SIGSEGV"
-             : sig == SIGBUS  ? "SIGBUS"
-             : sig == SIGILL  ? "SIGILL"
-             : sig == SIGFPE  ? "SIGFPE"
-                              : "SIGABRT");
+  write_text(sig == SIGSEGV  ? "SIGSEGV"
+             : sig == SIGBUS ? "SIGBUS"
+             : sig == SIGILL ? "SIGILL"
+             : sig == SIGFPE ? "SIGFPE"
+                             : "SIGABRT");
   write_text("\n");
   _exit(BSP_EXIT_EXCEPTION);
 }
@@ -48,7 +48,7 @@ static void on_fatal_signal(int sig)
  * harness sees each line as it is printed, and fatal signals reported. */
 __attribute__((__constructor__)) static void host_board_init(void)
 {
-  static const int sigs[] = { SIGSEGV, SIGBUS, SIGILL, SIGFPE, SIGABRT };
+  static const int sigs[] = {SIGSEGV, SIGBUS, SIGILL, SIGFPE, SIGABRT};
   size_t i;
 
   (void)setvbuf(stdout, NULL, _IOLBF, 0);

@@ -10,12 +10,12 @@
 #include "console.h"
 
 /* CCSR block, mapped by start.S */
-#define CCSR_BASE 0xE0000000u
-#define UART0_THR (CCSR_BASE + 0x4500u)  /* transmit holding register */
-#define UART0_LSR (CCSR_BASE + 0x4505u)  /* line status register */
-#define UART_LSR_THRE 0x20u              /* transmit holding register empty */
-#define GUTS_RSTCR (CCSR_BASE + 0xE00B0u)
-#define RSTCR_HRESET_REQ 0x2u            /* QEMU: reset; with -no-reboot, exit */
+#define CCSR_BASE        0xE0000000u
+#define UART0_THR        (CCSR_BASE + 0x4500u) /* transmit holding register */
+#define UART0_LSR        (CCSR_BASE + 0x4505u) /* line status register */
+#define UART_LSR_THRE    0x20u /* transmit holding register empty */
+#define GUTS_RSTCR       (CCSR_BASE + 0xE00B0u)
+#define RSTCR_HRESET_REQ 0x2u /* QEMU: reset; with -no-reboot, exit */
 
 const char bsp_name[] = "ppc-e500";
 
@@ -50,15 +50,28 @@ void bsp_exit(int status)
 static const char *interrupt_name(uint32_t ivor)
 {
   static const char *const names[16] = {
-    "critical input", "machine check", "data storage", "instruction storage",
-    "external input", "alignment", "program", "floating-point unavailable",
-    "system call", "auxiliary processor unavailable", "decrementer",
-    "fixed-interval timer", "watchdog", "data TLB error",
-    "instruction TLB error", "debug",
+      "critical input",
+      "machine check",
+      "data storage",
+      "instruction storage",
+      "external input",
+      "alignment",
+      "program",
+      "floating-point unavailable",
+      "system call",
+      "auxiliary processor unavailable",
+      "decrementer",
+      "fixed-interval timer",
+      "watchdog",
+      "data TLB error",
+      "instruction TLB error",
+      "debug",
   };
   static const char *const spe_names[4] = {
-    "SPE unavailable", "SPE floating-point data",
-    "SPE floating-point round", "performance monitor",
+      "SPE unavailable",
+      "SPE floating-point data",
+      "SPE floating-point round",
+      "performance monitor",
   };
 
   if (ivor < 16u) {

@@ -42,8 +42,8 @@ drdc_status_t drdc_rtems_tod_from_utc(const drdc_time_leap_t *leap,
   if ((utc == NULL) || (tod == NULL)) {
     return DRDC_E_NULL;
   }
-  st = drdc_time_utc_to_rtems_tod(leap, utc,
-                                  rtems_clock_get_ticks_per_second(), &t);
+  st = drdc_time_utc_to_rtems_tod(leap, utc, rtems_clock_get_ticks_per_second(),
+                                  &t);
   if (!drdc_status_is_error(st)) {
     tod->year = t.year;
     tod->month = t.month;

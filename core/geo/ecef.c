@@ -55,8 +55,7 @@ static inline drdc_status_t point_status(drdc_nas_t lat, drdc_nas_t lon,
 
 /* out of line (one copy for the functions of ecef.c and pose.c that
  * check points): a leaf, called before any deep chain starts */
-DRDC_NOINLINE drdc_status_t drdc__geo_check_point(
-  const drdc_geo_point_t *p)
+DRDC_NOINLINE drdc_status_t drdc__geo_check_point(const drdc_geo_point_t *p)
 {
   return point_status(p->lat, p->lon, p->height);
 }
@@ -80,8 +79,8 @@ static int64_t lon_rad(drdc_nas_t lon)
 /* (a, b) <- (a c + b s, b c - a s) for c = cos t, s = sin t: the
  * products of turn(), out of line so that the two old values and a sum
  * it keeps across them are not on the stack under the sin/cos */
-static DRDC_NOINLINE void turn_apply(const int64_t sc[2],
-                                                 int64_t *a, int64_t *b)
+static DRDC_NOINLINE void turn_apply(const int64_t sc[2], int64_t *a,
+                                     int64_t *b)
 {
   int64_t a0 = *a;
 
@@ -96,7 +95,7 @@ static DRDC_NOINLINE void turn_apply(const int64_t sc[2],
  * the stack. |a|, |b| < 2^61. */
 static void turn(int64_t t, int64_t *a, int64_t *b)
 {
-  int64_t sc[2] = { 0, 0 };
+  int64_t sc[2] = {0, 0};
 
   geo_sincos(t, &sc[0], &sc[1]);
   turn_apply(sc, a, b);
@@ -150,10 +149,11 @@ static inline int64_t prime_vertical_q36(int64_t s)
  * latitude, then those of the longitude, share one pair of slots, and
  * only cos phi and N + h are kept across the second sin/cos: the frame
  * under the roots and sin/cos of every tangent-plane chain stays small. */
-static inline DRDC_ALWAYS_INLINE void acc_body(
-  const drdc_geo_point_t *p, bool sub, int64_t *x, int64_t *y, int64_t *z)
+static inline DRDC_ALWAYS_INLINE void acc_body(const drdc_geo_point_t *p,
+                                               bool sub, int64_t *x, int64_t *y,
+                                               int64_t *z)
 {
-  int64_t sc[2] = { 0, 0 };
+  int64_t sc[2] = {0, 0};
   int64_t cphi;
   int64_t n;
   int64_t v;
@@ -177,7 +177,7 @@ static inline DRDC_ALWAYS_INLINE void acc_body(
  * bits; no wrapper frame on the chains of drdc_geo_to_ecef() and of the
  * tangent-plane conversions) */
 void drdc__geo_ecef_acc_q36(const drdc_geo_point_t *p, bool sub, int64_t *x,
-                      int64_t *y, int64_t *z)
+                            int64_t *y, int64_t *z)
 {
   acc_body(p, sub, x, y, z);
 }
@@ -296,8 +296,8 @@ static int64_t height_q36(const bowring_t *b)
 {
   int64_t w2 = GEO_ONE - drdc__geo_mul(GEO_E2, drdc__geo_mul(b->v, b->v));
 
-  return (drdc__geo_mul(b->p, b->u) + drdc__geo_mul(b->z, b->v))
-         - drdc__geo_mul(A_Q36, drdc__geo_mul(w2, rsqrt_q58(w2, 2u)));
+  return (drdc__geo_mul(b->p, b->u) + drdc__geo_mul(b->z, b->v)) -
+         drdc__geo_mul(A_Q36, drdc__geo_mul(w2, rsqrt_q58(w2, 2u)));
 }
 
 /* Below this height (Q27.36: -50 km) the point is less than 6 300 km
@@ -319,8 +319,8 @@ static drdc_status_t geodetic_direction(bowring_t *b)
   if ((b->u != 0) || (b->v != 0)) {
     b->p = normalise(b);
   }
-  if ((b->p < (ECEF_CORE * Q36_PER_Q16))
-      && (ecef_abs64(b->z) < (ECEF_CORE * Q36_PER_Q16))) {
+  if ((b->p < (ECEF_CORE * Q36_PER_Q16)) &&
+      (ecef_abs64(b->z) < (ECEF_CORE * Q36_PER_Q16))) {
     return DRDC_E_HEIGHT;
   }
   /* tan beta_0 = a z / (b p), then tan beta = (b / a) tan phi */
@@ -365,8 +365,7 @@ static inline drdc_nas_t angle_nas(int64_t y, int64_t x, int64_t *slot)
  * b->v, the longitude into b->u. A sibling call of its caller, so that
  * no status is kept across the atan2 in the caller's frame; never
  * fails. */
-static DRDC_NOINLINE drdc_status_t lat_lon_into(bowring_t *b,
-                                                            drdc_nas_t lon)
+static DRDC_NOINLINE drdc_status_t lat_lon_into(bowring_t *b, drdc_nas_t lon)
 {
   b->v = angle_nas(b->v, b->u, &b->z);
   b->u = lon;
@@ -413,17 +412,16 @@ drdc_status_t drdc_geo_from_ecef(const drdc_vec3_q47_16_t *ecef,
   }
   /* each bound on both sides, with no negation of the coordinate
    * (ecef_abs64() of INT64_MIN would overflow) */
-  if ((ecef->x >= ECEF_COORD_MAX) || (ecef->x <= -ECEF_COORD_MAX)
-      || (ecef->y >= ECEF_COORD_MAX) || (ecef->y <= -ECEF_COORD_MAX)
-      || (ecef->z >= ECEF_COORD_MAX) || (ecef->z <= -ECEF_COORD_MAX)) {
+  if ((ecef->x >= ECEF_COORD_MAX) || (ecef->x <= -ECEF_COORD_MAX) ||
+      (ecef->y >= ECEF_COORD_MAX) || (ecef->y <= -ECEF_COORD_MAX) ||
+      (ecef->z >= ECEF_COORD_MAX) || (ecef->z <= -ECEF_COORD_MAX)) {
     return DRDC_E_HEIGHT;
   }
   /* as drdc__geo_geodetic_q36(), reading the coordinates again after each
    * call rather than keeping them: the longitude from the Q47.16 values
    * (the same angle: atan2 scales its arguments exactly) */
-  lon = ((ecef->x == 0) && (ecef->y == 0))
-          ? 0
-          : angle_nas(ecef->y, ecef->x, &b.p);
+  lon = ((ecef->x == 0) && (ecef->y == 0)) ? 0
+                                           : angle_nas(ecef->y, ecef->x, &b.p);
   b.u = ecef->x * Q36_PER_Q16;
   b.v = ecef->y * Q36_PER_Q16;
   b.z = ecef->z * Q36_PER_Q16;
@@ -446,7 +444,7 @@ static bool fits_q15_16(int64_t v)
  * ref's meridian plane t, east); about east by the latitude: (t, dz) ->
  * (up, north). */
 drdc_status_t drdc__geo_plane_turn(const drdc_geo_point_t *ref, bool ned,
-                             int64_t d[3], drdc_vec3_q15_16_t *out)
+                                   int64_t d[3], drdc_vec3_q15_16_t *out)
 {
   turn(lon_rad(ref->lon), &d[0], &d[1]);
   turn(drdc__geo_rad_from_nas(ref->lat), &d[0], &d[2]);
@@ -474,7 +472,7 @@ static drdc_status_t plane_of(const drdc_geo_point_t *ref,
                               drdc_vec3_q15_16_t *out)
 {
   drdc_status_t st;
-  int64_t d[3] = { 0, 0, 0 };
+  int64_t d[3] = {0, 0, 0};
 
   st = drdc__geo_check_point(ref);
   if (st == DRDC_OK) {
@@ -511,10 +509,9 @@ drdc_status_t drdc_geo_to_ned(const drdc_geo_point_t *ref,
 /* turn() of b's (north, up) by -latitude (lon false) or of its (east,
  * horizontal) by -longitude (lon true), the slots chosen here: its
  * caller keeps b alone, not the addresses of two of its slots */
-static DRDC_NOINLINE void turn_plane(int64_t t, bowring_t *b,
-                                                 bool lon)
+static DRDC_NOINLINE void turn_plane(int64_t t, bowring_t *b, bool lon)
 {
-  int64_t sc[2] = { 0, 0 };
+  int64_t sc[2] = {0, 0};
 
   geo_sincos(t, &sc[0], &sc[1]);
   turn_apply(sc, lon ? &b->v : &b->z, &b->u);
@@ -527,10 +524,10 @@ static DRDC_NOINLINE void turn_plane(int64_t t, bowring_t *b,
  * argument on Cortex-M3), and cos phi then waits in b->p (free until the
  * inverse) rather than in registers across the second sin/cos: a frame
  * that keeps b, p and N + h only. */
-static DRDC_NOINLINE drdc_status_t
-acc_plane(const geo_lat_lon_t *p, bowring_t *b)
+static DRDC_NOINLINE drdc_status_t acc_plane(const geo_lat_lon_t *p,
+                                             bowring_t *b)
 {
-  int64_t sc[2] = { 0, 0 };
+  int64_t sc[2] = {0, 0};
   int64_t n;
   int64_t v;
 
@@ -551,8 +548,8 @@ acc_plane(const geo_lat_lon_t *p, bowring_t *b)
 
 /* point_status() of drdc__geo_ecef_of_plane()'s point: a leaf, so that its
  * caller keeps only ref and b across it */
-static DRDC_NOINLINE drdc_status_t
-plane_point_status(const geo_lat_lon_t *ref, const bowring_t *b)
+static DRDC_NOINLINE drdc_status_t plane_point_status(const geo_lat_lon_t *ref,
+                                                      const bowring_t *b)
 {
   return point_status(ref->lat, ref->lon, b->p);
 }
@@ -564,8 +561,8 @@ plane_point_status(const geo_lat_lon_t *ref, const bowring_t *b)
  * point's ECEF added. The check here, and acc_plane()'s DRDC_OK returned by a
  * sibling call: a caller that holds the latitude and longitude alone (16 bytes)
  * saves no register across the check (issue 8's stack). */
-DRDC_NOINLINE drdc_status_t
-drdc__geo_ecef_of_plane(const geo_lat_lon_t *ref, bowring_t *b)
+DRDC_NOINLINE drdc_status_t drdc__geo_ecef_of_plane(const geo_lat_lon_t *ref,
+                                                    bowring_t *b)
 {
   drdc_status_t st = plane_point_status(ref, b);
 

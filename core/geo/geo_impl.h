@@ -199,7 +199,7 @@ void drdc__geo_ups_reverse(bool north, geo_tm_t *tm);
  * written only on DRDC_OK.
  */
 drdc_status_t drdc__geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,
-                              int32_t prec, char *text, size_t size);
+                                    int32_t prec, char *text, size_t size);
 
 /** Added to a zone (0..60) for the southern hemisphere: the code of a
  *  grid position that drdc__geo_mgrs_decode_tm() returns and the reverse
@@ -236,26 +236,26 @@ int64_t drdc__geo_ups_q36(int64_t a);
 int drdc__geo_grid_forward_projection(int32_t code, geo_tm_t *tm);
 
 /** Metres in Q47.16. */
-#define GEO_METRES(v) ((int64_t)(v) * INT64_C(65536))
+#define GEO_METRES(v) ((int64_t)(v)*INT64_C(65536))
 
 /** GeoConvert's UTM coordinate limits (UTMUPS::CheckCoords, including its
  *  100 km slop), metres; the forward projection checks its result and the
  *  reverse its input against the same ones. */
-#define GEO_UTM_E_MIN GEO_METRES(0)
-#define GEO_UTM_E_MAX GEO_METRES(1000000)
-#define GEO_UTM_N_NORTH_MIN GEO_METRES(-9100000)
-#define GEO_UTM_N_NORTH_MAX GEO_METRES(9600000)
-#define GEO_UTM_N_SOUTH_MIN GEO_METRES(900000)
-#define GEO_UTM_N_SOUTH_MAX GEO_METRES(19600000)
-#define GEO_UTM_FALSE_EASTING GEO_METRES(500000)
+#define GEO_UTM_E_MIN                GEO_METRES(0)
+#define GEO_UTM_E_MAX                GEO_METRES(1000000)
+#define GEO_UTM_N_NORTH_MIN          GEO_METRES(-9100000)
+#define GEO_UTM_N_NORTH_MAX          GEO_METRES(9600000)
+#define GEO_UTM_N_SOUTH_MIN          GEO_METRES(900000)
+#define GEO_UTM_N_SOUTH_MAX          GEO_METRES(19600000)
+#define GEO_UTM_FALSE_EASTING        GEO_METRES(500000)
 #define GEO_UTM_FALSE_NORTHING_SOUTH GEO_METRES(10000000)
 
 /** GeoConvert's UPS limits (100 km slop included), metres; the same for
  *  easting and northing. */
-#define GEO_UPS_NORTH_MIN GEO_METRES(1200000)
-#define GEO_UPS_NORTH_MAX GEO_METRES(2800000)
-#define GEO_UPS_SOUTH_MIN GEO_METRES(700000)
-#define GEO_UPS_SOUTH_MAX GEO_METRES(3300000)
+#define GEO_UPS_NORTH_MIN    GEO_METRES(1200000)
+#define GEO_UPS_NORTH_MAX    GEO_METRES(2800000)
+#define GEO_UPS_SOUTH_MIN    GEO_METRES(700000)
+#define GEO_UPS_SOUTH_MAX    GEO_METRES(3300000)
 #define GEO_UPS_FALSE_ORIGIN GEO_METRES(2000000)
 
 /** A UPS easting or northing (Q47.16) within the limits of its
@@ -293,8 +293,8 @@ static inline drdc_nas_t geo_central_meridian(int32_t zone)
  *  tm's address rather than the 64-bit convergence, which would leave an
  *  argument on the caller's stack on Cortex-M3. */
 drdc_status_t drdc__geo_w_attitude(const drdc_WUTMPose_t *u,
-                             const drdc_WMGRSPose_t *m, const geo_tm_t *tm,
-                             drdc_WPose_t *out);
+                                   const drdc_WMGRSPose_t *m,
+                                   const geo_tm_t *tm, drdc_WPose_t *out);
 
 /** The attitude and height of drdc_pose_wmgrs_from_w() (in
  *  utm_forward.c), after the projection: w's attitude turned from true to
@@ -333,7 +333,7 @@ drdc_status_t drdc__geo_check_point(const drdc_geo_point_t *p);
  * that only one point and the three sums are on the stack.
  */
 void drdc__geo_ecef_acc_q36(const drdc_geo_point_t *p, bool sub, int64_t *x,
-                      int64_t *y, int64_t *z);
+                            int64_t *y, int64_t *z);
 
 /**
  * ENU (ned false) or NED (ned true) in Q15.16 of the ECEF difference
@@ -342,7 +342,7 @@ void drdc__geo_ecef_acc_q36(const drdc_geo_point_t *p, bool sub, int64_t *x,
  * is outside Q15.16, else DRDC_OK.
  */
 drdc_status_t drdc__geo_plane_turn(const drdc_geo_point_t *ref, bool ned,
-                             int64_t d[3], drdc_vec3_q15_16_t *out);
+                                   int64_t d[3], drdc_vec3_q15_16_t *out);
 
 /**
  * The state of the inverse (ECEF -> geodetic, Bowring's iteration) in

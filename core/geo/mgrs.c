@@ -44,12 +44,12 @@ static const char digits[] = "0123456789";
 static const char latband[] = "CDEFGHJKLMNPQRSTUVWX";
 static const char upsband[] = "ABYZ";
 static const char utmrow[] = "ABCDEFGHJKLMNPQRSTUV";
-static const char *const utmcols[3] = { "ABCDEFGH", "JKLMNPQR", "STUVWXYZ" };
+static const char *const utmcols[3] = {"ABCDEFGH", "JKLMNPQR", "STUVWXYZ"};
 /* south-west (A), south-east (B), north-west (Y), north-east (Z) */
-static const char *const upscols[4] = { "JKLPQRSTUXYZ", "ABCFGHJKLPQR",
-                                        "RSTUXYZ", "ABCFGHJ" };
-static const char *const upsrows[2] = { "ABCDEFGHJKLMNPQRSTUVWXYZ",
-                                        "ABCDEFGHJKLMNP" };
+static const char *const upscols[4] = {"JKLPQRSTUXYZ", "ABCFGHJKLPQR",
+                                       "RSTUXYZ", "ABCFGHJ"};
+static const char *const upsrows[2] = {"ABCDEFGHJKLMNPQRSTUVWXYZ",
+                                       "ABCDEFGHJKLMNP"};
 
 /* index of c in set, letters in either case; -1 when absent. Out of
  * line: the decoder calls it at seven places, a copy each when inlined
@@ -97,12 +97,12 @@ static int64_t micrometres(int64_t v, unsigned frac_bits)
     return -1;
   }
   /* shifts of the non-negative value: no 64-bit division */
-  return (int64_t)(((u >> frac_bits) * UINT64_C(1000000))
-                   + ((frac * UINT64_C(1000000)) >> frac_bits));
+  return (int64_t)(((u >> frac_bits) * UINT64_C(1000000)) +
+                   ((frac * UINT64_C(1000000)) >> frac_bits));
 }
 
 drdc_status_t drdc__geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,
-                              int32_t prec, char *text, size_t size)
+                                    int32_t prec, char *text, size_t size)
 {
   return drdc__geo_mgrs_format_bits(u, 16u, lat, prec, text, size);
 }
@@ -155,8 +155,8 @@ drdc_status_t drdc__geo_mgrs_format_bits(const drdc_geo_utm_t *u,
   }
   /* zone digits and band (UTM) or the UPS letter, two square letters,
    * the digits, the NUL */
-  need = ((u->zone != DRDC_GEO_ZONE_UPS) ? 3u : 1u)
-         + ((prec >= 0) ? (2u + (2u * (size_t)prec)) : 0u) + 1u;
+  need = ((u->zone != DRDC_GEO_ZONE_UPS) ? 3u : 1u) +
+         ((prec >= 0) ? (2u + (2u * (size_t)prec)) : 0u) + 1u;
   if (size < need) {
     return DRDC_E_BUFFER;
   }
@@ -178,14 +178,13 @@ drdc_status_t drdc__geo_mgrs_format_bits(const drdc_geo_utm_t *u,
     if (prec >= 0) {
       buf[n] = utmcols[(u->zone - 1) % 3][ix - 1];
       n++;
-      buf[n] = utmrow[(iy + (((u->zone % 2) == 0) ? EVEN_ROW_SHIFT : 0))
-                      % ROW_PERIOD];
+      buf[n] = utmrow[(iy + (((u->zone % 2) == 0) ? EVEN_ROW_SHIFT : 0)) %
+                      ROW_PERIOD];
       n++;
     }
   } else {
     int32_t half = (u->north ? 2 : 0) + (eastp ? 1 : 0);
-    int64_t first = u->north ? UPS_NORTH_FIRST
-                             : UPS_SOUTH_FIRST;
+    int64_t first = u->north ? UPS_NORTH_FIRST : UPS_SOUTH_FIRST;
 
     buf[n] = upsband[half];
     n++;
@@ -232,8 +231,8 @@ static int32_t utm_row(int32_t iband, int32_t icol, int32_t irow_letter)
   int32_t maxrow = (iband < 9) ? (int32_t)drdc__geo_floor_div(high, 90) : 94;
   /* C's division truncates towards zero, as GeographicLib's does */
   int32_t baserow = ((minrow + maxrow) / 2) - (ROW_PERIOD / 2);
-  int32_t irow = (((irow_letter - baserow) + SOUTH_ROWS) % ROW_PERIOD)
-                 + baserow;
+  int32_t irow =
+      (((irow_letter - baserow) + SOUTH_ROWS) % ROW_PERIOD) + baserow;
 
   if ((irow < minrow) || (irow > maxrow)) {
     int32_t sband = (iband >= 0) ? iband : (-iband - 1);
@@ -241,10 +240,10 @@ static int32_t utm_row(int32_t iband, int32_t icol, int32_t irow_letter)
     int32_t scol = (icol < 4) ? icol : (-icol + 7);
 
     /* the squares of 31X-37X and of band X above 80 degrees */
-    if (!(((srow == 70) && (sband == 8) && (scol >= 2))
-          || ((srow == 71) && (sband == 7) && (scol <= 2))
-          || ((srow == 79) && (sband == 9) && (scol >= 1))
-          || ((srow == 80) && (sband == 8) && (scol <= 1)))) {
+    if (!(((srow == 70) && (sband == 8) && (scol >= 2)) ||
+          ((srow == 71) && (sband == 7) && (scol <= 2)) ||
+          ((srow == 79) && (sband == 9) && (scol >= 1)) ||
+          ((srow == 80) && (sband == 8) && (scol <= 1)))) {
       irow = SOUTH_ROWS;
     }
   }
@@ -311,11 +310,11 @@ int32_t drdc__geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec)
      * and centre */
     if (utmp) {
       tm->eta = (((zone == 31) && (iband == 17)) ? 4 : 5) * TILE_Q16;
-      tm->xi = (drdc__geo_floor_div((160 * (int64_t)iband) - 1511, 18)
-                + (north ? 0 : SOUTH_ROWS)) * TILE_Q16;
+      tm->xi = (drdc__geo_floor_div((160 * (int64_t)iband) - 1511, 18) +
+                (north ? 0 : SOUTH_ROWS)) *
+               TILE_Q16;
     } else {
-      tm->eta = ((((iband % 2) == 1) ? 4 : -4) + UPS_POLE_INDEX)
-                * TILE_Q16;
+      tm->eta = ((((iband % 2) == 1) ? 4 : -4) + UPS_POLE_INDEX) * TILE_Q16;
       tm->xi = UPS_POLE_INDEX * TILE_Q16;
     }
     tm->gamma = tm->eta;
@@ -355,8 +354,7 @@ int32_t drdc__geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec)
     icol = icol + 1;
   } else {
     bool eastp = ((iband % 2) == 1);
-    int32_t first = north ? (int32_t)UPS_NORTH_FIRST
-                          : (int32_t)UPS_SOUTH_FIRST;
+    int32_t first = north ? (int32_t)UPS_NORTH_FIRST : (int32_t)UPS_SOUTH_FIRST;
 
     icol = icol + (eastp ? UPS_POLE_INDEX : first);
     irow = irow + first;

@@ -32,8 +32,9 @@ drdc_bam32_t drdc_pose_bam_from_convergence(drdc_nas_t convergence)
  * turn_about_down() once the half angle is known: r and the sine and
  * cosine are not in a frame under the division that finds it (issue 8's
  * stack). */
-static DRDC_NOINLINE drdc_status_t
-turn_by_half(const drdc_quat_t *q, drdc_bam32_t half, drdc_quat_t *out)
+static DRDC_NOINLINE drdc_status_t turn_by_half(const drdc_quat_t *q,
+                                                drdc_bam32_t half,
+                                                drdc_quat_t *out)
 {
   drdc_q1_30_t s = 0;
   drdc_q1_30_t c = 0;
@@ -59,8 +60,8 @@ static drdc_status_t turn_about_down(const drdc_quat_t *q, drdc_nas_t angle,
 
 static bool convergence_ok(drdc_nas_t convergence)
 {
-  return (convergence <= (180 * GEO_NAS_DEG))
-         && (convergence >= (-180 * GEO_NAS_DEG));
+  return (convergence <= (180 * GEO_NAS_DEG)) &&
+         (convergence >= (-180 * GEO_NAS_DEG));
 }
 
 drdc_status_t drdc_pose_grid_from_true(const drdc_quat_t *q_true,
@@ -97,8 +98,8 @@ drdc_status_t drdc_pose_true_from_grid(const drdc_quat_t *q_grid,
  * q_true = q_z(gamma) q_grid straight into out->q, gamma (nas, |gamma| <
  * 180 degrees) in tm->gamma, then the height; written only on DRDC_OK. */
 drdc_status_t drdc__geo_w_attitude(const drdc_WUTMPose_t *u,
-                             const drdc_WMGRSPose_t *m, const geo_tm_t *tm,
-                             drdc_WPose_t *out)
+                                   const drdc_WMGRSPose_t *m,
+                                   const geo_tm_t *tm, drdc_WPose_t *out)
 {
   drdc_status_t st;
 
@@ -148,8 +149,7 @@ void drdc__geo_weutm_attitude(const drdc_WePose_t *w, drdc_WeUTMPose_t *out)
  * drdc_pose_le_from_we() past 256 B (issue 8). uint64_t -> int64_t of a
  * value above INT64_MAX is modulo 2^64 in GCC and Clang (implementation-
  * defined in C99, no undefined behaviour). */
-static inline drdc_q47_16_t ellipsoidal_height(drdc_q47_16_t h,
-                                               drdc_q47_16_t n)
+static inline drdc_q47_16_t ellipsoidal_height(drdc_q47_16_t h, drdc_q47_16_t n)
 {
   uint64_t sum = (uint64_t)h + (uint64_t)n;
 
@@ -200,9 +200,9 @@ static void load_ned(const drdc_vec3_q15_16_t *ned, geo_bowring_t *b)
  * `used` (callers GCC cannot see) keeps the pointers: IPA-SRA would pass
  * the three values instead, copied in the frames of position_*() (16
  * bytes more each on PowerPC); the linker still drops it with them. */
-static DRDC_NOINLINE __attribute__((used)) drdc_status_t ecef_at(
-  const drdc_nas_t *lat, const drdc_nas_t *lon, const drdc_q47_16_t *height,
-  geo_bowring_t *b)
+static DRDC_NOINLINE __attribute__((used)) drdc_status_t
+ecef_at(const drdc_nas_t *lat, const drdc_nas_t *lon,
+        const drdc_q47_16_t *height, geo_bowring_t *b)
 {
   geo_lat_lon_t ll;
 
@@ -216,9 +216,10 @@ static DRDC_NOINLINE __attribute__((used)) drdc_status_t ecef_at(
  * the latitude, longitude and ellipsoidal height into out, unless out is
  * NULL (the status alone); out unchanged on error. Only out is kept
  * across the calls. */
-static DRDC_NOINLINE drdc_status_t position_w(
-  drdc_q47_16_t geoid_separation, const drdc_WPose_t *ref,
-  const drdc_vec3_q15_16_t *ned, drdc_WPose_t *out)
+static DRDC_NOINLINE drdc_status_t position_w(drdc_q47_16_t geoid_separation,
+                                              const drdc_WPose_t *ref,
+                                              const drdc_vec3_q15_16_t *ned,
+                                              drdc_WPose_t *out)
 {
   geo_bowring_t b;
   drdc_status_t st;
@@ -239,10 +240,10 @@ static DRDC_NOINLINE drdc_status_t position_w(
 
 /* the status of drdc_pose_w_from_l()'s relative attitude alone (the
  * product in this frame, discarded) */
-static DRDC_NOINLINE drdc_status_t compose_status(
-  const drdc_WPose_t *ref, const drdc_lPose_t *l)
+static DRDC_NOINLINE drdc_status_t compose_status(const drdc_WPose_t *ref,
+                                                  const drdc_lPose_t *l)
 {
-  drdc_quat_t q = { 0, 0, 0, 0 };
+  drdc_quat_t q = {0, 0, 0, 0};
 
   return drdc_quat_compose(&ref->q, &l->q, &q);
 }
@@ -250,8 +251,9 @@ static DRDC_NOINLINE drdc_status_t compose_status(
 /* drdc_pose_w_from_l()'s relative attitude straight into out->q (written
  * only on DRDC_OK); taking the poses, so that the caller keeps no
  * pointer to their quaternions beside them */
-static DRDC_NOINLINE drdc_status_t compose_into(
-  const drdc_WPose_t *ref, const drdc_lPose_t *l, drdc_WPose_t *out)
+static DRDC_NOINLINE drdc_status_t compose_into(const drdc_WPose_t *ref,
+                                                const drdc_lPose_t *l,
+                                                drdc_WPose_t *out)
 {
   return drdc_quat_compose(&ref->q, &l->q, &out->q);
 }
@@ -270,7 +272,7 @@ drdc_status_t drdc_pose_w_from_l(const drdc_WPose_t *ref,
                                  drdc_q47_16_t geoid_separation,
                                  const drdc_lPose_t *l, drdc_WPose_t *out)
 {
-  drdc_vec3_q15_16_t ned = { 0, 0, 0 };
+  drdc_vec3_q15_16_t ned = {0, 0, 0};
   drdc_status_t att;
   drdc_status_t st;
 
@@ -283,8 +285,7 @@ drdc_status_t drdc_pose_w_from_l(const drdc_WPose_t *ref,
   att = compose_status(ref, l);
   st = drdc_quat_rotate_q15_16(&ref->q, &l->p, &ned);
   if (st == DRDC_OK) {
-    st = position_w(geoid_separation, ref, &ned,
-                    (att == DRDC_OK) ? out : NULL);
+    st = position_w(geoid_separation, ref, &ned, (att == DRDC_OK) ? out : NULL);
   }
   if (st == DRDC_OK) {
     st = att;
@@ -305,12 +306,14 @@ drdc_status_t drdc_pose_w_from_l(const drdc_WPose_t *ref,
  * the caller keeps no pointer to ref across this call (the 64-bit
  * separation first: on Cortex-M3 the arguments then leave one word
  * fewer on the caller's stack). */
-static DRDC_NOINLINE drdc_status_t ned_of(
-  drdc_q47_16_t geoid_separation, const drdc_WPose_t *ref,
-  const drdc_WPose_t *w, drdc_vec3_q15_16_t *ned, drdc_quat_t *inv)
+static DRDC_NOINLINE drdc_status_t ned_of(drdc_q47_16_t geoid_separation,
+                                          const drdc_WPose_t *ref,
+                                          const drdc_WPose_t *w,
+                                          drdc_vec3_q15_16_t *ned,
+                                          drdc_quat_t *inv)
 {
   drdc_geo_point_t pt;
-  int64_t d[3] = { 0, 0, 0 };
+  int64_t d[3] = {0, 0, 0};
   drdc_status_t st;
 
   ellipsoidal(ref, geoid_separation, &pt);
@@ -338,8 +341,9 @@ static DRDC_NOINLINE drdc_status_t ned_of(
  * attitude is composed into inv, no longer needed, for its status
  * alone). Out of line, so that no status is kept across a call in the
  * caller's frame. */
-static DRDC_NOINLINE drdc_status_t first_error(
-  drdc_quat_t *inv, const drdc_quat_t *wq, drdc_status_t rot)
+static DRDC_NOINLINE drdc_status_t first_error(drdc_quat_t *inv,
+                                               const drdc_quat_t *wq,
+                                               drdc_status_t rot)
 {
   drdc_status_t st = drdc_quat_compose(inv, wq, inv);
 
@@ -350,8 +354,8 @@ drdc_status_t drdc_pose_l_from_w(const drdc_WPose_t *ref,
                                  drdc_q47_16_t geoid_separation,
                                  const drdc_WPose_t *w, drdc_lPose_t *out)
 {
-  drdc_vec3_q15_16_t ned = { 0, 0, 0 };
-  drdc_quat_t inv = { 0, 0, 0, 0 };
+  drdc_vec3_q15_16_t ned = {0, 0, 0};
+  drdc_quat_t inv = {0, 0, 0, 0};
   drdc_status_t st;
 
   if ((ref == NULL) || (w == NULL) || (out == NULL)) {
@@ -388,7 +392,7 @@ drdc_status_t drdc_pose_l_from_w(const drdc_WPose_t *ref,
 
 drdc_status_t drdc_pose_l_from_le(const drdc_lePose_t *le, drdc_lPose_t *out)
 {
-  drdc_quat_t q = { 0, 0, 0, 0 };
+  drdc_quat_t q = {0, 0, 0, 0};
 
   if ((le == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
@@ -438,19 +442,20 @@ static void ellipsoidal_we(const drdc_WePose_t *we, drdc_q47_16_t n,
  * relative attitude of drdc_pose_le_from_we() and of
  * drdc_pose_we_from_le(), in its own frame (the second quaternion is not
  * on the caller's stack under the rotation) */
-static DRDC_NOINLINE drdc_status_t compose_euler(
-  drdc_quat_t *inv, const drdc_euler_t *e)
+static DRDC_NOINLINE drdc_status_t compose_euler(drdc_quat_t *inv,
+                                                 const drdc_euler_t *e)
 {
-  drdc_quat_t q = { 0, 0, 0, 0 };
+  drdc_quat_t q = {0, 0, 0, 0};
 
   (void)drdc_quat_from_euler(e, &q);
   return drdc_quat_compose(inv, &q, inv);
 }
 
 /* position_w() for a {We} reference and result */
-static DRDC_NOINLINE drdc_status_t position_we(
-  drdc_q47_16_t geoid_separation, const drdc_WePose_t *ref,
-  const drdc_vec3_q15_16_t *ned, drdc_WePose_t *out)
+static DRDC_NOINLINE drdc_status_t position_we(drdc_q47_16_t geoid_separation,
+                                               const drdc_WePose_t *ref,
+                                               const drdc_vec3_q15_16_t *ned,
+                                               drdc_WePose_t *out)
 {
   geo_bowring_t b;
   drdc_status_t st;
@@ -484,10 +489,9 @@ static DRDC_NOINLINE drdc_status_t position_we(
  * read before out is written (out may be ref). */
 drdc_status_t drdc_pose_we_from_le(const drdc_WePose_t *ref,
                                    drdc_q47_16_t geoid_separation,
-                                   const drdc_lePose_t *le,
-                                   drdc_WePose_t *out)
+                                   const drdc_lePose_t *le, drdc_WePose_t *out)
 {
-  drdc_lPose_t t = { { 0, 0, 0 }, { 0, 0, 0, 0 } };
+  drdc_lPose_t t = {{0, 0, 0}, {0, 0, 0, 0}};
   drdc_status_t att;
   drdc_status_t st;
 
@@ -503,8 +507,7 @@ drdc_status_t drdc_pose_we_from_le(const drdc_WePose_t *ref,
     return st;
   }
   att = compose_euler(&t.q, &le->e);
-  st = position_we(geoid_separation, ref, &t.p,
-                   (att == DRDC_OK) ? out : NULL);
+  st = position_we(geoid_separation, ref, &t.p, (att == DRDC_OK) ? out : NULL);
   if (st == DRDC_OK) {
     st = att;
   }
@@ -519,12 +522,14 @@ drdc_status_t drdc_pose_we_from_le(const drdc_WePose_t *ref,
 /* ned_of() for two {We} poses, read in place (no {W} copy of either on
  * the stack): the same checks, sums and statuses; the conjugate of the
  * quaternion of ref's angles into *inv. */
-static DRDC_NOINLINE drdc_status_t ned_of_we(
-  drdc_q47_16_t geoid_separation, const drdc_WePose_t *ref,
-  const drdc_WePose_t *we, drdc_vec3_q15_16_t *ned, drdc_quat_t *inv)
+static DRDC_NOINLINE drdc_status_t ned_of_we(drdc_q47_16_t geoid_separation,
+                                             const drdc_WePose_t *ref,
+                                             const drdc_WePose_t *we,
+                                             drdc_vec3_q15_16_t *ned,
+                                             drdc_quat_t *inv)
 {
   drdc_geo_point_t pt;
-  int64_t d[3] = { 0, 0, 0 };
+  int64_t d[3] = {0, 0, 0};
   drdc_status_t st;
 
   ellipsoidal_we(ref, geoid_separation, &pt);
@@ -554,10 +559,9 @@ static DRDC_NOINLINE drdc_status_t ned_of_we(
  * in the order of drdc_pose_l_from_w(): the attitude's first) */
 drdc_status_t drdc_pose_le_from_we(const drdc_WePose_t *ref,
                                    drdc_q47_16_t geoid_separation,
-                                   const drdc_WePose_t *we,
-                                   drdc_lePose_t *out)
+                                   const drdc_WePose_t *we, drdc_lePose_t *out)
 {
-  drdc_lPose_t l = { { 0, 0, 0 }, { 0, 0, 0, 0 } };
+  drdc_lPose_t l = {{0, 0, 0}, {0, 0, 0, 0}};
   drdc_status_t st;
   drdc_status_t rot;
 

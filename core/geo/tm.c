@@ -36,8 +36,9 @@ static inline int64_t tm_mul(int64_t a, int64_t b)
  * recurrence (the Chebyshev polynomials of the second kind, |U_n| <= n+1)
  * amplifies them to a few LSB at most. Trailing zero coefficients are
  * skipped (exact zeros). */
-static inline DRDC_ALWAYS_INLINE int64_t
-sine_series(const int64_t *coef, unsigned terms, int64_t s2, int64_t c2)
+static inline DRDC_ALWAYS_INLINE int64_t sine_series(const int64_t *coef,
+                                                     unsigned terms, int64_t s2,
+                                                     int64_t c2)
 {
   int64_t a = 2 * c2;
   int64_t b1 = 0;
@@ -74,7 +75,7 @@ sine_series(const int64_t *coef, unsigned terms, int64_t s2, int64_t c2)
  * forward projection's output slots that are free then). */
 typedef struct tm_zeta {
   int64_t c2[2]; /* cos 2 zeta = c2[0] + i c2[1] */
-  int64_t r1; /* b_(j+1), b_(j+2): real and imaginary parts */
+  int64_t r1;    /* b_(j+1), b_(j+2): real and imaginary parts */
   int64_t i1;
   int64_t r2;
   int64_t i2;
@@ -84,8 +85,8 @@ typedef struct tm_zeta {
  * and sinh, cosh of 2 eta, which the caller leaves in z->r1, i1, r2, i2
  * (the recurrence's slots, free until it starts): cos 2 zeta = c2 ch2 -
  * i s2 sh2, sin 2 zeta = s2 ch2 + i c2 sh2 */
-static inline DRDC_ALWAYS_INLINE void
-zeta_set(tm_zeta_t *z, int64_t *sr, int64_t *si)
+static inline DRDC_ALWAYS_INLINE void zeta_set(tm_zeta_t *z, int64_t *sr,
+                                               int64_t *si)
 {
   z->c2[0] = drdc__geo_mul(z->i1, z->i2);
   z->c2[1] = -drdc__geo_mul(z->r1, z->r2);
@@ -104,9 +105,8 @@ zeta_set(tm_zeta_t *z, int64_t *sr, int64_t *si)
  * held 80 bytes of frame on Cortex-M3, the calls 40 + 12 (2 %
  * of drdc_geo_to_utm()'s cycles on PowerPC, the library 1 KB smaller:
  * the loops of horner() are no longer inlined into each series). */
-static DRDC_NOINLINE void clenshaw(const int64_t *coef,
-                                               bool deriv, tm_zeta_t *z,
-                                               const int64_t c2[2])
+static DRDC_NOINLINE void clenshaw(const int64_t *coef, bool deriv,
+                                   tm_zeta_t *z, const int64_t c2[2])
 {
   unsigned j;
 
@@ -136,8 +136,8 @@ static DRDC_NOINLINE void clenshaw(const int64_t *coef,
 /* After clenshaw() over the coefficients: the sum sin(2 zeta) b_1 =
  * dxi + i deta into *sr, *si, which held sin 2 zeta (zeta_set()): no
  * second copy is on the stack. */
-static DRDC_NOINLINE void krueger_sum(const tm_zeta_t *z,
-                                                  int64_t *sr, int64_t *si)
+static DRDC_NOINLINE void krueger_sum(const tm_zeta_t *z, int64_t *sr,
+                                      int64_t *si)
 {
   int64_t d = drdc__geo_mul(*sr, z->r1) - drdc__geo_mul(*si, z->i1);
 
@@ -186,12 +186,10 @@ static int64_t horner(const int64_t *coef, unsigned n, int64_t x)
 static int64_t tm_atanh(int64_t t)
 {
   static const int64_t coef[19] = {
-    Q58_RECIP(1),  Q58_RECIP(3),  Q58_RECIP(5),  Q58_RECIP(7),
-    Q58_RECIP(9),  Q58_RECIP(11), Q58_RECIP(13), Q58_RECIP(15),
-    Q58_RECIP(17), Q58_RECIP(19), Q58_RECIP(21), Q58_RECIP(23),
-    Q58_RECIP(25), Q58_RECIP(27), Q58_RECIP(29), Q58_RECIP(31),
-    Q58_RECIP(33), Q58_RECIP(35), Q58_RECIP(37)
-  };
+      Q58_RECIP(1),  Q58_RECIP(3),  Q58_RECIP(5),  Q58_RECIP(7),  Q58_RECIP(9),
+      Q58_RECIP(11), Q58_RECIP(13), Q58_RECIP(15), Q58_RECIP(17), Q58_RECIP(19),
+      Q58_RECIP(21), Q58_RECIP(23), Q58_RECIP(25), Q58_RECIP(27), Q58_RECIP(29),
+      Q58_RECIP(31), Q58_RECIP(33), Q58_RECIP(35), Q58_RECIP(37)};
   return drdc__geo_mul(horner(coef, 19u, drdc__geo_mul(t, t)), t);
 }
 
@@ -199,13 +197,15 @@ static int64_t tm_atanh(int64_t t)
  * (first omitted term x^18 / 18! < 1e-23); about 1 LSB. */
 static int64_t tm_cosh(int64_t x)
 {
-  static const int64_t coef[9] = {
-    Q58_RECIP(INT64_C(1)),           Q58_RECIP(INT64_C(2)),
-    Q58_RECIP(INT64_C(24)),          Q58_RECIP(INT64_C(720)),
-    Q58_RECIP(INT64_C(40320)),       Q58_RECIP(INT64_C(3628800)),
-    Q58_RECIP(INT64_C(479001600)),   Q58_RECIP(INT64_C(87178291200)),
-    Q58_RECIP(INT64_C(20922789888000))
-  };
+  static const int64_t coef[9] = {Q58_RECIP(INT64_C(1)),
+                                  Q58_RECIP(INT64_C(2)),
+                                  Q58_RECIP(INT64_C(24)),
+                                  Q58_RECIP(INT64_C(720)),
+                                  Q58_RECIP(INT64_C(40320)),
+                                  Q58_RECIP(INT64_C(3628800)),
+                                  Q58_RECIP(INT64_C(479001600)),
+                                  Q58_RECIP(INT64_C(87178291200)),
+                                  Q58_RECIP(INT64_C(20922789888000))};
   return horner(coef, 9u, drdc__geo_mul(x, x));
 }
 
@@ -214,13 +214,15 @@ static int64_t tm_cosh(int64_t x)
  * projection needs it for |eta| <= 0.08 (eastings 0 .. 1 000 km). */
 static int64_t tm_sinh(int64_t x)
 {
-  static const int64_t coef[9] = {
-    Q58_RECIP(INT64_C(1)),             Q58_RECIP(INT64_C(6)),
-    Q58_RECIP(INT64_C(120)),           Q58_RECIP(INT64_C(5040)),
-    Q58_RECIP(INT64_C(362880)),        Q58_RECIP(INT64_C(39916800)),
-    Q58_RECIP(INT64_C(6227020800)),    Q58_RECIP(INT64_C(1307674368000)),
-    Q58_RECIP(INT64_C(355687428096000))
-  };
+  static const int64_t coef[9] = {Q58_RECIP(INT64_C(1)),
+                                  Q58_RECIP(INT64_C(6)),
+                                  Q58_RECIP(INT64_C(120)),
+                                  Q58_RECIP(INT64_C(5040)),
+                                  Q58_RECIP(INT64_C(362880)),
+                                  Q58_RECIP(INT64_C(39916800)),
+                                  Q58_RECIP(INT64_C(6227020800)),
+                                  Q58_RECIP(INT64_C(1307674368000)),
+                                  Q58_RECIP(INT64_C(355687428096000))};
 
   return drdc__geo_mul(horner(coef, 9u, drdc__geo_mul(x, x)), x);
 }
@@ -234,11 +236,10 @@ static int64_t tm_sinh(int64_t x)
 static int64_t tm_atan(int64_t q)
 {
   static const int64_t coef[15] = {
-    Q58_RECIP(1),   -Q58_RECIP(3),  Q58_RECIP(5),   -Q58_RECIP(7),
-    Q58_RECIP(9),   -Q58_RECIP(11), Q58_RECIP(13),  -Q58_RECIP(15),
-    Q58_RECIP(17),  -Q58_RECIP(19), Q58_RECIP(21),  -Q58_RECIP(23),
-    Q58_RECIP(25),  -Q58_RECIP(27), Q58_RECIP(29)
-  };
+      Q58_RECIP(1),  -Q58_RECIP(3),  Q58_RECIP(5),  -Q58_RECIP(7),
+      Q58_RECIP(9),  -Q58_RECIP(11), Q58_RECIP(13), -Q58_RECIP(15),
+      Q58_RECIP(17), -Q58_RECIP(19), Q58_RECIP(21), -Q58_RECIP(23),
+      Q58_RECIP(25), -Q58_RECIP(27), Q58_RECIP(29)};
   return drdc__geo_mul(horner(coef, 15u, drdc__geo_mul(q, q)), q);
 }
 
@@ -247,9 +248,8 @@ static int64_t tm_atan(int64_t q)
  * d^2/6 + d^4/120) and cos d = 1 - d^2/2 + d^4/24 - d^6/720 (first omitted
  * terms d^7/5040 and d^8/40320 below 1e-20), then the addition theorems:
  * 11 products instead of a full sin/cos. */
-static DRDC_NOINLINE void rotate_small(int64_t s, int64_t c,
-                                                   int64_t d, int64_t *s_out,
-                                                   int64_t *c_out)
+static DRDC_NOINLINE void rotate_small(int64_t s, int64_t c, int64_t d,
+                                       int64_t *s_out, int64_t *c_out)
 {
   int64_t d2 = drdc__geo_mul(d, d);
   int64_t sd = drdc__geo_mul(
@@ -276,12 +276,11 @@ static DRDC_NOINLINE void rotate_small(int64_t s, int64_t c,
  * lies within 1 - 0.0113 .. 1 + 0.0046 in the whole domain. */
 static DRDC_NOINLINE int64_t tm_sqrt1p(int64_t u)
 {
-  static const int64_t coef[10] = {
-    INT64_C(1) << 58,          INT64_C(1) << 57,         -(INT64_C(1) << 55),
-    INT64_C(1) << 54,          -(INT64_C(5) << 51),      INT64_C(7) << 50,
-    -(INT64_C(21) << 48),      INT64_C(33) << 47,        -(INT64_C(429) << 43),
-    INT64_C(715) << 42
-  };
+  static const int64_t coef[10] = {INT64_C(1) << 58,      INT64_C(1) << 57,
+                                   -(INT64_C(1) << 55),   INT64_C(1) << 54,
+                                   -(INT64_C(5) << 51),   INT64_C(7) << 50,
+                                   -(INT64_C(21) << 48),  INT64_C(33) << 47,
+                                   -(INT64_C(429) << 43), INT64_C(715) << 42};
   return horner(coef, 10u, u);
 }
 
@@ -310,8 +309,8 @@ int64_t drdc__geo_lat_series(const int64_t *coef, int64_t s, int64_t c)
  * needed only up to the series: they wait in out->k and out->gamma,
  * which the series' derivative overwrites. */
 typedef struct tm_fwd {
-  int64_t schi;  /* sin chi, chi the conformal latitude */
-  int64_t slam;  /* sin and cos of the longitude from the meridian */
+  int64_t schi; /* sin chi, chi the conformal latitude */
+  int64_t slam; /* sin and cos of the longitude from the meridian */
   int64_t clam;
   int64_t kfac;  /* 1 - e^2 sin^2 phi */
   int64_t ratio; /* cos chi / cos phi (cos phi until fwd_ratio()) */
@@ -352,8 +351,7 @@ static DRDC_NOINLINE int fwd_sphere(tm_fwd_t *st, geo_tm_t *out)
 /* the scale's cos chi / cos phi (cos chi in out->k, cos phi in
  * st->ratio, from fwd_sphere()) into st->ratio, its limit at the poles:
  * the division's chain from a frame of its own */
-static DRDC_NOINLINE void fwd_ratio(tm_fwd_t *st,
-                                                const geo_tm_t *out)
+static DRDC_NOINLINE void fwd_ratio(tm_fwd_t *st, const geo_tm_t *out)
 {
   st->ratio = (st->ratio > 0) ? geo_div(out->k, st->ratio) : GEO_POLE_RATIO;
 }
@@ -363,8 +361,7 @@ static DRDC_NOINLINE void fwd_ratio(tm_fwd_t *st,
  * domain); far from the central meridian near the poles |q| exceeds
  * tm_atan()'s 0.25: then 0, and the caller takes the full atan2 (from
  * its own small frame). out->xi holds chi, out->k cos chi. */
-static DRDC_NOINLINE int fwd_xi(const tm_fwd_t *st,
-                                            geo_tm_t *out)
+static DRDC_NOINLINE int fwd_xi(const tm_fwd_t *st, geo_tm_t *out)
 {
   int64_t q = GEO_ONE - st->clam;
 
@@ -380,10 +377,10 @@ static DRDC_NOINLINE int fwd_xi(const tm_fwd_t *st,
 /* cos 2 zeta at xi' + i eta' into z, sin 2 zeta into out->gamma and
  * out->k (see fwd_series()); out of line: its products' temporaries are
  * not in the frame that holds z under the recurrence */
-static DRDC_NOINLINE void fwd_zeta(const tm_fwd_t *st,
-                                               geo_tm_t *out, tm_zeta_t *z)
+static DRDC_NOINLINE void fwd_zeta(const tm_fwd_t *st, geo_tm_t *out,
+                                   tm_zeta_t *z)
 {
-  z->c2[0] = drdc__geo_mul(st->schi, st->ch);                    /* sin xi' */
+  z->c2[0] = drdc__geo_mul(st->schi, st->ch); /* sin xi' */
   z->c2[1] =
       drdc__geo_mul(drdc__geo_mul(out->k, st->clam), st->ch); /* cos xi' */
   z->r1 = 2 * drdc__geo_mul(z->c2[0], z->c2[1]);
@@ -399,8 +396,7 @@ static DRDC_NOINLINE void fwd_zeta(const tm_fwd_t *st,
  * cos xi' = cos chi cos lam cosh eta': no exponential and no sin/cos of
  * xi'. Adds the sum to out->xi, out->eta; p and q to out->gamma, out->k
  * (which held sinh eta' and cos chi). */
-static DRDC_NOINLINE void fwd_series(const tm_fwd_t *st,
-                                                 geo_tm_t *out)
+static DRDC_NOINLINE void fwd_series(const tm_fwd_t *st, geo_tm_t *out)
 {
   tm_zeta_t z;
 
@@ -421,12 +417,11 @@ static DRDC_NOINLINE void fwd_series(const tm_fwd_t *st,
  * out->k) into out->k: k0 A/a sqrt(1 - e^2 sin^2 phi) (cos chi / cos
  * phi) cosh eta' times |p + i q|, the two roots as one. Out of line, so
  * that the root's chain starts from a frame that keeps one value. */
-static DRDC_NOINLINE void fwd_scale(const tm_fwd_t *st,
-                                                geo_tm_t *out)
+static DRDC_NOINLINE void fwd_scale(const tm_fwd_t *st, geo_tm_t *out)
 {
-  int64_t p = drdc__geo_mul(st->kfac, drdc__geo_mul(out->gamma, out->gamma)
-                                    + drdc__geo_mul(out->k, out->k))
-              - GEO_ONE;
+  int64_t p = drdc__geo_mul(st->kfac, drdc__geo_mul(out->gamma, out->gamma) +
+                                          drdc__geo_mul(out->k, out->k)) -
+              GEO_ONE;
 
   /* the root into out->k (0 first, as geo_sqrt() gives on failure): no
    * result slot in this frame */
@@ -436,15 +431,14 @@ static DRDC_NOINLINE void fwd_scale(const tm_fwd_t *st,
     out->k = 0;
     (void)drdc_fx_sqrt_q5_58(GEO_ONE + p, &out->k);
   }
-  out->k = drdc__geo_mul(GEO_K0A_OVER_A,
-                   drdc__geo_mul(drdc__geo_mul(out->k, st->ratio), st->ch));
+  out->k = drdc__geo_mul(
+      GEO_K0A_OVER_A, drdc__geo_mul(drdc__geo_mul(out->k, st->ratio), st->ch));
 }
 
 /* the convergence's atan2(y, x) arguments into st->slam, st->clam (no
  * longer needed there) from p, q in out->gamma, out->k, before
  * fwd_scale() overwrites q */
-static DRDC_NOINLINE void fwd_conv_args(tm_fwd_t *st,
-                                                   const geo_tm_t *out)
+static DRDC_NOINLINE void fwd_conv_args(tm_fwd_t *st, const geo_tm_t *out)
 {
   int64_t y = drdc__geo_mul(st->schi, st->slam);
 
@@ -459,11 +453,10 @@ static DRDC_NOINLINE void fwd_conv_args(tm_fwd_t *st,
  * of the quotient, |y| <= x / 4 tested before dividing (so the quotient
  * cannot overflow and is at most 0.25): 1; beyond, 0, and the caller
  * takes the full atan2 from its own small frame. */
-static DRDC_NOINLINE int fwd_gamma(const tm_fwd_t *st,
-                                               geo_tm_t *out)
+static DRDC_NOINLINE int fwd_gamma(const tm_fwd_t *st, geo_tm_t *out)
 {
-  if ((st->clam > 0) && (st->slam <= (st->clam / 4))
-      && (st->slam >= -(st->clam / 4))) {
+  if ((st->clam > 0) && (st->slam <= (st->clam / 4)) &&
+      (st->slam >= -(st->clam / 4))) {
     out->gamma = tm_atan(geo_div(st->slam, st->clam));
     return 1;
   }
@@ -473,8 +466,8 @@ static DRDC_NOINLINE int fwd_gamma(const tm_fwd_t *st,
 /* the forward projection's stages in the caller's frame, on its state
  * (inline, so that no frame of its own lies between the caller and the
  * stages) */
-static inline DRDC_ALWAYS_INLINE int
-tm_forward_stages(tm_fwd_t *st, geo_tm_t *out)
+static inline DRDC_ALWAYS_INLINE int tm_forward_stages(tm_fwd_t *st,
+                                                       geo_tm_t *out)
 {
   if (fwd_sphere(st, out) == 0) {
     return 0;
@@ -514,8 +507,7 @@ int drdc__geo_tm_forward(geo_tm_t *out)
  * of the range checks of utm_forward.c. */
 drdc_status_t drdc_geo_tm_forward(drdc_nas_t lat, drdc_nas_t dlon,
                                   drdc_q47_16_t *x, drdc_q47_16_t *y,
-                                  drdc_nas_t *convergence,
-                                  drdc_q5_58_t *scale)
+                                  drdc_nas_t *convergence, drdc_q5_58_t *scale)
 {
   geo_tm_t tm;
   tm_fwd_t st;

@@ -37,9 +37,9 @@ int drdc__geo_ups_forward(bool north, geo_tm_t *out)
   geo_sincos(p, &out->xi, &out->eta);
   out->eta = p + geo_chi_series(out->xi, out->eta);
   out->k = drdc__geo_mul(GEO_UPS_2K0_OVER_C, drdc__geo_cos_ratio(out->xi));
-  out->k = drdc__geo_mul(out->k, geo_sqrt(GEO_ONE - drdc__geo_mul(GEO_E2,
-                                                      drdc__geo_mul(out->xi,
-                                                              out->xi))));
+  out->k = drdc__geo_mul(
+      out->k, geo_sqrt(GEO_ONE -
+                       drdc__geo_mul(GEO_E2, drdc__geo_mul(out->xi, out->xi))));
   geo_sincos(out->eta, &out->xi, &out->eta); /* sin chi, cos chi */
   if (out->xi < UPS_MIN_SIN_CHI) {
     return 0;
@@ -77,8 +77,8 @@ void drdc__geo_ups_reverse(bool north, geo_tm_t *tm)
    * straight from the exact metres: next to the pole a Q5.58 angle would
    * keep too few bits, and a Q47.16 hypot would cost 7.6 um */
   t = drdc__geo_muldiv((int64_t)drdc_fx_hypot_s64(tm->xi * INT64_C(1048576),
-                                            tm->eta * INT64_C(1048576)),
-                 TWO_POW_61, GEO_UPS_K_Q39);
+                                                  tm->eta * INT64_C(1048576)),
+                       TWO_POW_61, GEO_UPS_K_Q39);
   tm->eta = tm->k;
   tm->xi = 0;
   (void)drdc_fx_atan2_q5_58(GEO_ONE - drdc__geo_mul(t, t), 2 * t, &tm->xi);

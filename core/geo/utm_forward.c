@@ -23,7 +23,7 @@
 #define UTM_LAT_MAX (INT64_C(84) * GEO_NAS_DEG)
 
 /* Q47.16 metres -> Q28.36 (exact for the false origins used here). */
-#define Q36_FROM_Q16(v) ((v) * INT64_C(1048576))
+#define Q36_FROM_Q16(v) ((v)*INT64_C(1048576))
 
 /* Every zone code from here up asks forward_args() for Q28.36. */
 #define ZONE_FINE_MIN (GEO_ZONE_Q36 + DRDC_GEO_ZONE_STANDARD)
@@ -65,8 +65,7 @@ static int32_t standard_zone(drdc_nas_t lat, drdc_nas_t lon)
   return (int32_t)zone;
 }
 
-drdc_status_t drdc_geo_utm_zone(drdc_nas_t lat, drdc_nas_t lon,
-                                int32_t *zone)
+drdc_status_t drdc_geo_utm_zone(drdc_nas_t lat, drdc_nas_t lon, int32_t *zone)
 {
   drdc_status_t st;
 
@@ -98,8 +97,8 @@ static int64_t q36_from_angle(int64_t a)
  * status of the first check that fails. The caller's frame then keeps
  * this one code and out across the projection, not lat, lon, zone and
  * the flags (issue 8's stack). */
-static DRDC_NOINLINE int32_t
-forward_args(int32_t zone, const void *out, geo_tm_t *tm)
+static DRDC_NOINLINE int32_t forward_args(int32_t zone, const void *out,
+                                          geo_tm_t *tm)
 {
   drdc_nas_t lat = tm->xi;
   drdc_nas_t lon = tm->eta;
@@ -137,14 +136,16 @@ forward_args(int32_t zone, const void *out, geo_tm_t *tm)
  * utm_forward() share one struct on the stack, and the caller writes
  * convergence and scale from it. Out of line with three arguments (no
  * stack argument): its values are not in utm_forward()'s frame. */
-static DRDC_NOINLINE drdc_status_t
-ups_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm);
+static DRDC_NOINLINE drdc_status_t ups_from_tm(int32_t code,
+                                               drdc_geo_utm_t *out,
+                                               geo_tm_t *tm);
 
 /* After drdc__geo_ups_forward(): x and y in tm's xi and eta slots to easting
  * and northing, checked, into out. Out of line, one copy for
  * grid_to_utm() (a sibling call). */
-static DRDC_NOINLINE drdc_status_t
-ups_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
+static DRDC_NOINLINE drdc_status_t ups_from_tm(int32_t code,
+                                               drdc_geo_utm_t *out,
+                                               geo_tm_t *tm)
 {
   bool north = (code < GEO_CODE_SOUTH);
   bool fine = ((code % GEO_CODE_SOUTH) >= GEO_ZONE_Q36);
@@ -171,8 +172,9 @@ ups_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
  * request and the hemisphere from forward_args()'s code. Out of line,
  * after drdc__geo_tm_forward() has returned: its values (the offsets, the
  * rounded metres) are not in the frame under the projection. */
-static DRDC_NOINLINE drdc_status_t
-utm_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
+static DRDC_NOINLINE drdc_status_t utm_from_tm(int32_t code,
+                                               drdc_geo_utm_t *out,
+                                               geo_tm_t *tm)
 {
   bool north = (code < GEO_CODE_SOUTH);
   bool fine = ((code % GEO_CODE_SOUTH) >= GEO_ZONE_Q36);
@@ -214,8 +216,7 @@ utm_from_tm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
  * poses and the reverse (utm_reverse.c's grid_reverse(), hence external)
  * share one copy of the dispatch. Out of line (noinline): called, never
  * copied, from this file's entries too. */
-DRDC_NOINLINE int drdc__geo_grid_forward_projection(int32_t code,
-                                                         geo_tm_t *tm)
+DRDC_NOINLINE int drdc__geo_grid_forward_projection(int32_t code, geo_tm_t *tm)
 {
   if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
     return drdc__geo_ups_forward(code < GEO_CODE_SOUTH, tm);
@@ -227,8 +228,9 @@ DRDC_NOINLINE int drdc__geo_grid_forward_projection(int32_t code,
  * out: ups_from_tm() or utm_from_tm() by the zone of forward_args()'s
  * code, each a sibling call; one copy of the dispatch for utm_forward()
  * and grid_metres(). */
-static DRDC_NOINLINE drdc_status_t
-grid_to_utm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
+static DRDC_NOINLINE drdc_status_t grid_to_utm(int32_t code,
+                                               drdc_geo_utm_t *out,
+                                               geo_tm_t *tm)
 {
   if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
     return ups_from_tm(code, out, tm);
@@ -243,22 +245,22 @@ grid_to_utm(int32_t code, drdc_geo_utm_t *out, geo_tm_t *tm)
  * frame of its own on top of this one: a wrapper's frame, even a sibling
  * call's, counts on issue 8's chain (16 B on PowerPC). */
 static inline DRDC_ALWAYS_INLINE drdc_status_t
-utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
-            drdc_geo_utm_t *out, drdc_nas_t *convergence, drdc_q5_58_t *scale)
+utm_forward(drdc_nas_t lat, drdc_nas_t lon, int32_t zone, drdc_geo_utm_t *out,
+            drdc_nas_t *convergence, drdc_q5_58_t *scale)
 {
   /* forward_args()'s code: the zone, the fine request and the hemisphere
    * in one value, with out the only values of this frame live across the
    * projection; the stages before and after run out of line, each from
    * this frame (issue 8's stack) */
   int32_t code;
-  geo_tm_t tm = { lat, lon, 0, 0 };
+  geo_tm_t tm = {lat, lon, 0, 0};
 
   code = forward_args(zone, out, &tm);
   if (code < 0) {
     return (drdc_status_t)-code;
   }
-  if ((drdc__geo_grid_forward_projection(code, &tm) == 0)
-      || (grid_to_utm(code, out, &tm) != DRDC_OK)) {
+  if ((drdc__geo_grid_forward_projection(code, &tm) == 0) ||
+      (grid_to_utm(code, out, &tm) != DRDC_OK)) {
     return DRDC_E_RANGE;
   }
   if (convergence != NULL) {
@@ -276,10 +278,9 @@ drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
 {
   /* a zone code above the zones is DRDC_E_ZONE, never a request for
    * Q28.36 */
-  return utm_forward(lat, lon,
-                     (zone > DRDC_GEO_ZONE_MAX) ? (DRDC_GEO_ZONE_MAX + 1)
-                                                : zone,
-                     out, convergence, scale);
+  return utm_forward(
+      lat, lon, (zone > DRDC_GEO_ZONE_MAX) ? (DRDC_GEO_ZONE_MAX + 1) : zone,
+      out, convergence, scale);
 }
 
 /* A pose conversion of pose.c, here because it runs the body of
@@ -313,8 +314,7 @@ drdc_status_t drdc_pose_weutm_from_we(const drdc_WePose_t *w, int32_t zone,
  * (same statuses), left in tm->eta and tm->xi rather than in out: the
  * attitude, which can still fail, comes first. Out of line, after the
  * projection has returned: its drdc_geo_utm_t is not under it. */
-static DRDC_NOINLINE drdc_status_t
-grid_metres(int32_t code, geo_tm_t *tm)
+static DRDC_NOINLINE drdc_status_t grid_metres(int32_t code, geo_tm_t *tm)
 {
   drdc_geo_utm_t u;
   drdc_status_t st;
@@ -335,8 +335,8 @@ grid_metres(int32_t code, geo_tm_t *tm)
  * the projection stays called from their own frames (by
  * drdc__geo_grid_forward_projection(), a sibling call). */
 static inline DRDC_ALWAYS_INLINE drdc_status_t
-project_to_grid(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
-                const void *out, geo_tm_t *tm, int32_t *code)
+project_to_grid(drdc_nas_t lat, drdc_nas_t lon, int32_t zone, const void *out,
+                geo_tm_t *tm, int32_t *code)
 {
   tm->xi = lat;
   tm->eta = lon;
@@ -344,7 +344,7 @@ project_to_grid(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
   tm->k = 0;
   *code = forward_args(zone, out, tm);
   if (*code < 0) {
-    return (drdc_status_t)-*code;
+    return (drdc_status_t) - *code;
   }
   if (drdc__geo_grid_forward_projection(*code, tm) == 0) {
     return DRDC_E_RANGE;
@@ -396,8 +396,8 @@ drdc_status_t drdc_pose_wutm_from_w(const drdc_WPose_t *w, int32_t zone,
  * its drdc_geo_utm_t is not under the projection. tm holds
  * grid_metres()'s easting and northing (Q28.36) in its eta and xi slots,
  * and in its gamma and k slots the latitude (nas) and the precision. */
-static DRDC_NOINLINE drdc_status_t
-mgrs_from_tm(int32_t code, geo_tm_t *tm, char *text, size_t size)
+static DRDC_NOINLINE drdc_status_t mgrs_from_tm(int32_t code, geo_tm_t *tm,
+                                                char *text, size_t size)
 {
   drdc_geo_utm_t u;
   drdc_nas_t lat = tm->gamma;
@@ -417,8 +417,8 @@ mgrs_from_tm(int32_t code, geo_tm_t *tm, char *text, size_t size)
  * to Q47.16 (2^-36 m), so the truncation falls on the side of a digit
  * boundary that GeographicLib's value falls on, but within nanometres of
  * it. */
-drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
-                                   int32_t prec, char *text, size_t size)
+drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon, int32_t prec,
+                                   char *text, size_t size)
 {
   int32_t code;
   geo_tm_t tm;
@@ -428,8 +428,8 @@ drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
     return DRDC_E_NULL;
   }
   /* forward_args() only tests its out for NULL (text is not) */
-  st = project_to_grid(lat, lon, DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36,
-                       text, &tm, &code);
+  st = project_to_grid(lat, lon, DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, text,
+                       &tm, &code);
   if (st != DRDC_OK) {
     return st;
   }
@@ -448,8 +448,7 @@ drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
  * holds the longest text), so the MGRS poses write it last, after the
  * attitude and height; tm is left holding lat and prec. */
 static inline DRDC_ALWAYS_INLINE void
-mgrs_text(int32_t code, drdc_nas_t lat, int32_t prec, geo_tm_t *tm,
-          char *text)
+mgrs_text(int32_t code, drdc_nas_t lat, int32_t prec, geo_tm_t *tm, char *text)
 {
   tm->gamma = lat;
   tm->k = prec;
@@ -462,14 +461,14 @@ mgrs_text(int32_t code, drdc_nas_t lat, int32_t prec, geo_tm_t *tm,
  * for the text (out only tested for NULL). Inlined, as
  * project_to_grid(). */
 static inline DRDC_ALWAYS_INLINE drdc_status_t
-project_to_mgrs(drdc_nas_t lat, drdc_nas_t lon, int32_t prec,
-                const void *out, geo_tm_t *tm, int32_t *code)
+project_to_mgrs(drdc_nas_t lat, drdc_nas_t lon, int32_t prec, const void *out,
+                geo_tm_t *tm, int32_t *code)
 {
   if ((prec < DRDC_GEO_MGRS_PREC_MIN) || (prec > DRDC_GEO_MGRS_PREC_MAX)) {
     return DRDC_E_RANGE;
   }
-  return project_to_grid(lat, lon, DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36,
-                         out, tm, code);
+  return project_to_grid(lat, lon, DRDC_GEO_ZONE_STANDARD + GEO_ZONE_Q36, out,
+                         tm, code);
 }
 
 /* A pose conversion of pose.c, here for the reason of
@@ -489,8 +488,7 @@ drdc_status_t drdc_pose_wmgrs_from_w(const drdc_WPose_t *w, int32_t prec,
   if ((w == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = project_to_mgrs(w->latitude, w->longitude, prec, out, &tm,
-                       &code);
+  st = project_to_mgrs(w->latitude, w->longitude, prec, out, &tm, &code);
   if (st != DRDC_OK) {
     return st;
   }
@@ -514,13 +512,12 @@ drdc_status_t drdc_pose_wemgrs_from_we(const drdc_WePose_t *w, int32_t prec,
   if ((w == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = project_to_mgrs(w->latitude, w->longitude, prec, out, &tm,
-                       &code);
+  st = project_to_mgrs(w->latitude, w->longitude, prec, out, &tm, &code);
   if (st != DRDC_OK) {
     return st;
   }
-  out->e.yaw = w->e.yaw - drdc_pose_bam_from_convergence(
-                            drdc__geo_nas_from_rad(tm.gamma));
+  out->e.yaw = w->e.yaw -
+               drdc_pose_bam_from_convergence(drdc__geo_nas_from_rad(tm.gamma));
   out->e.pitch = w->e.pitch;
   out->e.roll = w->e.roll;
   out->height = w->height;

@@ -28,8 +28,7 @@ static DRDC_NOINLINE int64_t angle_from_metres(drdc_q47_16_t v)
  * (xi, eta on the sphere of radius k0 A) or drdc__geo_ups_reverse() (x, y from
  * the pole) takes in the same slots. Out of line, before the projection:
  * its constants and values are not in the frame under it. */
-static DRDC_NOINLINE drdc_status_t
-reverse_args(int32_t code, geo_tm_t *tm)
+static DRDC_NOINLINE drdc_status_t reverse_args(int32_t code, geo_tm_t *tm)
 {
   bool north = (code < GEO_CODE_SOUTH);
   drdc_q47_16_t n = tm->xi;
@@ -61,8 +60,7 @@ reverse_args(int32_t code, geo_tm_t *tm)
  * reverse_args()) on tm's slots. A sibling call of either: no frame of
  * its own on their chains, and its callers keep no hemisphere flag
  * across them. */
-static DRDC_NOINLINE void
-grid_reverse_projection(int32_t code, geo_tm_t *tm)
+static DRDC_NOINLINE void grid_reverse_projection(int32_t code, geo_tm_t *tm)
 {
   if ((code % GEO_CODE_SOUTH) == DRDC_GEO_ZONE_UPS) {
     drdc__geo_ups_reverse(code < GEO_CODE_SOUTH, tm);
@@ -76,8 +74,9 @@ grid_reverse_projection(int32_t code, geo_tm_t *tm)
  * into *lat and *lon, either NULL when not wanted, each written after its
  * slot is last read (they may point into tm's xi and eta). Out of line,
  * after the projection; DRDC_OK, for its callers' sibling call. */
-static DRDC_NOINLINE drdc_status_t
-reverse_angles(int32_t code, geo_tm_t *tm, drdc_nas_t *lat, drdc_nas_t *lon)
+static DRDC_NOINLINE drdc_status_t reverse_angles(int32_t code, geo_tm_t *tm,
+                                                  drdc_nas_t *lat,
+                                                  drdc_nas_t *lon)
 {
   int32_t zone = code % GEO_CODE_SOUTH;
   drdc_nas_t a;
@@ -88,17 +87,17 @@ reverse_angles(int32_t code, geo_tm_t *tm, drdc_nas_t *lat, drdc_nas_t *lon)
   if (lon != NULL) {
     a = drdc__geo_nas_from_rad(tm->eta);
     *lon = (zone == DRDC_GEO_ZONE_UPS)
-             ? a
-             : geo_lon_normalize(geo_central_meridian(zone) + a);
+               ? a
+               : geo_lon_normalize(geo_central_meridian(zone) + a);
   }
   return DRDC_OK;
 }
 
 /* The convergence (nas) and scale of the forward projection in tm into
  * *convergence and *scale, either NULL; DRDC_OK, as reverse_angles(). */
-static DRDC_NOINLINE drdc_status_t
-forward_outputs(const geo_tm_t *tm, drdc_nas_t *convergence,
-                drdc_q5_58_t *scale)
+static DRDC_NOINLINE drdc_status_t forward_outputs(const geo_tm_t *tm,
+                                                   drdc_nas_t *convergence,
+                                                   drdc_q5_58_t *scale)
 {
   if (convergence != NULL) {
     *convergence = drdc__geo_nas_from_rad(tm->gamma);
@@ -176,8 +175,8 @@ drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
  * statuses). Returns grid_reverse()'s code or minus the status. Out of
  * line, one copy for the four reverse poses, called before their
  * projection; the decoder a sibling call, its drdc_geo_utm_t nowhere. */
-static DRDC_NOINLINE int32_t
-grid_of(const drdc_geo_utm_t *in, const char *text, geo_tm_t *tm)
+static DRDC_NOINLINE int32_t grid_of(const drdc_geo_utm_t *in, const char *text,
+                                     geo_tm_t *tm)
 {
   size_t n = 0u;
 
@@ -228,9 +227,8 @@ static bool turn_cannot_fail(const drdc_quat_t *q)
 {
   const int32_t one = INT32_C(1073741824); /* 1.0 in Q1.30 */
 
-  return (q->s >= -one) && (q->s <= one) && (q->x >= -one) && (q->x <= one)
-         && (q->y >= -one) && (q->y <= one) && (q->z >= -one)
-         && (q->z <= one);
+  return (q->s >= -one) && (q->s <= one) && (q->x >= -one) && (q->x <= one) &&
+         (q->y >= -one) && (q->y <= one) && (q->z >= -one) && (q->z <= one);
 }
 
 /* drdc_pose_w_from_wutm() (u) and drdc_pose_w_from_wmgrs() (m; u NULL),
@@ -249,9 +247,9 @@ static bool turn_cannot_fail(const drdc_quat_t *q)
  * as before: the position's, then the turn's. Each pass a copy of
  * grid_reverse(), a few calls: no loop whose state would stay in this
  * frame across the projections. */
-static DRDC_NOINLINE drdc_status_t
-w_from_grid(const drdc_WUTMPose_t *u, const drdc_WMGRSPose_t *m,
-            drdc_WPose_t *out)
+static DRDC_NOINLINE drdc_status_t w_from_grid(const drdc_WUTMPose_t *u,
+                                               const drdc_WMGRSPose_t *m,
+                                               drdc_WPose_t *out)
 {
   geo_tm_t tm;
   drdc_status_t st;
@@ -269,9 +267,8 @@ w_from_grid(const drdc_WUTMPose_t *u, const drdc_WMGRSPose_t *m,
   }
   /* the position straight into out: nothing after it can fail now (the
    * same turn returns DRDC_OK) */
-  st = grid_position((u != NULL) ? &u->utm : NULL,
-                     (m != NULL) ? m->mgrs : NULL, &out->latitude,
-                     &out->longitude, &tm);
+  st = grid_position((u != NULL) ? &u->utm : NULL, (m != NULL) ? m->mgrs : NULL,
+                     &out->latitude, &out->longitude, &tm);
   if (st != DRDC_OK) {
     return st;
   }
@@ -282,8 +279,7 @@ w_from_grid(const drdc_WUTMPose_t *u, const drdc_WMGRSPose_t *m,
  * drdc_pose_weutm_from_we() (utm_forward.c): w_from_grid() runs the body of
  * drdc_geo_from_utm() in its own frame, in place of this one (a sibling
  * call). */
-drdc_status_t drdc_pose_w_from_wutm(const drdc_WUTMPose_t *u,
-                                    drdc_WPose_t *out)
+drdc_status_t drdc_pose_w_from_wutm(const drdc_WUTMPose_t *u, drdc_WPose_t *out)
 {
   if ((u == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
@@ -305,17 +301,16 @@ drdc_status_t drdc_pose_w_from_wmgrs(const drdc_WMGRSPose_t *m,
  * NULL), as w_from_grid(); nothing can fail after the projection, so the
  * position goes straight into out, the convergence waits in tm, and then
  * the yaw is turned. */
-static DRDC_NOINLINE drdc_status_t
-we_from_grid(const drdc_WeUTMPose_t *u, const drdc_WeMGRSPose_t *m,
-             drdc_WePose_t *out)
+static DRDC_NOINLINE drdc_status_t we_from_grid(const drdc_WeUTMPose_t *u,
+                                                const drdc_WeMGRSPose_t *m,
+                                                drdc_WePose_t *out)
 {
   const drdc_euler_t *e;
   geo_tm_t tm;
   drdc_status_t st;
 
-  st = grid_position((u != NULL) ? &u->utm : NULL,
-                     (m != NULL) ? m->mgrs : NULL, &out->latitude,
-                     &out->longitude, &tm);
+  st = grid_position((u != NULL) ? &u->utm : NULL, (m != NULL) ? m->mgrs : NULL,
+                     &out->latitude, &out->longitude, &tm);
   if (st != DRDC_OK) {
     return st;
   }

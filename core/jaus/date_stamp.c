@@ -8,11 +8,11 @@
 
 #include <drdc/jaus_date.h>
 
-#define DAY_MASK 0x1Fu
+#define DAY_MASK    0x1Fu
 #define MONTH_SHIFT 5u
-#define MONTH_MASK 0x0Fu
-#define YEAR_SHIFT 9u
-#define YEAR_MASK 0x7Fu
+#define MONTH_MASK  0x0Fu
+#define YEAR_SHIFT  9u
+#define YEAR_MASK   0x7Fu
 
 drdc_status_t drdc_jaus_date_pack(int32_t year, int32_t month, int32_t day,
                                   uint16_t *stamp)
@@ -34,8 +34,8 @@ drdc_status_t drdc_jaus_date_pack(int32_t year, int32_t month, int32_t day,
     return st;
   }
   offset = year - DRDC_JAUS_DATE_YEAR_MIN;
-  s = ((uint32_t)offset << YEAR_SHIFT) | ((uint32_t)month << MONTH_SHIFT)
-      | (uint32_t)day;
+  s = ((uint32_t)offset << YEAR_SHIFT) | ((uint32_t)month << MONTH_SHIFT) |
+      (uint32_t)day;
   *stamp = (uint16_t)s;
   return DRDC_OK;
 }

@@ -23,10 +23,10 @@
 #define JAUS_POSE_SCALED 8u
 
 /** Nano-arcseconds in 90 and 180 degrees. */
-#define JAUS_NAS_90 INT64_C(324000000000000)
+#define JAUS_NAS_90  INT64_C(324000000000000)
 #define JAUS_NAS_180 INT64_C(648000000000000)
 /** Metres as Q15.16 / Q47.16 raw values. */
-#define JAUS_METRES(m) ((int64_t)(m) * INT64_C(65536))
+#define JAUS_METRES(m) ((int64_t)(m)*INT64_C(65536))
 /** pi as a binary angle (2^32 per turn). */
 #define JAUS_BAM_PI INT64_C(2147483648)
 
@@ -43,19 +43,19 @@ typedef struct jaus_field {
  *  forms have 12 distinct ones, each stored once; a message's fields in
  *  a form are their rows, one byte each (issue 8, flash). _RA3 and _AS:
  *  the type of RA 3.x and of AS6009. */
-#define JAUS_F_LAT_RA3 0u
-#define JAUS_F_LAT_AS 1u
-#define JAUS_F_LON_RA3 2u
-#define JAUS_F_LON_AS 3u
-#define JAUS_F_ALT_RA3 4u
-#define JAUS_F_ALT_AS 5u
-#define JAUS_F_XY_RA3 6u
-#define JAUS_F_XY_AS 7u
+#define JAUS_F_LAT_RA3   0u
+#define JAUS_F_LAT_AS    1u
+#define JAUS_F_LON_RA3   2u
+#define JAUS_F_LON_AS    3u
+#define JAUS_F_ALT_RA3   4u
+#define JAUS_F_ALT_AS    5u
+#define JAUS_F_XY_RA3    6u
+#define JAUS_F_XY_AS     7u
 #define JAUS_F_ANGLE_RA3 8u
-#define JAUS_F_ANGLE_AS 9u
-#define JAUS_F_POS_RMS 10u
-#define JAUS_F_ATT_RMS 11u
-#define JAUS_FIELDS 12u
+#define JAUS_F_ANGLE_AS  9u
+#define JAUS_F_POS_RMS   10u
+#define JAUS_F_ATT_RMS   11u
+#define JAUS_FIELDS      12u
 
 /** The distinct fields (pose_messages.c). */
 extern const jaus_field_t drdc__jaus_fields[JAUS_FIELDS];
@@ -121,8 +121,7 @@ static inline uint32_t jaus_get_le(const uint8_t *p, size_t n)
  * little-endian. Nothing is written before every check has
  * passed: outputs unchanged on error.
  */
-drdc_status_t drdc_jaus_body_pack(const uint8_t *fields,
-                                  drdc_jaus_form_t form,
+drdc_status_t drdc_jaus_body_pack(const uint8_t *fields, drdc_jaus_form_t form,
                                   const drdc_jaus_local_pose_t *local,
                                   const drdc_jaus_global_pose_t *global,
                                   uint8_t *buf, size_t capacity,
@@ -136,8 +135,8 @@ drdc_status_t drdc_jaus_body_pack(const uint8_t *fields,
  * again into the body, so the body is unchanged on error.
  */
 drdc_status_t drdc_jaus_body_unpack(const uint8_t *fields,
-                                    drdc_jaus_form_t form,
-                                    const uint8_t *buf, size_t length,
+                                    drdc_jaus_form_t form, const uint8_t *buf,
+                                    size_t length,
                                     drdc_jaus_local_pose_t *local,
                                     drdc_jaus_global_pose_t *global);
 

@@ -61,13 +61,11 @@ static int64_t from_bits(uint32_t u, size_t n, drdc_jaus_type_t type)
   int64_t v = (int64_t)u;
   int64_t half = INT64_C(1) << ((8u * (uint32_t)n) - 1u);
 
-  if (((type == DRDC_JAUS_INT16) || (type == DRDC_JAUS_INT32))
-      && (v >= half)) {
+  if (((type == DRDC_JAUS_INT16) || (type == DRDC_JAUS_INT32)) && (v >= half)) {
     v -= 2 * half;
   }
   return v;
 }
-
 
 /* The raw value of scaled field `bit` of the body. */
 static int64_t field_get(const drdc_jaus_local_pose_t *local,
@@ -99,8 +97,7 @@ static int64_t field_get(const drdc_jaus_local_pose_t *local,
     v = drdc_jaus_angle_value(e->yaw);
     break;
   default:
-    v = (int64_t)((local != NULL) ? local->attitude_rms
-                                  : global->attitude_rms);
+    v = (int64_t)((local != NULL) ? local->attitude_rms : global->attitude_rms);
     break;
   }
   return v;
@@ -111,9 +108,9 @@ static int64_t field_get(const drdc_jaus_local_pose_t *local,
  * of line like field_get(): a leaf, off the deepest chain (issue 8,
  * flash: its switch inlined was 100/120 B of drdc_jaus_body_unpack() on
  * Cortex-M3/PowerPC). */
-static DRDC_NOINLINE void
-field_set(drdc_jaus_local_pose_t *local, drdc_jaus_global_pose_t *global,
-          unsigned bit, int64_t v)
+static DRDC_NOINLINE void field_set(drdc_jaus_local_pose_t *local,
+                                    drdc_jaus_global_pose_t *global,
+                                    unsigned bit, int64_t v)
 {
   drdc_euler_t *e = (local != NULL) ? &local->pose.e : &global->pose.e;
 
@@ -170,12 +167,10 @@ static int local_fits_q15_16(int64_t v)
   return (v >= (int64_t)INT32_MIN) && (v <= (int64_t)INT32_MAX);
 }
 
-drdc_status_t drdc_jaus_body_pack(const uint8_t *fields,
-                                  drdc_jaus_form_t form,
+drdc_status_t drdc_jaus_body_pack(const uint8_t *fields, drdc_jaus_form_t form,
                                   const drdc_jaus_local_pose_t *local,
                                   const drdc_jaus_global_pose_t *global,
-                                  uint8_t *buf, size_t capacity,
-                                  size_t *length)
+                                  uint8_t *buf, size_t capacity, size_t *length)
 {
   uint16_t presence = (local != NULL) ? local->presence : global->presence;
   uint32_t time_stamp =
@@ -221,13 +216,11 @@ drdc_status_t drdc_jaus_body_pack(const uint8_t *fields,
       const jaus_field_t *f = &drdc__jaus_fields[fields[bit]];
       int64_t integer = 0;
 
-      st = drdc_jaus_scaled_encode(v, f->min, f->max, f->type, form,
-                                   &integer);
+      st = drdc_jaus_scaled_encode(v, f->min, f->max, f->type, form, &integer);
       if (st != DRDC_OK) {
         return st;
       }
-      jaus_put_le(&buf[pos], to_bits(integer),
-                  jaus_field_size(bit));
+      jaus_put_le(&buf[pos], to_bits(integer), jaus_field_size(bit));
       pos += jaus_field_size(bit);
     }
   }
@@ -241,8 +234,8 @@ drdc_status_t drdc_jaus_body_pack(const uint8_t *fields,
 }
 
 drdc_status_t drdc_jaus_body_unpack(const uint8_t *fields,
-                                    drdc_jaus_form_t form,
-                                    const uint8_t *buf, size_t length,
+                                    drdc_jaus_form_t form, const uint8_t *buf,
+                                    size_t length,
                                     drdc_jaus_local_pose_t *local,
                                     drdc_jaus_global_pose_t *global)
 {
@@ -268,8 +261,8 @@ drdc_status_t drdc_jaus_body_unpack(const uint8_t *fields,
     return DRDC_E_OVERLONG;
   }
   if (jaus_present(presence, JAUS_TIME_STAMP_BIT) != 0) {
-    time_stamp = jaus_get_le(&buf[size - JAUS_TIME_STAMP_BYTES],
-                             JAUS_TIME_STAMP_BYTES);
+    time_stamp =
+        jaus_get_le(&buf[size - JAUS_TIME_STAMP_BYTES], JAUS_TIME_STAMP_BYTES);
   }
   /* From here on every read is inside buf (size == length). Pass 0
    * decodes and checks with the body untouched (a local X, Y or Z outside
@@ -287,8 +280,8 @@ drdc_status_t drdc_jaus_body_unpack(const uint8_t *fields,
         size_t n = jaus_field_size(bit);
 
         st = drdc_jaus_scaled_decode(
-            from_bits(jaus_get_le(&buf[pos], n), n, f->type), f->min,
-            f->max, f->type, form, &v);
+            from_bits(jaus_get_le(&buf[pos], n), n, f->type), f->min, f->max,
+            f->type, form, &v);
         if (st != DRDC_OK) {
           return st;
         }

@@ -18,23 +18,21 @@
 #define LOCAL_XY JAUS_METRES(100000)
 
 const jaus_field_t drdc__jaus_fields[JAUS_FIELDS] = {
-  /* Limits from the JAUS field tables (see jaus_pose.h for the sources),
-   * as raw values of the pose types, and the integer type, by form where
-   * it differs (RA 3.x signed, AS6009 unsigned); rows JAUS_F_*. */
-  { -JAUS_NAS_90, JAUS_NAS_90, DRDC_JAUS_INT32, DRDC_E_LATITUDE },
-  { -JAUS_NAS_90, JAUS_NAS_90, DRDC_JAUS_UINT32, DRDC_E_LATITUDE },
-  { -JAUS_NAS_180, JAUS_NAS_180, DRDC_JAUS_INT32, DRDC_E_LONGITUDE },
-  { -JAUS_NAS_180, JAUS_NAS_180, DRDC_JAUS_UINT32, DRDC_E_LONGITUDE },
-  { JAUS_METRES(-10000), JAUS_METRES(35000), DRDC_JAUS_INT32,
-    DRDC_E_RANGE },
-  { JAUS_METRES(-10000), JAUS_METRES(35000), DRDC_JAUS_UINT32,
-    DRDC_E_RANGE },
-  { -LOCAL_XY, LOCAL_XY, DRDC_JAUS_INT32, DRDC_E_RANGE },
-  { -LOCAL_XY, LOCAL_XY, DRDC_JAUS_UINT32, DRDC_E_RANGE },
-  { -JAUS_BAM_PI, JAUS_BAM_PI, DRDC_JAUS_INT16, DRDC_E_RANGE },
-  { -JAUS_BAM_PI, JAUS_BAM_PI, DRDC_JAUS_UINT16, DRDC_E_RANGE },
-  { 0, JAUS_METRES(100), DRDC_JAUS_UINT32, DRDC_E_RANGE },
-  { 0, JAUS_BAM_PI, DRDC_JAUS_UINT16, DRDC_E_RANGE },
+    /* Limits from the JAUS field tables (see jaus_pose.h for the sources),
+     * as raw values of the pose types, and the integer type, by form where
+     * it differs (RA 3.x signed, AS6009 unsigned); rows JAUS_F_*. */
+    {-JAUS_NAS_90, JAUS_NAS_90, DRDC_JAUS_INT32, DRDC_E_LATITUDE},
+    {-JAUS_NAS_90, JAUS_NAS_90, DRDC_JAUS_UINT32, DRDC_E_LATITUDE},
+    {-JAUS_NAS_180, JAUS_NAS_180, DRDC_JAUS_INT32, DRDC_E_LONGITUDE},
+    {-JAUS_NAS_180, JAUS_NAS_180, DRDC_JAUS_UINT32, DRDC_E_LONGITUDE},
+    {JAUS_METRES(-10000), JAUS_METRES(35000), DRDC_JAUS_INT32, DRDC_E_RANGE},
+    {JAUS_METRES(-10000), JAUS_METRES(35000), DRDC_JAUS_UINT32, DRDC_E_RANGE},
+    {-LOCAL_XY, LOCAL_XY, DRDC_JAUS_INT32, DRDC_E_RANGE},
+    {-LOCAL_XY, LOCAL_XY, DRDC_JAUS_UINT32, DRDC_E_RANGE},
+    {-JAUS_BAM_PI, JAUS_BAM_PI, DRDC_JAUS_INT16, DRDC_E_RANGE},
+    {-JAUS_BAM_PI, JAUS_BAM_PI, DRDC_JAUS_UINT16, DRDC_E_RANGE},
+    {0, JAUS_METRES(100), DRDC_JAUS_UINT32, DRDC_E_RANGE},
+    {0, JAUS_BAM_PI, DRDC_JAUS_UINT16, DRDC_E_RANGE},
 };
 
 /* The rows of drdc__jaus_fields of a message's fields in a form; NULL for a
@@ -44,20 +42,22 @@ static const uint8_t *fields_of(bool local, drdc_jaus_form_t form)
   /* Fields in presence-bit order, by message (global, local) and form
    * (RA 3.x, AS6009). RA 3.x gives local Z the altitude's range. */
   static const uint8_t pose_fields[2][2][JAUS_POSE_SCALED] = {
-    { /* Report Global Pose */
-      { JAUS_F_LAT_RA3, JAUS_F_LON_RA3, JAUS_F_ALT_RA3, JAUS_F_POS_RMS,
-        JAUS_F_ANGLE_RA3, JAUS_F_ANGLE_RA3, JAUS_F_ANGLE_RA3,
-        JAUS_F_ATT_RMS },
-      { JAUS_F_LAT_AS, JAUS_F_LON_AS, JAUS_F_ALT_AS, JAUS_F_POS_RMS,
-        JAUS_F_ANGLE_AS, JAUS_F_ANGLE_AS, JAUS_F_ANGLE_AS, JAUS_F_ATT_RMS },
-    },
-    { /* Report Local Pose */
-      { JAUS_F_XY_RA3, JAUS_F_XY_RA3, JAUS_F_ALT_RA3, JAUS_F_POS_RMS,
-        JAUS_F_ANGLE_RA3, JAUS_F_ANGLE_RA3, JAUS_F_ANGLE_RA3,
-        JAUS_F_ATT_RMS },
-      { JAUS_F_XY_AS, JAUS_F_XY_AS, JAUS_F_XY_AS, JAUS_F_POS_RMS,
-        JAUS_F_ANGLE_AS, JAUS_F_ANGLE_AS, JAUS_F_ANGLE_AS, JAUS_F_ATT_RMS },
-    },
+      {
+          /* Report Global Pose */
+          {JAUS_F_LAT_RA3, JAUS_F_LON_RA3, JAUS_F_ALT_RA3, JAUS_F_POS_RMS,
+           JAUS_F_ANGLE_RA3, JAUS_F_ANGLE_RA3, JAUS_F_ANGLE_RA3,
+           JAUS_F_ATT_RMS},
+          {JAUS_F_LAT_AS, JAUS_F_LON_AS, JAUS_F_ALT_AS, JAUS_F_POS_RMS,
+           JAUS_F_ANGLE_AS, JAUS_F_ANGLE_AS, JAUS_F_ANGLE_AS, JAUS_F_ATT_RMS},
+      },
+      {
+          /* Report Local Pose */
+          {JAUS_F_XY_RA3, JAUS_F_XY_RA3, JAUS_F_ALT_RA3, JAUS_F_POS_RMS,
+           JAUS_F_ANGLE_RA3, JAUS_F_ANGLE_RA3, JAUS_F_ANGLE_RA3,
+           JAUS_F_ATT_RMS},
+          {JAUS_F_XY_AS, JAUS_F_XY_AS, JAUS_F_XY_AS, JAUS_F_POS_RMS,
+           JAUS_F_ANGLE_AS, JAUS_F_ANGLE_AS, JAUS_F_ANGLE_AS, JAUS_F_ATT_RMS},
+      },
   };
   const uint8_t *f = NULL;
 
@@ -72,9 +72,8 @@ static const uint8_t *fields_of(bool local, drdc_jaus_form_t form)
  * into each entry, which then calls drdc_jaus_body_pack() itself: no
  * frame between them on the chain (issue 8's stack). */
 static inline DRDC_ALWAYS_INLINE drdc_status_t
-pack(const drdc_jaus_local_pose_t *local,
-     const drdc_jaus_global_pose_t *global, drdc_jaus_form_t form,
-     uint8_t *buf, size_t capacity, size_t *length)
+pack(const drdc_jaus_local_pose_t *local, const drdc_jaus_global_pose_t *global,
+     drdc_jaus_form_t form, uint8_t *buf, size_t capacity, size_t *length)
 {
   const uint8_t *fields = fields_of(local != NULL, form);
 

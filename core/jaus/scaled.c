@@ -14,16 +14,16 @@ drdc_status_t drdc_jaus_scaled_range(drdc_jaus_type_t type,
                                      int64_t *ihi)
 {
   /* bits of each drdc_jaus_type_t, and whether it is signed */
-  static const uint8_t type_bits[] = { 8u, 8u, 16u, 16u, 32u, 32u };
-  static const uint8_t type_signed[] = { 1u, 0u, 1u, 0u, 1u, 0u };
+  static const uint8_t type_bits[] = {8u, 8u, 16u, 16u, 32u, 32u};
+  static const uint8_t type_signed[] = {1u, 0u, 1u, 0u, 1u, 0u};
   unsigned t = (unsigned)type;
   int64_t half;
 
   if ((ilo == NULL) || (ihi == NULL)) {
     return DRDC_E_NULL;
   }
-  if ((t >= (unsigned)(sizeof(type_bits) / sizeof(type_bits[0])))
-      || ((form != DRDC_JAUS_FORM_RA3) && (form != DRDC_JAUS_FORM_AS6009))) {
+  if ((t >= (unsigned)(sizeof(type_bits) / sizeof(type_bits[0]))) ||
+      ((form != DRDC_JAUS_FORM_RA3) && (form != DRDC_JAUS_FORM_AS6009))) {
     return DRDC_E_RANGE;
   }
   if (type_signed[t] == 0u) {
@@ -56,8 +56,7 @@ drdc_status_t drdc_jaus_scaled_range(drdc_jaus_type_t type,
  * b gives R + b < 2 r, so each step needs one conditional subtraction.
  * The quotient is at most a.
  */
-static uint64_t mul_div_small(uint32_t a, uint64_t b, uint64_t r,
-                              uint64_t *rem)
+static uint64_t mul_div_small(uint32_t a, uint64_t b, uint64_t r, uint64_t *rem)
 {
   uint64_t q = 0u;
   uint64_t x = 0u;
@@ -101,8 +100,8 @@ static int64_t round_sum(int64_t c, uint64_t q, uint64_t rem, uint64_t r)
 
 /* Validate the bounds and the type; the span max - min and [ilo, ihi]. */
 static drdc_status_t check(int64_t min, int64_t max, drdc_jaus_type_t type,
-                          drdc_jaus_form_t form, int64_t *span, int64_t *ilo,
-                          int64_t *ihi)
+                           drdc_jaus_form_t form, int64_t *span, int64_t *ilo,
+                           int64_t *ihi)
 {
   drdc_status_t st = drdc_jaus_scaled_range(type, form, ilo, ihi);
 
@@ -153,8 +152,7 @@ drdc_status_t drdc_jaus_scaled_encode_sat(int64_t value, int64_t min,
   /* value - min <= span, ihi - ilo < 2^32 */
   offset = value - min;
   width = ihi - ilo;
-  q = mul_div_small((uint32_t)width, (uint64_t)offset, (uint64_t)span,
-                    &rem);
+  q = mul_div_small((uint32_t)width, (uint64_t)offset, (uint64_t)span, &rem);
   *integer = round_sum(ilo, q, rem, (uint64_t)span);
   return DRDC_OK;
 }
@@ -171,8 +169,7 @@ drdc_status_t drdc_jaus_scaled_encode(int64_t value, int64_t min, int64_t max,
 
 drdc_status_t drdc_jaus_scaled_decode_sat(int64_t integer, int64_t min,
                                           int64_t max, drdc_jaus_type_t type,
-                                          drdc_jaus_form_t form,
-                                          int64_t *value)
+                                          drdc_jaus_form_t form, int64_t *value)
 {
   int64_t span = 0;
   int64_t ilo = 0;
@@ -211,8 +208,8 @@ drdc_status_t drdc_jaus_scaled_decode_sat(int64_t integer, int64_t min,
   return DRDC_OK;
 }
 
-drdc_status_t drdc_jaus_scaled_decode(int64_t integer, int64_t min,
-                                      int64_t max, drdc_jaus_type_t type,
+drdc_status_t drdc_jaus_scaled_decode(int64_t integer, int64_t min, int64_t max,
+                                      drdc_jaus_type_t type,
                                       drdc_jaus_form_t form, int64_t *value)
 {
   int64_t ilo = 0;
@@ -220,8 +217,8 @@ drdc_status_t drdc_jaus_scaled_decode(int64_t integer, int64_t min,
 
   if (value != NULL) {
     /* no [ilo, ihi] (a bad type or form): the body's DRDC_E_RANGE */
-    if ((drdc_jaus_scaled_range(type, form, &ilo, &ihi) == DRDC_OK)
-        && ((integer < ilo) || (integer > ihi))) {
+    if ((drdc_jaus_scaled_range(type, form, &ilo, &ihi) == DRDC_OK) &&
+        ((integer < ilo) || (integer > ihi))) {
       return DRDC_E_RANGE;
     }
   }

@@ -12,7 +12,7 @@
 #define DECIMALS_MAX 15u
 
 drdc_status_t drdc__nmea_decimal(const char *p, size_t n, int64_t *mantissa,
-                           int64_t *scale)
+                                 int64_t *scale)
 {
   size_t i = 0u;
   size_t digits = 0u;

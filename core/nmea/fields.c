@@ -12,7 +12,7 @@
 
 /* Decimals of minutes kept exactly: 1e-10 minute = 6 nas. */
 #define MINUTE_DECIMALS_MAX 10u
-#define NAS_PER_MINUTE INT64_C(60000000000)
+#define NAS_PER_MINUTE      INT64_C(60000000000)
 
 static int is_digit(char c)
 {
@@ -36,7 +36,7 @@ static int64_t pow10_s64(size_t n)
 }
 
 drdc_status_t drdc__nmea_digits(const char *p, size_t n, size_t min_digits,
-                          size_t max_digits, int32_t *out)
+                                size_t max_digits, int32_t *out)
 {
   int32_t v = 0;
   size_t i;
@@ -73,10 +73,10 @@ drdc_status_t drdc__nmea_fixed(const nmea_frame_t *fr, size_t i,
 {
   /* num x 2^frac and den of each scale: metres x 2^16, knots x 1852 m /
    * 3600 s x 2^16, degrees x 2^32 / 360 */
-  static const int64_t scales[4][2] = {
-    { INT64_C(65536), 1 }, { INT64_C(65536), 1 },
-    { INT64_C(121372672), 3600 }, { INT64_C(4294967296), 360 }
-  };
+  static const int64_t scales[4][2] = {{INT64_C(65536), 1},
+                                       {INT64_C(65536), 1},
+                                       {INT64_C(121372672), 3600},
+                                       {INT64_C(4294967296), 360}};
   const int64_t *sc = scales[scale];
   int narrow = 0;
   nmea_field_t f = nmea_field(fr, i);
@@ -92,8 +92,8 @@ drdc_status_t drdc__nmea_fixed(const nmea_frame_t *fr, size_t i,
   }
   /* den x 10^15 < 2^63 for every scale (at most 15 decimals) */
   st = drdc_fx_muldiv_s64(m, sc[0], sc[1] * p10, &m);
-  if ((st != DRDC_OK)
-      || ((narrow != 0) && ((m > INT32_MAX) || (m < INT32_MIN)))) {
+  if ((st != DRDC_OK) ||
+      ((narrow != 0) && ((m > INT32_MAX) || (m < INT32_MIN)))) {
     return DRDC_E_RANGE;
   }
   if (out != NULL) {
@@ -103,10 +103,10 @@ drdc_status_t drdc__nmea_fixed(const nmea_frame_t *fr, size_t i,
 }
 
 drdc_status_t drdc__nmea_tod(const nmea_frame_t *fr, size_t i_field,
-                       drdc_nmea_tod_t *out)
+                             drdc_nmea_tod_t *out)
 {
   nmea_field_t f = nmea_field(fr, i_field);
-  int32_t v[3] = { 0, 0, 0 };
+  int32_t v[3] = {0, 0, 0};
   int32_t nsec = 0;
   size_t i;
   size_t k;
@@ -115,8 +115,8 @@ drdc_status_t drdc__nmea_tod(const nmea_frame_t *fr, size_t i_field,
   if (f.n == 0u) {
     return DRDC_E_MISSING_FIELD;
   }
-  if ((f.n < 6u) || ((f.n > 6u) && ((p[6] != '.') || (f.n == 7u)
-                                     || (f.n > 16u)))) {
+  if ((f.n < 6u) ||
+      ((f.n > 6u) && ((p[6] != '.') || (f.n == 7u) || (f.n > 16u)))) {
     return DRDC_E_SYNTAX;
   }
   for (i = 0u; i < 6u; i++) {
@@ -155,7 +155,7 @@ drdc_status_t drdc__nmea_tod(const nmea_frame_t *fr, size_t i_field,
 }
 
 drdc_status_t drdc__nmea_angle(const nmea_frame_t *fr, size_t i_field,
-                         int latitude, drdc_nas_t *out)
+                               int latitude, drdc_nas_t *out)
 {
   nmea_field_t value = nmea_field(fr, i_field);
   nmea_field_t hemisphere = nmea_field(fr, i_field + 1u);
@@ -192,12 +192,11 @@ drdc_status_t drdc__nmea_angle(const nmea_frame_t *fr, size_t i_field,
     }
   }
   /* (d)ddmm: 3..max_int integer digits, the last two are minutes */
-  if ((point < 3u) || (point > max_int) || (point == (value.n - 1u))
-      || ((value.n - point) > (MINUTE_DECIMALS_MAX + 1u))) {
+  if ((point < 3u) || (point > max_int) || (point == (value.n - 1u)) ||
+      ((value.n - point) > (MINUTE_DECIMALS_MAX + 1u))) {
     return DRDC_E_SYNTAX;
   }
-  if ((hemisphere.n != 1u)
-      || ((h != positive) && (h != negative))) {
+  if ((hemisphere.n != 1u) || ((h != positive) && (h != negative))) {
     return DRDC_E_SYNTAX;
   }
   for (i = 0u; i < (point - 2u); i++) {
@@ -214,8 +213,8 @@ drdc_status_t drdc__nmea_angle(const nmea_frame_t *fr, size_t i_field,
   if (value.n > point) {
     fraction *= pow10_s64((MINUTE_DECIMALS_MAX + point + 1u) - value.n);
   }
-  nas = (degrees * DRDC_NAS_PER_DEGREE) + (minutes * NAS_PER_MINUTE)
-        + (fraction * 6);
+  nas = (degrees * DRDC_NAS_PER_DEGREE) + (minutes * NAS_PER_MINUTE) +
+        (fraction * 6);
   if (nas > (limit * DRDC_NAS_PER_DEGREE)) {
     return DRDC_E_RANGE;
   }
@@ -226,7 +225,7 @@ drdc_status_t drdc__nmea_angle(const nmea_frame_t *fr, size_t i_field,
 }
 
 drdc_status_t drdc__nmea_fix(const nmea_frame_t *fr, size_t latitude,
-                       drdc_nmea_t *n)
+                             drdc_nmea_t *n)
 {
   drdc_status_t st = drdc__nmea_tod(fr, 1u, (n != NULL) ? &n->time : NULL);
 
@@ -235,7 +234,7 @@ drdc_status_t drdc__nmea_fix(const nmea_frame_t *fr, size_t latitude,
   }
   if (st == DRDC_OK) {
     st = drdc__nmea_angle(fr, latitude + 2u, 0,
-                    (n != NULL) ? &n->longitude : NULL);
+                          (n != NULL) ? &n->longitude : NULL);
   }
   return st;
 }

@@ -35,17 +35,19 @@ static int is_upper(char c)
 /* The sentence formatter of the address, or DRDC_E_SENTENCE. */
 static drdc_status_t formatter(const char *a, drdc_nmea_type_t *type)
 {
-  static const char names[5][3] = { { 'G', 'G', 'A' }, { 'R', 'M', 'C' },
-                                     { 'G', 'N', 'S' }, { 'Z', 'D', 'A' },
-                                     { 'G', 'S', 'T' } };
-  static const drdc_nmea_type_t types[5] = { DRDC_NMEA_GGA, DRDC_NMEA_RMC,
-                                             DRDC_NMEA_GNS, DRDC_NMEA_ZDA,
-                                             DRDC_NMEA_GST };
+  static const char names[5][3] = {{'G', 'G', 'A'},
+                                   {'R', 'M', 'C'},
+                                   {'G', 'N', 'S'},
+                                   {'Z', 'D', 'A'},
+                                   {'G', 'S', 'T'}};
+  static const drdc_nmea_type_t types[5] = {DRDC_NMEA_GGA, DRDC_NMEA_RMC,
+                                            DRDC_NMEA_GNS, DRDC_NMEA_ZDA,
+                                            DRDC_NMEA_GST};
   size_t i;
 
   for (i = 0u; i < 5u; i++) {
-    if ((a[0] == names[i][0]) && (a[1] == names[i][1])
-        && (a[2] == names[i][2])) {
+    if ((a[0] == names[i][0]) && (a[1] == names[i][1]) &&
+        (a[2] == names[i][2])) {
       *type = types[i];
       return DRDC_OK;
     }
@@ -128,8 +130,8 @@ drdc_status_t drdc__nmea_frame(const char *text, size_t length,
     return DRDC_E_CHECKSUM;
   }
   /* address: two-letter talker and a three-letter formatter, then ',' */
-  if ((star < 7u) || (text[6] != ',') || (is_upper(text[1]) == 0)
-      || (is_upper(text[2]) == 0)) {
+  if ((star < 7u) || (text[6] != ',') || (is_upper(text[1]) == 0) ||
+      (is_upper(text[2]) == 0)) {
     return DRDC_E_SENTENCE;
   }
   if (formatter(&text[3], &fr->type) != DRDC_OK) {
@@ -141,8 +143,7 @@ drdc_status_t drdc__nmea_frame(const char *text, size_t length,
   fr->count = 0u;
   fr->start[0] = 7u;
   for (k = 7u; k <= star; k++) {
-    if (((k == star) || (text[k] == ','))
-        && (fr->count < NMEA_FIELDS_MAX)) {
+    if (((k == star) || (text[k] == ',')) && (fr->count < NMEA_FIELDS_MAX)) {
       fr->count++;
       fr->start[fr->count] = (uint8_t)(k + 1u);
     }

@@ -17,8 +17,10 @@
  * S simulator. */
 static int is_mode(char c)
 {
-  return ((c == 'A') || (c == 'D') || (c == 'E') || (c == 'F') || (c == 'M')
-          || (c == 'N') || (c == 'P') || (c == 'R') || (c == 'S')) ? 1 : 0;
+  return ((c == 'A') || (c == 'D') || (c == 'E') || (c == 'F') || (c == 'M') ||
+          (c == 'N') || (c == 'P') || (c == 'R') || (c == 'S'))
+             ? 1
+             : 0;
 }
 
 drdc_status_t drdc__nmea_gns(const nmea_frame_t *fr, drdc_nmea_t *n)

@@ -43,7 +43,7 @@ drdc_status_t drdc__nmea_gst(const nmea_frame_t *fr, drdc_nmea_t *n)
 {
   /* the deviations in metres -> Q15.16: fields 2, 6, 7, 8 (always) and
    * 3, 4 (the error ellipse) */
-  static const uint8_t fields[GST_DEVIATIONS] = { 2u, 6u, 7u, 8u, 3u, 4u };
+  static const uint8_t fields[GST_DEVIATIONS] = {2u, 6u, 7u, 8u, 3u, 4u};
   drdc_status_t st;
   int64_t v = 0;
   size_t i;
@@ -55,8 +55,8 @@ drdc_status_t drdc__nmea_gst(const nmea_frame_t *fr, drdc_nmea_t *n)
   st = drdc__nmea_tod(fr, 1u, (n != NULL) ? &n->time : NULL);
   /* the error ellipse is optional (many receivers leave it empty), but
    * all three fields or none */
-  if ((nmea_field(fr, 3u).n != 0u) || (nmea_field(fr, 4u).n != 0u)
-      || (nmea_field(fr, 5u).n != 0u)) {
+  if ((nmea_field(fr, 3u).n != 0u) || (nmea_field(fr, 4u).n != 0u) ||
+      (nmea_field(fr, 5u).n != 0u)) {
     count = GST_DEVIATIONS;
   }
   for (i = 0u; (i < count) && (st == DRDC_OK); i++) {

@@ -28,10 +28,10 @@ typedef struct nmea_field {
  *  kept as one-byte offsets into the text (a sentence has at most 82
  *  characters): 40 bytes instead of a pointer and a length per field. */
 typedef struct drdc__nmea_frame {
-  const char *text;               /**< the sentence, from `$` (talker at
-                                       text[1], text[2]) */
+  const char *text; /**< the sentence, from `$` (talker at
+                         text[1], text[2]) */
   drdc_nmea_type_t type;
-  uint8_t count;                  /**< fields after the address */
+  uint8_t count; /**< fields after the address */
   /** start[i - 1]: offset of field i; field i ends one character before
    *  start[i] (at its ',' or the '*') */
   uint8_t start[NMEA_FIELDS_MAX + 1u];
@@ -47,7 +47,7 @@ drdc_status_t drdc__nmea_frame(const char *text, size_t length,
  *  memory on both targets, a stack temporary at every use. */
 static inline nmea_field_t nmea_field(const nmea_frame_t *fr, size_t i)
 {
-  nmea_field_t f = { NULL, 0u };
+  nmea_field_t f = {NULL, 0u};
 
   if ((i >= 1u) && (i <= (size_t)fr->count)) {
     f.p = &fr->text[fr->start[i - 1u]];
@@ -64,7 +64,7 @@ static inline nmea_field_t nmea_field(const nmea_frame_t *fr, size_t i)
 /** Unsigned decimal of `min_digits`..`max_digits` digits (<= 9): the
  *  `n` characters at `p`. */
 drdc_status_t drdc__nmea_digits(const char *p, size_t n, size_t min_digits,
-                          size_t max_digits, int32_t *out);
+                                size_t max_digits, int32_t *out);
 
 /** drdc__nmea_digits() of field `i` (1-based, as nmea_field()). */
 drdc_status_t drdc__nmea_uint(const nmea_frame_t *fr, size_t i,
@@ -76,7 +76,7 @@ drdc_status_t drdc__nmea_uint(const nmea_frame_t *fr, size_t i,
  *  a file of its own so that it is not inlined into drdc__nmea_fixed(), whose
  *  frame then stays small. */
 drdc_status_t drdc__nmea_decimal(const char *p, size_t n, int64_t *mantissa,
-                           int64_t *scale);
+                                 int64_t *scale);
 
 /** Scalings of decimal fields (drdc__nmea_fixed()). */
 typedef enum nmea_scale {
@@ -96,13 +96,13 @@ drdc_status_t drdc__nmea_fixed(const nmea_frame_t *fr, size_t i,
 
 /** Field `i` as hhmmss[.s..s] (up to 9 decimals) -> time of day, exact. */
 drdc_status_t drdc__nmea_tod(const nmea_frame_t *fr, size_t i,
-                       drdc_nmea_tod_t *out);
+                             drdc_nmea_tod_t *out);
 
 /** Field `i` as (d)ddmm[.m..m] with up to 10 decimals and field i + 1 as
  *  its hemisphere -> nas, exact. `latitude` selects N/S and 90 degrees,
  *  else E/W and 180. */
 drdc_status_t drdc__nmea_angle(const nmea_frame_t *fr, size_t i, int latitude,
-                         drdc_nas_t *out);
+                               drdc_nas_t *out);
 
 /** The time and position of a fix (GGA, GNS, RMC): field 1 as drdc__nmea_tod(),
  *  field `latitude` and the one after it as a latitude, the two after
@@ -110,7 +110,7 @@ drdc_status_t drdc__nmea_angle(const nmea_frame_t *fr, size_t i, int latitude,
  *  failure's status) and written into n->time, n->latitude and
  *  n->longitude, unless `n` is NULL. */
 drdc_status_t drdc__nmea_fix(const nmea_frame_t *fr, size_t latitude,
-                       drdc_nmea_t *n);
+                             drdc_nmea_t *n);
 
 /** Sentence decoders: `fr` is framed; they fill `*n` (zeroed by the
  *  caller) or, with `n` NULL, only check the sentence, returning the
@@ -119,7 +119,7 @@ drdc_status_t drdc__nmea_fix(const nmea_frame_t *fr, size_t latitude,
  * (field `separation`) that GGA and GNS share; each present one is parsed
  * and flagged in n->has. */
 drdc_status_t drdc__nmea_precision(const nmea_frame_t *fr, size_t separation,
-                             drdc_nmea_t *n);
+                                   drdc_nmea_t *n);
 
 drdc_status_t drdc__nmea_gga(const nmea_frame_t *fr, drdc_nmea_t *n);
 drdc_status_t drdc__nmea_rmc(const nmea_frame_t *fr, drdc_nmea_t *n);

@@ -92,8 +92,7 @@ static drdc_status_t decode_sentence(const nmea_frame_t *fr, drdc_nmea_t *n)
  * Cortex-M3 (688 to 256 on PowerPC e500; 112 and 96 of them are
  * drdc_fx_muldiv_s64's), for about twice the decoding cycles.
  */
-drdc_status_t drdc_nmea_parse(const char *text, size_t length,
-                              drdc_nmea_t *out)
+drdc_status_t drdc_nmea_parse(const char *text, size_t length, drdc_nmea_t *out)
 {
   nmea_frame_t fr;
   drdc_nmea_t *n = NULL;

@@ -7,7 +7,7 @@
 #include "nmea_impl.h"
 
 drdc_status_t drdc__nmea_precision(const nmea_frame_t *fr, size_t separation,
-                             drdc_nmea_t *n)
+                                   drdc_nmea_t *n)
 {
   drdc_status_t st;
   int64_t v = 0;
@@ -24,7 +24,7 @@ drdc_status_t drdc__nmea_precision(const nmea_frame_t *fr, size_t separation,
   }
   if (nmea_field(fr, 9u).n != 0u) {
     st = drdc__nmea_fixed(fr, 9u, NMEA_METRES_Q47_16,
-                    (n != NULL) ? &n->altitude : NULL);
+                          (n != NULL) ? &n->altitude : NULL);
     if (st != DRDC_OK) {
       return st;
     }
@@ -34,7 +34,7 @@ drdc_status_t drdc__nmea_precision(const nmea_frame_t *fr, size_t separation,
   }
   if (nmea_field(fr, separation).n != 0u) {
     st = drdc__nmea_fixed(fr, separation, NMEA_METRES_Q47_16,
-                    (n != NULL) ? &n->separation : NULL);
+                          (n != NULL) ? &n->separation : NULL);
     if (st != DRDC_OK) {
       return st;
     }

@@ -17,8 +17,8 @@
  * them). */
 static uint32_t seconds_of_day(const drdc_nmea_tod_t *t)
 {
-  return ((((uint32_t)t->hour * 60u) + (uint32_t)t->minute) * 60u)
-         + (uint32_t)t->second;
+  return ((((uint32_t)t->hour * 60u) + (uint32_t)t->minute) * 60u) +
+         (uint32_t)t->second;
 }
 
 /* A time of day in the ranges drdc_time_from_civil() accepts, with its
@@ -56,8 +56,7 @@ drdc_status_t drdc_nmea_utc(const drdc_time_leap_t *leap,
   if ((dated->has & DRDC_NMEA_HAS_DATE) == 0u) {
     return DRDC_E_MISSING_FIELD;
   }
-  st = drdc_time_days_from_civil(dated->year, dated->month, dated->day,
-                                 &days);
+  st = drdc_time_days_from_civil(dated->year, dated->month, dated->day, &days);
   if (st != DRDC_OK) {
     return st;
   }

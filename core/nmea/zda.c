@@ -7,7 +7,7 @@
 #include "nmea_impl.h"
 
 /* $--ZDA,hhmmss.ss,xx,xx,xxxx,xx,xx */
-#define ZDA_FIELDS 6u
+#define ZDA_FIELDS     6u
 #define ZONE_HOURS_MAX 13
 
 drdc_status_t drdc__nmea_zda(const nmea_frame_t *fr, drdc_nmea_t *n)

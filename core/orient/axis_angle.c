@@ -68,8 +68,8 @@ drdc_status_t drdc_axis_angle_from_quat(const drdc_quat_t *q,
     n.z = -n.z;
   }
   /* exact sum of squares <= 2^60, correctly rounded root <= 2^30 */
-  vn = drdc_fx_sqrt_u64(orient_square_u64(n.x) + orient_square_u64(n.y)
-                        + orient_square_u64(n.z));
+  vn = drdc_fx_sqrt_u64(orient_square_u64(n.x) + orient_square_u64(n.y) +
+                        orient_square_u64(n.z));
   if (vn == 0u) {
     v.x = ORIENT_Q1_30_ONE; /* identity rotation: any axis; x by convention */
     v.y = 0;

@@ -108,8 +108,7 @@ drdc_status_t drdc_quat_from_dcm(const drdc_dcm_t *r, drdc_quat_t *out)
   for (i = 0u; i < 4u; i++) {
     int64_t v;
 
-    (void)drdc_fx_muldiv_s64(num[i], orient_pow2_s64(29u), (int64_t)root,
-                             &v);
+    (void)drdc_fx_muldiv_s64(num[i], orient_pow2_s64(29u), (int64_t)root, &v);
     if ((v > INT32_MAX) || (v < INT32_MIN)) {
       return DRDC_E_DOMAIN;
     }
@@ -196,8 +195,8 @@ drdc_status_t drdc_dcm_apply_q15_16(const drdc_dcm_t *r,
                                     const drdc_vec3_q15_16_t *v,
                                     drdc_vec3_q15_16_t *out)
 {
-  const int32_t in[3] = { (v == NULL) ? 0 : v->x, (v == NULL) ? 0 : v->y,
-                          (v == NULL) ? 0 : v->z };
+  const int32_t in[3] = {(v == NULL) ? 0 : v->x, (v == NULL) ? 0 : v->y,
+                         (v == NULL) ? 0 : v->z};
   int32_t res[3];
   unsigned i;
 
@@ -207,10 +206,9 @@ drdc_status_t drdc_dcm_apply_q15_16(const drdc_dcm_t *r,
   for (i = 0u; i < 3u; i++) {
     int64_t s;
     int64_t t;
-    drdc_status_t st =
-        drdc_orient_impl_sum4((int64_t)r->m[i][0] * in[0],
-                              (int64_t)r->m[i][1] * in[1],
-                              (int64_t)r->m[i][2] * in[2], 0, &s);
+    drdc_status_t st = drdc_orient_impl_sum4(
+        (int64_t)r->m[i][0] * in[0], (int64_t)r->m[i][1] * in[1],
+        (int64_t)r->m[i][2] * in[2], 0, &s);
 
     if (st != DRDC_OK) {
       return st;
@@ -234,8 +232,8 @@ drdc_status_t drdc_dcm_apply_q47_16(const drdc_dcm_t *r,
                                     const drdc_vec3_q47_16_t *v,
                                     drdc_vec3_q47_16_t *out)
 {
-  const int64_t in[3] = { (v == NULL) ? 0 : v->x, (v == NULL) ? 0 : v->y,
-                          (v == NULL) ? 0 : v->z };
+  const int64_t in[3] = {(v == NULL) ? 0 : v->x, (v == NULL) ? 0 : v->y,
+                         (v == NULL) ? 0 : v->z};
   int64_t res[3];
   unsigned i;
   unsigned j;

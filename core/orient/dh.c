@@ -212,8 +212,7 @@ drdc_status_t drdc_dh_link_transform(drdc_dh_convention_t convention,
 /* round(a b / 2^n): out of line (noinline), so that the twelve products
  * of a link do not spill their 128-bit temporaries into the frame of
  * drdc_dh_forward(). */
-static DRDC_NOINLINE int64_t mul_round(int64_t a, int64_t b,
-                                                   unsigned n)
+static DRDC_NOINLINE int64_t mul_round(int64_t a, int64_t b, unsigned n)
 {
   return drdc_fx_mul_rshift_round(a, b, n);
 }
@@ -227,11 +226,11 @@ static int64_t mul61(int64_t a, int64_t b)
 
 /* The chain of drdc_dh_forward() as dh_row() reads it. */
 typedef struct dh_chain {
-  const drdc_dh_link_t *links; /**< the links */
-  const int32_t *q;            /**< their joint variables */
-  unsigned n;                  /**< links to go through */
+  const drdc_dh_link_t *links;     /**< the links */
+  const int32_t *q;                /**< their joint variables */
+  unsigned n;                      /**< links to go through */
   drdc_dh_convention_t convention; /**< standard or modified */
-  drdc_status_t bad;           /**< status of link n's parameters, or OK */
+  drdc_status_t bad;               /**< status of link n's parameters, or OK */
 } dh_chain_t;
 
 /* Row i of the chain's rotation (Q2.61) and translation (Q46) through
@@ -250,8 +249,8 @@ typedef struct dh_chain {
  * @retval DRDC_OK written
  * @retval DRDC_E_OVERFLOW a translation leaves int64 on the way, or
  *         (no link bad) the final one leaves Q15.16 */
-static inline drdc_status_t
-dh_row(dh_chain_t *c, unsigned i, drdc_q1_30_t row[3], int32_t *t)
+static inline drdc_status_t dh_row(dh_chain_t *c, unsigned i,
+                                   drdc_q1_30_t row[3], int32_t *t)
 {
   const int64_t one = orient_pow2_s64(61u);
   int64_t r0 = (i == 0u) ? one : 0;
@@ -279,16 +278,15 @@ dh_row(dh_chain_t *c, unsigned i, drdc_q1_30_t row[3], int32_t *t)
     if (drdc_orient_impl_sum4(mul_round(r0, link_t(cv, &g, 0u), 61u),
                               mul_round(r1, link_t(cv, &g, 1u), 61u),
                               mul_round(r2, link_t(cv, &g, 2u), 61u), ti,
-                              &ti)
-        != DRDC_OK) {
+                              &ti) != DRDC_OK) {
       return DRDC_E_OVERFLOW;
     }
-    n0 = mul61(r0, link_r(cv, &g, 0u, 0u)) + mul61(r1, link_r(cv, &g, 1u, 0u))
-         + mul61(r2, link_r(cv, &g, 2u, 0u));
-    n1 = mul61(r0, link_r(cv, &g, 0u, 1u)) + mul61(r1, link_r(cv, &g, 1u, 1u))
-         + mul61(r2, link_r(cv, &g, 2u, 1u));
-    n2 = mul61(r0, link_r(cv, &g, 0u, 2u)) + mul61(r1, link_r(cv, &g, 1u, 2u))
-         + mul61(r2, link_r(cv, &g, 2u, 2u));
+    n0 = mul61(r0, link_r(cv, &g, 0u, 0u)) + mul61(r1, link_r(cv, &g, 1u, 0u)) +
+         mul61(r2, link_r(cv, &g, 2u, 0u));
+    n1 = mul61(r0, link_r(cv, &g, 0u, 1u)) + mul61(r1, link_r(cv, &g, 1u, 1u)) +
+         mul61(r2, link_r(cv, &g, 2u, 1u));
+    n2 = mul61(r0, link_r(cv, &g, 0u, 2u)) + mul61(r1, link_r(cv, &g, 1u, 2u)) +
+         mul61(r2, link_r(cv, &g, 2u, 2u));
     r0 = n0;
     r1 = n1;
     r2 = n2;

@@ -124,8 +124,8 @@ static drdc_status_t euler_from_elements(const int64_t p[3][3], int64_t one,
  * integers: the same bits whatever the order of the sums). One at a time
  * and out of line: drdc_euler_from_quat() keeps no 3x3 matrix of int64_t
  * on the stack under its atan2 calls (issue 8's stack goal). */
-static DRDC_NOINLINE int64_t numerator(const int32_t c[4],
-                                                   unsigned i, unsigned j)
+static DRDC_NOINLINE int64_t numerator(const int32_t c[4], unsigned i,
+                                       unsigned j)
 {
   int64_t a;
   int64_t b;
@@ -133,8 +133,9 @@ static DRDC_NOINLINE int64_t numerator(const int32_t c[4],
   if (i == j) {
     /* (ss + dd) - (the other two squares), d the part of axis i */
     a = (int64_t)c[1u + i] * c[1u + i];
-    b = (((int64_t)c[1] * c[1]) + ((int64_t)c[2] * c[2])
-         + ((int64_t)c[3] * c[3])) - ((int64_t)c[0] * c[0]);
+    b = (((int64_t)c[1] * c[1]) + ((int64_t)c[2] * c[2]) +
+         ((int64_t)c[3] * c[3])) -
+        ((int64_t)c[0] * c[0]);
     return (2 * a) - b;
   }
   /* 2 (c_i c_j +- s c_k), k the third axis; plus below the diagonal in

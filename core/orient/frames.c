@@ -112,8 +112,8 @@ drdc_status_t drdc_frame_frd_flu_quat(const drdc_quat_t *q, drdc_quat_t *out)
 static drdc_status_t scaled(int64_t sum, drdc_q1_30_t *out)
 {
   int64_t v;
-  drdc_status_t st = drdc_fx_muldiv_s64(sum, INV_SQRT2_Q62,
-                                        orient_pow2_s64(62u), &v);
+  drdc_status_t st =
+      drdc_fx_muldiv_s64(sum, INV_SQRT2_Q62, orient_pow2_s64(62u), &v);
 
   if ((st != DRDC_OK) || (v > INT32_MAX) || (v < INT32_MIN)) {
     return DRDC_E_OVERFLOW;

@@ -63,8 +63,7 @@ drdc_status_t drdc_orient_impl_scale(const drdc_quat_t *q,
   } else {
     /* Exact scaling up by 2^shift: largest part into [2^29, 2^30]; for
      * m <= 2^29 the shift that brings bit 29 to the top, clz(m) - 2. */
-    shift = (m > (UINT32_C(1) << 29)) ? 0u
-                                      : ((unsigned)__builtin_clz(m) - 2u);
+    shift = (m > (UINT32_C(1) << 29)) ? 0u : ((unsigned)__builtin_clz(m) - 2u);
     out->c[0] = shl32(s, shift);
     out->c[1] = shl32(x, shift);
     out->c[2] = shl32(y, shift);
@@ -72,20 +71,20 @@ drdc_status_t drdc_orient_impl_scale(const drdc_quat_t *q,
     out->k = (int32_t)shift;
   }
   /* each square <= 2^60, the sum <= 2^62 */
-  out->n2 = ((int64_t)out->c[0] * out->c[0]) + ((int64_t)out->c[1] * out->c[1])
-            + ((int64_t)out->c[2] * out->c[2])
-            + ((int64_t)out->c[3] * out->c[3]);
+  out->n2 = ((int64_t)out->c[0] * out->c[0]) +
+            ((int64_t)out->c[1] * out->c[1]) +
+            ((int64_t)out->c[2] * out->c[2]) + ((int64_t)out->c[3] * out->c[3]);
   return DRDC_OK;
 }
 
 static int add_ok(int64_t a, int64_t b)
 {
-  return !(((b > 0) && (a > (INT64_MAX - b)))
-           || ((b < 0) && (a < (ORIENT_INT64_MIN - b))));
+  return !(((b > 0) && (a > (INT64_MAX - b))) ||
+           ((b < 0) && (a < (ORIENT_INT64_MIN - b))));
 }
 
-drdc_status_t drdc_orient_impl_sum4(int64_t a, int64_t b, int64_t c,
-                                    int64_t d, int64_t *out)
+drdc_status_t drdc_orient_impl_sum4(int64_t a, int64_t b, int64_t c, int64_t d,
+                                    int64_t *out)
 {
   int64_t ab;
   int64_t cd;

@@ -73,8 +73,8 @@ drdc_status_t drdc_orient_impl_scale(const drdc_quat_t *q,
 
 /** a + b + c + d without overflow; DRDC_E_OVERFLOW when the exact sum
  *  does not fit int64_t. */
-drdc_status_t drdc_orient_impl_sum4(int64_t a, int64_t b, int64_t c,
-                                    int64_t d, int64_t *out);
+drdc_status_t drdc_orient_impl_sum4(int64_t a, int64_t b, int64_t c, int64_t d,
+                                    int64_t *out);
 
 /** Round a Q60 value to Q1.30 (ties away from zero); DRDC_E_OVERFLOW
  *  when the result does not fit int32_t. */
@@ -120,8 +120,7 @@ static inline uint32_t orient_q60_round_bits(int64_t v, uint32_t *ovf)
  *  for drdc_fx_div_3by2(): *dn = n2 2^z with bit 63 set (z = 1..5 into
  *  *z), and its reciprocal returned; one for the nine divisions of a
  *  matrix. */
-static inline uint32_t orient_row_divisor(int64_t n2, uint64_t *dn,
-                                          unsigned *z)
+static inline uint32_t orient_row_divisor(int64_t n2, uint64_t *dn, unsigned *z)
 {
   *z = (unsigned)__builtin_clzll((uint64_t)n2);
   *dn = (uint64_t)n2 << *z;
@@ -145,8 +144,8 @@ void drdc_orient_impl_numerator_row(const int32_t c[4], unsigned i,
 static inline uint32_t orient_sum4_round_bits(int64_t w, int64_t x, int64_t y,
                                               int64_t z, uint32_t *ovf)
 {
-  int64_t hs = (int64_t)drdc_fx_high_word(w) + drdc_fx_high_word(x)
-               + drdc_fx_high_word(y) + drdc_fx_high_word(z);
+  int64_t hs = (int64_t)drdc_fx_high_word(w) + drdc_fx_high_word(x) +
+               drdc_fx_high_word(y) + drdc_fx_high_word(z);
   uint64_t sum = (uint64_t)w + (uint64_t)x + (uint64_t)y + (uint64_t)z;
 
   if ((hs > (INT64_C(1) << 30)) || (hs < -(INT64_C(1) << 30))) {
@@ -206,7 +205,6 @@ static inline void orient_half_sincos_mag(drdc_bam32_t a, orient_half_t *out)
   out->neg = ((uint32_t)s0 | (uint32_t)s1) >> 31u;
   out->s = orient_abs32(s0) + orient_abs32(s1);
 }
-
 
 /** atan2 of two int64_t coordinates: both are scaled by the same power
  *  of two (rounded) so that the larger fits in 31 bits with the most

@@ -37,8 +37,9 @@ store_parts(uint32_t ovf, uint32_t rs, uint32_t rx, uint32_t ry, uint32_t rz,
 /* The product for a part of a beyond (-1, 1]: kept out of line
  * (noinline) so that the common case keeps a light frame; each sum is
  * checked for the 2^63 bound by its high words. */
-static DRDC_NOINLINE drdc_status_t
-quat_mul_wide(const drdc_quat_t *a, const drdc_quat_t *b, drdc_quat_t *out)
+static DRDC_NOINLINE drdc_status_t quat_mul_wide(const drdc_quat_t *a,
+                                                 const drdc_quat_t *b,
+                                                 drdc_quat_t *out)
 {
   uint32_t ovf = 0u;
   uint32_t rs;
@@ -47,13 +48,16 @@ quat_mul_wide(const drdc_quat_t *a, const drdc_quat_t *b, drdc_quat_t *out)
   uint32_t rz;
 
   rs = orient_sum4_round_bits((int64_t)a->s * b->s, -((int64_t)a->x * b->x),
-                 -((int64_t)a->y * b->y), -((int64_t)a->z * b->z), &ovf);
+                              -((int64_t)a->y * b->y), -((int64_t)a->z * b->z),
+                              &ovf);
   rx = orient_sum4_round_bits((int64_t)a->s * b->x, (int64_t)a->x * b->s,
-                 (int64_t)a->y * b->z, -((int64_t)a->z * b->y), &ovf);
+                              (int64_t)a->y * b->z, -((int64_t)a->z * b->y),
+                              &ovf);
   ry = orient_sum4_round_bits((int64_t)a->s * b->y, -((int64_t)a->x * b->z),
-                 (int64_t)a->y * b->s, (int64_t)a->z * b->x, &ovf);
+                              (int64_t)a->y * b->s, (int64_t)a->z * b->x, &ovf);
   rz = orient_sum4_round_bits((int64_t)a->s * b->z, (int64_t)a->x * b->y,
-                 -((int64_t)a->y * b->x), (int64_t)a->z * b->s, &ovf);
+                              -((int64_t)a->y * b->x), (int64_t)a->z * b->s,
+                              &ovf);
   return store_parts(ovf, rs, rx, ry, rz, out);
 }
 
@@ -121,10 +125,9 @@ drdc_status_t drdc_quat_mul(const drdc_quat_t *a, const drdc_quat_t *b,
    * 2^30]: bit 31 clear in the OR of the four. Only a is tested: the
    * bound of quat_mul_unit() holds for any b. A part of a of exactly
    * -1.0, or beyond, takes the checked path, with the same result. */
-  if ((((one - (uint32_t)a->s) | (one - (uint32_t)a->x)
-        | (one - (uint32_t)a->y) | (one - (uint32_t)a->z))
-       >> 31u)
-      == 0u) {
+  if ((((one - (uint32_t)a->s) | (one - (uint32_t)a->x) |
+        (one - (uint32_t)a->y) | (one - (uint32_t)a->z)) >>
+       31u) == 0u) {
     return quat_mul_unit(a, b, out);
   }
   return quat_mul_wide(a, b, out);
@@ -206,8 +209,8 @@ drdc_status_t drdc_quat_compose(const drdc_quat_t *a, const drdc_quat_t *b,
   return st;
 }
 
-drdc_status_t drdc_quat_difference(const drdc_quat_t *a,
-                                   const drdc_quat_t *b, drdc_quat_t *out)
+drdc_status_t drdc_quat_difference(const drdc_quat_t *a, const drdc_quat_t *b,
+                                   drdc_quat_t *out)
 {
   drdc_quat_t c;
   drdc_status_t st;
@@ -223,8 +226,7 @@ drdc_status_t drdc_quat_difference(const drdc_quat_t *a,
 }
 
 drdc_status_t drdc_quat_angle_between(const drdc_quat_t *a,
-                                      const drdc_quat_t *b,
-                                      drdc_bam32_t *angle)
+                                      const drdc_quat_t *b, drdc_bam32_t *angle)
 {
   drdc_quat_t na;
   drdc_quat_t nb;
@@ -251,8 +253,7 @@ drdc_status_t drdc_quat_angle_between(const drdc_quat_t *a,
   na.z = -na.z;
   (void)drdc_quat_mul(&na, &nb, &d);
   /* |v| from the exact sum of squares (<= 3 2^60), correctly rounded. */
-  v2 = orient_square_u64(d.x) + orient_square_u64(d.y)
-       + orient_square_u64(d.z);
+  v2 = orient_square_u64(d.x) + orient_square_u64(d.y) + orient_square_u64(d.z);
   vn = drdc_fx_sqrt_u64(v2);
   s = (d.s < 0) ? -d.s : d.s;
   if ((vn == 0u) && (s == 0)) {

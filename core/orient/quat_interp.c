@@ -38,9 +38,9 @@ static void negate_unit(drdc_quat_t *q)
  * squares (<= 2^60). */
 static int32_t vec_norm(const drdc_quat_t *q)
 {
-  return (int32_t)drdc_fx_sqrt_u64(orient_square_u64(q->x)
-                                   + orient_square_u64(q->y)
-                                   + orient_square_u64(q->z));
+  return (int32_t)drdc_fx_sqrt_u64(orient_square_u64(q->x) +
+                                   orient_square_u64(q->y) +
+                                   orient_square_u64(q->z));
 }
 
 /* [cos(h), sin(h) v / |v|] for a binary angle h and the non-zero vector
@@ -63,10 +63,10 @@ static void exp_axis(drdc_bam32_t h, const drdc_quat_t *vq, int32_t vn,
 drdc_status_t drdc_quat_nlerp(const drdc_quat_t *a, const drdc_quat_t *b,
                               drdc_q1_30_t t, drdc_quat_t *out)
 {
-  const int32_t pa[4] = { (a == NULL) ? 0 : a->s, (a == NULL) ? 0 : a->x,
-                          (a == NULL) ? 0 : a->y, (a == NULL) ? 0 : a->z };
-  const int32_t pb[4] = { (b == NULL) ? 0 : b->s, (b == NULL) ? 0 : b->x,
-                          (b == NULL) ? 0 : b->y, (b == NULL) ? 0 : b->z };
+  const int32_t pa[4] = {(a == NULL) ? 0 : a->s, (a == NULL) ? 0 : a->x,
+                         (a == NULL) ? 0 : a->y, (a == NULL) ? 0 : a->z};
+  const int32_t pb[4] = {(b == NULL) ? 0 : b->s, (b == NULL) ? 0 : b->x,
+                         (b == NULL) ? 0 : b->y, (b == NULL) ? 0 : b->z};
   int64_t dot = 0;
   int64_t u = 0;
   int64_t wa;
@@ -209,8 +209,7 @@ static int32_t quarter_sum(int32_t a, int32_t b)
 
 drdc_status_t drdc_quat_squad_control(const drdc_quat_t *q0,
                                       const drdc_quat_t *q1,
-                                      const drdc_quat_t *q2,
-                                      drdc_quat_t *out)
+                                      const drdc_quat_t *q2, drdc_quat_t *out)
 {
   drdc_quat_t n1;
   drdc_quat_t e; /* log(conj(q1) q0), then w, then exp(w), then q1 exp(w) */
@@ -243,8 +242,7 @@ drdc_status_t drdc_quat_squad_control(const drdc_quat_t *q0,
   e.x = quarter_sum(e.x, out->x);
   e.y = quarter_sum(e.y, out->y);
   e.z = quarter_sum(e.z, out->z);
-  n2 = orient_square_u64(e.x) + orient_square_u64(e.y)
-       + orient_square_u64(e.z);
+  n2 = orient_square_u64(e.x) + orient_square_u64(e.y) + orient_square_u64(e.z);
   if (n2 == 0u) {
     *out = n1;
     return DRDC_OK;
@@ -266,8 +264,8 @@ drdc_status_t drdc_quat_squad(const drdc_quat_t *q1, const drdc_quat_t *q2,
   drdc_q1_30_t u;
   drdc_status_t st;
 
-  if ((q1 == NULL) || (q2 == NULL) || (s1 == NULL) || (s2 == NULL)
-      || (out == NULL)) {
+  if ((q1 == NULL) || (q2 == NULL) || (s1 == NULL) || (s2 == NULL) ||
+      (out == NULL)) {
     return DRDC_E_NULL;
   }
   if (!t_ok(t)) {

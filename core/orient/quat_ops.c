@@ -72,8 +72,8 @@ drdc_status_t drdc_quat_inverse(const drdc_quat_t *q, drdc_quat_t *out)
 
 drdc_status_t drdc_quat_canonical(const drdc_quat_t *q, drdc_quat_t *out)
 {
-  const int32_t p[4] = { (q == NULL) ? 0 : q->s, (q == NULL) ? 0 : q->x,
-                         (q == NULL) ? 0 : q->y, (q == NULL) ? 0 : q->z };
+  const int32_t p[4] = {(q == NULL) ? 0 : q->s, (q == NULL) ? 0 : q->x,
+                        (q == NULL) ? 0 : q->y, (q == NULL) ? 0 : q->z};
   unsigned i = 0u;
 
   if ((q == NULL) || (out == NULL)) {
@@ -86,8 +86,8 @@ drdc_status_t drdc_quat_canonical(const drdc_quat_t *q, drdc_quat_t *out)
     *out = *q;
     return DRDC_OK;
   }
-  if ((p[0] == INT32_MIN) || (p[1] == INT32_MIN) || (p[2] == INT32_MIN)
-      || (p[3] == INT32_MIN)) {
+  if ((p[0] == INT32_MIN) || (p[1] == INT32_MIN) || (p[2] == INT32_MIN) ||
+      (p[3] == INT32_MIN)) {
     return DRDC_E_OVERFLOW;
   }
   out->s = -p[0];

@@ -46,13 +46,13 @@ static inline int64_t rotate_term(int64_t p, int32_t v, uint64_t *lo)
  * rounds it to nearest, ties away from zero.
  * Returns 0, or 1 when the part is outside int32_t.
  */
-static int rotate_part_q15_16(const int64_t p[3],
-                              const drdc_vec3_q15_16_t *v, uint64_t dn,
-                              unsigned z, uint32_t rcp, int32_t *out)
+static int rotate_part_q15_16(const int64_t p[3], const drdc_vec3_q15_16_t *v,
+                              uint64_t dn, unsigned z, uint32_t rcp,
+                              int32_t *out)
 {
   uint64_t lo = 0u;
-  int64_t a = rotate_term(p[0], v->x, &lo) + rotate_term(p[1], v->y, &lo)
-              + rotate_term(p[2], v->z, &lo);
+  int64_t a = rotate_term(p[0], v->x, &lo) + rotate_term(p[1], v->y, &lo) +
+              rotate_term(p[2], v->z, &lo);
   uint64_t mag_hi;
   uint32_t mag_lo;
   uint32_t w1;

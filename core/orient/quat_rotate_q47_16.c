@@ -49,7 +49,7 @@ static drdc_status_t rotate(const drdc_quat_t *q, const int64_t in[3],
     drdc_orient_impl_numerator_row(sq.c, i, row);
     for (j = 0u; j < 3u; j++) {
       s += drdc_fx_round_div_128(row[j], in[j] * orient_pow2_s64(GUARD_BITS),
-                                dn, z, rcp);
+                                 dn, z, rcp);
     }
     res[i] = drdc_fx_rshift_round_s64(s, GUARD_BITS);
   }

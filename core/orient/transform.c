@@ -42,16 +42,15 @@ static drdc_status_t affine_rows(const drdc_dcm_t *r, int transpose,
     int32_t m0 = (transpose != 0) ? r->m[0][i] : r->m[i][0];
     int32_t m1 = (transpose != 0) ? r->m[1][i] : r->m[i][1];
     int32_t m2 = (transpose != 0) ? r->m[2][i] : r->m[i][2];
-    drdc_status_t st = drdc_orient_impl_sum4((int64_t)m0 * v[0],
-                                             (int64_t)m1 * v[1],
-                                             (int64_t)m2 * v[2], 0, &s);
+    drdc_status_t st = drdc_orient_impl_sum4(
+        (int64_t)m0 * v[0], (int64_t)m1 * v[1], (int64_t)m2 * v[2], 0, &s);
 
     if (st != DRDC_OK) {
       return st;
     }
     rv = drdc_fx_rshift_round_s64(s, 30u);
-    if (((ti > 0) && (rv > (INT64_MAX - ti)))
-        || ((ti < 0) && (rv < (ORIENT_INT64_MIN - ti)))) {
+    if (((ti > 0) && (rv > (INT64_MAX - ti))) ||
+        ((ti < 0) && (rv < (ORIENT_INT64_MIN - ti)))) {
       return DRDC_E_OVERFLOW;
     }
     out[i] = rv + ti;
@@ -102,10 +101,10 @@ drdc_status_t drdc_transform_compose(const drdc_transform_t *a,
                                      const drdc_transform_t *b,
                                      drdc_transform_t *out)
 {
-  const int32_t v[3] = { (b == NULL) ? 0 : b->t.x, (b == NULL) ? 0 : b->t.y,
-                         (b == NULL) ? 0 : b->t.z };
-  const int64_t t[3] = { (a == NULL) ? 0 : a->t.x, (a == NULL) ? 0 : a->t.y,
-                         (a == NULL) ? 0 : a->t.z };
+  const int32_t v[3] = {(b == NULL) ? 0 : b->t.x, (b == NULL) ? 0 : b->t.y,
+                        (b == NULL) ? 0 : b->t.z};
+  const int64_t t[3] = {(a == NULL) ? 0 : a->t.x, (a == NULL) ? 0 : a->t.y,
+                        (a == NULL) ? 0 : a->t.z};
   int64_t res[3];
   drdc_vec3_q15_16_t nt;
   drdc_status_t st;
@@ -131,9 +130,9 @@ drdc_status_t drdc_transform_compose(const drdc_transform_t *a,
 drdc_status_t drdc_transform_invert(const drdc_transform_t *a,
                                     drdc_transform_t *out)
 {
-  const int32_t v[3] = { (a == NULL) ? 0 : a->t.x, (a == NULL) ? 0 : a->t.y,
-                         (a == NULL) ? 0 : a->t.z };
-  const int64_t zero[3] = { 0, 0, 0 };
+  const int32_t v[3] = {(a == NULL) ? 0 : a->t.x, (a == NULL) ? 0 : a->t.y,
+                        (a == NULL) ? 0 : a->t.z};
+  const int64_t zero[3] = {0, 0, 0};
   int64_t res[3];
   drdc_dcm_t rt;
   unsigned i;
@@ -161,10 +160,10 @@ drdc_status_t drdc_transform_point(const drdc_transform_t *a,
                                    const drdc_vec3_q15_16_t *p,
                                    drdc_vec3_q15_16_t *out)
 {
-  const int32_t v[3] = { (p == NULL) ? 0 : p->x, (p == NULL) ? 0 : p->y,
-                         (p == NULL) ? 0 : p->z };
-  const int64_t t[3] = { (a == NULL) ? 0 : a->t.x, (a == NULL) ? 0 : a->t.y,
-                         (a == NULL) ? 0 : a->t.z };
+  const int32_t v[3] = {(p == NULL) ? 0 : p->x, (p == NULL) ? 0 : p->y,
+                        (p == NULL) ? 0 : p->z};
+  const int64_t t[3] = {(a == NULL) ? 0 : a->t.x, (a == NULL) ? 0 : a->t.y,
+                        (a == NULL) ? 0 : a->t.z};
   int64_t res[3];
   drdc_status_t st;
 
@@ -192,10 +191,10 @@ drdc_status_t drdc_transform_global_compose(const drdc_transform_global_t *g,
                                             const drdc_transform_t *b,
                                             drdc_transform_global_t *out)
 {
-  const int32_t v[3] = { (b == NULL) ? 0 : b->t.x, (b == NULL) ? 0 : b->t.y,
-                         (b == NULL) ? 0 : b->t.z };
-  const int64_t t[3] = { (g == NULL) ? 0 : g->t.x, (g == NULL) ? 0 : g->t.y,
-                         (g == NULL) ? 0 : g->t.z };
+  const int32_t v[3] = {(b == NULL) ? 0 : b->t.x, (b == NULL) ? 0 : b->t.y,
+                        (b == NULL) ? 0 : b->t.z};
+  const int64_t t[3] = {(g == NULL) ? 0 : g->t.x, (g == NULL) ? 0 : g->t.y,
+                        (g == NULL) ? 0 : g->t.z};
   int64_t res[3];
   drdc_status_t st;
 
@@ -220,10 +219,10 @@ drdc_status_t drdc_transform_global_to_world(const drdc_transform_global_t *g,
                                              const drdc_vec3_q15_16_t *p,
                                              drdc_vec3_q47_16_t *out)
 {
-  const int32_t v[3] = { (p == NULL) ? 0 : p->x, (p == NULL) ? 0 : p->y,
-                         (p == NULL) ? 0 : p->z };
-  const int64_t t[3] = { (g == NULL) ? 0 : g->t.x, (g == NULL) ? 0 : g->t.y,
-                         (g == NULL) ? 0 : g->t.z };
+  const int32_t v[3] = {(p == NULL) ? 0 : p->x, (p == NULL) ? 0 : p->y,
+                        (p == NULL) ? 0 : p->z};
+  const int64_t t[3] = {(g == NULL) ? 0 : g->t.x, (g == NULL) ? 0 : g->t.y,
+                        (g == NULL) ? 0 : g->t.z};
   int64_t res[3];
   drdc_status_t st;
 
@@ -256,12 +255,12 @@ drdc_status_t drdc_transform_global_to_local(const drdc_transform_global_t *g,
   diff[1] = p->y;
   diff[2] = p->z;
   {
-    const int64_t t[3] = { g->t.x, g->t.y, g->t.z };
+    const int64_t t[3] = {g->t.x, g->t.y, g->t.z};
 
     for (i = 0u; i < 3u; i++) {
       /* the difference must be a local length: rule out overflow first */
-      if (((t[i] < 0) && (diff[i] > (INT64_MAX + t[i])))
-          || ((t[i] > 0) && (diff[i] < (ORIENT_INT64_MIN + t[i])))) {
+      if (((t[i] < 0) && (diff[i] > (INT64_MAX + t[i]))) ||
+          ((t[i] > 0) && (diff[i] < (ORIENT_INT64_MIN + t[i])))) {
         return DRDC_E_OVERFLOW;
       }
       diff[i] -= t[i];

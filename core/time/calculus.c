@@ -12,7 +12,7 @@
 #include "time_impl.h"
 
 #define NS_PER_SECOND_U64 UINT64_C(1000000000)
-#define LOW32 ((uint64_t)0xFFFFFFFFu)
+#define LOW32             ((uint64_t)0xFFFFFFFFu)
 
 /* Graininess of stamps a < b, as an unsigned count (the difference of two
  * int64_t may exceed INT64_MAX; computed modulo 2^64 it is exact). */
@@ -47,9 +47,8 @@ static uint64_t div_round(uint64_t num, uint64_t den)
   return (r >= (den - r)) ? (q + 1u) : q;
 }
 
-drdc_status_t drdc_time_delta_derivative(const int64_t *t_ns,
-                                         const int32_t *f, size_t n,
-                                         int64_t *deriv)
+drdc_status_t drdc_time_delta_derivative(const int64_t *t_ns, const int32_t *f,
+                                         size_t n, int64_t *deriv)
 {
   size_t i;
   drdc_status_t st;
@@ -100,7 +99,7 @@ static void add128(struct i128 *acc, uint64_t hi, uint64_t lo, bool negative)
 drdc_status_t drdc_time_delta_integral(const int64_t *t_ns, const int32_t *f,
                                        size_t n, int64_t *integral)
 {
-  struct i128 acc = { 0u, 0u };
+  struct i128 acc = {0u, 0u};
   uint64_t chunk[4];
   uint64_t rem = 0;
   uint64_t q_hi;
@@ -161,15 +160,15 @@ drdc_status_t drdc_time_delta_integral(const int64_t *t_ns, const int32_t *f,
     }
   }
   /* The magnitude must fit: up to 2^63 - 1, or 2^63 for a negative. */
-  if ((q_hi != 0u) || (q_lo > (negative ? (UINT64_C(1) << 63)
-                                        : (uint64_t)INT64_MAX))) {
+  if ((q_hi != 0u) ||
+      (q_lo > (negative ? (UINT64_C(1) << 63) : (uint64_t)INT64_MAX))) {
     return DRDC_E_OVERFLOW;
   }
   if (negative) {
     /* -q_lo in [-2^63, 0]: written without overflowing int64_t, and -2^63
      * spelt -INT64_MAX - 1 as <stdint.h> does, an int64_t expression */
-    *integral = (q_lo == (UINT64_C(1) << 63)) ? (-INT64_MAX - 1)
-                                               : -(int64_t)q_lo;
+    *integral =
+        (q_lo == (UINT64_C(1) << 63)) ? (-INT64_MAX - 1) : -(int64_t)q_lo;
   } else {
     *integral = (int64_t)q_lo;
   }

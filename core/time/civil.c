@@ -24,8 +24,8 @@ int drdc_time_is_leap_year(int32_t year)
 
 static int32_t days_in_month(int32_t year, int32_t month)
 {
-  static const uint8_t days[12] = { 31, 28, 31, 30, 31, 30,
-                                    31, 31, 30, 31, 30, 31 };
+  static const uint8_t days[12] = {31, 28, 31, 30, 31, 30,
+                                   31, 31, 30, 31, 30, 31};
 
   if ((month == 2) && drdc_time_is_leap_year(year)) {
     return 29;
@@ -69,8 +69,8 @@ drdc_status_t drdc_time_days_from_civil(int32_t year, int32_t month,
   era = y / 400;
   year_of_era = y - (era * 400);
   day_of_year = ((((153 * month_from_march) + 2) / 5) + (day - 1));
-  day_of_era = (year_of_era * 365) + (year_of_era / 4) - (year_of_era / 100)
-               + day_of_year;
+  day_of_era = (year_of_era * 365) + (year_of_era / 4) - (year_of_era / 100) +
+               day_of_year;
   *days = (era * DAYS_PER_400Y) + day_of_era - DAYS_0000_03_01_TO_EPOCH;
   return DRDC_OK;
 }
@@ -95,11 +95,12 @@ drdc_status_t drdc_time_civil_from_days(int32_t days, int32_t *year,
   day_of_era = z - (era * DAYS_PER_400Y);
   /* Remove the leap days before this day of the era, then divide by 365:
    * one leap day per 1460 days, none per 36524, one per 146096. */
-  year_of_era = (day_of_era - (day_of_era / 1460) + (day_of_era / 36524)
-                 - (day_of_era / 146096)) / 365;
-  day_of_year = day_of_era - ((365 * year_of_era) + (year_of_era / 4)
-                              - (year_of_era / 100));
-  mp = ((5 * day_of_year) + 2) / 153;  /* month from March, 0..11 */
+  year_of_era = (day_of_era - (day_of_era / 1460) + (day_of_era / 36524) -
+                 (day_of_era / 146096)) /
+                365;
+  day_of_year = day_of_era -
+                ((365 * year_of_era) + (year_of_era / 4) - (year_of_era / 100));
+  mp = ((5 * day_of_year) + 2) / 153; /* month from March, 0..11 */
   if (mp < 10) {
     m = mp + 3;
   } else {
@@ -109,7 +110,7 @@ drdc_status_t drdc_time_civil_from_days(int32_t days, int32_t *year,
   if (year != NULL) {
     *year = year_of_era + (era * 400);
     if (m <= 2) {
-      *year += 1;  /* January and February end the March-based year */
+      *year += 1; /* January and February end the March-based year */
     }
   }
   if (month != NULL) {

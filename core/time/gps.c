@@ -11,13 +11,12 @@
 
 /* TAI seconds since 1958 at the GPS epoch 1980-01-06T00:00:00 GPS time,
  * which is TAI - 19 s: (4383 + 3657) days plus 19 s. */
-#define GPS_EPOCH_TAI \
-  ((((int64_t)DAYS_1958_TO_1970 + DAYS_1970_TO_GPS) * SECONDS_PER_DAY) \
-   + TAI_MINUS_GPS)
+#define GPS_EPOCH_TAI                                                          \
+  ((((int64_t)DAYS_1958_TO_1970 + DAYS_1970_TO_GPS) * SECONDS_PER_DAY) +       \
+   TAI_MINUS_GPS)
 
 drdc_status_t drdc_time_utc_to_gps(const drdc_time_leap_t *leap,
-                                   const drdc_time_t *utc,
-                                   drdc_time_gps_t *gps)
+                                   const drdc_time_t *utc, drdc_time_gps_t *gps)
 {
   drdc_time_count_t tai;
   int64_t g;
@@ -46,8 +45,7 @@ drdc_status_t drdc_time_utc_to_gps(const drdc_time_leap_t *leap,
 }
 
 drdc_status_t drdc_time_gps_to_utc(const drdc_time_leap_t *leap,
-                                   const drdc_time_gps_t *gps,
-                                   drdc_time_t *utc)
+                                   const drdc_time_gps_t *gps, drdc_time_t *utc)
 {
   drdc_time_count_t tai;
 

@@ -32,10 +32,9 @@ drdc_status_t drdc_time_gps_week_resolve(int32_t week10,
   }
   pivot_week = (day - DAYS_1970_TO_GPS) / 7;
   /* Both operands of % are non-negative here. */
-  w = pivot_week
-      + ((week10 - (pivot_week % DRDC_TIME_GPS_WEEK_ROLLOVER)
-          + DRDC_TIME_GPS_WEEK_ROLLOVER)
-         % DRDC_TIME_GPS_WEEK_ROLLOVER);
+  w = pivot_week + ((week10 - (pivot_week % DRDC_TIME_GPS_WEEK_ROLLOVER) +
+                     DRDC_TIME_GPS_WEEK_ROLLOVER) %
+                    DRDC_TIME_GPS_WEEK_ROLLOVER);
   if (w > DRDC_TIME_GPS_WEEK_MAX) {
     return DRDC_E_WEEK;
   }

@@ -38,8 +38,8 @@ drdc_status_t drdc_time_iso8601_format(const drdc_time_leap_t *leap,
                                        char *buf, size_t size)
 {
   static const int32_t pow10[MAX_DIGITS + 1] = {
-    1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000, 1000000000
-  };
+      1,      10,      100,      1000,      10000,
+      100000, 1000000, 10000000, 100000000, 1000000000};
   drdc_time_civil_t c;
   drdc_status_t st;
   size_t need;
@@ -103,8 +103,8 @@ drdc_status_t drdc_time_iso8601_parse(const drdc_time_leap_t *leap,
     uint8_t at;
     uint8_t width;
     char after;
-  } fields[6] = { { 0, 4, '-' },  { 5, 2, '-' },  { 8, 2, 'T' },
-                  { 11, 2, ':' }, { 14, 2, ':' }, { 17, 2, '\0' } };
+  } fields[6] = {{0, 4, '-'},  {5, 2, '-'},  {8, 2, 'T'},
+                 {11, 2, ':'}, {14, 2, ':'}, {17, 2, '\0'}};
   int32_t v[6];
   drdc_time_civil_t c;
   const char *p;
@@ -123,8 +123,7 @@ drdc_status_t drdc_time_iso8601_parse(const drdc_time_leap_t *leap,
       return DRDC_E_SYNTAX;
     }
     after = fields[i].after;
-    if ((after != '\0')
-        && (text[fields[i].at + fields[i].width] != after)) {
+    if ((after != '\0') && (text[fields[i].at + fields[i].width] != after)) {
       return DRDC_E_SYNTAX;
     }
   }

@@ -8,17 +8,17 @@
 
 #include "time_impl.h"
 
-#define MSEC_SHIFT 0
+#define MSEC_SHIFT   0
 #define SECOND_SHIFT 10
 #define MINUTE_SHIFT 16
-#define HOUR_SHIFT 22
-#define DAY_SHIFT 27
-#define MSEC_MASK UINT32_C(0x3FF)
-#define SECOND_MASK UINT32_C(0x3F)
-#define MINUTE_MASK UINT32_C(0x3F)
-#define HOUR_MASK UINT32_C(0x1F)
-#define DAY_MASK UINT32_C(0x1F)
-#define NS_PER_MS 1000000
+#define HOUR_SHIFT   22
+#define DAY_SHIFT    27
+#define MSEC_MASK    UINT32_C(0x3FF)
+#define SECOND_MASK  UINT32_C(0x3F)
+#define MINUTE_MASK  UINT32_C(0x3F)
+#define HOUR_MASK    UINT32_C(0x1F)
+#define DAY_MASK     UINT32_C(0x1F)
+#define NS_PER_MS    1000000
 
 drdc_status_t drdc_time_jaus_pack(const drdc_time_leap_t *leap,
                                   const drdc_time_t *utc, uint32_t *stamp)
@@ -36,10 +36,10 @@ drdc_status_t drdc_time_jaus_pack(const drdc_time_leap_t *leap,
   }
   /* Every field is within its mask after the civil conversion. */
   msec = c.nsec / NS_PER_MS;
-  *stamp = ((uint32_t)c.day << DAY_SHIFT) | ((uint32_t)c.hour << HOUR_SHIFT)
-           | ((uint32_t)c.minute << MINUTE_SHIFT)
-           | ((uint32_t)c.second << SECOND_SHIFT)
-           | ((uint32_t)msec << MSEC_SHIFT);
+  *stamp = ((uint32_t)c.day << DAY_SHIFT) | ((uint32_t)c.hour << HOUR_SHIFT) |
+           ((uint32_t)c.minute << MINUTE_SHIFT) |
+           ((uint32_t)c.second << SECOND_SHIFT) |
+           ((uint32_t)msec << MSEC_SHIFT);
   return DRDC_OK;
 }
 
@@ -162,8 +162,8 @@ drdc_status_t drdc_time_jaus_to_utc(const drdc_time_leap_t *leap,
   {
     int64_t best_dist = best.sec - ref->sec;
 
-    if ((best_dist > DRDC_TIME_JAUS_WINDOW_SECONDS)
-        || (best_dist < -DRDC_TIME_JAUS_WINDOW_SECONDS)) {
+    if ((best_dist > DRDC_TIME_JAUS_WINDOW_SECONDS) ||
+        (best_dist < -DRDC_TIME_JAUS_WINDOW_SECONDS)) {
       return DRDC_E_RANGE;
     }
   }

@@ -15,10 +15,10 @@
 /* Field ranges of the GPS UTC parameters (IS-GPS-200 table 20-IX):
  * delta t_LS and delta t_LSF are 8-bit two's complement, WN_LSF 8 bits
  * (the full week modulo 256), DN 1..7. */
-#define GPS_DT_MIN (-128)
-#define GPS_DT_MAX 127
+#define GPS_DT_MIN         (-128)
+#define GPS_DT_MAX         127
 #define GPS_WN_LSF_MODULUS 256
-#define GPS_WN_LSF_HALF 128
+#define GPS_WN_LSF_HALF    128
 
 static int32_t max32(int32_t a, int32_t b)
 {
@@ -45,17 +45,19 @@ drdc_status_t drdc_time_leap_update_gps(drdc_time_leap_t *leap,
   if ((week_now < 0) || (week_now > DRDC_TIME_GPS_WEEK_MAX)) {
     return DRDC_E_WEEK;
   }
-  if ((dt_ls < GPS_DT_MIN) || (dt_ls > GPS_DT_MAX) || (dt_lsf < GPS_DT_MIN)
-      || (dt_lsf > GPS_DT_MAX) || (wn_lsf < 0)
-      || (wn_lsf >= GPS_WN_LSF_MODULUS) || (dn < 1) || (dn > 7)
-      || ((dt_lsf - dt_ls) > 1) || ((dt_lsf - dt_ls) < -1)) {
+  if ((dt_ls < GPS_DT_MIN) || (dt_ls > GPS_DT_MAX) || (dt_lsf < GPS_DT_MIN) ||
+      (dt_lsf > GPS_DT_MAX) || (wn_lsf < 0) || (wn_lsf >= GPS_WN_LSF_MODULUS) ||
+      (dn < 1) || (dn > 7) || ((dt_lsf - dt_ls) > 1) ||
+      ((dt_lsf - dt_ls) < -1)) {
     return DRDC_E_LEAP_TABLE;
   }
   /* WN_LSF is within -128..+127 weeks of the current week: the difference
    * of the low 8 bits, brought into that window. Both terms are 0..255,
    * so the sum below is 129..639 before the remainder: never negative. */
-  delta = (((wn_lsf - (week_now % GPS_WN_LSF_MODULUS)) + GPS_WN_LSF_MODULUS
-            + GPS_WN_LSF_HALF) % GPS_WN_LSF_MODULUS) - GPS_WN_LSF_HALF;
+  delta = (((wn_lsf - (week_now % GPS_WN_LSF_MODULUS)) + GPS_WN_LSF_MODULUS +
+            GPS_WN_LSF_HALF) %
+           GPS_WN_LSF_MODULUS) -
+          GPS_WN_LSF_HALF;
   week = week_now + delta;
   if (week < 0) {
     return DRDC_E_LEAP_TABLE;
@@ -73,8 +75,7 @@ drdc_status_t drdc_time_leap_update_gps(drdc_time_leap_t *leap,
   if (dt_lsf == dt_ls) {
     /* Nothing scheduled; the event fields name the last leap second. */
     if (new_off != last.tai_utc) {
-      if (((new_off - last.tai_utc) != 1)
-          && ((new_off - last.tai_utc) != -1)) {
+      if (((new_off - last.tai_utc) != 1) && ((new_off - last.tai_utc) != -1)) {
         return DRDC_E_LEAP_TABLE;
       }
       prev_off = last.tai_utc;
@@ -87,7 +88,7 @@ drdc_status_t drdc_time_leap_update_gps(drdc_time_leap_t *leap,
     if (entry_day <= last.day) {
       /* A known event: it must be exactly one of the state's entries. */
       drdc_time_leap_entry_t e =
-        drdc_time_leap_entry(leap, drdc_time_leap_index(leap, entry_day));
+          drdc_time_leap_entry(leap, drdc_time_leap_index(leap, entry_day));
 
       if ((e.day != entry_day) || (e.tai_utc != new_off)) {
         return DRDC_E_LEAP_TABLE;

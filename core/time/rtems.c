@@ -37,11 +37,11 @@ drdc_status_t drdc_time_rtems_to_utc(const drdc_time_count_t *rtems,
     return DRDC_E_NULL;
   }
   /* Range first, so the epoch shift cannot overflow. */
-  if ((rtems->sec < (UTC_SEC_MIN - DRDC_TIME_RTEMS_EPOCH_UNIX))
-      || (rtems->sec >= (UTC_SEC_END - DRDC_TIME_RTEMS_EPOCH_UNIX))) {
+  if ((rtems->sec < (UTC_SEC_MIN - DRDC_TIME_RTEMS_EPOCH_UNIX)) ||
+      (rtems->sec >= (UTC_SEC_END - DRDC_TIME_RTEMS_EPOCH_UNIX))) {
     return ((rtems->nsec < 0) || (rtems->nsec >= DRDC_NS_PER_SECOND))
-             ? DRDC_E_NANOSECOND
-             : DRDC_E_RANGE;
+               ? DRDC_E_NANOSECOND
+               : DRDC_E_RANGE;
   }
   u.sec = rtems->sec + DRDC_TIME_RTEMS_EPOCH_UNIX;
   u.nsec = rtems->nsec;
@@ -61,8 +61,8 @@ drdc_status_t drdc_time_utc_to_rtems_tod(const drdc_time_leap_t *leap,
   if (tod == NULL) {
     return DRDC_E_NULL;
   }
-  if ((ticks_per_second == 0u)
-      || (ticks_per_second > (uint32_t)DRDC_NS_PER_SECOND)) {
+  if ((ticks_per_second == 0u) ||
+      (ticks_per_second > (uint32_t)DRDC_NS_PER_SECOND)) {
     return DRDC_E_TICKS;
   }
   st = drdc_time_utc_to_unix(leap, utc, &u);
@@ -85,8 +85,8 @@ drdc_status_t drdc_time_utc_to_rtems_tod(const drdc_time_leap_t *leap,
   tod->minute = (uint32_t)c.minute;
   tod->second = (uint32_t)c.second;
   /* nsec < 1e9 and ticks_per_second <= 1e9: the product is < 1e18. */
-  tod->ticks = (uint32_t)(((uint64_t)(uint32_t)c.nsec * ticks_per_second)
-                          / (uint64_t)DRDC_NS_PER_SECOND);
+  tod->ticks = (uint32_t)(((uint64_t)(uint32_t)c.nsec * ticks_per_second) /
+                          (uint64_t)DRDC_NS_PER_SECOND);
   return DRDC_OK;
 }
 
@@ -100,13 +100,13 @@ drdc_status_t drdc_time_rtems_tod_to_utc(const drdc_time_rtems_tod_t *tod,
   if ((tod == NULL) || (utc == NULL)) {
     return DRDC_E_NULL;
   }
-  if ((ticks_per_second == 0u)
-      || (ticks_per_second > (uint32_t)DRDC_NS_PER_SECOND)) {
+  if ((ticks_per_second == 0u) ||
+      (ticks_per_second > (uint32_t)DRDC_NS_PER_SECOND)) {
     return DRDC_E_TICKS;
   }
   /* Bound every unsigned field before it becomes an int32_t. */
-  if ((tod->year < (uint32_t)DRDC_TIME_RTEMS_YEAR_MIN)
-      || (tod->year > (uint32_t)DRDC_YEAR_MAX)) {
+  if ((tod->year < (uint32_t)DRDC_TIME_RTEMS_YEAR_MIN) ||
+      (tod->year > (uint32_t)DRDC_YEAR_MAX)) {
     return DRDC_E_YEAR;
   }
   if ((tod->month < 1u) || (tod->month > 12u)) {
@@ -134,8 +134,8 @@ drdc_status_t drdc_time_rtems_tod_to_utc(const drdc_time_rtems_tod_t *tod,
   c.minute = (int32_t)tod->minute;
   c.second = (int32_t)tod->second;
   /* ticks < ticks_per_second <= 1e9: the product is < 1e18. */
-  nsec = ((uint64_t)tod->ticks * (uint64_t)DRDC_NS_PER_SECOND)
-         / ticks_per_second;
+  nsec =
+      ((uint64_t)tod->ticks * (uint64_t)DRDC_NS_PER_SECOND) / ticks_per_second;
   c.nsec = (int32_t)nsec; /* < 1e9 */
   return drdc_time_from_civil(NULL, &c, utc);
 }

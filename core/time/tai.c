@@ -56,9 +56,9 @@ drdc_status_t drdc_time_tai_to_utc(const drdc_time_leap_t *leap,
   if ((tai->nsec < 0) || (tai->nsec >= DRDC_NS_PER_SECOND)) {
     return DRDC_E_NANOSECOND;
   }
-  if ((tai->sec < (UTC_SEC_MIN + DRDC_TIME_TAI_EPOCH_TO_UNIX))
-      || (tai->sec > (UTC_SEC_END + DRDC_TIME_TAI_EPOCH_TO_UNIX
-                      + TAI_UTC_BOUND))) {
+  if ((tai->sec < (UTC_SEC_MIN + DRDC_TIME_TAI_EPOCH_TO_UNIX)) ||
+      (tai->sec >
+       (UTC_SEC_END + DRDC_TIME_TAI_EPOCH_TO_UNIX + TAI_UTC_BOUND))) {
     return DRDC_E_RANGE;
   }
   t = tai->sec - DRDC_TIME_TAI_EPOCH_TO_UNIX; /* TAI on the Unix scale */
@@ -81,7 +81,7 @@ drdc_status_t drdc_time_tai_to_utc(const drdc_time_leap_t *leap,
     /* The last second of a segment that ends with a positive leap second
      * reaches the next midnight: it is 23:59:60. */
     int64_t next_midnight =
-      (int64_t)drdc_time_leap_entry(l, i + 1).day * SECONDS_PER_DAY;
+        (int64_t)drdc_time_leap_entry(l, i + 1).day * SECONDS_PER_DAY;
 
     if (u >= next_midnight) {
       u -= 1;

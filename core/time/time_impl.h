@@ -14,7 +14,7 @@
 #include <drdc/time_leap.h>
 
 /* UTC days have 86 400 POSIX seconds; leap seconds live in nsec. */
-#define SECONDS_PER_DAY 86400
+#define SECONDS_PER_DAY  86400
 #define SECONDS_PER_WEEK 604800
 /* Days from 1958-01-01 (TAI epoch) to 1970-01-01: 12 years, 3 leap days. */
 #define DAYS_1958_TO_1970 4383

@@ -9,7 +9,7 @@
  */
 #include "time_impl.h"
 
-#define SECONDS_PER_HOUR 3600
+#define SECONDS_PER_HOUR   3600
 #define SECONDS_PER_MINUTE 60
 
 drdc_status_t drdc_time_civil_check(const drdc_time_leap_t *leap,
@@ -67,17 +67,16 @@ drdc_status_t drdc_time_from_civil(const drdc_time_leap_t *leap,
   if (st != DRDC_OK) {
     return st;
   }
-  (void)drdc_time_days_from_civil(civil->year, civil->month, civil->day,
-                                  &day);
+  (void)drdc_time_days_from_civil(civil->year, civil->month, civil->day, &day);
   second = civil->second;
   nsec = civil->nsec;
   if (second == 60) { /* 23:59:60.f is 23:59:59 + (1 + f) */
     second = 59;
     nsec += DRDC_NS_PER_SECOND;
   }
-  utc->sec = ((int64_t)day * SECONDS_PER_DAY)
-             + ((int64_t)civil->hour * SECONDS_PER_HOUR)
-             + ((int64_t)civil->minute * SECONDS_PER_MINUTE) + second;
+  utc->sec = ((int64_t)day * SECONDS_PER_DAY) +
+             ((int64_t)civil->hour * SECONDS_PER_HOUR) +
+             ((int64_t)civil->minute * SECONDS_PER_MINUTE) + second;
   utc->nsec = nsec;
   return DRDC_OK;
 }

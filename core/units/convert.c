@@ -9,8 +9,7 @@
 
 #include "units_impl.h"
 
-drdc_status_t drdc_units_compatible(const drdc_unit_t *a,
-                                    const drdc_unit_t *b)
+drdc_status_t drdc_units_compatible(const drdc_unit_t *a, const drdc_unit_t *b)
 {
   size_t i;
 

@@ -73,15 +73,15 @@ drdc_status_t drdc__units_mul_s64(int64_t x, int64_t y, int64_t *out)
 }
 
 drdc_status_t drdc__units_rat_scale(const units_rat_t *a, int64_t num,
-                              int64_t den, units_rat_t *out)
+                                    int64_t den, units_rat_t *out)
 {
   int64_t g1 = gcd_s64(a->num, den);
   int64_t g2 = gcd_s64(num, a->den);
   int64_t n;
   int64_t d;
 
-  if ((a->num < -INT64_MAX) || (num < -INT64_MAX) || (a->den <= 0)
-      || (den <= 0)) {
+  if ((a->num < -INT64_MAX) || (num < -INT64_MAX) || (a->den <= 0) ||
+      (den <= 0)) {
     return DRDC_E_RANGE;
   }
   if (drdc__units_mul_s64(a->num / g1, num / g2, &n) != DRDC_OK) {
@@ -114,7 +114,7 @@ drdc_status_t drdc__units_rat_inv(const units_rat_t *a, units_rat_t *out)
 }
 
 drdc_status_t drdc__units_rat_sub(int64_t a_num, int64_t a_den,
-                            const units_rat_t *b, units_rat_t *out)
+                                  const units_rat_t *b, units_rat_t *out)
 {
   /* a/b - c/d = (a (d/g) - c (b/g)) / (b/g d), g = gcd(b, d). The
    * products are read only after all three succeeded, which GCC 13 does
@@ -131,14 +131,14 @@ drdc_status_t drdc__units_rat_sub(int64_t a_num, int64_t a_den,
     return DRDC_E_RANGE;
   }
   g = gcd_s64(a_den, b->den);
-  if ((drdc__units_mul_s64(a_num, b->den / g, &left) != DRDC_OK)
-      || (drdc__units_mul_s64(b->num, a_den / g, &right) != DRDC_OK)
-      || (drdc__units_mul_s64(a_den / g, b->den, &den) != DRDC_OK)) {
+  if ((drdc__units_mul_s64(a_num, b->den / g, &left) != DRDC_OK) ||
+      (drdc__units_mul_s64(b->num, a_den / g, &right) != DRDC_OK) ||
+      (drdc__units_mul_s64(a_den / g, b->den, &den) != DRDC_OK)) {
     return DRDC_E_RANGE;
   }
   /* both terms are within +-INT64_MAX: check the difference */
-  if (((right < 0) && (left > (INT64_MAX + right)))
-      || ((right > 0) && (left < (-INT64_MAX + right)))) {
+  if (((right < 0) && (left > (INT64_MAX + right))) ||
+      ((right > 0) && (left < (-INT64_MAX + right)))) {
     return DRDC_E_RANGE;
   }
   num = left - right;

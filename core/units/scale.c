@@ -37,8 +37,8 @@ static int64_t pow2(unsigned n)
  * DRDC_E_RANGE when neither can take them.
  */
 drdc_status_t drdc__units_prepare(unsigned from_frac, const drdc_unit_t *from,
-                            unsigned to_frac, const drdc_unit_t *to,
-                            int64_t *a, units_rat_t *factor)
+                                  unsigned to_frac, const drdc_unit_t *to,
+                                  int64_t *a, units_rat_t *factor)
 {
   units_rat_t *f = factor;
   int64_t raw = *a;
@@ -48,8 +48,8 @@ drdc_status_t drdc__units_prepare(unsigned from_frac, const drdc_unit_t *from,
   f->num = drdc__units_number(to->factor_den);
   f->den = drdc__units_number(to->factor_num);
   if (drdc__units_rat_scale(f, drdc__units_number(from->factor_num),
-                      drdc__units_number(from->factor_den), f)
-      != DRDC_OK) {
+                            drdc__units_number(from->factor_den),
+                            f) != DRDC_OK) {
     return DRDC_E_RANGE;
   }
   if ((units_offset_row(from) != 0u) || (units_offset_row(to) != 0u)) {
@@ -57,26 +57,26 @@ drdc_status_t drdc__units_prepare(unsigned from_frac, const drdc_unit_t *from,
     int64_t scaled;
     units_rat_t h;
 
-    if ((drdc__units_rat_inv(f, &h) != DRDC_OK)
-        || (drdc__units_rat_scale(&h, drdc__units_offset_part(to, 0u),
-                            drdc__units_offset_part(to, 1u), &h)
-            != DRDC_OK)) {
+    if ((drdc__units_rat_inv(f, &h) != DRDC_OK) ||
+        (drdc__units_rat_scale(&h, drdc__units_offset_part(to, 0u),
+                               drdc__units_offset_part(to, 1u),
+                               &h) != DRDC_OK)) {
       return DRDC_E_RANGE;
     }
     if ((drdc__units_rat_sub(drdc__units_offset_part(from, 0u),
-                       drdc__units_offset_part(from, 1u), &h, &h)
-         != DRDC_OK)
-        || (drdc__units_rat_scale(&h, pow2(from_frac), 1, &h) != DRDC_OK)) {
+                             drdc__units_offset_part(from, 1u), &h,
+                             &h) != DRDC_OK) ||
+        (drdc__units_rat_scale(&h, pow2(from_frac), 1, &h) != DRDC_OK)) {
       return DRDC_E_RANGE;
     }
     /* raw x Hd goes to *a (no local whose address is taken) */
-    if ((drdc__units_mul_s64(raw, h.den, a) != DRDC_OK)
-        || (drdc__units_rat_scale(f, 1, h.den, f) != DRDC_OK)) {
+    if ((drdc__units_mul_s64(raw, h.den, a) != DRDC_OK) ||
+        (drdc__units_rat_scale(f, 1, h.den, f) != DRDC_OK)) {
       return DRDC_E_RANGE;
     }
     scaled = *a;
-    if (((h.num > 0) && (scaled > (INT64_MAX - h.num)))
-        || ((h.num < 0) && (scaled < (-INT64_MAX - h.num)))) {
+    if (((h.num > 0) && (scaled > (INT64_MAX - h.num))) ||
+        ((h.num < 0) && (scaled < (-INT64_MAX - h.num)))) {
       return DRDC_E_RANGE;
     }
     in = scaled + h.num;
@@ -95,8 +95,9 @@ drdc_status_t drdc__units_prepare(unsigned from_frac, const drdc_unit_t *from,
       k--;
       rest = shift - k;
       *a = in;
-      if (((rest == 0u) || (drdc__units_mul_s64(in, pow2(rest), a) == DRDC_OK))
-          && (drdc__units_rat_scale(f, pow2(k), 1, f) == DRDC_OK)) {
+      if (((rest == 0u) ||
+           (drdc__units_mul_s64(in, pow2(rest), a) == DRDC_OK)) &&
+          (drdc__units_rat_scale(f, pow2(k), 1, f) == DRDC_OK)) {
         in = *a;
         st = DRDC_OK;
       }

@@ -30,7 +30,7 @@ typedef struct units_rat {
  *  parts (no rational on the caller's stack). DRDC_E_RANGE when a part
  *  does not fit int64_t (outputs unchanged). */
 drdc_status_t drdc__units_rat_scale(const units_rat_t *a, int64_t num,
-                              int64_t den, units_rat_t *out);
+                                    int64_t den, units_rat_t *out);
 
 /** 1 / a for a != 0 (sign moved to the numerator); DRDC_E_RANGE for
  *  a == 0 or a numerator of INT64_MIN. */
@@ -39,7 +39,7 @@ drdc_status_t drdc__units_rat_inv(const units_rat_t *a, units_rat_t *out);
 /** a_num / a_den - b (a_den > 0), exact; DRDC_E_RANGE when a part does
  *  not fit int64_t. */
 drdc_status_t drdc__units_rat_sub(int64_t a_num, int64_t a_den,
-                            const units_rat_t *b, units_rat_t *out);
+                                  const units_rat_t *b, units_rat_t *out);
 
 /** x * y when it fits int64_t; DRDC_E_RANGE otherwise. */
 drdc_status_t drdc__units_mul_s64(int64_t x, int64_t y, int64_t *out);
@@ -51,8 +51,8 @@ drdc_status_t drdc__units_mul_s64(int64_t x, int64_t y, int64_t *out);
  *  integers; `*a` and `*factor` are then undefined (the factor is worked
  *  on in place, in the caller's frame). */
 drdc_status_t drdc__units_prepare(unsigned from_frac, const drdc_unit_t *from,
-                            unsigned to_frac, const drdc_unit_t *to,
-                            int64_t *a, units_rat_t *factor);
+                                  unsigned to_frac, const drdc_unit_t *to,
+                                  int64_t *a, units_rat_t *factor);
 
 /** One unit: indices into the tables of core/units/table.c (generated
  *  by core/units/gen_table.py); its name is the row's string in the

@@ -22,11 +22,11 @@
 
 /* One epoch of an RTK receiver near DRDC Suffield: 50.27 N, 111.17 W. */
 static const char gga_text[] =
-  "$GNGGA,170000.00,5016.20000,N,11110.20000,W,4,12,0.7,754.3,M,-16.2,M,"
-  "1.0,0001*66\r\n";
+    "$GNGGA,170000.00,5016.20000,N,11110.20000,W,4,12,0.7,754.3,M,-16.2,M,"
+    "1.0,0001*66\r\n";
 static const char rmc_text[] =
-  "$GNRMC,170000.00,A,5016.20000,N,11110.20000,W,2.57,045.00,221126,,,R*40"
-  "\r\n";
+    "$GNRMC,170000.00,A,5016.20000,N,11110.20000,W,2.57,045.00,221126,,,R*40"
+    "\r\n";
 
 static size_t length_of(const char *s)
 {
@@ -44,8 +44,8 @@ static void write_fixed(int64_t value, uint32_t frac_bits, uint32_t decimals,
 {
   char text[DRDC_FX_FORMAT_MAX];
 
-  if (drdc_fx_format(value, frac_bits, decimals, text, sizeof text, NULL)
-      == DRDC_OK) {
+  if (drdc_fx_format(value, frac_bits, decimals, text, sizeof text, NULL) ==
+      DRDC_OK) {
     example_write(text);
   }
   example_write(after);
@@ -54,7 +54,7 @@ static void write_fixed(int64_t value, uint32_t frac_bits, uint32_t decimals,
 static void write_hex(const uint8_t *bytes, size_t n)
 {
   static const char hex[] = "0123456789abcdef";
-  char pair[3] = { '\0', '\0', '\0' };
+  char pair[3] = {'\0', '\0', '\0'};
   size_t i;
 
   for (i = 0u; i < n; i++) {
@@ -71,17 +71,17 @@ static drdc_status_t pose_body(const drdc_nmea_t *gga, const drdc_time_t *utc,
                                uint8_t *wire, size_t size, size_t *length)
 {
   drdc_jaus_global_pose_t body = {
-    .presence = DRDC_JAUS_PV_LATITUDE | DRDC_JAUS_PV_LONGITUDE
-                | DRDC_JAUS_PV_ALTITUDE | DRDC_JAUS_PV_TIME_STAMP,
-    .pose = { .latitude = gga->latitude,
-              .longitude = gga->longitude,
-              .height = gga->altitude },
+      .presence = DRDC_JAUS_PV_LATITUDE | DRDC_JAUS_PV_LONGITUDE |
+                  DRDC_JAUS_PV_ALTITUDE | DRDC_JAUS_PV_TIME_STAMP,
+      .pose = {.latitude = gga->latitude,
+               .longitude = gga->longitude,
+               .height = gga->altitude},
   };
   drdc_status_t st = drdc_time_jaus_pack(NULL, utc, &body.time_stamp);
 
   if (st == DRDC_OK) {
-    st = drdc_jaus_global_pose_pack(&body, DRDC_JAUS_FORM_AS6009, wire,
-                                    size, length);
+    st = drdc_jaus_global_pose_pack(&body, DRDC_JAUS_FORM_AS6009, wire, size,
+                                    length);
   }
   return st;
 }
@@ -131,8 +131,8 @@ int example_run(void)
   st = drdc_geo_to_utm(gga.latitude, gga.longitude, DRDC_GEO_ZONE_STANDARD,
                        &utm, NULL, NULL);
   if (st == DRDC_OK) {
-    st = drdc_geo_mgrs_encode(gga.latitude, gga.longitude, 5, mgrs,
-                              sizeof mgrs);
+    st =
+        drdc_geo_mgrs_encode(gga.latitude, gga.longitude, 5, mgrs, sizeof mgrs);
   }
   if (st != DRDC_OK) {
     return fail("geodesy", st);

@@ -17,10 +17,10 @@
 #include "example.h"
 
 /* Arm semihosting: operation in r0, argument in r1, then BKPT 0xAB. */
-#define SEMIHOSTING_SYS_WRITE0 0x04u
-#define SEMIHOSTING_SYS_EXIT 0x18u
+#define SEMIHOSTING_SYS_WRITE0       0x04u
+#define SEMIHOSTING_SYS_EXIT         0x18u
 #define ADP_STOPPED_APPLICATION_EXIT 0x20026u
-#define ADP_STOPPED_RUNTIME_ERROR 0x20023u
+#define ADP_STOPPED_RUNTIME_ERROR    0x20023u
 
 extern uint32_t __data_load, __data_start, __data_end;
 extern uint32_t __bss_start, __bss_end, __stack_top;
@@ -42,8 +42,8 @@ static void stop(int status)
 {
   for (;;) {
     semihosting(SEMIHOSTING_SYS_EXIT, (status == 0)
-                                        ? ADP_STOPPED_APPLICATION_EXIT
-                                        : ADP_STOPPED_RUNTIME_ERROR);
+                                          ? ADP_STOPPED_APPLICATION_EXIT
+                                          : ADP_STOPPED_RUNTIME_ERROR);
   }
 }
 
@@ -67,7 +67,8 @@ void reset(void)
    * loops below may become calls of memcpy and memset) */
   *(volatile uint32_t *)0xE000ED88u |= 0xFu << 20;
   __asm__ volatile("dsb\n"
-                   "isb\n" ::: "memory");
+                   "isb\n" ::
+                       : "memory");
 #endif
   for (dst = &__data_start; dst < &__data_end; dst++) {
     *dst = *src;
@@ -81,8 +82,21 @@ void reset(void)
 
 typedef void (*vector_t)(void);
 
-__attribute__((section(".vectors"), used))
-static const vector_t vectors[16] = {
-  (vector_t)(uintptr_t)&__stack_top, reset, fault, fault, fault, fault,
-  fault, 0, 0, 0, 0, fault, fault, 0, fault, fault,
+__attribute__((section(".vectors"), used)) static const vector_t vectors[16] = {
+    (vector_t)(uintptr_t)&__stack_top,
+    reset,
+    fault,
+    fault,
+    fault,
+    fault,
+    fault,
+    0,
+    0,
+    0,
+    0,
+    fault,
+    fault,
+    0,
+    fault,
+    fault,
 };

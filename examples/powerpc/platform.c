@@ -11,11 +11,11 @@
 
 #include "example.h"
 
-#define CCSR_BASE 0xE0000000u
-#define UART0_THR (CCSR_BASE + 0x4500u) /* transmit holding register */
-#define UART0_LSR (CCSR_BASE + 0x4505u) /* line status register */
-#define UART_LSR_THRE 0x20u             /* transmit holding register empty */
-#define GUTS_RSTCR (CCSR_BASE + 0xE00B0u)
+#define CCSR_BASE        0xE0000000u
+#define UART0_THR        (CCSR_BASE + 0x4500u) /* transmit holding register */
+#define UART0_LSR        (CCSR_BASE + 0x4505u) /* line status register */
+#define UART_LSR_THRE    0x20u /* transmit holding register empty */
+#define GUTS_RSTCR       (CCSR_BASE + 0xE00B0u)
 #define RSTCR_HRESET_REQ 0x2u /* QEMU: reset; with -no-reboot, exit */
 
 void example_stop(int status);

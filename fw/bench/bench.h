@@ -13,10 +13,11 @@
  *  the golden inputs and folds every result into bench_sink, so nothing
  *  can be optimised away. */
 typedef struct bench_case {
-  const char *name;     /**< operation, shared by an implementation and its baselines */
-  const char *impl;     /**< "drdc", "double" (soft-float + newlib libm),
-                             "libfixmath" or "hand" (a by-hand floor) */
-  const char *symbol;   /**< the function measured, for its code size */
+  const char
+      *name; /**< operation, shared by an implementation and its baselines */
+  const char *impl;   /**< "drdc", "double" (soft-float + newlib libm),
+                           "libfixmath" or "hand" (a by-hand floor) */
+  const char *symbol; /**< the function measured, for its code size */
   void (*run)(uint32_t calls);
 } bench_case_t;
 

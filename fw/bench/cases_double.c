@@ -45,8 +45,9 @@ static double civil_from_days(double days)
   double z = days + 719468.0;
   double era = floor(z / 146097.0);
   double doe = z - (era * 146097.0);
-  double yoe = floor((doe - floor(doe / 1460.0) + floor(doe / 36524.0)
-                      - floor(doe / 146096.0)) / 365.0);
+  double yoe = floor((doe - floor(doe / 1460.0) + floor(doe / 36524.0) -
+                      floor(doe / 146096.0)) /
+                     365.0);
   double doy = doe - ((365.0 * yoe) + floor(yoe / 4.0) - floor(yoe / 100.0));
   double mp = floor(((5.0 * doy) + 2.0) / 153.0);
   double d = doy - floor(((153.0 * mp) + 2.0) / 5.0) + 1.0;
@@ -59,10 +60,10 @@ static double civil_from_days(double days)
  * leap-second instants, floor and fmod. Leap seconds after 1980 (Unix
  * seconds of the first second with the new TAI - UTC). */
 static const double leaps[] = {
-  362793600.0, 394329600.0, 425865600.0, 489024000.0, 567993600.0,
-  631152000.0, 662688000.0, 709948800.0, 741484800.0, 773020800.0,
-  820454400.0, 867715200.0, 915148800.0, 1136073600.0, 1230768000.0,
-  1341100800.0, 1435708800.0, 1483228800.0,
+    362793600.0,  394329600.0,  425865600.0,  489024000.0,  567993600.0,
+    631152000.0,  662688000.0,  709948800.0,  741484800.0,  773020800.0,
+    820454400.0,  867715200.0,  915148800.0,  1136073600.0, 1230768000.0,
+    1341100800.0, 1435708800.0, 1483228800.0,
 };
 
 static double gps_seconds(double unix_seconds)
@@ -101,7 +102,9 @@ static double gps_to_utc(double week, double tow)
 }
 
 /* Quaternions and Euler angles as an engineer writes them in double. */
-typedef struct { double s, x, y, z; } dquat;
+typedef struct {
+  double s, x, y, z;
+} dquat;
 
 static dquat dquat_of(uint32_t x)
 {
@@ -135,9 +138,12 @@ static double quat_rotate(uint32_t x)
   double vx = (double)(x & 0xFFFFFu) / 65536.0;
   double vy = (double)(x >> 12) / 65536.0;
   double vz = -(double)(x & 0xFFFFu) / 65536.0;
-  double rx = (1 - 2 * (b * b + c * c)) * vx + 2 * (a * b - s * c) * vy + 2 * (a * c + s * b) * vz;
-  double ry = 2 * (a * b + s * c) * vx + (1 - 2 * (a * a + c * c)) * vy + 2 * (b * c - s * a) * vz;
-  double rz = 2 * (a * c - s * b) * vx + 2 * (b * c + s * a) * vy + (1 - 2 * (a * a + b * b)) * vz;
+  double rx = (1 - 2 * (b * b + c * c)) * vx + 2 * (a * b - s * c) * vy +
+              2 * (a * c + s * b) * vz;
+  double ry = 2 * (a * b + s * c) * vx + (1 - 2 * (a * a + c * c)) * vy +
+              2 * (b * c - s * a) * vz;
+  double rz = 2 * (a * c - s * b) * vx + 2 * (b * c + s * a) * vy +
+              (1 - 2 * (a * a + b * b)) * vz;
 
   return rx + ry + rz;
 }
@@ -145,7 +151,8 @@ static double quat_rotate(uint32_t x)
 static double euler_to_quat(uint32_t x)
 {
   double yaw = (double)(int32_t)x * 1.4629180792671596e-9;
-  double pitch = (double)(int32_t)((x * 2654435761u) >> 2) * 1.4629180792671596e-9;
+  double pitch =
+      (double)(int32_t)((x * 2654435761u) >> 2) * 1.4629180792671596e-9;
   double roll = (double)(int32_t)(x * 40503u) * 1.4629180792671596e-9;
   double cy = cos(yaw / 2), sy = sin(yaw / 2);
   double cp = cos(pitch / 2), sp = sin(pitch / 2);
@@ -177,12 +184,14 @@ static double angle(uint32_t x)
  * convergence and scale (WGS-84, k0 = 0.9996, standard 6-degree zone). */
 static double utm_forward(double lat, double lon)
 {
-  static const double alpha[6] = {
-    8.3773182062446983e-04, 7.608527773572307e-07, 1.197645503242e-09,
-    2.4291706e-12, 5.711e-15, 1.5e-17 };
-  static const double chic[6] = {
-    -3.3565514856e-03, 4.69462275e-06, -8.1946e-09, 1.558e-11, -3.1e-14,
-    6.0e-17 };
+  static const double alpha[6] = {8.3773182062446983e-04,
+                                  7.608527773572307e-07,
+                                  1.197645503242e-09,
+                                  2.4291706e-12,
+                                  5.711e-15,
+                                  1.5e-17};
+  static const double chic[6] = {-3.3565514856e-03, 4.69462275e-06, -8.1946e-09,
+                                 1.558e-11,         -3.1e-14,       6.0e-17};
   const double deg = 0.017453292519943295;
   const double e2 = 6.69437999014e-3, e = 0.0818191908426215;
   const double k0a = 6364902.166165086;
@@ -208,8 +217,8 @@ static double utm_forward(double lat, double lon)
     q += m * alpha[j] * sin(m * xip) * sinh(m * etap);
   }
   gamma = atan2(sin(chi) * sin(lam), cos(lam)) + atan2(q, p);
-  k = 0.99852 * sqrt(1.0 - (e2 * sin(phi) * sin(phi))) * cos(chi)
-      / cos(phi) * cosh(etap) * hypot(p, q);
+  k = 0.99852 * sqrt(1.0 - (e2 * sin(phi) * sin(phi))) * cos(chi) / cos(phi) *
+      cosh(etap) * hypot(p, q);
   (void)e;
   return (k0a * eta) + (k0a * xi) + gamma + k;
 }
@@ -223,8 +232,8 @@ static double ecef_forward(double lat, double lon, double h)
   double sp = sin(lat * deg), cp = cos(lat * deg);
   double n = a / sqrt(1.0 - (e2 * sp * sp));
 
-  return ((n + h) * cp * cos(lon * deg)) + ((n + h) * cp * sin(lon * deg))
-         + (((n * (1.0 - e2)) + h) * sp);
+  return ((n + h) * cp * cos(lon * deg)) + ((n + h) * cp * sin(lon * deg)) +
+         (((n * (1.0 - e2)) + h) * sp);
 }
 
 static double ecef_reverse(uint32_t x)
@@ -259,12 +268,14 @@ static double ecef_reverse(uint32_t x)
 }
 
 BENCH_LOOP_DOUBLE(run_days_from_civil,
-           days_from_civil(1900.0 + (double)(x % 200u), 1.0 + (double)((x >> 8) % 12u),
-                           1.0 + (double)((x >> 16) % 28u)))
-BENCH_LOOP_DOUBLE(run_civil_from_days, civil_from_days((double)(x % 73000u) - 25000.0))
+                  days_from_civil(1900.0 + (double)(x % 200u),
+                                  1.0 + (double)((x >> 8) % 12u),
+                                  1.0 + (double)((x >> 16) % 28u)))
+BENCH_LOOP_DOUBLE(run_civil_from_days,
+                  civil_from_days((double)(x % 73000u) - 25000.0))
 BENCH_LOOP_DOUBLE(run_utc_to_gps,
-                  utc_to_gps(631152000.0 + (double)(x % 1136073600u)
-                             + (double)((x >> 3) % 1000000000u) * 1e-9))
+                  utc_to_gps(631152000.0 + (double)(x % 1136073600u) +
+                             (double)((x >> 3) % 1000000000u) * 1e-9))
 BENCH_LOOP_DOUBLE(run_gps_to_utc, gps_to_utc(522.0 + (double)(x % 1900u),
                                              (double)((x >> 11) % 604800u)))
 BENCH_LOOP_DOUBLE(run_quat_mul, quat_mul(x))
@@ -274,39 +285,43 @@ BENCH_LOOP_DOUBLE(run_quat_to_euler, quat_to_euler(x))
 BENCH_LOOP_DOUBLE(run_sin, sin(angle(x)))
 BENCH_LOOP_DOUBLE(run_cos, cos(angle(x)))
 BENCH_LOOP_DOUBLE(run_atan2, atan2((double)(x & 0xFFFFu) - 32768.0,
-                            (double)(x >> 16) - 32768.0))
+                                   (double)(x >> 16) - 32768.0))
 BENCH_LOOP_DOUBLE(run_sqrt, sqrt((double)(x >> 1)))
-BENCH_LOOP_DOUBLE(run_mul, (double)(int32_t)x * (double)(int32_t)(x >> 7) / 65536.0)
-BENCH_LOOP_DOUBLE(run_utm_forward,
-                  utm_forward(((double)(x & 0xFFFFu) - 32768.0) * (8.8e9 / 3.6e12),
-                              ((double)(x >> 16) - 32768.0) * (19.7e9 / 3.6e12)))
-BENCH_LOOP_DOUBLE(run_ecef_forward,
-                  ecef_forward(((double)(x & 0xFFFFu) - 32768.0) * (9.88e9 / 3.6e12),
-                               ((double)((x >> 16) & 0x7FFFu) - 16384.0) * (39.5e9 / 3.6e12),
-                               (double)(x >> 31) * 1e6 - 1e4 + (double)((x >> 8) & 0xFFu) * 40.0))
+BENCH_LOOP_DOUBLE(run_mul,
+                  (double)(int32_t)x *(double)(int32_t)(x >> 7) / 65536.0)
+BENCH_LOOP_DOUBLE(
+    run_utm_forward,
+    utm_forward(((double)(x & 0xFFFFu) - 32768.0) * (8.8e9 / 3.6e12),
+                ((double)(x >> 16) - 32768.0) * (19.7e9 / 3.6e12)))
+BENCH_LOOP_DOUBLE(
+    run_ecef_forward,
+    ecef_forward(((double)(x & 0xFFFFu) - 32768.0) * (9.88e9 / 3.6e12),
+                 ((double)((x >> 16) & 0x7FFFu) - 16384.0) * (39.5e9 / 3.6e12),
+                 (double)(x >> 31) * 1e6 - 1e4 +
+                     (double)((x >> 8) & 0xFFu) * 40.0))
 BENCH_LOOP_DOUBLE(run_ecef_reverse, ecef_reverse(x))
 
 const bench_case_t bench_cases_double[] = {
-  { "days_from_civil", "double", "run_days_from_civil", run_days_from_civil },
-  { "civil_from_days", "double", "run_civil_from_days", run_civil_from_days },
-  { "utc_to_gps", "double", "run_utc_to_gps", run_utc_to_gps },
-  { "gps_to_utc", "double", "run_gps_to_utc", run_gps_to_utc },
-  { "quat_mul", "double", "run_quat_mul", run_quat_mul },
-  { "quat_rotate", "double", "run_quat_rotate", run_quat_rotate },
-  { "euler_to_quat", "double", "run_euler_to_quat", run_euler_to_quat },
-  { "quat_to_euler", "double", "run_quat_to_euler", run_quat_to_euler },
-  { "sin", "double", "run_sin", run_sin },
-  { "cos", "double", "run_cos", run_cos },
-  { "atan2", "double", "run_atan2", run_atan2 },
-  { "sqrt", "double", "run_sqrt", run_sqrt },
-  { "mul_q15_16", "double", "run_mul", run_mul },
-  { "utm_forward", "double", "run_utm_forward", run_utm_forward },
-  { "ecef_forward", "double", "run_ecef_forward", run_ecef_forward },
-  { "ecef_reverse", "double", "run_ecef_reverse", run_ecef_reverse },
-  { 0, 0, 0, 0 },
+    {"days_from_civil", "double", "run_days_from_civil", run_days_from_civil},
+    {"civil_from_days", "double", "run_civil_from_days", run_civil_from_days},
+    {"utc_to_gps", "double", "run_utc_to_gps", run_utc_to_gps},
+    {"gps_to_utc", "double", "run_gps_to_utc", run_gps_to_utc},
+    {"quat_mul", "double", "run_quat_mul", run_quat_mul},
+    {"quat_rotate", "double", "run_quat_rotate", run_quat_rotate},
+    {"euler_to_quat", "double", "run_euler_to_quat", run_euler_to_quat},
+    {"quat_to_euler", "double", "run_quat_to_euler", run_quat_to_euler},
+    {"sin", "double", "run_sin", run_sin},
+    {"cos", "double", "run_cos", run_cos},
+    {"atan2", "double", "run_atan2", run_atan2},
+    {"sqrt", "double", "run_sqrt", run_sqrt},
+    {"mul_q15_16", "double", "run_mul", run_mul},
+    {"utm_forward", "double", "run_utm_forward", run_utm_forward},
+    {"ecef_forward", "double", "run_ecef_forward", run_ecef_forward},
+    {"ecef_reverse", "double", "run_ecef_reverse", run_ecef_reverse},
+    {0, 0, 0, 0},
 };
 #else
 const bench_case_t bench_cases_double[] = {
-  { 0, 0, 0, 0 },
+    {0, 0, 0, 0},
 };
 #endif

@@ -41,10 +41,10 @@ BENCH_LOOP(run_sqrt, sqrt_case(x))
 BENCH_LOOP(run_mul, mul_case(x))
 
 const bench_case_t bench_cases_fixed[] = {
-  { "sin", "drdc", "drdc_fx_sin_bam32", run_sin },
-  { "cos", "drdc", "drdc_fx_cos_bam32", run_cos },
-  { "atan2", "drdc", "drdc_fx_atan2_bam32", run_atan2 },
-  { "sqrt", "drdc", "drdc_fx_sqrt_q15_16", run_sqrt },
-  { "mul_q15_16", "drdc", "drdc_fx_mul_q15_16_sat", run_mul },
-  { 0, 0, 0, 0 },
+    {"sin", "drdc", "drdc_fx_sin_bam32", run_sin},
+    {"cos", "drdc", "drdc_fx_cos_bam32", run_cos},
+    {"atan2", "drdc", "drdc_fx_atan2_bam32", run_atan2},
+    {"sqrt", "drdc", "drdc_fx_sqrt_q15_16", run_sqrt},
+    {"mul_q15_16", "drdc", "drdc_fx_mul_q15_16_sat", run_mul},
+    {0, 0, 0, 0},
 };

@@ -24,8 +24,8 @@ void bench_ecef_point(uint32_t x, int64_t *ex, int64_t *ey, int64_t *ez)
   int64_t r = 6357000 + (int64_t)(x >> 22) * 1000;
   int64_t h;
 
-  drdc_fx_sincos_bam32((drdc_bam32_t)((uint32_t)(int32_t)((int32_t)(x << 21) / 2)),
-                       &sp, &cp);
+  drdc_fx_sincos_bam32(
+      (drdc_bam32_t)((uint32_t)(int32_t)((int32_t)(x << 21) / 2)), &sp, &cp);
   drdc_fx_sincos_bam32((drdc_bam32_t)((x >> 11) << 21), &sl, &cl);
   /* Q47.16 metres: r cos(lat) < 2^39, times a Q1.22 cosine < 2^61 */
   h = (r * cp) / 16384;
@@ -37,7 +37,7 @@ void bench_ecef_point(uint32_t x, int64_t *ex, int64_t *ey, int64_t *ez)
 /* latitude +-80 and longitude +-180 degrees from the 32-bit input */
 static uint32_t utm_case(uint32_t x)
 {
-  drdc_geo_utm_t u = { 0, false, 0, 0 };
+  drdc_geo_utm_t u = {0, false, 0, 0};
   drdc_nas_t g = 0;
   drdc_q5_58_t k = 0;
 
@@ -61,8 +61,8 @@ static uint32_t utm_reverse_case(uint32_t x)
 
   u.zone = (int32_t)(x % 60u) + 1;
   u.north = ((x >> 6) & 1u) != 0u;
-  u.easting = ((int64_t)180000 + (int64_t)((x >> 7) & 0x3FFu) * 625)
-              * INT64_C(65536);
+  u.easting =
+      ((int64_t)180000 + (int64_t)((x >> 7) & 0x3FFu) * 625) * INT64_C(65536);
   u.northing = ((int64_t)((x >> 17) & 0x7FFFu) * 244) * INT64_C(65536);
   (void)drdc_geo_from_utm(&u, &lat, &lon, &g, &k);
   return (uint32_t)lat ^ (uint32_t)lon ^ (uint32_t)g ^ (uint32_t)k;
@@ -75,12 +75,13 @@ BENCH_LOOP(run_utm_reverse, utm_reverse_case(x))
 static uint32_t ecef_forward_case(uint32_t x)
 {
   drdc_geo_point_t p;
-  drdc_vec3_q47_16_t e = { 0, 0, 0 };
+  drdc_vec3_q47_16_t e = {0, 0, 0};
 
   p.lat = ((int64_t)(x & 0xFFFFu) - 32768) * INT64_C(9880000000);
   p.lon = ((int64_t)((x >> 16) & 0x7FFFu) - 16384) * INT64_C(39500000000);
-  p.height = ((int64_t)(x >> 31) * 1000000 - 10000
-              + (int64_t)((x >> 8) & 0xFFu) * 40) * INT64_C(65536);
+  p.height = ((int64_t)(x >> 31) * 1000000 - 10000 +
+              (int64_t)((x >> 8) & 0xFFu) * 40) *
+             INT64_C(65536);
   (void)drdc_geo_to_ecef(&p, &e);
   return (uint32_t)e.x ^ (uint32_t)e.y ^ (uint32_t)e.z;
 }
@@ -94,7 +95,7 @@ BENCH_LOOP(run_ecef_forward, ecef_forward_case(x))
 static uint32_t ecef_reverse_case(uint32_t x)
 {
   drdc_vec3_q47_16_t e;
-  drdc_geo_point_t p = { 0, 0, 0 };
+  drdc_geo_point_t p = {0, 0, 0};
 
   bench_ecef_point(x, &e.x, &e.y, &e.z);
   (void)drdc_geo_from_ecef(&e, &p);
@@ -105,7 +106,7 @@ BENCH_LOOP(run_ecef_reverse, ecef_reverse_case(x))
 
 /* Q5.58 arguments from the 32-bit input: |a| < 2^(27 + shift - 58) */
 #define ARG(v, shift) ((int64_t)(int32_t)(v) * (INT64_C(1) << (shift)))
-#define OTHER(v) ((v) * 2654435761u)
+#define OTHER(v)      ((v)*2654435761u)
 
 static uint32_t q58_mul(uint32_t x)
 {
@@ -174,16 +175,16 @@ BENCH_LOOP(run_q58_sinh, q58_sinh(x))
 BENCH_LOOP(run_q58_atanh, q58_atanh(x))
 
 const bench_case_t bench_cases_geo[] = {
-  { "utm_forward", "drdc", "drdc_geo_to_utm", run_utm_forward },
-  { "utm_reverse", "drdc", "drdc_geo_from_utm", run_utm_reverse },
-  { "ecef_forward", "drdc", "drdc_geo_to_ecef", run_ecef_forward },
-  { "ecef_reverse", "drdc", "drdc_geo_from_ecef", run_ecef_reverse },
-  { "q58_mul", "drdc", "drdc_fx_mul_q5_58", run_q58_mul },
-  { "q58_div", "drdc", "drdc_fx_div_q5_58", run_q58_div },
-  { "q58_sincos", "drdc", "drdc_fx_sincos_q5_58", run_q58_sincos },
-  { "q58_atan2", "drdc", "drdc_fx_atan2_q5_58", run_q58_atan2 },
-  { "q58_sqrt", "drdc", "drdc_fx_sqrt_q5_58", run_q58_sqrt },
-  { "q58_sinh", "drdc", "drdc_fx_sinh_q5_58", run_q58_sinh },
-  { "q58_atanh", "drdc", "drdc_fx_atanh_q5_58", run_q58_atanh },
-  { 0, 0, 0, 0 },
+    {"utm_forward", "drdc", "drdc_geo_to_utm", run_utm_forward},
+    {"utm_reverse", "drdc", "drdc_geo_from_utm", run_utm_reverse},
+    {"ecef_forward", "drdc", "drdc_geo_to_ecef", run_ecef_forward},
+    {"ecef_reverse", "drdc", "drdc_geo_from_ecef", run_ecef_reverse},
+    {"q58_mul", "drdc", "drdc_fx_mul_q5_58", run_q58_mul},
+    {"q58_div", "drdc", "drdc_fx_div_q5_58", run_q58_div},
+    {"q58_sincos", "drdc", "drdc_fx_sincos_q5_58", run_q58_sincos},
+    {"q58_atan2", "drdc", "drdc_fx_atan2_q5_58", run_q58_atan2},
+    {"q58_sqrt", "drdc", "drdc_fx_sqrt_q5_58", run_q58_sqrt},
+    {"q58_sinh", "drdc", "drdc_fx_sinh_q5_58", run_q58_sinh},
+    {"q58_atanh", "drdc", "drdc_fx_atanh_q5_58", run_q58_atanh},
+    {0, 0, 0, 0},
 };

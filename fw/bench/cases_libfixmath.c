@@ -23,10 +23,10 @@ BENCH_LOOP(run_sqrt, fix16_sqrt((fix16_t)(x >> 1)))
 BENCH_LOOP(run_mul, fix16_mul((fix16_t)x, (fix16_t)(x >> 7)))
 
 const bench_case_t bench_cases_libfixmath[] = {
-  { "sin", "libfixmath", "fix16_sin", run_sin },
-  { "cos", "libfixmath", "fix16_cos", run_cos },
-  { "atan2", "libfixmath", "fix16_atan2", run_atan2 },
-  { "sqrt", "libfixmath", "fix16_sqrt", run_sqrt },
-  { "mul_q15_16", "libfixmath", "fix16_mul", run_mul },
-  { 0, 0, 0, 0 },
+    {"sin", "libfixmath", "fix16_sin", run_sin},
+    {"cos", "libfixmath", "fix16_cos", run_cos},
+    {"atan2", "libfixmath", "fix16_atan2", run_atan2},
+    {"sqrt", "libfixmath", "fix16_sqrt", run_sqrt},
+    {"mul_q15_16", "libfixmath", "fix16_mul", run_mul},
+    {0, 0, 0, 0},
 };

@@ -25,7 +25,7 @@ static uint32_t quat_mul(uint32_t x)
 {
   drdc_quat_t a = quat_of(x);
   drdc_quat_t b = quat_of(x * 2654435761u);
-  drdc_quat_t r = { 0, 0, 0, 0 };
+  drdc_quat_t r = {0, 0, 0, 0};
 
   (void)drdc_quat_mul(&a, &b, &r);
   return (uint32_t)(r.s ^ r.x ^ r.y ^ r.z);
@@ -39,14 +39,14 @@ static uint32_t quat_mul(uint32_t x)
 static __attribute__((noinline)) void
 quat_mul_hand(const drdc_quat_t *a, const drdc_quat_t *b, drdc_quat_t *out)
 {
-  int64_t s = ((int64_t)a->s * b->s) - ((int64_t)a->x * b->x)
-              - ((int64_t)a->y * b->y) - ((int64_t)a->z * b->z);
-  int64_t i = ((int64_t)a->s * b->x) + ((int64_t)a->x * b->s)
-              + ((int64_t)a->y * b->z) - ((int64_t)a->z * b->y);
-  int64_t j = ((int64_t)a->s * b->y) - ((int64_t)a->x * b->z)
-              + ((int64_t)a->y * b->s) + ((int64_t)a->z * b->x);
-  int64_t k = ((int64_t)a->s * b->z) + ((int64_t)a->x * b->y)
-              - ((int64_t)a->y * b->x) + ((int64_t)a->z * b->s);
+  int64_t s = ((int64_t)a->s * b->s) - ((int64_t)a->x * b->x) -
+              ((int64_t)a->y * b->y) - ((int64_t)a->z * b->z);
+  int64_t i = ((int64_t)a->s * b->x) + ((int64_t)a->x * b->s) +
+              ((int64_t)a->y * b->z) - ((int64_t)a->z * b->y);
+  int64_t j = ((int64_t)a->s * b->y) - ((int64_t)a->x * b->z) +
+              ((int64_t)a->y * b->s) + ((int64_t)a->z * b->x);
+  int64_t k = ((int64_t)a->s * b->z) + ((int64_t)a->x * b->y) -
+              ((int64_t)a->y * b->x) + ((int64_t)a->z * b->s);
 
   out->s = (int32_t)(s >> 30);
   out->x = (int32_t)(i >> 30);
@@ -58,7 +58,7 @@ static uint32_t quat_mul_by_hand(uint32_t x)
 {
   drdc_quat_t a = quat_of(x);
   drdc_quat_t b = quat_of(x * 2654435761u);
-  drdc_quat_t r = { 0, 0, 0, 0 };
+  drdc_quat_t r = {0, 0, 0, 0};
 
   quat_mul_hand(&a, &b, &r);
   return (uint32_t)(r.s ^ r.x ^ r.y ^ r.z);
@@ -68,7 +68,7 @@ static uint32_t quat_rotate(uint32_t x)
 {
   drdc_quat_t q = quat_of(x);
   drdc_vec3_q15_16_t v;
-  drdc_vec3_q15_16_t r = { 0, 0, 0 };
+  drdc_vec3_q15_16_t r = {0, 0, 0};
 
   v.x = (int32_t)(x & 0xFFFFFu);
   v.y = (int32_t)(x >> 12);
@@ -80,7 +80,7 @@ static uint32_t quat_rotate(uint32_t x)
 static uint32_t euler_to_quat(uint32_t x)
 {
   drdc_euler_t e;
-  drdc_quat_t q = { 0, 0, 0, 0 };
+  drdc_quat_t q = {0, 0, 0, 0};
 
   e.yaw = x;
   e.pitch = (x * 2654435761u) >> 2;
@@ -92,7 +92,7 @@ static uint32_t euler_to_quat(uint32_t x)
 static uint32_t quat_to_euler(uint32_t x)
 {
   drdc_quat_t q = quat_of(x);
-  drdc_euler_t e = { 0u, 0u, 0u };
+  drdc_euler_t e = {0u, 0u, 0u};
 
   (void)drdc_euler_from_quat(&q, &e);
   return e.yaw ^ e.pitch ^ e.roll;
@@ -105,10 +105,10 @@ BENCH_LOOP(run_euler_to_quat, euler_to_quat(x))
 BENCH_LOOP(run_quat_to_euler, quat_to_euler(x))
 
 const bench_case_t bench_cases_orient[] = {
-  { "quat_mul", "drdc", "drdc_quat_mul", run_quat_mul },
-  { "quat_mul", "hand", "run_quat_mul_by_hand", run_quat_mul_by_hand },
-  { "quat_rotate", "drdc", "drdc_quat_rotate_q15_16", run_quat_rotate },
-  { "euler_to_quat", "drdc", "drdc_quat_from_euler", run_euler_to_quat },
-  { "quat_to_euler", "drdc", "drdc_euler_from_quat", run_quat_to_euler },
-  { 0, 0, 0, 0 },
+    {"quat_mul", "drdc", "drdc_quat_mul", run_quat_mul},
+    {"quat_mul", "hand", "run_quat_mul_by_hand", run_quat_mul_by_hand},
+    {"quat_rotate", "drdc", "drdc_quat_rotate_q15_16", run_quat_rotate},
+    {"euler_to_quat", "drdc", "drdc_quat_from_euler", run_euler_to_quat},
+    {"quat_to_euler", "drdc", "drdc_euler_from_quat", run_quat_to_euler},
+    {0, 0, 0, 0},
 };

@@ -43,7 +43,7 @@ static drdc_time_t instant(uint32_t x)
 static uint32_t utc_to_gps(uint32_t x)
 {
   drdc_time_t t = instant(x);
-  drdc_time_gps_t gps = { 0, 0, 0 };
+  drdc_time_gps_t gps = {0, 0, 0};
 
   (void)drdc_time_utc_to_gps(NULL, &t, &gps);
   return (uint32_t)(gps.week + gps.tow);
@@ -52,7 +52,7 @@ static uint32_t utc_to_gps(uint32_t x)
 static uint32_t gps_to_utc(uint32_t x)
 {
   drdc_time_gps_t gps;
-  drdc_time_t t = { 0, 0 };
+  drdc_time_t t = {0, 0};
 
   gps.week = 522 + (int32_t)(x % 1900u);
   gps.tow = (int32_t)((x >> 11) % 604800u);
@@ -67,9 +67,11 @@ BENCH_LOOP(run_gps_to_utc, gps_to_utc(x))
 BENCH_LOOP(run_civil_from_days, civil_from_days(x))
 
 const bench_case_t bench_cases_time[] = {
-  { "days_from_civil", "drdc", "drdc_time_days_from_civil", run_days_from_civil },
-  { "civil_from_days", "drdc", "drdc_time_civil_from_days", run_civil_from_days },
-  { "utc_to_gps", "drdc", "drdc_time_utc_to_gps", run_utc_to_gps },
-  { "gps_to_utc", "drdc", "drdc_time_gps_to_utc", run_gps_to_utc },
-  { 0, 0, 0, 0 },
+    {"days_from_civil", "drdc", "drdc_time_days_from_civil",
+     run_days_from_civil},
+    {"civil_from_days", "drdc", "drdc_time_civil_from_days",
+     run_civil_from_days},
+    {"utc_to_gps", "drdc", "drdc_time_utc_to_gps", run_utc_to_gps},
+    {"gps_to_utc", "drdc", "drdc_time_gps_to_utc", run_gps_to_utc},
+    {0, 0, 0, 0},
 };

@@ -39,15 +39,14 @@ static uint32_t elapsed(uint32_t start)
 /* The empty loop: measured like a case and subtracted from every case. */
 BENCH_LOOP(loop_overhead, x)
 
-static const bench_case_t overhead = { "loop", "overhead", "-",
-                                       loop_overhead };
+static const bench_case_t overhead = {"loop", "overhead", "-", loop_overhead};
 
 static void time_case(const bench_case_t *c)
 {
   uint32_t start;
   uint32_t ticks;
 
-  c->run(16u);  /* warm-up: nothing cached, but the same path as below */
+  c->run(16u); /* warm-up: nothing cached, but the same path as below */
   start = bsp_ticks();
   c->run(CALLS);
   ticks = elapsed(start);

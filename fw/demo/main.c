@@ -38,29 +38,41 @@
 /* The receiver's stream: one GGA and one RMC per second (RTK fixed, near
  * DRDC Suffield, Alberta), as a u-blox-style receiver sends them. */
 static const char *const gnss[] = {
-  "$GNGGA,170000.00,5016.20000,N,11110.20000,W,4,12,0.7,754.3,M,-16.2,M,1.0,0001*66\r\n",
-  "$GNRMC,170000.00,A,5016.20000,N,11110.20000,W,2.57,045.00,221126,,,R*40\r\n",
-  "$GNGGA,170001.00,5016.20050,N,11110.19920,W,4,12,0.7,754.4,M,-16.2,M,1.0,0001*64\r\n",
-  "$GNRMC,170001.00,A,5016.20050,N,11110.19920,W,2.57,045.00,221126,,,R*45\r\n",
-  "$GNGGA,170002.00,5016.20100,N,11110.19840,W,4,12,0.7,754.5,M,-16.2,M,1.0,0001*65\r\n",
-  "$GNRMC,170002.00,A,5016.20100,N,11110.19840,W,2.57,045.00,221126,,,R*45\r\n",
-  "$GNGGA,170003.00,5016.20150,N,11110.19760,W,4,12,0.7,754.6,M,-16.2,M,1.0,0001*6F\r\n",
-  "$GNRMC,170003.00,A,5016.20150,N,11110.19760,W,2.57,045.00,221126,,,R*4C\r\n",
+    "$GNGGA,170000.00,5016.20000,N,11110.20000,W,4,12,0.7,754.3,M,-16.2,M,1.0,"
+    "0001*66\r\n",
+    "$GNRMC,170000.00,A,5016.20000,N,11110.20000,W,2.57,045.00,221126,,,R*"
+    "40\r\n",
+    "$GNGGA,170001.00,5016.20050,N,11110.19920,W,4,12,0.7,754.4,M,-16.2,M,1.0,"
+    "0001*64\r\n",
+    "$GNRMC,170001.00,A,5016.20050,N,11110.19920,W,2.57,045.00,221126,,,R*"
+    "45\r\n",
+    "$GNGGA,170002.00,5016.20100,N,11110.19840,W,4,12,0.7,754.5,M,-16.2,M,1.0,"
+    "0001*65\r\n",
+    "$GNRMC,170002.00,A,5016.20100,N,11110.19840,W,2.57,045.00,221126,,,R*"
+    "45\r\n",
+    "$GNGGA,170003.00,5016.20150,N,11110.19760,W,4,12,0.7,754.6,M,-16.2,M,1.0,"
+    "0001*6F\r\n",
+    "$GNRMC,170003.00,A,5016.20150,N,11110.19760,W,2.57,045.00,221126,,,R*"
+    "4C\r\n",
 };
 
 /* The IMU's attitude at each epoch, body FRD to world NED, Q1.30. */
 static const drdc_quat_t imu[] = {
-  { 991756660, -15826452, 13727054, 410976062 }, /* yaw 45.0 pitch 2.0 roll -1.0 */
-  { 986281899, -15022750, 15980188, 423896769 }, /* yaw 46.5 pitch 2.2 roll -0.8 */
-  { 980703000, -12282277, 16069705, 436731086 }, /* yaw 48.0 pitch 2.1 roll -0.5 */
-  { 974954420, -10005645, 14990451, 449511465 }, /* yaw 49.5 pitch 1.9 roll -0.3 */
+    {991756660, -15826452, 13727054,
+     410976062}, /* yaw 45.0 pitch 2.0 roll -1.0 */
+    {986281899, -15022750, 15980188,
+     423896769}, /* yaw 46.5 pitch 2.2 roll -0.8 */
+    {980703000, -12282277, 16069705,
+     436731086}, /* yaw 48.0 pitch 2.1 roll -0.5 */
+    {974954420, -10005645, 14990451,
+     449511465}, /* yaw 49.5 pitch 1.9 roll -0.3 */
 };
 
 #define EPOCHS (sizeof imu / sizeof imu[0])
 
 /* The receiver's geoid separation N (GGA field 11), for ellipsoidal
  * heights in the local tangent plane. */
-#define GEOID_SEPARATION (INT64_C(-162) * 65536 / 10)
+#define GEOID_SEPARATION   (INT64_C(-162) * 65536 / 10)
 #define NAS_PER_DEGREE_INT DRDC_NAS_PER_DEGREE
 
 static size_t length_of(const char *s)
@@ -121,9 +133,9 @@ static drdc_status_t jaus_body(const drdc_nmea_t *gga, const drdc_euler_t *e,
   drdc_jaus_global_pose_t b;
   drdc_status_t st;
 
-  b.presence = DRDC_JAUS_PV_LATITUDE | DRDC_JAUS_PV_LONGITUDE
-               | DRDC_JAUS_PV_ALTITUDE | DRDC_JAUS_PV_ROLL | DRDC_JAUS_PV_PITCH
-               | DRDC_JAUS_PV_YAW | DRDC_JAUS_PV_TIME_STAMP;
+  b.presence = DRDC_JAUS_PV_LATITUDE | DRDC_JAUS_PV_LONGITUDE |
+               DRDC_JAUS_PV_ALTITUDE | DRDC_JAUS_PV_ROLL | DRDC_JAUS_PV_PITCH |
+               DRDC_JAUS_PV_YAW | DRDC_JAUS_PV_TIME_STAMP;
   b.pose.latitude = gga->latitude;
   b.pose.longitude = gga->longitude;
   b.pose.height = gga->altitude;
@@ -156,8 +168,8 @@ static drdc_status_t grid_and_local(const drdc_WPose_t *w,
                                     const drdc_WPose_t *first)
 {
   drdc_WUTMPose_t u;
-  drdc_euler_t grid = { 0u, 0u, 0u };
-  drdc_euler_t truth = { 0u, 0u, 0u };
+  drdc_euler_t grid = {0u, 0u, 0u};
+  drdc_euler_t truth = {0u, 0u, 0u};
   drdc_lPose_t l;
   char mgrs[DRDC_GEO_MGRS_SIZE];
   drdc_status_t st;
@@ -205,9 +217,9 @@ static void epoch(unsigned k, const drdc_nmea_t *gga, const drdc_nmea_t *rmc,
                   drdc_WPose_t *first)
 {
   drdc_WPose_t w;
-  drdc_time_t utc = { 0, 0 };
-  drdc_time_gps_t gps = { 0, 0, 0 };
-  drdc_euler_t e = { 0u, 0u, 0u };
+  drdc_time_t utc = {0, 0};
+  drdc_time_gps_t gps = {0, 0, 0};
+  drdc_euler_t e = {0u, 0u, 0u};
   char iso[DRDC_TIME_ISO8601_SIZE];
   int64_t jaus_lat = 0;
   int64_t jaus_lon = 0;
@@ -278,7 +290,8 @@ static void epoch(unsigned k, const drdc_nmea_t *gga, const drdc_nmea_t *rmc,
   console_put_i64(jaus_lat);
   bsp_puts(" longitude ");
   console_put_i64(jaus_lon);
-  bsp_puts(" (int32, RA 3.x scaled)\n  JAUS  Report Global Pose body (AS6009) ");
+  bsp_puts(
+      " (int32, RA 3.x scaled)\n  JAUS  Report Global Pose body (AS6009) ");
   put_hex(body, body_length);
   bsp_putc('\n');
 
@@ -311,8 +324,8 @@ int main(void)
 
     st = drdc_nmea_parse(gnss[2u * k], length_of(gnss[2u * k]), &gga);
     if (st == DRDC_OK) {
-      st = drdc_nmea_parse(gnss[(2u * k) + 1u],
-                           length_of(gnss[(2u * k) + 1u]), &rmc);
+      st = drdc_nmea_parse(gnss[(2u * k) + 1u], length_of(gnss[(2u * k) + 1u]),
+                           &rmc);
     }
     if (st != DRDC_OK) {
       put_status(st);

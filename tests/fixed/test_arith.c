@@ -20,12 +20,14 @@ static drdc_status_t call32(int op, int sat, int32_t a, int32_t b, int32_t c,
 {
   switch (op) {
   case FX_MUL_Q1_30:
-    return sat ? drdc_fx_mul_q1_30_sat(a, b, out) : drdc_fx_mul_q1_30(a, b, out);
+    return sat ? drdc_fx_mul_q1_30_sat(a, b, out)
+               : drdc_fx_mul_q1_30(a, b, out);
   case FX_MUL_Q15_16:
     return sat ? drdc_fx_mul_q15_16_sat(a, b, out)
                : drdc_fx_mul_q15_16(a, b, out);
   case FX_DIV_Q1_30:
-    return sat ? drdc_fx_div_q1_30_sat(a, b, out) : drdc_fx_div_q1_30(a, b, out);
+    return sat ? drdc_fx_div_q1_30_sat(a, b, out)
+               : drdc_fx_div_q1_30(a, b, out);
   case FX_DIV_Q15_16:
     return sat ? drdc_fx_div_q15_16_sat(a, b, out)
                : drdc_fx_div_q15_16(a, b, out);
@@ -117,9 +119,9 @@ static void test_rshift_round_definition(void)
       int64_t half = (int64_t)1 << n;
       int64_t r64 = drdc_fx_rshift_round_s64(x, n);
 
-      if ((twice_err > half) || (twice_err < -half)
-          || ((twice_err == half) && (x > 0))
-          || ((twice_err == -half) && (x < 0)) || (r64 != r)) {
+      if ((twice_err > half) || (twice_err < -half) ||
+          ((twice_err == half) && (x > 0)) ||
+          ((twice_err == -half) && (x < 0)) || (r64 != r)) {
         first_bad = x;
       }
     }
@@ -154,11 +156,14 @@ static void test_conversions_at_their_limits(void)
   TEST_ASSERT_EQUAL_INT32(INT32_MIN, q);
   q = 7;
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_fx_q15_16_from_int(32768, &q));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_fx_q15_16_from_int(INT32_MIN, &q));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        drdc_fx_q15_16_from_int(INT32_MIN, &q));
   TEST_ASSERT_EQUAL_INT32(7, q);
-  TEST_ASSERT_EQUAL_INT(DRDC_W_SATURATED, drdc_fx_q15_16_from_int_sat(32768, &q));
+  TEST_ASSERT_EQUAL_INT(DRDC_W_SATURATED,
+                        drdc_fx_q15_16_from_int_sat(32768, &q));
   TEST_ASSERT_EQUAL_INT32(INT32_MAX, q);
-  TEST_ASSERT_EQUAL_INT(DRDC_W_SATURATED, drdc_fx_q15_16_from_int_sat(-32769, &q));
+  TEST_ASSERT_EQUAL_INT(DRDC_W_SATURATED,
+                        drdc_fx_q15_16_from_int_sat(-32769, &q));
   TEST_ASSERT_EQUAL_INT32(INT32_MIN, q);
 
   TEST_ASSERT_EQUAL_INT32(32768, drdc_fx_int_from_q15_16(INT32_MAX));
@@ -167,18 +172,24 @@ static void test_conversions_at_their_limits(void)
   TEST_ASSERT_EQUAL_INT32(-1, drdc_fx_int_from_q15_16(-0x8000));
   TEST_ASSERT_EQUAL_INT32(0, drdc_fx_int_from_q15_16(0x7FFF));
 
-  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_q47_16_from_int((INT64_C(1) << 47) - 1, &g));
+  TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                        drdc_fx_q47_16_from_int((INT64_C(1) << 47) - 1, &g));
   TEST_ASSERT_EQUAL_INT64(INT64_MAX - 0xFFFF, g);
-  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_q47_16_from_int(-(INT64_C(1) << 47), &g));
+  TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                        drdc_fx_q47_16_from_int(-(INT64_C(1) << 47), &g));
   TEST_ASSERT_EQUAL_INT64(INT64_MIN, g);
-  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_fx_q47_16_from_int(INT64_C(1) << 47, &g));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        drdc_fx_q47_16_from_int(INT64_C(1) << 47, &g));
   TEST_ASSERT_EQUAL_INT64(INT64_MIN, g);
-  TEST_ASSERT_EQUAL_INT(DRDC_W_SATURATED, drdc_fx_q47_16_from_int_sat(INT64_MIN, &g));
+  TEST_ASSERT_EQUAL_INT(DRDC_W_SATURATED,
+                        drdc_fx_q47_16_from_int_sat(INT64_MIN, &g));
   TEST_ASSERT_EQUAL_INT64(INT64_MIN, g);
-  TEST_ASSERT_EQUAL_INT(DRDC_W_SATURATED, drdc_fx_q47_16_from_int_sat(INT64_MAX, &g));
+  TEST_ASSERT_EQUAL_INT(DRDC_W_SATURATED,
+                        drdc_fx_q47_16_from_int_sat(INT64_MAX, &g));
   TEST_ASSERT_EQUAL_INT64(INT64_MAX, g);
   TEST_ASSERT_EQUAL_INT64(INT64_C(1) << 47, drdc_fx_int_from_q47_16(INT64_MAX));
-  TEST_ASSERT_EQUAL_INT64(-(INT64_C(1) << 47), drdc_fx_int_from_q47_16(INT64_MIN));
+  TEST_ASSERT_EQUAL_INT64(-(INT64_C(1) << 47),
+                          drdc_fx_int_from_q47_16(INT64_MIN));
   TEST_ASSERT_EQUAL_INT64(-2, drdc_fx_int_from_q47_16(-0x18000));
 
   TEST_ASSERT_EQUAL_INT64(INT32_MIN, drdc_fx_q47_16_from_q15_16(INT32_MIN));
@@ -189,17 +200,19 @@ static void test_conversions_at_their_limits(void)
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
                         drdc_fx_q15_16_from_q47_16((int64_t)INT32_MAX + 1, &q));
   TEST_ASSERT_EQUAL_INT32(INT32_MAX, q);
-  TEST_ASSERT_EQUAL_INT(DRDC_W_SATURATED,
-                        drdc_fx_q15_16_from_q47_16_sat((int64_t)INT32_MIN - 1, &q));
+  TEST_ASSERT_EQUAL_INT(DRDC_W_SATURATED, drdc_fx_q15_16_from_q47_16_sat(
+                                              (int64_t)INT32_MIN - 1, &q));
   TEST_ASSERT_EQUAL_INT32(INT32_MIN, q);
 
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_q1_30_from_q15_16(-(2 << 16), &u));
   TEST_ASSERT_EQUAL_INT32(INT32_MIN, u);
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_q1_30_from_q15_16((2 << 16) - 1, &u));
   TEST_ASSERT_EQUAL_INT32(INT32_MAX - 0x3FFF, u);
-  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_fx_q1_30_from_q15_16(2 << 16, &u));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        drdc_fx_q1_30_from_q15_16(2 << 16, &u));
   TEST_ASSERT_EQUAL_INT32(INT32_MAX - 0x3FFF, u);
-  TEST_ASSERT_EQUAL_INT(DRDC_W_SATURATED, drdc_fx_q1_30_from_q15_16_sat(2 << 16, &u));
+  TEST_ASSERT_EQUAL_INT(DRDC_W_SATURATED,
+                        drdc_fx_q1_30_from_q15_16_sat(2 << 16, &u));
   TEST_ASSERT_EQUAL_INT32(INT32_MAX, u);
   TEST_ASSERT_EQUAL_INT32(1 << 16, drdc_fx_q15_16_from_q1_30(1 << 30));
   TEST_ASSERT_EQUAL_INT32(1, drdc_fx_q15_16_from_q1_30(0x2000));
@@ -229,16 +242,23 @@ static void test_bad_inputs_leave_outputs(void)
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_fx_muldiv_s64(1, 1, 1, NULL));
 
   TEST_ASSERT_EQUAL_INT(DRDC_E_DIVIDE_BY_ZERO, drdc_fx_div_q1_30(1, 0, &o32));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_DIVIDE_BY_ZERO, drdc_fx_div_q1_30_sat(1, 0, &o32));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DIVIDE_BY_ZERO,
+                        drdc_fx_div_q1_30_sat(1, 0, &o32));
   TEST_ASSERT_EQUAL_INT(DRDC_E_DIVIDE_BY_ZERO, drdc_fx_div_q15_16(0, 0, &o32));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_DIVIDE_BY_ZERO, drdc_fx_div_q15_16_sat(1, 0, &o32));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_DIVIDE_BY_ZERO, drdc_fx_muldiv_s32(1, 1, 0, &o32));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_DIVIDE_BY_ZERO, drdc_fx_muldiv_s32_sat(1, 1, 0, &o32));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DIVIDE_BY_ZERO,
+                        drdc_fx_div_q15_16_sat(1, 0, &o32));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DIVIDE_BY_ZERO,
+                        drdc_fx_muldiv_s32(1, 1, 0, &o32));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DIVIDE_BY_ZERO,
+                        drdc_fx_muldiv_s32_sat(1, 1, 0, &o32));
   TEST_ASSERT_EQUAL_INT32(99, o32);
   TEST_ASSERT_EQUAL_INT(DRDC_E_DIVIDE_BY_ZERO, drdc_fx_div_q47_16(1, 0, &o64));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_DIVIDE_BY_ZERO, drdc_fx_div_q47_16_sat(1, 0, &o64));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_DIVIDE_BY_ZERO, drdc_fx_muldiv_s64(1, 1, 0, &o64));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_DIVIDE_BY_ZERO, drdc_fx_muldiv_s64_sat(1, 1, 0, &o64));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DIVIDE_BY_ZERO,
+                        drdc_fx_div_q47_16_sat(1, 0, &o64));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DIVIDE_BY_ZERO,
+                        drdc_fx_muldiv_s64(1, 1, 0, &o64));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DIVIDE_BY_ZERO,
+                        drdc_fx_muldiv_s64_sat(1, 1, 0, &o64));
   TEST_ASSERT_EQUAL_INT64(99, o64);
 }
 
@@ -259,8 +279,8 @@ static void test_muldiv_s64_agrees_with_s32(void)
       drdc_status_t s32 = drdc_fx_muldiv_s32(a, 1234567, c, &r32);
       drdc_status_t s64 = drdc_fx_muldiv_s64(a, 1234567, c, &r64);
 
-      if ((s64 != DRDC_OK) || ((s32 == DRDC_OK) && (r64 != r32))
-          || ((s32 != DRDC_OK) && (r64 >= INT32_MIN) && (r64 <= INT32_MAX))) {
+      if ((s64 != DRDC_OK) || ((s32 == DRDC_OK) && (r64 != r32)) ||
+          ((s32 != DRDC_OK) && (r64 >= INT32_MIN) && (r64 <= INT32_MAX))) {
         bad = a;
       }
     }

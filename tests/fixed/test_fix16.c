@@ -14,8 +14,8 @@
 
 static void test_same_bits_both_ways(void)
 {
-  static const int32_t values[] = { 0, 1, -1, 0x10000, -0x10000, INT32_MAX,
-                                    INT32_MIN + 1, 0x3243F };
+  static const int32_t values[] = {
+      0, 1, -1, 0x10000, -0x10000, INT32_MAX, INT32_MIN + 1, 0x3243F};
   size_t i;
 
   for (i = 0; i < sizeof(values) / sizeof(values[0]); i++) {
@@ -36,7 +36,8 @@ static void test_overflow_marker_refused(void)
   drdc_q15_16_t q = 9;
   int32_t f = 9;
 
-  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_fx_q15_16_from_fix16(INT32_MIN, &q));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        drdc_fx_q15_16_from_fix16(INT32_MIN, &q));
   TEST_ASSERT_EQUAL_INT32(9, q);
   TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_fx_fix16_from_q15_16(INT32_MIN, &f));
   TEST_ASSERT_EQUAL_INT32(9, f);

@@ -83,8 +83,8 @@ static void test_format_frac_bits_or_decimals_beyond_give_range(void)
                         drdc_fx_format(1, 61, 0, buf, sizeof buf, &length));
   TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
                         drdc_fx_format(1, 0, 19, buf, sizeof buf, &length));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_fx_format(1, UINT32_MAX, 0, buf,
-                                                     sizeof buf, &length));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_RANGE, drdc_fx_format(1, UINT32_MAX, 0, buf, sizeof buf, &length));
   TEST_ASSERT_EQUAL_STRING("untouched", buf);
   TEST_ASSERT_EQUAL_size_t(99, length);
   TEST_ASSERT_EQUAL_INT(DRDC_OK,

@@ -16,8 +16,8 @@
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
 
 /* Documented max errors in LSB of Q5.58 (fixed_hyper.h). */
-#define SINH_TOL 3
-#define COSH_TOL 3
+#define SINH_TOL  3
+#define COSH_TOL  3
 #define ATANH_TOL 1
 #define ASINH_TOL 1
 
@@ -61,7 +61,7 @@ static int64_t check(hyper_fn f, int odd, const int64_t *grid, size_t count,
 static void test_sinh(void)
 {
   int64_t worst_sinh = check(drdc_fx_sinh_q5_58, 1, sinh_grid, COUNT(sinh_grid),
-                              SINH_GRID_STEP, sinh_vectors, COUNT(sinh_vectors));
+                             SINH_GRID_STEP, sinh_vectors, COUNT(sinh_vectors));
 
   TEST_ASSERT_LESS_OR_EQUAL_INT64(SINH_TOL, worst_sinh);
 }
@@ -69,23 +69,25 @@ static void test_sinh(void)
 static void test_cosh(void)
 {
   int64_t worst_cosh = check(drdc_fx_cosh_q5_58, 0, cosh_grid, COUNT(cosh_grid),
-                              COSH_GRID_STEP, cosh_vectors, COUNT(cosh_vectors));
+                             COSH_GRID_STEP, cosh_vectors, COUNT(cosh_vectors));
 
   TEST_ASSERT_LESS_OR_EQUAL_INT64(COSH_TOL, worst_cosh);
 }
 
 static void test_atanh(void)
 {
-  int64_t worst_atanh = check(drdc_fx_atanh_q5_58, 1, atanh_grid, COUNT(atanh_grid),
-                              ATANH_GRID_STEP, atanh_vectors, COUNT(atanh_vectors));
+  int64_t worst_atanh =
+      check(drdc_fx_atanh_q5_58, 1, atanh_grid, COUNT(atanh_grid),
+            ATANH_GRID_STEP, atanh_vectors, COUNT(atanh_vectors));
 
   TEST_ASSERT_LESS_OR_EQUAL_INT64(ATANH_TOL, worst_atanh);
 }
 
 static void test_asinh(void)
 {
-  int64_t worst_asinh = check(drdc_fx_asinh_q5_58, 1, asinh_grid, COUNT(asinh_grid),
-                              ASINH_GRID_STEP, asinh_vectors, COUNT(asinh_vectors));
+  int64_t worst_asinh =
+      check(drdc_fx_asinh_q5_58, 1, asinh_grid, COUNT(asinh_grid),
+            ASINH_GRID_STEP, asinh_vectors, COUNT(asinh_vectors));
 
   TEST_ASSERT_LESS_OR_EQUAL_INT64(ASINH_TOL, worst_asinh);
 }
@@ -104,7 +106,8 @@ static void test_edges_and_bad_inputs(void)
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_asinh_q5_58(0, &y));
   TEST_ASSERT_EQUAL_INT64(0, y);
   y = 77;
-  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_fx_sinh_q5_58(INT64_C(5) << 58, &y));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        drdc_fx_sinh_q5_58(INT64_C(5) << 58, &y));
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_fx_sinh_q5_58(INT64_MIN, &y));
   /* just past asinh(32) = 4.159127 and acosh(32) = 4.158639 */
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
@@ -113,7 +116,8 @@ static void test_edges_and_bad_inputs(void)
                         drdc_fx_cosh_q5_58(INT64_C(1198745575393886320), &y));
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_fx_cosh_q5_58(INT64_MAX, &y));
   TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN, drdc_fx_atanh_q5_58(DRDC_Q5_58_ONE, &y));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN, drdc_fx_atanh_q5_58(-DRDC_Q5_58_ONE, &y));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN,
+                        drdc_fx_atanh_q5_58(-DRDC_Q5_58_ONE, &y));
   TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN, drdc_fx_atanh_q5_58(INT64_MIN, &y));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_fx_sinh_q5_58(0, NULL));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_fx_cosh_q5_58(0, NULL));

@@ -18,10 +18,10 @@
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
 
 /* Documented max errors in LSB of Q5.58 (fixed_q5_58.h). */
-#define SINCOS_TOL 2     /* |x| <= 8 */
+#define SINCOS_TOL     2 /* |x| <= 8 */
 #define SINCOS_FAR_TOL 7 /* every x */
-#define ATAN2_TOL 3
-#define SQRT_TOL 1
+#define ATAN2_TOL      3
+#define SQRT_TOL       1
 
 static int64_t err(int64_t got, int64_t want)
 {
@@ -43,13 +43,13 @@ static void test_sincos_grid_and_symmetry(void)
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_sincos_q5_58(x, &s, &c));
     e = err(s, q5_58_sincos_grid[k][0]);
     e = (err(c, q5_58_sincos_grid[k][1]) > e) ? err(c, q5_58_sincos_grid[k][1])
-                                               : e;
+                                              : e;
     worst = (e > worst) ? e : worst;
     /* sin is odd, cos even */
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_sincos_q5_58(-x, &s, &c));
     e = err(s, -q5_58_sincos_grid[k][0]);
     e = (err(c, q5_58_sincos_grid[k][1]) > e) ? err(c, q5_58_sincos_grid[k][1])
-                                               : e;
+                                              : e;
     worst = (e > worst) ? e : worst;
   }
   TEST_ASSERT_LESS_OR_EQUAL_INT64(SINCOS_TOL, worst);
@@ -132,8 +132,7 @@ static void test_mul_and_div_exact(void)
       TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_mul_q5_58(v->a, v->b, &r));
       TEST_ASSERT_EQUAL_INT64(v->want, r);
     } else {
-      TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
-                            drdc_fx_mul_q5_58(v->a, v->b, &r));
+      TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_fx_mul_q5_58(v->a, v->b, &r));
       TEST_ASSERT_EQUAL_INT64(77, r);
     }
   }
@@ -145,8 +144,7 @@ static void test_mul_and_div_exact(void)
       TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_div_q5_58(v->a, v->b, &r));
       TEST_ASSERT_EQUAL_INT64(v->want, r);
     } else {
-      TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
-                            drdc_fx_div_q5_58(v->a, v->b, &r));
+      TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_fx_div_q5_58(v->a, v->b, &r));
       TEST_ASSERT_EQUAL_INT64(77, r);
     }
   }
@@ -195,15 +193,14 @@ static void test_mul_unchecked_exact(void)
     const struct q5_58_pair_vector *v = &q5_58_mul_vectors[i];
 
     if (v->fits != 0) {
-      TEST_ASSERT_EQUAL_INT64(v->want,
-                              drdc_fx_mul_q5_58_unchecked(v->a, v->b));
+      TEST_ASSERT_EQUAL_INT64(v->want, drdc_fx_mul_q5_58_unchecked(v->a, v->b));
     }
   }
   TEST_ASSERT_EQUAL_INT64(1, drdc_fx_mul_q5_58_unchecked(1, INT64_C(1) << 57));
   TEST_ASSERT_EQUAL_INT64(-1,
                           drdc_fx_mul_q5_58_unchecked(-1, INT64_C(1) << 57));
-  TEST_ASSERT_EQUAL_INT64(0, drdc_fx_mul_q5_58_unchecked(
-                                 1, (INT64_C(1) << 57) - 1));
+  TEST_ASSERT_EQUAL_INT64(
+      0, drdc_fx_mul_q5_58_unchecked(1, (INT64_C(1) << 57) - 1));
 }
 
 static void test_drdc_fx_sincos_q5_58_errors(void)
@@ -243,9 +240,9 @@ static void test_drdc_fx_div_q5_58_errors(void)
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_fx_div_q5_58(1, 1, NULL));
   TEST_ASSERT_EQUAL_INT(DRDC_E_DIVIDE_BY_ZERO, drdc_fx_div_q5_58(1, 0, &r));
   /* 32 = 2^63 raw does not fit */
-  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
-                        drdc_fx_div_q5_58(32 * (INT64_C(1) << 52),
-                                          INT64_C(1) << 52, &r));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_OVERFLOW,
+      drdc_fx_div_q5_58(32 * (INT64_C(1) << 52), INT64_C(1) << 52, &r));
   TEST_ASSERT_EQUAL_INT64(77, r);
 }
 

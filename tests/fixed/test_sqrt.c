@@ -65,7 +65,8 @@ static void test_sqrt_u32_at_every_boundary(void)
         first_bad = k;
       }
     }
-    if ((drdc_fx_sqrt_u32(sq + k) != k) || (drdc_fx_sqrt_u32(sq + k + 1u) != k + 1u)) {
+    if ((drdc_fx_sqrt_u32(sq + k) != k) ||
+        (drdc_fx_sqrt_u32(sq + k + 1u) != k + 1u)) {
       first_bad = k;
     }
   }
@@ -134,10 +135,10 @@ static void test_sqrt_q_formats(void)
     drdc_q15_16_t a = -1;
     drdc_q1_30_t b = -1;
 
-    if ((drdc_fx_sqrt_q15_16(x, &a) != DRDC_OK)
-        || !is_rounded_root((uint64_t)x << 16, (uint64_t)a)
-        || (drdc_fx_sqrt_q1_30(x, &b) != DRDC_OK)
-        || !is_rounded_root((uint64_t)x << 30, (uint64_t)b)) {
+    if ((drdc_fx_sqrt_q15_16(x, &a) != DRDC_OK) ||
+        !is_rounded_root((uint64_t)x << 16, (uint64_t)a) ||
+        (drdc_fx_sqrt_q1_30(x, &b) != DRDC_OK) ||
+        !is_rounded_root((uint64_t)x << 30, (uint64_t)b)) {
       bad = x;
     }
   }
@@ -164,8 +165,8 @@ static int q15_16_root_ok(int32_t x)
 {
   drdc_q15_16_t r = -1;
 
-  return (drdc_fx_sqrt_q15_16(x, &r) == DRDC_OK)
-         && is_rounded_root((uint64_t)x << 16, (uint64_t)r);
+  return (drdc_fx_sqrt_q15_16(x, &r) == DRDC_OK) &&
+         is_rounded_root((uint64_t)x << 16, (uint64_t)r);
 }
 
 static void test_sqrt_q15_16_dense(void)
@@ -176,14 +177,14 @@ static void test_sqrt_q15_16_dense(void)
   uint32_t z;
   uint32_t r;
 
-  for (x = 0; x < 65536u; x++) {              /* every small x */
+  for (x = 0; x < 65536u; x++) { /* every small x */
     if (!q15_16_root_ok((int32_t)x)) {
       bad = (int32_t)x;
     }
   }
-  for (z = 0; z <= 30u; z += 2u) {            /* every shift, every bin */
+  for (z = 0; z <= 30u; z += 2u) { /* every shift, every bin */
     for (j = 64u; j < 256u; j++) {
-      uint32_t first = (j << 24) >> z;        /* m = x 2^z in bin j */
+      uint32_t first = (j << 24) >> z; /* m = x 2^z in bin j */
       uint32_t last = (((j + 1u) << 24) - 1u) >> z;
 
       if (((first >> 31) == 0u) && !q15_16_root_ok((int32_t)first)) {
@@ -215,7 +216,8 @@ static void test_rsqrt_q15_16(void)
   for (i = 0; i < COUNT(rsqrt_q15_16_vectors); i++) {
     drdc_q15_16_t r = 0;
 
-    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_rsqrt_q15_16(rsqrt_q15_16_vectors[i].x, &r));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_fx_rsqrt_q15_16(rsqrt_q15_16_vectors[i].x, &r));
     TEST_ASSERT_EQUAL_INT32(rsqrt_q15_16_vectors[i].r, r);
   }
   /* every x < 2^16 by the criterion x (2r-1)^2 < 2^50 < x (2r+1)^2 */
@@ -225,8 +227,10 @@ static void test_rsqrt_q15_16(void)
     uint64_t hi;
 
     (void)drdc_fx_rsqrt_q15_16(x, &r);
-    lo = (uint64_t)x * (uint64_t)((2 * (int64_t)r) - 1) * (uint64_t)((2 * (int64_t)r) - 1);
-    hi = (uint64_t)x * (uint64_t)((2 * (int64_t)r) + 1) * (uint64_t)((2 * (int64_t)r) + 1);
+    lo = (uint64_t)x * (uint64_t)((2 * (int64_t)r) - 1) *
+         (uint64_t)((2 * (int64_t)r) - 1);
+    hi = (uint64_t)x * (uint64_t)((2 * (int64_t)r) + 1) *
+         (uint64_t)((2 * (int64_t)r) + 1);
     if (!((lo < (UINT64_C(1) << 50)) && ((UINT64_C(1) << 50) < hi))) {
       bad = x;
     }
@@ -241,7 +245,8 @@ static void test_rsqrt_q1_30(void)
 
   for (i = 0; i < COUNT(rsqrt_q1_30_vectors); i++) {
     r = 0;
-    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_rsqrt_q1_30(rsqrt_q1_30_vectors[i].x, &r));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_fx_rsqrt_q1_30(rsqrt_q1_30_vectors[i].x, &r));
     TEST_ASSERT_EQUAL_INT32(rsqrt_q1_30_vectors[i].r, r);
   }
   r = 77;
@@ -261,29 +266,33 @@ static void test_hypot(void)
   drdc_q15_16_t q = 5;
 
   for (i = 0; i < COUNT(hypot64_vectors); i++) {
-    TEST_ASSERT_EQUAL_UINT64(hypot64_vectors[i].r,
-                             drdc_fx_hypot_s64(hypot64_vectors[i].x, hypot64_vectors[i].y));
+    TEST_ASSERT_EQUAL_UINT64(
+        hypot64_vectors[i].r,
+        drdc_fx_hypot_s64(hypot64_vectors[i].x, hypot64_vectors[i].y));
   }
   /* int32 hypot is the rounded root of the exact 64-bit sum of squares */
   for (x = INT32_MIN; x < INT32_MAX - 8388609; x += 8388609) {
     int32_t y = (int32_t)(((int64_t)x * 7) / 11);
     uint64_t n = ((uint64_t)((int64_t)x * x)) + (uint64_t)((int64_t)y * y);
 
-    if (!is_rounded_root(n, drdc_fx_hypot_s32(x, y))
-        || (drdc_fx_hypot_s32(x, y) != (uint32_t)drdc_fx_hypot_s64(x, y))) {
+    if (!is_rounded_root(n, drdc_fx_hypot_s32(x, y)) ||
+        (drdc_fx_hypot_s32(x, y) != (uint32_t)drdc_fx_hypot_s64(x, y))) {
       bad = x;
     }
   }
   TEST_ASSERT_EQUAL_INT32(0, bad);
   TEST_ASSERT_EQUAL_UINT32(5u, drdc_fx_hypot_s32(3, -4));
-  TEST_ASSERT_EQUAL_UINT32(3037000500u, drdc_fx_hypot_s32(INT32_MIN, INT32_MIN));
+  TEST_ASSERT_EQUAL_UINT32(3037000500u,
+                           drdc_fx_hypot_s32(INT32_MIN, INT32_MIN));
   TEST_ASSERT_EQUAL_UINT32(UINT32_C(1) << 31, drdc_fx_hypot_s32(INT32_MIN, 0));
   TEST_ASSERT_EQUAL_UINT32(0u, drdc_fx_hypot_s32(0, 0));
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_hypot_q15_16(3 << 16, 4 << 16, &q));
   TEST_ASSERT_EQUAL_INT32(5 << 16, q);
-  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_fx_hypot_q15_16(INT32_MIN, 0, &q));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        drdc_fx_hypot_q15_16(INT32_MIN, 0, &q));
   TEST_ASSERT_EQUAL_INT32(5 << 16, q);
-  TEST_ASSERT_EQUAL_INT(DRDC_W_SATURATED, drdc_fx_hypot_q15_16_sat(INT32_MIN, 0, &q));
+  TEST_ASSERT_EQUAL_INT(DRDC_W_SATURATED,
+                        drdc_fx_hypot_q15_16_sat(INT32_MIN, 0, &q));
   TEST_ASSERT_EQUAL_INT32(INT32_MAX, q);
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_fx_hypot_q15_16(0, 0, NULL));
 }

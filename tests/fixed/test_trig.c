@@ -19,10 +19,10 @@
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
 
 /* Documented max errors: LSB of Q1.30, Q15.16 and binary-angle units. */
-#define SIN_TOL 1
-#define TAN_TOL 1
+#define SIN_TOL   1
+#define TAN_TOL   1
 #define ATAN2_TOL 1
-#define ASIN_TOL 1
+#define ASIN_TOL  1
 
 static int32_t worst; /* largest |error| of the running test */
 
@@ -52,8 +52,8 @@ static void note_angle(uint32_t got, uint32_t want)
 /* The grids are stored as second differences from R[0] = 0 and R[1] =
  * `first`: R[k + 1] = 2 R[k] - R[k - 1] + dd[k - 1] (v = R[k], prev =
  * R[k - 1]) up to the last point n; after it, 0 (never compared). */
-static int32_t grid_next(int32_t k, int32_t n, int32_t first,
-                         const int8_t *dd, int32_t v, int32_t prev)
+static int32_t grid_next(int32_t k, int32_t n, int32_t first, const int8_t *dd,
+                         int32_t v, int32_t prev)
 {
   if (k == 0) {
     return first;
@@ -142,7 +142,7 @@ static void test_tan_full_circle_grid(void)
   worst = 0;
   for (k = 0; k < TRIG_GRID_QUAD; k++) {
     uint32_t a = (uint32_t)k * TRIG_GRID_STEP;
-    drdc_q15_16_t got[4] = { 0, 0, 0, 0 };
+    drdc_q15_16_t got[4] = {0, 0, 0, 0};
 
     if (k > 0) {
       uint32_t diff = 0;
@@ -158,8 +158,10 @@ static void test_tan_full_circle_grid(void)
     }
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_tan_bam32(a, &got[0]));
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_tan_bam32(0u - a, &got[1]));
-    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_tan_bam32((UINT32_C(1) << 31) + a, &got[2]));
-    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_tan_bam32((UINT32_C(1) << 31) - a, &got[3]));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_fx_tan_bam32((UINT32_C(1) << 31) + a, &got[2]));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_fx_tan_bam32((UINT32_C(1) << 31) - a, &got[3]));
     note(got[0], t);
     note(got[1], -t);
     note(got[2], t);
@@ -197,9 +199,12 @@ static void test_tan_poles_and_bad_inputs(void)
 {
   drdc_q15_16_t t = 77;
 
-  TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN, drdc_fx_tan_bam32(UINT32_C(1) << 30, &t));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN, drdc_fx_tan_bam32(UINT32_C(3) << 30, &t));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN, drdc_fx_tan_bam32_sat(UINT32_C(1) << 30, &t));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN,
+                        drdc_fx_tan_bam32(UINT32_C(1) << 30, &t));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN,
+                        drdc_fx_tan_bam32(UINT32_C(3) << 30, &t));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN,
+                        drdc_fx_tan_bam32_sat(UINT32_C(1) << 30, &t));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_fx_tan_bam32(0u, NULL));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_fx_tan_bam32_sat(0u, NULL));
   TEST_ASSERT_EQUAL_INT32(77, t);
@@ -218,13 +223,13 @@ static void test_tan_poles_and_bad_inputs(void)
 static void test_regression_tan_near_pole_precision(void)
 {
   static const struct {
-    uint32_t d;    /* distance from the pole, units */
+    uint32_t d;      /* distance from the pole, units */
     int32_t tan_q16; /* tan(90 deg - d), rounded */
   } pt[] = {
-    { 100000u, 447981336 },                  /* 447981335.806 */
-    { (UINT32_C(1) << 21) - 1u, 21361358 },  /* last cot-series point */
-    { UINT32_C(1) << 21, 21361348 },         /* first kernel point */
-    { UINT32_C(1) << 24, 2669641 },
+      {100000u, 447981336},                 /* 447981335.806 */
+      {(UINT32_C(1) << 21) - 1u, 21361358}, /* last cot-series point */
+      {UINT32_C(1) << 21, 21361348},        /* first kernel point */
+      {UINT32_C(1) << 24, 2669641},
   };
   size_t i;
 
@@ -261,18 +266,35 @@ static void test_atan2_full_circle_grid(void)
     int32_t next;
 
     next = grid_next(k, ATAN_GRID_OCT, ATAN_GRID_1, atan_dd, v, prev);
-    pt[0].y = Y;  pt[0].x = X;  pt[0].want = A;
-    pt[1].y = X;  pt[1].x = Y;  pt[1].want = q - A;
-    pt[2].y = X;  pt[2].x = -Y; pt[2].want = q + A;
-    pt[3].y = Y;  pt[3].x = -X; pt[3].want = (2u * q) - A;
-    pt[4].y = -Y; pt[4].x = -X; pt[4].want = (2u * q) + A;
-    pt[5].y = -X; pt[5].x = -Y; pt[5].want = (3u * q) - A;
-    pt[6].y = -X; pt[6].x = Y;  pt[6].want = (3u * q) + A;
-    pt[7].y = -Y; pt[7].x = X;  pt[7].want = 0u - A;
+    pt[0].y = Y;
+    pt[0].x = X;
+    pt[0].want = A;
+    pt[1].y = X;
+    pt[1].x = Y;
+    pt[1].want = q - A;
+    pt[2].y = X;
+    pt[2].x = -Y;
+    pt[2].want = q + A;
+    pt[3].y = Y;
+    pt[3].x = -X;
+    pt[3].want = (2u * q) - A;
+    pt[4].y = -Y;
+    pt[4].x = -X;
+    pt[4].want = (2u * q) + A;
+    pt[5].y = -X;
+    pt[5].x = -Y;
+    pt[5].want = (3u * q) - A;
+    pt[6].y = -X;
+    pt[6].x = Y;
+    pt[6].want = (3u * q) + A;
+    pt[7].y = -Y;
+    pt[7].x = X;
+    pt[7].want = 0u - A;
     for (j = 0; j < 8; j++) {
       drdc_bam32_t got = 0;
 
-      TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_atan2_bam32(pt[j].y, pt[j].x, &got));
+      TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                            drdc_fx_atan2_bam32(pt[j].y, pt[j].x, &got));
       note_angle(got, pt[j].want);
     }
     prev = v;
@@ -291,8 +313,9 @@ static void test_atan2_random_and_extremes(void)
   for (i = 0; i < COUNT(atan2_vectors); i++) {
     drdc_bam32_t got = 0;
 
-    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_atan2_bam32(atan2_vectors[i].y,
-                                                       atan2_vectors[i].x, &got));
+    TEST_ASSERT_EQUAL_INT(
+        DRDC_OK,
+        drdc_fx_atan2_bam32(atan2_vectors[i].y, atan2_vectors[i].x, &got));
     note_angle(got, atan2_vectors[i].a);
   }
   TEST_ASSERT_LESS_OR_EQUAL_INT32(ATAN2_TOL, worst);
@@ -343,7 +366,7 @@ static void test_asin_acos_grid(void)
   worst = 0;
   for (k = 0; k <= TRIG_GRID_QUAD; k++) {
     uint32_t want = (uint32_t)k * TRIG_GRID_STEP;
-    drdc_bam32_t got[4] = { 0, 0, 0, 0 };
+    drdc_bam32_t got[4] = {0, 0, 0, 0};
     int32_t next;
 
     int32_t dev = asin_dev[k];

@@ -77,8 +77,8 @@ static void test_div_3by2(void)
 
   for (i = 0; i < COUNT(div3by2_vectors); i++) {
     const struct div3by2_vector *t = &div3by2_vectors[i];
-    uint32_t v = drdc_fx_reciprocal_3by2((uint32_t)(t->d >> 32u),
-                                         (uint32_t)t->d);
+    uint32_t v =
+        drdc_fx_reciprocal_3by2((uint32_t)(t->d >> 32u), (uint32_t)t->d);
     uint64_t r = 0u;
     uint32_t q = drdc_fx_div_3by2(t->u2, t->u1, t->u0, t->d, v, &r);
 
@@ -110,11 +110,10 @@ static void test_round_div_shifted(void)
     const struct rdshift_vector *t = &rdshift_vectors[i];
     unsigned z = clz64(t->d);
     uint64_t dn = t->d << z;
-    uint32_t rcp = drdc_fx_reciprocal_3by2((uint32_t)(dn >> 32u),
-                                           (uint32_t)dn);
+    uint32_t rcp = drdc_fx_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
 
-    TEST_ASSERT_EQUAL_UINT32(t->q, drdc_fx_round_div_shifted(t->p, t->t + z,
-                                                             dn, rcp));
+    TEST_ASSERT_EQUAL_UINT32(
+        t->q, drdc_fx_round_div_shifted(t->p, t->t + z, dn, rcp));
   }
 }
 
@@ -126,11 +125,10 @@ static void test_round_div_128(void)
     const struct rd128_vector *t = &rd128_vectors[i];
     unsigned z = clz64(t->d);
     uint64_t dn = t->d << z;
-    uint32_t rcp = drdc_fx_reciprocal_3by2((uint32_t)(dn >> 32u),
-                                           (uint32_t)dn);
+    uint32_t rcp = drdc_fx_reciprocal_3by2((uint32_t)(dn >> 32u), (uint32_t)dn);
 
-    TEST_ASSERT_EQUAL_INT64(t->q, drdc_fx_round_div_128(t->p, t->w, dn, z,
-                                                        rcp));
+    TEST_ASSERT_EQUAL_INT64(t->q,
+                            drdc_fx_round_div_128(t->p, t->w, dn, z, rcp));
   }
 }
 

@@ -20,8 +20,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
   char *text = malloc(size + 1u);
-  drdc_time_t t = { 12345, 678 };
-  drdc_time_t again = { 0, 0 };
+  drdc_time_t t = {12345, 678};
+  drdc_time_t again = {0, 0};
   char out[DRDC_TIME_ISO8601_SIZE];
   drdc_status_t st;
 
@@ -45,8 +45,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if ((strlen(text) == 30u) && (strcmp(out, text) != 0)) {
       abort(); /* full-precision text round-trips character for character */
     }
-    if (drdc_status_is_error(drdc_time_iso8601_parse(NULL, out, &again))
-        || (again.sec != t.sec) || (again.nsec != t.nsec)) {
+    if (drdc_status_is_error(drdc_time_iso8601_parse(NULL, out, &again)) ||
+        (again.sec != t.sec) || (again.nsec != t.nsec)) {
       abort();
     }
   }

@@ -18,7 +18,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-  int64_t in[3] = { 0, 0, 1 };
+  int64_t in[3] = {0, 0, 1};
   uint8_t sel = 0;
   int64_t ilo = 0;
   int64_t ihi = 0;
@@ -32,8 +32,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     sel = data[sizeof in];
   }
   /* ranges up to 2^40 wide keep long double exact for the model */
-  in[1] /= 8388608;            /* min */
-  in[2] = in[1] + 1 + ((in[2] & INT64_C(0xFFFFFFFFFF)));  /* max > min */
+  in[1] /= 8388608;                                      /* min */
+  in[2] = in[1] + 1 + ((in[2] & INT64_C(0xFFFFFFFFFF))); /* max > min */
   type = (drdc_jaus_type_t)(sel % 6u);
   form = (drdc_jaus_form_t)((sel / 6u) % 2u);
   if (drdc_jaus_scaled_range(type, form, &ilo, &ihi) != DRDC_OK) {
@@ -49,12 +49,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
   if (st != DRDC_OK) {
     abort();
   } else {
-    long double exact = (long double)ilo
-                        + ((long double)(in[0] - in[1]) * (long double)(ihi - ilo))
-                              / (long double)(in[2] - in[1]);
+    long double exact = (long double)ilo + ((long double)(in[0] - in[1]) *
+                                            (long double)(ihi - ilo)) /
+                                               (long double)(in[2] - in[1]);
     long double model = roundl(exact);
 
-    if ((integer < ilo) || (integer > ihi) || (fabsl((long double)integer - model) > 1.0L)) {
+    if ((integer < ilo) || (integer > ihi) ||
+        (fabsl((long double)integer - model) > 1.0L)) {
       abort();
     }
   }

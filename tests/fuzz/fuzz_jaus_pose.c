@@ -71,8 +71,8 @@ static int same(const struct common *a, const struct common *b)
 }
 
 /* unpack as the message; -1 for a status other than DRDC_OK */
-static drdc_status_t unpack(int local, drdc_jaus_form_t form, const uint8_t *p, size_t n,
-                            struct common *c)
+static drdc_status_t unpack(int local, drdc_jaus_form_t form, const uint8_t *p,
+                            size_t n, struct common *c)
 {
   drdc_status_t st;
 
@@ -110,8 +110,9 @@ static drdc_status_t unpack(int local, drdc_jaus_form_t form, const uint8_t *p, 
   return DRDC_OK;
 }
 
-static drdc_status_t pack(int local, drdc_jaus_form_t form, const struct common *c, uint8_t *buf,
-                          size_t capacity, size_t *n)
+static drdc_status_t pack(int local, drdc_jaus_form_t form,
+                          const struct common *c, uint8_t *buf, size_t capacity,
+                          size_t *n)
 {
   if (local) {
     drdc_jaus_local_pose_t b;
@@ -170,10 +171,10 @@ static int exact_only(int local, drdc_jaus_form_t form, const struct common *c)
 static int64_t half_step(int local, drdc_jaus_form_t form, int k)
 {
   static const long double spans[2][8] = {
-    { 648e12L, 1296e12L, 45000.0L * 65536, 100.0L * 65536, 4294967296.0L, 4294967296.0L,
-      4294967296.0L, 2147483648.0L },
-    { 200000.0L * 65536, 200000.0L * 65536, 200000.0L * 65536, 100.0L * 65536, 4294967296.0L,
-      4294967296.0L, 4294967296.0L, 2147483648.0L },
+      {648e12L, 1296e12L, 45000.0L * 65536, 100.0L * 65536, 4294967296.0L,
+       4294967296.0L, 4294967296.0L, 2147483648.0L},
+      {200000.0L * 65536, 200000.0L * 65536, 200000.0L * 65536, 100.0L * 65536,
+       4294967296.0L, 4294967296.0L, 4294967296.0L, 2147483648.0L},
   };
   long double span = spans[local][k];
   long double steps = (k < 4) ? 4294967295.0L : 65535.0L;
@@ -187,7 +188,8 @@ static int64_t half_step(int local, drdc_jaus_form_t form, int k)
   return (int64_t)(span / steps / 2.0L) + 1;
 }
 
-static void check_pose(int local, drdc_jaus_form_t form, const struct common *in)
+static void check_pose(int local, drdc_jaus_form_t form,
+                       const struct common *in)
 {
   uint8_t buf[DRDC_JAUS_POSE_BODY_MAX];
   size_t n = 0u;
@@ -201,12 +203,14 @@ static void check_pose(int local, drdc_jaus_form_t form, const struct common *in
   st = unpack(local, form, buf, n, &out);
   if (st != DRDC_OK) {
     /* only AS6009 X, Y, Z at 32768 - 2^-16 m decode beyond Q15.16 */
-    if (!(local && (st == DRDC_E_OVERFLOW) && (form == DRDC_JAUS_FORM_AS6009))) {
+    if (!(local && (st == DRDC_E_OVERFLOW) &&
+          (form == DRDC_JAUS_FORM_AS6009))) {
       abort();
     }
     return;
   }
-  if ((out.presence != in->presence) || (out.stamp != (((in->presence >> 8) & 1u) ? in->stamp : 0u))) {
+  if ((out.presence != in->presence) ||
+      (out.stamp != (((in->presence >> 8) & 1u) ? in->stamp : 0u))) {
     abort();
   }
   for (k = 0; k < 8; k++) {
@@ -255,8 +259,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
   if (st == DRDC_OK) {
     /* a body re-packs into exactly its own length */
     again = malloc(size);
-    if ((again == NULL) || (pack(local, form, &a, again, size, &n) != DRDC_OK) || (n != size)
-        || (unpack(local, form, again, n, &b) != DRDC_OK) || !same(&a, &b)) {
+    if ((again == NULL) ||
+        (pack(local, form, &a, again, size, &n) != DRDC_OK) || (n != size) ||
+        (unpack(local, form, again, n, &b) != DRDC_OK) || !same(&a, &b)) {
       abort();
     }
     if (exact_only(local, form, &a) && (memcmp(body, again, size) != 0)) {
@@ -268,7 +273,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
   memset(&raw, 0, sizeof raw);
   if (size >= 2u) {
     memcpy(&raw.presence, body, 2u);
-    memcpy(raw.v, body + 2, (size - 2u) < sizeof raw.v ? (size - 2u) : sizeof raw.v);
+    memcpy(raw.v, body + 2,
+           (size - 2u) < sizeof raw.v ? (size - 2u) : sizeof raw.v);
     if (size > 2u + sizeof raw.v) {
       memcpy(&raw.stamp, body + 2 + sizeof raw.v,
              (size - 2u - sizeof raw.v) < 4u ? (size - 2u - sizeof raw.v) : 4u);
@@ -276,7 +282,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     /* angles and RMS angle as binary angles, lengths as Q15.16 where the
      * type is 32-bit */
     for (int k = 3; k < 8; k++) {
-      raw.v[k] = (k == 3) ? (int64_t)(int32_t)raw.v[k] : (int64_t)(uint32_t)raw.v[k];
+      raw.v[k] =
+          (k == 3) ? (int64_t)(int32_t)raw.v[k] : (int64_t)(uint32_t)raw.v[k];
     }
     if (local) {
       for (int k = 0; k < 3; k++) {

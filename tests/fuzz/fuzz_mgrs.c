@@ -21,9 +21,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
   char *text = malloc(size + 1u);
-  drdc_geo_utm_t corner = { 77, false, 7, 7 };
-  drdc_geo_utm_t centre = { 77, false, 7, 7 };
-  drdc_geo_utm_t again = { 0, false, 0, 0 };
+  drdc_geo_utm_t corner = {77, false, 7, 7};
+  drdc_geo_utm_t centre = {77, false, 7, 7};
+  drdc_geo_utm_t again = {0, false, 0, 0};
   drdc_nas_t lat = 0;
   drdc_nas_t lon = 0;
   int32_t prec = 99;
@@ -44,14 +44,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if ((prec < -1) || (prec > 11)) {
       abort();
     }
-    if (drdc_status_is_error(drdc_geo_from_utm(&corner, &lat, &lon, NULL, NULL))) {
+    if (drdc_status_is_error(
+            drdc_geo_from_utm(&corner, &lat, &lon, NULL, NULL))) {
       abort(); /* a decoded corner is a valid UTM/UPS point */
     }
-    if ((prec >= 0) && (prec <= 5)
-        && ((drdc_geo_mgrs_from_utm(&corner, prec, out, sizeof out) != DRDC_OK)
-            || drdc_status_is_error(drdc_geo_mgrs_decode(out, &again, NULL, NULL))
-            || (again.zone != corner.zone) || (again.easting != corner.easting)
-            || (again.northing != corner.northing))) {
+    if ((prec >= 0) && (prec <= 5) &&
+        ((drdc_geo_mgrs_from_utm(&corner, prec, out, sizeof out) != DRDC_OK) ||
+         drdc_status_is_error(drdc_geo_mgrs_decode(out, &again, NULL, NULL)) ||
+         (again.zone != corner.zone) || (again.easting != corner.easting) ||
+         (again.northing != corner.northing))) {
       abort(); /* the cell re-encodes to itself */
     }
   }

@@ -29,8 +29,8 @@ static int checksum_matches(const char *s, size_t n)
   hex[0] = "0123456789ABCDEF"[sum >> 4];
   hex[1] = "0123456789ABCDEF"[sum & 15u];
   hex[2] = '\0';
-  return (s[i + 1] == hex[0] || s[i + 1] == (char)(hex[0] | 0x20))
-         && (s[i + 2] == hex[1] || s[i + 2] == (char)(hex[1] | 0x20));
+  return (s[i + 1] == hex[0] || s[i + 1] == (char)(hex[0] | 0x20)) &&
+         (s[i + 2] == hex[1] || s[i + 2] == (char)(hex[1] | 0x20));
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
@@ -52,12 +52,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
   if (st == DRDC_OK) {
     const int64_t deg = DRDC_NAS_PER_DEGREE;
 
-    if (size > DRDC_NMEA_LENGTH_MAX || !checksum_matches(text, size)
-        || n.latitude > 90 * deg || n.latitude < -90 * deg
-        || n.longitude > 180 * deg || n.longitude < -180 * deg
-        || n.time.hour < 0 || n.time.hour > 23 || n.time.minute < 0 || n.time.minute > 59
-        || n.time.second < 0 || n.time.second > 60 || n.time.nsec < 0
-        || n.time.nsec > 999999999 || n.talker[2] != '\0') {
+    if (size > DRDC_NMEA_LENGTH_MAX || !checksum_matches(text, size) ||
+        n.latitude > 90 * deg || n.latitude < -90 * deg ||
+        n.longitude > 180 * deg || n.longitude < -180 * deg ||
+        n.time.hour < 0 || n.time.hour > 23 || n.time.minute < 0 ||
+        n.time.minute > 59 || n.time.second < 0 || n.time.second > 60 ||
+        n.time.nsec < 0 || n.time.nsec > 999999999 || n.talker[2] != '\0') {
       abort();
     }
   } else {

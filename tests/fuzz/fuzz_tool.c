@@ -16,8 +16,8 @@
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
-static const char *const scales[] = { "utc", "gps", "unix", "rtems", "tai" };
-static const char *const reprs[] = { "euler", "quat", "dcm" };
+static const char *const scales[] = {"utc", "gps", "unix", "rtems", "tai"};
+static const char *const reprs[] = {"euler", "quat", "dcm"};
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -43,15 +43,23 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
   /* the commands read standard input: point it at the bytes */
   stdin = in;
   if ((pick % 3u) == 0u) {
-    char *argv[] = { "time", "--from", (char *)scales[(pick / 3u) % 5u], "--to",
-                     (char *)scales[(pick / 15u) % 5u], NULL };
+    char *argv[] = {"time",
+                    "--from",
+                    (char *)scales[(pick / 3u) % 5u],
+                    "--to",
+                    (char *)scales[(pick / 15u) % 5u],
+                    NULL};
     status = drdc_cmd_time(5, argv);
   } else if ((pick % 3u) == 1u) {
-    char *argv[] = { "attitude", "--from", (char *)reprs[(pick / 3u) % 3u], "--to",
-                     (char *)reprs[(pick / 9u) % 3u], NULL };
+    char *argv[] = {"attitude",
+                    "--from",
+                    (char *)reprs[(pick / 3u) % 3u],
+                    "--to",
+                    (char *)reprs[(pick / 9u) % 3u],
+                    NULL};
     status = drdc_cmd_attitude(5, argv);
   } else {
-    char *argv[] = { "units", NULL };
+    char *argv[] = {"units", NULL};
     status = drdc_cmd_units(1, argv);
   }
   fclose(in);

@@ -21,7 +21,7 @@ static const long double TWO_PI = 6.283185307179586476925286766559L;
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-  uint32_t in[3] = { 0u, 0u, 0u };
+  uint32_t in[3] = {0u, 0u, 0u};
   drdc_q1_30_t s = 0;
   drdc_q1_30_t c = 0;
   drdc_bam32_t a = 0u;
@@ -32,13 +32,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
   memcpy(in, data, size < sizeof in ? size : sizeof in);
   x = (long double)in[0] * TWO_PI / 4294967296.0L;
   drdc_fx_sincos_bam32(in[0], &s, &c);
-  if ((fabsl((long double)s - sinl(x) * 1073741824.0L) > 1.000001L)
-      || (fabsl((long double)c - cosl(x) * 1073741824.0L) > 1.000001L)) {
+  if ((fabsl((long double)s - sinl(x) * 1073741824.0L) > 1.000001L) ||
+      (fabsl((long double)c - cosl(x) * 1073741824.0L) > 1.000001L)) {
     abort();
   }
   if (drdc_fx_atan2_bam32((int32_t)in[1], (int32_t)in[2], &a) == DRDC_OK) {
-    long double want = atan2l((long double)(int32_t)in[1], (long double)(int32_t)in[2])
-                       * 4294967296.0L / TWO_PI;
+    long double want =
+        atan2l((long double)(int32_t)in[1], (long double)(int32_t)in[2]) *
+        4294967296.0L / TWO_PI;
     err = (long double)(int32_t)a - want;
     err = fmodl(err + 6442450944.0L, 4294967296.0L) - 2147483648.0L; /* wrap */
     if (fabsl(err) > 1.000001L) {
@@ -51,7 +52,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     abort();
   }
   /* correctly rounded: |r - sqrt(v 2^16)| <= 0.5 */
-  if (fabsl((long double)r - sqrtl((long double)(in[1] >> 1) * 65536.0L)) > 0.500001L) {
+  if (fabsl((long double)r - sqrtl((long double)(in[1] >> 1) * 65536.0L)) >
+      0.500001L) {
     abort();
   }
   return 0;

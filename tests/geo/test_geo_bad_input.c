@@ -17,13 +17,13 @@
 #include "suites.h"
 #include "unity.h"
 
-#define NAS_DEG INT64_C(3600000000000)
+#define NAS_DEG    INT64_C(3600000000000)
 #define SENTINEL64 INT64_C(0x5A5A5A5A5A5A5A5A)
-#define M(v) ((int64_t)(v) * INT64_C(65536))
+#define M(v)       ((int64_t)(v)*INT64_C(65536))
 
 static drdc_geo_utm_t sentinel_utm(void)
 {
-  drdc_geo_utm_t u = { 77, true, SENTINEL64, SENTINEL64 };
+  drdc_geo_utm_t u = {77, true, SENTINEL64, SENTINEL64};
 
   return u;
 }
@@ -62,16 +62,15 @@ static void test_drdc_geo_tm_forward_errors(void)
                         drdc_geo_tm_forward(0, 0, NULL, &y, &g, &k));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
                         drdc_geo_tm_forward(0, 0, &x, NULL, &g, &k));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE,
-                        drdc_geo_tm_forward((90 * NAS_DEG) + 1, 0, &x, &y,
-                                            &g, &k));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE,
-                        drdc_geo_tm_forward(0, (90 * NAS_DEG) + 1, &x, &y,
-                                            &g, &k));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_LATITUDE,
+      drdc_geo_tm_forward((90 * NAS_DEG) + 1, 0, &x, &y, &g, &k));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_LONGITUDE,
+      drdc_geo_tm_forward(0, (90 * NAS_DEG) + 1, &x, &y, &g, &k));
   /* 25 degrees from the central meridian on the equator: 2 900 km */
   TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
-                        drdc_geo_tm_forward(0, 25 * NAS_DEG, &x, &y, &g,
-                                            &k));
+                        drdc_geo_tm_forward(0, 25 * NAS_DEG, &x, &y, &g, &k));
   TEST_ASSERT_EQUAL_INT64(SENTINEL64, x);
   TEST_ASSERT_EQUAL_INT64(SENTINEL64, y);
   TEST_ASSERT_EQUAL_INT64(SENTINEL64, g);
@@ -83,42 +82,38 @@ static void test_drdc_geo_to_utm_errors(void)
   drdc_geo_utm_t u = sentinel_utm();
   drdc_nas_t g = SENTINEL64;
 
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
-                        drdc_geo_to_utm(0, 0, DRDC_GEO_ZONE_STANDARD, NULL,
-                                        &g, NULL));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_NULL,
+      drdc_geo_to_utm(0, 0, DRDC_GEO_ZONE_STANDARD, NULL, &g, NULL));
   TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE,
                         drdc_geo_to_utm((90 * NAS_DEG) + 1, 0,
-                                        DRDC_GEO_ZONE_STANDARD, &u, &g,
-                                        NULL));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE,
-                        drdc_geo_to_utm(0, 540 * NAS_DEG,
-                                        DRDC_GEO_ZONE_STANDARD, &u, &g,
-                                        NULL));
+                                        DRDC_GEO_ZONE_STANDARD, &u, &g, NULL));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_LONGITUDE,
+      drdc_geo_to_utm(0, 540 * NAS_DEG, DRDC_GEO_ZONE_STANDARD, &u, &g, NULL));
   /* zone 61 */
-  TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE,
-                        drdc_geo_to_utm(0, 0, 61, &u, &g, NULL));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE,
-                        drdc_geo_to_utm(0, 0, -2, &u, &g, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE, drdc_geo_to_utm(0, 0, 61, &u, &g, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE, drdc_geo_to_utm(0, 0, -2, &u, &g, NULL));
   /* forced UPS (zone 0) at 80 N: "out of legal range for UPS" */
   TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
                         drdc_geo_to_utm(80 * NAS_DEG, -30 * NAS_DEG,
                                         DRDC_GEO_ZONE_UPS, &u, &g, NULL));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
-                        drdc_geo_to_utm(-10 * NAS_DEG, 0, DRDC_GEO_ZONE_UPS,
-                                        &u, &g, NULL));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_RANGE,
+      drdc_geo_to_utm(-10 * NAS_DEG, 0, DRDC_GEO_ZONE_UPS, &u, &g, NULL));
   /* GeoConvert -z 31: "Latitude 0, longitude -5 out of legal range" */
   TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
                         drdc_geo_to_utm(0, -5 * NAS_DEG, 31, &u, &g, NULL));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
-                        drdc_geo_to_utm(10 * NAS_DEG, 10 * NAS_DEG, 28, &u,
-                                        &g, NULL));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_RANGE,
+      drdc_geo_to_utm(10 * NAS_DEG, 10 * NAS_DEG, 28, &u, &g, NULL));
   assert_utm_unchanged(&u);
   TEST_ASSERT_EQUAL_INT64(SENTINEL64, g);
 }
 
 static void test_drdc_geo_from_utm_errors(void)
 {
-  drdc_geo_utm_t in = { 31, true, M(500000), M(0) };
+  drdc_geo_utm_t in = {31, true, M(500000), M(0)};
   drdc_nas_t lat = SENTINEL64;
   drdc_nas_t lon = SENTINEL64;
 
@@ -181,14 +176,13 @@ static void test_drdc_geo_mgrs_encode_errors(void)
 {
   char text[DRDC_GEO_MGRS_SIZE] = "unchanged";
 
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
-                        drdc_geo_mgrs_encode(0, 0, 5, NULL, 28u));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE,
-                        drdc_geo_mgrs_encode((90 * NAS_DEG) + 1, 0, 5, text,
-                                             sizeof text));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE,
-                        drdc_geo_mgrs_encode(0, 540 * NAS_DEG, 5, text,
-                                             sizeof text));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_geo_mgrs_encode(0, 0, 5, NULL, 28u));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_LATITUDE,
+      drdc_geo_mgrs_encode((90 * NAS_DEG) + 1, 0, 5, text, sizeof text));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_LONGITUDE,
+      drdc_geo_mgrs_encode(0, 540 * NAS_DEG, 5, text, sizeof text));
   TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
                         drdc_geo_mgrs_encode(0, 0, 12, text, sizeof text));
   TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
@@ -204,7 +198,7 @@ static void test_drdc_geo_mgrs_encode_errors(void)
 static void test_drdc_geo_mgrs_from_utm_errors(void)
 {
   char text[DRDC_GEO_MGRS_SIZE] = "unchanged";
-  drdc_geo_utm_t u = { 31, true, M(99999), M(0) };
+  drdc_geo_utm_t u = {31, true, M(99999), M(0)};
 
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
                         drdc_geo_mgrs_from_utm(NULL, 5, text, sizeof text));
@@ -262,9 +256,9 @@ static void test_drdc_geo_mgrs_decode_errors(void)
                         drdc_geo_mgrs_decode("38SM", &u, &u, &prec));
   TEST_ASSERT_EQUAL_INT(DRDC_E_MGRS,
                         drdc_geo_mgrs_decode("001SMB", &u, &u, &prec));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_MGRS,
-                        drdc_geo_mgrs_decode(
-                          "38SMB123456789012345678901", &u, &u, &prec));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_MGRS,
+      drdc_geo_mgrs_decode("38SMB123456789012345678901", &u, &u, &prec));
   /* an illegal 100 km square: MT is not in band S of zone 38 */
   TEST_ASSERT_EQUAL_INT(DRDC_E_BAND,
                         drdc_geo_mgrs_decode("38SMT", &u, &u, &prec));
@@ -274,8 +268,8 @@ static void test_drdc_geo_mgrs_decode_errors(void)
 
 static void test_drdc_geo_to_ecef_errors(void)
 {
-  drdc_geo_point_t p = { 0, 0, 0 };
-  drdc_vec3_q47_16_t e = { SENTINEL64, SENTINEL64, SENTINEL64 };
+  drdc_geo_point_t p = {0, 0, 0};
+  drdc_vec3_q47_16_t e = {SENTINEL64, SENTINEL64, SENTINEL64};
 
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_geo_to_ecef(NULL, &e));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_geo_to_ecef(&p, NULL));
@@ -300,13 +294,13 @@ static void test_from_ecef_int64_min_does_not_overflow(void)
    * UBSan: ecef.c ecef_abs64()). Each coordinate at INT64_MIN, INT64_MIN + 1
    * and INT64_MAX, the others on the equator's surface or also extreme:
    * DRDC_E_HEIGHT, p unchanged. */
-  static const int64_t far[] = { INT64_MIN, INT64_MIN + 1, INT64_MAX };
+  static const int64_t far[] = {INT64_MIN, INT64_MIN + 1, INT64_MAX};
   size_t i;
   size_t axis;
 
   for (i = 0; i < (sizeof far / sizeof far[0]); i++) {
     for (axis = 0; axis < 4u; axis++) {
-      drdc_vec3_q47_16_t e = { M(6378137), 0, 0 };
+      drdc_vec3_q47_16_t e = {M(6378137), 0, 0};
       drdc_geo_point_t p;
 
       if (axis == 0u) {
@@ -329,8 +323,8 @@ static void test_from_ecef_int64_min_does_not_overflow(void)
 
 static void test_drdc_geo_from_ecef_errors(void)
 {
-  drdc_geo_point_t p = { SENTINEL64, SENTINEL64, SENTINEL64 };
-  drdc_vec3_q47_16_t e = { M(6378137), 0, 0 };
+  drdc_geo_point_t p = {SENTINEL64, SENTINEL64, SENTINEL64};
+  drdc_vec3_q47_16_t e = {M(6378137), 0, 0};
 
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_geo_from_ecef(NULL, &p));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_geo_from_ecef(&e, NULL));
@@ -352,12 +346,12 @@ static void test_drdc_geo_from_ecef_errors(void)
 /* the errors of drdc_geo_to_enu (ned: 0) or drdc_geo_to_ned (ned: 1) */
 static void local_errors(int ned)
 {
-  drdc_geo_point_t ref = { 0, 0, 0 };
-  drdc_geo_point_t p = { 0, 0, 0 };
-  drdc_vec3_q15_16_t v = { 77, 77, 77 };
+  drdc_geo_point_t ref = {0, 0, 0};
+  drdc_geo_point_t p = {0, 0, 0};
+  drdc_vec3_q15_16_t v = {77, 77, 77};
   drdc_status_t (*f)(const drdc_geo_point_t *, const drdc_geo_point_t *,
                      drdc_vec3_q15_16_t *) =
-    (ned != 0) ? drdc_geo_to_ned : drdc_geo_to_enu;
+      (ned != 0) ? drdc_geo_to_ned : drdc_geo_to_enu;
 
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, f(NULL, &p, &v));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, f(&ref, NULL, &v));
@@ -394,12 +388,12 @@ static void test_drdc_geo_to_ned_errors(void)
 /* the errors of drdc_geo_from_enu (ned: 0) or drdc_geo_from_ned (1) */
 static void from_local_errors(int ned)
 {
-  drdc_geo_point_t ref = { 0, 0, 0 };
-  drdc_geo_point_t p = { SENTINEL64, SENTINEL64, SENTINEL64 };
-  drdc_vec3_q15_16_t v = { 0, 0, 0 };
+  drdc_geo_point_t ref = {0, 0, 0};
+  drdc_geo_point_t p = {SENTINEL64, SENTINEL64, SENTINEL64};
+  drdc_vec3_q15_16_t v = {0, 0, 0};
   drdc_status_t (*f)(const drdc_geo_point_t *, const drdc_vec3_q15_16_t *,
                      drdc_geo_point_t *) =
-    (ned != 0) ? drdc_geo_from_ned : drdc_geo_from_enu;
+      (ned != 0) ? drdc_geo_from_ned : drdc_geo_from_enu;
 
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, f(NULL, &v, &p));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, f(&ref, NULL, &p));

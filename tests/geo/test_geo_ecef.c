@@ -19,11 +19,11 @@
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
 
 /* Documented bounds (geo_ecef.h), the maxima measured on these vectors. */
-#define XYZ_TOL 1    /* LSB of Q47.16 */
-#define LATLON_TOL 1 /* nas */
-#define H_TOL 0      /* LSB of Q47.16 */
+#define XYZ_TOL      1 /* LSB of Q47.16 */
+#define LATLON_TOL   1 /* nas */
+#define H_TOL        0 /* LSB of Q47.16 */
 #define TRIP_XYZ_TOL 0 /* LSB of Q47.16: ECEF -> geodetic -> ECEF */
-#define ENU_TOL 1    /* LSB of Q15.16 */
+#define ENU_TOL      1 /* LSB of Q15.16 */
 
 static int64_t dist(int64_t a, int64_t b)
 {
@@ -40,11 +40,11 @@ static void test_ecef_forward_and_reverse(void)
 
   for (i = 0; i < COUNT(ecef_vectors); i++) {
     const struct ecef_vector *v = &ecef_vectors[i];
-    drdc_geo_point_t p = { v->lat, v->lon, v->height };
-    drdc_geo_point_t q = { 0, 0, 0 };
-    drdc_vec3_q47_16_t e = { 0, 0, 0 };
-    drdc_vec3_q47_16_t in = { v->x, v->y, v->z };
-    drdc_vec3_q47_16_t back = { 0, 0, 0 };
+    drdc_geo_point_t p = {v->lat, v->lon, v->height};
+    drdc_geo_point_t q = {0, 0, 0};
+    drdc_vec3_q47_16_t e = {0, 0, 0};
+    drdc_vec3_q47_16_t in = {v->x, v->y, v->z};
+    drdc_vec3_q47_16_t back = {0, 0, 0};
     int64_t d;
 
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_to_ecef(&p, &e));
@@ -55,14 +55,13 @@ static void test_ecef_forward_and_reverse(void)
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_from_ecef(&in, &q));
     d = dist(q.lat, v->rev_lat);
     /* on the polar axis the longitude is 0 by convention */
-    if ((dist(v->rev_lat, 0) != INT64_C(324000000000000))
-        && (dist(v->rev_lon, q.lon) != INT64_C(1296000000000000))) {
+    if ((dist(v->rev_lat, 0) != INT64_C(324000000000000)) &&
+        (dist(v->rev_lon, q.lon) != INT64_C(1296000000000000))) {
       d = (dist(q.lon, v->rev_lon) > d) ? dist(q.lon, v->rev_lon) : d;
     }
     w_ll = (d > w_ll) ? d : w_ll;
-    w_h = (dist(q.height, v->rev_height) > w_h) ? dist(q.height,
-                                                       v->rev_height)
-                                                 : w_h;
+    w_h = (dist(q.height, v->rev_height) > w_h) ? dist(q.height, v->rev_height)
+                                                : w_h;
     /* round trip ECEF -> geodetic -> ECEF */
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_to_ecef(&q, &back));
     d = dist(back.x, in.x);
@@ -84,12 +83,12 @@ static void test_enu_and_ned(void)
 
   for (i = 0; i < COUNT(enu_vectors); i++) {
     const struct enu_vector *v = &enu_vectors[i];
-    drdc_geo_point_t ref = { v->lat0, v->lon0, v->h0 };
-    drdc_geo_point_t p = { v->lat, v->lon, v->height };
-    drdc_geo_point_t q = { 0, 0, 0 };
-    drdc_vec3_q15_16_t enu = { 0, 0, 0 };
-    drdc_vec3_q15_16_t ned = { 0, 0, 0 };
-    drdc_vec3_q15_16_t again = { 0, 0, 0 };
+    drdc_geo_point_t ref = {v->lat0, v->lon0, v->h0};
+    drdc_geo_point_t p = {v->lat, v->lon, v->height};
+    drdc_geo_point_t q = {0, 0, 0};
+    drdc_vec3_q15_16_t enu = {0, 0, 0};
+    drdc_vec3_q15_16_t ned = {0, 0, 0};
+    drdc_vec3_q15_16_t again = {0, 0, 0};
     int64_t d;
 
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_to_enu(&ref, &p, &enu));
@@ -119,25 +118,23 @@ static void test_enu_and_ned(void)
   TEST_ASSERT_LESS_OR_EQUAL_INT64(ENU_TOL, w_trip);
 }
 
-#define M(v) ((int64_t)(v) * INT64_C(65536))
-#define LOCAL_TOL 1     /* geo_pose.h: LSB of Q15.16 */
-#define TRIP_TOL 2      /* geo_pose.h: LSB of Q47.16 height */
+#define M(v)      ((int64_t)(v)*INT64_C(65536))
+#define LOCAL_TOL 1 /* geo_pose.h: LSB of Q15.16 */
+#define TRIP_TOL  2 /* geo_pose.h: LSB of Q47.16 height */
 
 /* {l} at a reference facing north (q = 1) is NED; facing east (yaw 90)
  * x is east, y south. */
 static void test_local_pose_against_cartconvert(void)
 {
-  static const drdc_quat_t facing_east = { 759250125, 0, 0, 759250125 };
+  static const drdc_quat_t facing_east = {759250125, 0, 0, 759250125};
   int64_t w_local = 0;
   int64_t w_trip = 0;
   size_t i;
 
   for (i = 0; i < COUNT(enu_vectors); i++) {
     const struct enu_vector *v = &enu_vectors[i];
-    drdc_WPose_t ref = { v->lon0, v->lat0, v->h0 - M(30),
-                         { 1073741824, 0, 0, 0 } };
-    drdc_WPose_t w = { v->lon, v->lat, v->height - M(30),
-                       { 1073741824, 0, 0, 0 } };
+    drdc_WPose_t ref = {v->lon0, v->lat0, v->h0 - M(30), {1073741824, 0, 0, 0}};
+    drdc_WPose_t w = {v->lon, v->lat, v->height - M(30), {1073741824, 0, 0, 0}};
     drdc_lPose_t l;
     drdc_WPose_t back;
     int64_t d;
@@ -183,9 +180,9 @@ static void check_nas_from_rad(int64_t r)
 
 static void test_geo_nas_from_rad_is_muldiv(void)
 {
-  static const int64_t named[] = { 0, 1, 2, GEO_PI, GEO_PI - 1, GEO_PI + 1,
-                                   GEO_HALF_PI, GEO_TWO_PI, INT64_MAX,
-                                   INT64_MAX - 1 };
+  static const int64_t named[] = {
+      0,          1,           2,          GEO_PI,    GEO_PI - 1,
+      GEO_PI + 1, GEO_HALF_PI, GEO_TWO_PI, INT64_MAX, INT64_MAX - 1};
   uint64_t seed = UINT64_C(0x2545F4914F6CDD1D);
   int64_t n;
   int64_t x;
@@ -198,14 +195,14 @@ static void test_geo_nas_from_rad_is_muldiv(void)
   }
   check_nas_from_rad(INT64_MIN);
   for (i = 0u; i < 3000u; i++) {
-    seed = (seed * UINT64_C(6364136223846793005))
-           + UINT64_C(1442695040888963407);
+    seed =
+        (seed * UINT64_C(6364136223846793005)) + UINT64_C(1442695040888963407);
     /* n up to 2^52 nas: x up to about 2^62.5 */
     n = (int64_t)(seed >> (12u + (i % 52u)));
     x = 0;
-    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_muldiv_s64(
-                                       (2 * n) + (int64_t)(i & 1u), GEO_PI,
-                                       2 * GEO_NAS_180, &x));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_fx_muldiv_s64((2 * n) + (int64_t)(i & 1u),
+                                             GEO_PI, 2 * GEO_NAS_180, &x));
     for (k = -1; k <= 1; k++) {
       check_nas_from_rad(x + k);
       check_nas_from_rad(-(x + k));

@@ -62,8 +62,8 @@ static int within_last_digit(const char *a, const char *b)
     na = (na * 10) + digit(a[start + half + i]);
     nb = (nb * 10) + digit(b[start + half + i]);
   }
-  return ((ea - eb) <= 1) && ((eb - ea) <= 1) && ((na - nb) <= 1)
-         && ((nb - na) <= 1);
+  return ((ea - eb) <= 1) && ((eb - ea) <= 1) && ((na - nb) <= 1) &&
+         ((nb - na) <= 1);
 }
 
 /* The measured disagreements with GeoConvert (tests/ref/gen_geo_mgrs.py
@@ -72,8 +72,8 @@ static int within_last_digit(const char *a, const char *b)
  * 1 um boundary (near_nm 0: within 0.5 nm of it, far inside
  * GeographicLib's own 5 nm error). Each is one unit of the last digit. */
 #define MGRS_NEAR_NM 0
-static const uint32_t mgrs_mismatches[MGRS_PRECS] = { 0, 0, 0, 0, 0, 0, 0,
-                                                      0, 0, 0, 0, 0, 3 };
+static const uint32_t mgrs_mismatches[MGRS_PRECS] = {0, 0, 0, 0, 0, 0, 0,
+                                                     0, 0, 0, 0, 0, 3};
 
 /* the text of GeoConvert at prec (MGRS_PREC_FIRST + p) from its text at
  * the finest precision: the head (zone, band, square) and the leading p
@@ -135,9 +135,9 @@ static void check_point(int64_t lat, int64_t lon, int32_t near_nm,
     } else {
       coarser(fine, p, derived);
     }
-    TEST_ASSERT_EQUAL_INT(DRDC_OK,
-                          drdc_geo_mgrs_encode(lat, lon, p + MGRS_PREC_FIRST,
-                                               text, sizeof text));
+    TEST_ASSERT_EQUAL_INT(
+        DRDC_OK,
+        drdc_geo_mgrs_encode(lat, lon, p + MGRS_PREC_FIRST, text, sizeof text));
     while ((text[k] == w[k]) && (text[k] != '\0')) {
       k++;
     }
@@ -151,7 +151,7 @@ static void check_point(int64_t lat, int64_t lon, int32_t near_nm,
 
 static void test_mgrs_encode_every_precision(void)
 {
-  uint32_t mismatches[MGRS_PRECS] = { 0u };
+  uint32_t mismatches[MGRS_PRECS] = {0u};
   size_t i;
   int32_t p;
 
@@ -175,7 +175,7 @@ static void test_mgrs_encode_every_precision(void)
  * and digits below their arrays; it is outside the MGRS limits */
 static void test_mgrs_from_utm_negative_northing(void)
 {
-  drdc_geo_utm_t u = { 38, true, INT64_C(500000) * 65536, -50 * 65536 };
+  drdc_geo_utm_t u = {38, true, INT64_C(500000) * 65536, -50 * 65536};
   char text[DRDC_GEO_MGRS_SIZE] = "unchanged";
 
   TEST_ASSERT_EQUAL_INT(DRDC_E_NORTHING,
@@ -202,9 +202,9 @@ static void test_mgrs_truncates_before_rounding(void)
   drdc_geo_utm_t u;
   char text[DRDC_GEO_MGRS_SIZE];
 
-  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_to_utm(lat, lon,
-                                                 DRDC_GEO_ZONE_STANDARD, &u,
-                                                 NULL, NULL));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_OK,
+      drdc_geo_to_utm(lat, lon, DRDC_GEO_ZONE_STANDARD, &u, NULL, NULL));
   TEST_ASSERT_EQUAL_INT64(INT64_C(660074) * 65536, u.easting);
   TEST_ASSERT_EQUAL_INT(DRDC_OK,
                         drdc_geo_mgrs_encode(lat, lon, 5, text, sizeof text));
@@ -220,8 +220,8 @@ static void test_mgrs_decode(void)
 
   for (i = 0; i < COUNT(mgrs_dec_vectors); i++) {
     const struct mgrs_dec_vector *v = &mgrs_dec_vectors[i];
-    drdc_geo_utm_t corner = { 99, false, 0, 0 };
-    drdc_geo_utm_t centre = { 99, false, 0, 0 };
+    drdc_geo_utm_t corner = {99, false, 0, 0};
+    drdc_geo_utm_t centre = {99, false, 0, 0};
     int32_t prec = -9;
     drdc_status_t st = drdc_geo_mgrs_decode(v->text, &corner, &centre, &prec);
 
@@ -229,8 +229,7 @@ static void test_mgrs_decode(void)
     if (st == DRDC_OK) {
       TEST_ASSERT_EQUAL_INT32_MESSAGE(v->zone, centre.zone, v->text);
       TEST_ASSERT_EQUAL_INT_MESSAGE(v->north != 0, centre.north, v->text);
-      TEST_ASSERT_INT64_WITHIN_MESSAGE(1, v->easting, centre.easting,
-                                       v->text);
+      TEST_ASSERT_INT64_WITHIN_MESSAGE(1, v->easting, centre.easting, v->text);
       TEST_ASSERT_INT64_WITHIN_MESSAGE(1, v->northing, centre.northing,
                                        v->text);
     } else {
@@ -247,8 +246,8 @@ static void test_mgrs_corner_and_centre(void)
   drdc_geo_utm_t centre;
   int32_t prec = 0;
 
-  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_mgrs_decode("38SMB4488", &corner,
-                                                      &centre, &prec));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_OK, drdc_geo_mgrs_decode("38SMB4488", &corner, &centre, &prec));
   TEST_ASSERT_EQUAL_INT32(2, prec);
   TEST_ASSERT_EQUAL_INT32(38, corner.zone);
   TEST_ASSERT_TRUE(corner.north);

@@ -15,28 +15,26 @@
 #include "unity.h"
 #include "vectors_pose.h"
 
-#define NAS_DEG INT64_C(3600000000000)
-#define M(v) ((int64_t)(v) * INT64_C(65536))
+#define NAS_DEG    INT64_C(3600000000000)
+#define M(v)       ((int64_t)(v)*INT64_C(65536))
 #define SENTINEL64 INT64_C(0x5A5A5A5A5A5A5A5A)
-#define COUNT(a) (sizeof(a) / sizeof((a)[0]))
+#define COUNT(a)   (sizeof(a) / sizeof((a)[0]))
 
 static void test_drdc_pose_grid_and_true_errors(void)
 {
-  drdc_quat_t q = { 1073741824, 0, 0, 0 };
-  drdc_quat_t big = { INT32_MAX, 0, 0, INT32_MAX };
-  drdc_quat_t out = { 77, 77, 77, 77 };
+  drdc_quat_t q = {1073741824, 0, 0, 0};
+  drdc_quat_t big = {INT32_MAX, 0, 0, INT32_MAX};
+  drdc_quat_t out = {77, 77, 77, 77};
 
   /* drdc_pose_grid_from_true and drdc_pose_true_from_grid */
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_grid_from_true(NULL, 0, &out));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_grid_from_true(&q, 0, NULL));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_true_from_grid(NULL, 0, &out));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_true_from_grid(&q, 0, NULL));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
-                        drdc_pose_grid_from_true(&q, (180 * NAS_DEG) + 1,
-                                                 &out));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
-                        drdc_pose_true_from_grid(&q, (-180 * NAS_DEG) - 1,
-                                                 &out));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_RANGE, drdc_pose_grid_from_true(&q, (180 * NAS_DEG) + 1, &out));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_RANGE, drdc_pose_true_from_grid(&q, (-180 * NAS_DEG) - 1, &out));
   /* a non-unit quaternion of parts near 2 turned by 90 degrees */
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
                         drdc_pose_grid_from_true(&big, 90 * NAS_DEG, &out));
@@ -47,7 +45,7 @@ static void test_drdc_pose_grid_and_true_errors(void)
 
 static void test_drdc_pose_wutm_from_w_errors(void)
 {
-  drdc_WPose_t w = { 0, 0, 0, { INT32_MAX, 0, 0, INT32_MAX } };
+  drdc_WPose_t w = {0, 0, 0, {INT32_MAX, 0, 0, INT32_MAX}};
   drdc_WUTMPose_t u;
 
   u.height = SENTINEL64;
@@ -83,22 +81,22 @@ static void test_drdc_pose_wutm_from_w_unchanged_on_error(void)
     int32_t zone;
     drdc_status_t st;
   } rows[] = {
-    /* UTM zone 2, 45 N: convergence about -2.1 degrees */
-    { 45 * NAS_DEG, -170 * NAS_DEG, 2, DRDC_E_OVERFLOW },
-    /* UPS north, 85 N 45 E: convergence 45 degrees */
-    { 85 * NAS_DEG, 45 * NAS_DEG, DRDC_GEO_ZONE_STANDARD, DRDC_E_OVERFLOW },
-    /* UPS south, 85 S 100 W */
-    { -85 * NAS_DEG, -100 * NAS_DEG, DRDC_GEO_ZONE_UPS, DRDC_E_OVERFLOW },
-    /* zone 31 forced 88 degrees east of its meridian: out of its range */
-    { 10 * NAS_DEG, 91 * NAS_DEG, 31, DRDC_E_RANGE },
-    /* UPS forced at 10 N: out of the UPS range */
-    { 10 * NAS_DEG, 0, DRDC_GEO_ZONE_UPS, DRDC_E_RANGE },
+      /* UTM zone 2, 45 N: convergence about -2.1 degrees */
+      {45 * NAS_DEG, -170 * NAS_DEG, 2, DRDC_E_OVERFLOW},
+      /* UPS north, 85 N 45 E: convergence 45 degrees */
+      {85 * NAS_DEG, 45 * NAS_DEG, DRDC_GEO_ZONE_STANDARD, DRDC_E_OVERFLOW},
+      /* UPS south, 85 S 100 W */
+      {-85 * NAS_DEG, -100 * NAS_DEG, DRDC_GEO_ZONE_UPS, DRDC_E_OVERFLOW},
+      /* zone 31 forced 88 degrees east of its meridian: out of its range */
+      {10 * NAS_DEG, 91 * NAS_DEG, 31, DRDC_E_RANGE},
+      /* UPS forced at 10 N: out of the UPS range */
+      {10 * NAS_DEG, 0, DRDC_GEO_ZONE_UPS, DRDC_E_RANGE},
   };
   size_t i;
 
   for (i = 0; i < (sizeof rows / sizeof rows[0]); i++) {
-    drdc_WPose_t w = { rows[i].lon, rows[i].lat, M(12),
-                       { INT32_MAX, 0, 0, INT32_MIN } };
+    drdc_WPose_t w = {
+        rows[i].lon, rows[i].lat, M(12), {INT32_MAX, 0, 0, INT32_MIN}};
     drdc_WUTMPose_t out;
     drdc_WUTMPose_t before;
     drdc_geo_utm_t pos;
@@ -127,8 +125,8 @@ static void test_drdc_pose_wutm_from_w_unchanged_on_error(void)
 
 static void test_drdc_pose_w_from_wutm_errors(void)
 {
-  drdc_WUTMPose_t u = { { 31, true, M(500000), M(0) }, 0,
-                        { INT32_MAX, 0, 0, INT32_MIN } };
+  drdc_WUTMPose_t u = {
+      {31, true, M(500000), M(0)}, 0, {INT32_MAX, 0, 0, INT32_MIN}};
   drdc_WPose_t w;
 
   w.height = SENTINEL64;
@@ -152,8 +150,8 @@ static void test_drdc_pose_w_from_wutm_errors(void)
 
 static void test_drdc_pose_w_from_l_errors(void)
 {
-  drdc_WPose_t ref = { 0, 0, 0, { 1073741824, 0, 0, 0 } };
-  drdc_lPose_t l = { { 0, 0, 0 }, { 1073741824, 0, 0, 0 } };
+  drdc_WPose_t ref = {0, 0, 0, {1073741824, 0, 0, 0}};
+  drdc_lPose_t l = {{0, 0, 0}, {1073741824, 0, 0, 0}};
   drdc_WPose_t out;
 
   out.height = SENTINEL64;
@@ -161,16 +159,15 @@ static void test_drdc_pose_w_from_l_errors(void)
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_w_from_l(&ref, 0, NULL, &out));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_w_from_l(&ref, 0, &l, NULL));
   ref.latitude = (90 * NAS_DEG) + 1;
-  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE,
-                        drdc_pose_w_from_l(&ref, 0, &l, &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE, drdc_pose_w_from_l(&ref, 0, &l, &out));
   ref.latitude = 0;
   ref.longitude = 540 * NAS_DEG;
   TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE,
                         drdc_pose_w_from_l(&ref, 0, &l, &out));
   ref.longitude = 0;
-  TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT,
-                        drdc_pose_w_from_l(&ref, DRDC_GEO_HEIGHT_MAX + 1, &l,
-                                           &out));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_HEIGHT,
+      drdc_pose_w_from_l(&ref, DRDC_GEO_HEIGHT_MAX + 1, &l, &out));
   ref.q.s = 0;
   TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN, drdc_pose_w_from_l(&ref, 0, &l, &out));
   /* (30, 30, 30) km turned 45 degrees to the right: 42 km north */
@@ -179,15 +176,14 @@ static void test_drdc_pose_w_from_l_errors(void)
   l.p.x = M(30000);
   l.p.y = M(30000);
   l.p.z = M(30000);
-  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
-                        drdc_pose_w_from_l(&ref, 0, &l, &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_pose_w_from_l(&ref, 0, &l, &out));
   TEST_ASSERT_EQUAL_INT64(SENTINEL64, out.height);
 }
 
 static void test_drdc_pose_l_from_w_errors(void)
 {
-  drdc_WPose_t ref = { 0, 0, 0, { 1073741824, 0, 0, 0 } };
-  drdc_WPose_t w = { 0, 0, 0, { 1073741824, 0, 0, 0 } };
+  drdc_WPose_t ref = {0, 0, 0, {1073741824, 0, 0, 0}};
+  drdc_WPose_t w = {0, 0, 0, {1073741824, 0, 0, 0}};
   drdc_lPose_t out;
 
   out.p.x = 77;
@@ -195,8 +191,7 @@ static void test_drdc_pose_l_from_w_errors(void)
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_l_from_w(&ref, 0, NULL, &out));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_l_from_w(&ref, 0, &w, NULL));
   w.latitude = (-90 * NAS_DEG) - 1;
-  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE,
-                        drdc_pose_l_from_w(&ref, 0, &w, &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE, drdc_pose_l_from_w(&ref, 0, &w, &out));
   w.latitude = 0;
   w.longitude = -540 * NAS_DEG - 1;
   TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE,
@@ -209,26 +204,23 @@ static void test_drdc_pose_l_from_w_errors(void)
   TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN, drdc_pose_l_from_w(&ref, 0, &w, &out));
   ref.q.s = 1073741824;
   w.height = M(40000);
-  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
-                        drdc_pose_l_from_w(&ref, 0, &w, &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_pose_l_from_w(&ref, 0, &w, &out));
   TEST_ASSERT_EQUAL_INT32(77, out.p.x);
 }
 
 static void test_drdc_pose_weutm_from_we_errors(void)
 {
-  drdc_WePose_t w = { 0, 0, 0, { 0u, 0u, 0u } };
+  drdc_WePose_t w = {0, 0, 0, {0u, 0u, 0u}};
   drdc_WeUTMPose_t u;
 
   u.height = SENTINEL64;
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_weutm_from_we(NULL, -1, &u));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_weutm_from_we(&w, -1, NULL));
   w.latitude = (90 * NAS_DEG) + 1;
-  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE,
-                        drdc_pose_weutm_from_we(&w, -1, &u));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE, drdc_pose_weutm_from_we(&w, -1, &u));
   w.latitude = 0;
   w.longitude = 540 * NAS_DEG;
-  TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE,
-                        drdc_pose_weutm_from_we(&w, -1, &u));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE, drdc_pose_weutm_from_we(&w, -1, &u));
   w.longitude = 0;
   TEST_ASSERT_EQUAL_INT(DRDC_E_ZONE, drdc_pose_weutm_from_we(&w, 61, &u));
   TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_pose_weutm_from_we(&w, 28, &u));
@@ -237,8 +229,7 @@ static void test_drdc_pose_weutm_from_we_errors(void)
 
 static void test_drdc_pose_we_from_weutm_errors(void)
 {
-  drdc_WeUTMPose_t u = { { 31, true, M(500000), M(0) }, 0,
-                         { 0u, 0u, 0u } };
+  drdc_WeUTMPose_t u = {{31, true, M(500000), M(0)}, 0, {0u, 0u, 0u}};
   drdc_WePose_t w;
 
   /* the position and the convergence (parked in the height) are written
@@ -269,8 +260,8 @@ static void test_drdc_pose_we_from_weutm_errors(void)
  * GeoConvert -c gives gamma 0.70714304552 degree; the yaw turns by it. */
 static void test_we_round_trip_turns_the_yaw(void)
 {
-  drdc_WePose_t w = { 4 * NAS_DEG, 45 * NAS_DEG, M(10),
-                      { 536870912u, 12345u, 4000000000u } };
+  drdc_WePose_t w = {
+      4 * NAS_DEG, 45 * NAS_DEG, M(10), {536870912u, 12345u, 4000000000u}};
   drdc_WeUTMPose_t u;
   drdc_WePose_t back;
   drdc_nas_t gamma = 0;
@@ -279,9 +270,8 @@ static void test_we_round_trip_turns_the_yaw(void)
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_to_utm(w.latitude, w.longitude,
                                                  DRDC_GEO_ZONE_STANDARD, &g,
                                                  &gamma, NULL));
-  TEST_ASSERT_EQUAL_INT(DRDC_OK,
-                        drdc_pose_weutm_from_we(&w, DRDC_GEO_ZONE_STANDARD,
-                                                &u));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_OK, drdc_pose_weutm_from_we(&w, DRDC_GEO_ZONE_STANDARD, &u));
   TEST_ASSERT_EQUAL_UINT32(w.e.yaw - drdc_pose_bam_from_convergence(gamma),
                            u.e.yaw);
   TEST_ASSERT_EQUAL_UINT32(12345u, u.e.pitch);
@@ -296,13 +286,13 @@ static void test_we_round_trip_turns_the_yaw(void)
 }
 
 /* geo_pose.h bounds, the maxima measured on vectors_pose.h */
-#define MGRS_Q_TOL 2     /* LSB of Q1.30 per quaternion part */
-#define MGRS_YAW_TOL 1   /* binary-angle LSB */
-#define CENTRE_TOL 1     /* nas: drdc_geo_from_utm()'s bound */
-#define LE_NAS_TOL 2000  /* nas of arc: 62 um */
-#define LE_H_TOL 2       /* LSB of Q47.16 */
-#define LE_ANG_TOL 8     /* binary-angle LSB */
-#define LE_P_TOL 4       /* LSB of Q15.16 */
+#define MGRS_Q_TOL   2    /* LSB of Q1.30 per quaternion part */
+#define MGRS_YAW_TOL 1    /* binary-angle LSB */
+#define CENTRE_TOL   1    /* nas: drdc_geo_from_utm()'s bound */
+#define LE_NAS_TOL   2000 /* nas of arc: 62 um */
+#define LE_H_TOL     2    /* LSB of Q47.16 */
+#define LE_ANG_TOL   8    /* binary-angle LSB */
+#define LE_P_TOL     4    /* LSB of Q15.16 */
 
 static int64_t dist64(int64_t a, int64_t b)
 {
@@ -343,15 +333,14 @@ static void test_wmgrs_against_geoconvert(void)
 
   for (i = 0; i < COUNT(pose_mgrs_vectors); i++) {
     const struct pose_mgrs_vector *v = &pose_mgrs_vectors[i];
-    drdc_WPose_t w = { v->lon, v->lat, M(7),
-                       { v->q[0], v->q[1], v->q[2], v->q[3] } };
-    drdc_WePose_t we = { v->lon, v->lat, M(7), { v->yaw, 11u, 22u } };
+    drdc_WPose_t w = {
+        v->lon, v->lat, M(7), {v->q[0], v->q[1], v->q[2], v->q[3]}};
+    drdc_WePose_t we = {v->lon, v->lat, M(7), {v->yaw, 11u, 22u}};
     drdc_WMGRSPose_t m;
     drdc_WeMGRSPose_t me;
 
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_wmgrs_from_w(&w, v->prec, &m));
-    TEST_ASSERT_EQUAL_INT(DRDC_OK,
-                          drdc_pose_wemgrs_from_we(&we, v->prec, &me));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_wemgrs_from_we(&we, v->prec, &me));
     TEST_ASSERT_EQUAL_STRING(m.mgrs, me.mgrs);
     /* every precision to 1 um: the digits truncate the coordinates
      * before their rounding to Q47.16 */
@@ -359,10 +348,10 @@ static void test_wmgrs_against_geoconvert(void)
     w_pos += (v->prec > 8) ? 1 : 0;
     TEST_ASSERT_EQUAL_INT64(M(7), m.height);
     TEST_ASSERT_EQUAL_INT64(M(7), me.height);
-    w_q = (quat_dist(&m.q, v->q_grid) > w_q) ? quat_dist(&m.q, v->q_grid)
-                                               : w_q;
+    w_q = (quat_dist(&m.q, v->q_grid) > w_q) ? quat_dist(&m.q, v->q_grid) : w_q;
     w_yaw = (bam_dist(me.e.yaw, v->yaw_grid) > w_yaw)
-              ? bam_dist(me.e.yaw, v->yaw_grid) : w_yaw;
+                ? bam_dist(me.e.yaw, v->yaw_grid)
+                : w_yaw;
     TEST_ASSERT_EQUAL_UINT32(11u, me.e.pitch);
     TEST_ASSERT_EQUAL_UINT32(22u, me.e.roll);
   }
@@ -402,17 +391,19 @@ static void test_w_from_wmgrs_against_geoconvert(void)
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_w_from_wmgrs(&m, &w));
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_we_from_wemgrs(&me, &we));
     w_pos = (dist64(w.latitude, v->centre_lat) > w_pos)
-              ? dist64(w.latitude, v->centre_lat) : w_pos;
+                ? dist64(w.latitude, v->centre_lat)
+                : w_pos;
     w_pos = (dist64(w.longitude, v->centre_lon) > w_pos)
-              ? dist64(w.longitude, v->centre_lon) : w_pos;
+                ? dist64(w.longitude, v->centre_lon)
+                : w_pos;
     TEST_ASSERT_EQUAL_INT64(w.latitude, we.latitude);
     TEST_ASSERT_EQUAL_INT64(w.longitude, we.longitude);
     TEST_ASSERT_EQUAL_INT64(M(-3), w.height);
     TEST_ASSERT_EQUAL_INT64(M(-3), we.height);
-    w_q = (quat_dist(&w.q, v->q_true) > w_q) ? quat_dist(&w.q, v->q_true)
-                                               : w_q;
+    w_q = (quat_dist(&w.q, v->q_true) > w_q) ? quat_dist(&w.q, v->q_true) : w_q;
     w_yaw = (bam_dist(we.e.yaw, v->yaw_true) > w_yaw)
-              ? bam_dist(we.e.yaw, v->yaw_true) : w_yaw;
+                ? bam_dist(we.e.yaw, v->yaw_true)
+                : w_yaw;
     TEST_ASSERT_EQUAL_UINT32(33u, we.e.pitch);
     TEST_ASSERT_EQUAL_UINT32(44u, we.e.roll);
   }
@@ -434,12 +425,14 @@ static void test_le_and_we_against_cartconvert(void)
 
   for (i = 0; i < COUNT(pose_local_vectors); i++) {
     const struct pose_local_vector *v = &pose_local_vectors[i];
-    drdc_WePose_t ref = { v->ref[1], v->ref[0], v->ref[2],
-                          { v->ref_e[0], v->ref_e[1], v->ref_e[2] } };
-    drdc_lePose_t le = { { v->p[0], v->p[1], v->p[2] },
-                         { v->e[0], v->e[1], v->e[2] } };
-    drdc_WePose_t w = { v->lon, v->lat, v->height,
-                        { v->out_e[0], v->out_e[1], v->out_e[2] } };
+    drdc_WePose_t ref = {v->ref[1],
+                         v->ref[0],
+                         v->ref[2],
+                         {v->ref_e[0], v->ref_e[1], v->ref_e[2]}};
+    drdc_lePose_t le = {{v->p[0], v->p[1], v->p[2]},
+                        {v->e[0], v->e[1], v->e[2]}};
+    drdc_WePose_t w = {
+        v->lon, v->lat, v->height, {v->out_e[0], v->out_e[1], v->out_e[2]}};
     drdc_WePose_t out;
     drdc_lePose_t back;
     int64_t d;
@@ -447,22 +440,24 @@ static void test_le_and_we_against_cartconvert(void)
     TEST_ASSERT_EQUAL_INT(DRDC_OK,
                           drdc_pose_we_from_le(&ref, v->sep, &le, &out));
     w_lat = (dist64(out.latitude, v->lat) > w_lat)
-              ? dist64(out.latitude, v->lat) : w_lat;
+                ? dist64(out.latitude, v->lat)
+                : w_lat;
     /* longitude error as arc length: times cos(latitude) */
     d = (dist64(out.longitude, v->lon) * v->cos_lat) >> 30;
     w_lon = (d > w_lon) ? d : w_lon;
-    w_h = (dist64(out.height, v->height) > w_h)
-            ? dist64(out.height, v->height) : w_h;
+    w_h = (dist64(out.height, v->height) > w_h) ? dist64(out.height, v->height)
+                                                : w_h;
     w_ang = (euler_dist(&out.e, v->out_e) > w_ang)
-              ? euler_dist(&out.e, v->out_e) : w_ang;
+                ? euler_dist(&out.e, v->out_e)
+                : w_ang;
     TEST_ASSERT_EQUAL_INT(DRDC_OK,
                           drdc_pose_le_from_we(&ref, v->sep, &w, &back));
     d = dist64(back.p.x, v->p[0]);
     d = (dist64(back.p.y, v->p[1]) > d) ? dist64(back.p.y, v->p[1]) : d;
     d = (dist64(back.p.z, v->p[2]) > d) ? dist64(back.p.z, v->p[2]) : d;
     w_p = (d > w_p) ? d : w_p;
-    w_back = (euler_dist(&back.e, v->e) > w_back)
-               ? euler_dist(&back.e, v->e) : w_back;
+    w_back = (euler_dist(&back.e, v->e) > w_back) ? euler_dist(&back.e, v->e)
+                                                  : w_back;
   }
   TEST_ASSERT_LESS_OR_EQUAL_INT64(LE_NAS_TOL, w_lat);
   TEST_ASSERT_LESS_OR_EQUAL_INT64(LE_NAS_TOL, w_lon);
@@ -476,7 +471,7 @@ static void test_le_and_we_against_cartconvert(void)
  * (yaw 90 degrees is SciPy's { cos 45, 0, 0, sin 45 }, 759250125) */
 static void test_le_and_l(void)
 {
-  drdc_lePose_t le = { { 1, -2, 3 }, { 1u << 30, 0u, 0u } };
+  drdc_lePose_t le = {{1, -2, 3}, {1u << 30, 0u, 0u}};
   drdc_lPose_t l;
   drdc_lePose_t back;
 
@@ -498,8 +493,10 @@ static void test_le_and_l(void)
  * 38SMB4414084706 */
 static void test_wmgrs_header_example(void)
 {
-  drdc_WPose_t w = { INT64_C(159840000000000), INT64_C(119880000000000), 0,
-                     { 1073741824, 0, 0, 0 } };
+  drdc_WPose_t w = {INT64_C(159840000000000),
+                    INT64_C(119880000000000),
+                    0,
+                    {1073741824, 0, 0, 0}};
   drdc_WMGRSPose_t m;
 
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_wmgrs_from_w(&w, 5, &m));
@@ -508,7 +505,7 @@ static void test_wmgrs_header_example(void)
 
 static void test_drdc_pose_wmgrs_from_w_errors(void)
 {
-  drdc_WPose_t w = { 0, 0, 0, { INT32_MAX, 0, 0, INT32_MAX } };
+  drdc_WPose_t w = {0, 0, 0, {INT32_MAX, 0, 0, INT32_MAX}};
   drdc_WMGRSPose_t m;
 
   m.height = SENTINEL64;
@@ -519,8 +516,7 @@ static void test_drdc_pose_wmgrs_from_w_errors(void)
   TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE, drdc_pose_wmgrs_from_w(&w, 5, &m));
   w.latitude = 0;
   w.longitude = 540 * NAS_DEG;
-  TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE,
-                        drdc_pose_wmgrs_from_w(&w, 5, &m));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE, drdc_pose_wmgrs_from_w(&w, 5, &m));
   w.longitude = 0;
   TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_pose_wmgrs_from_w(&w, 12, &m));
   TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_pose_wmgrs_from_w(&w, -2, &m));
@@ -536,8 +532,7 @@ static void test_drdc_pose_wmgrs_from_w_errors(void)
 
 static void test_drdc_pose_w_from_wmgrs_errors(void)
 {
-  drdc_WMGRSPose_t m = { "38SMB4414084706", 0,
-                         { INT32_MAX, 0, 0, INT32_MIN } };
+  drdc_WMGRSPose_t m = {"38SMB4414084706", 0, {INT32_MAX, 0, 0, INT32_MIN}};
   drdc_WPose_t w;
   size_t i;
 
@@ -564,19 +559,17 @@ static void test_drdc_pose_w_from_wmgrs_errors(void)
 
 static void test_drdc_pose_wemgrs_from_we_errors(void)
 {
-  drdc_WePose_t w = { 0, 0, 0, { 0u, 0u, 0u } };
+  drdc_WePose_t w = {0, 0, 0, {0u, 0u, 0u}};
   drdc_WeMGRSPose_t m;
 
   m.height = SENTINEL64;
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_wemgrs_from_we(NULL, 5, &m));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_wemgrs_from_we(&w, 5, NULL));
   w.latitude = (-90 * NAS_DEG) - 1;
-  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE,
-                        drdc_pose_wemgrs_from_we(&w, 5, &m));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE, drdc_pose_wemgrs_from_we(&w, 5, &m));
   w.latitude = 0;
   w.longitude = (-540 * NAS_DEG) - 1;
-  TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE,
-                        drdc_pose_wemgrs_from_we(&w, 5, &m));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE, drdc_pose_wemgrs_from_we(&w, 5, &m));
   w.longitude = 0;
   TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_pose_wemgrs_from_we(&w, 12, &m));
   TEST_ASSERT_EQUAL_INT64(SENTINEL64, m.height);
@@ -584,7 +577,7 @@ static void test_drdc_pose_wemgrs_from_we_errors(void)
 
 static void test_drdc_pose_we_from_wemgrs_errors(void)
 {
-  drdc_WeMGRSPose_t m = { "0SMB4414084706", 0, { 0u, 0u, 0u } };
+  drdc_WeMGRSPose_t m = {"0SMB4414084706", 0, {0u, 0u, 0u}};
   drdc_WePose_t w;
   size_t i;
 
@@ -605,8 +598,8 @@ static void test_drdc_pose_we_from_wemgrs_errors(void)
 
 static void test_drdc_pose_l_from_le_and_le_from_l_errors(void)
 {
-  drdc_lePose_t le = { { 0, 0, 0 }, { 0u, 0u, 0u } };
-  drdc_lPose_t l = { { 5, 0, 0 }, { 0, 0, 0, 0 } };
+  drdc_lePose_t le = {{0, 0, 0}, {0u, 0u, 0u}};
+  drdc_lPose_t l = {{5, 0, 0}, {0, 0, 0, 0}};
   drdc_lePose_t out;
 
   out.p.x = 77;
@@ -620,14 +613,13 @@ static void test_drdc_pose_l_from_le_and_le_from_l_errors(void)
 
 static void test_drdc_pose_we_from_le_errors(void)
 {
-  drdc_WePose_t ref = { 0, 0, 0, { 0u, 0u, 0u } };
-  drdc_lePose_t le = { { 0, 0, 0 }, { 0u, 0u, 0u } };
+  drdc_WePose_t ref = {0, 0, 0, {0u, 0u, 0u}};
+  drdc_lePose_t le = {{0, 0, 0}, {0u, 0u, 0u}};
   drdc_WePose_t out;
 
   out.height = SENTINEL64;
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_we_from_le(NULL, 0, &le, &out));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
-                        drdc_pose_we_from_le(&ref, 0, NULL, &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_we_from_le(&ref, 0, NULL, &out));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_we_from_le(&ref, 0, &le, NULL));
   ref.latitude = (90 * NAS_DEG) + 1;
   TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE,
@@ -637,9 +629,9 @@ static void test_drdc_pose_we_from_le_errors(void)
   TEST_ASSERT_EQUAL_INT(DRDC_E_LONGITUDE,
                         drdc_pose_we_from_le(&ref, 0, &le, &out));
   ref.longitude = 0;
-  TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT,
-                        drdc_pose_we_from_le(&ref, DRDC_GEO_HEIGHT_MAX + 1,
-                                             &le, &out));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_HEIGHT,
+      drdc_pose_we_from_le(&ref, DRDC_GEO_HEIGHT_MAX + 1, &le, &out));
   /* (30, 30, 30) km turned 45 degrees to the right: 42 km north */
   ref.e.yaw = 1u << 29;
   le.p.x = M(30000);
@@ -657,16 +649,15 @@ static void test_drdc_pose_we_from_le_errors(void)
  * separation, and leaves out unchanged. */
 static void test_local_poses_far_heights_do_not_overflow(void)
 {
-  static const int64_t heights[] = { INT64_MAX, INT64_MIN,
-                                     INT64_MAX - M(1), INT64_MIN + M(1) };
-  static const int64_t separations[] = { DRDC_GEO_HEIGHT_MAX,
-                                         -DRDC_GEO_HEIGHT_MAX };
-  const drdc_WPose_t w0 = { 45 * NAS_DEG, 10 * NAS_DEG, 0,
-                            { 1073741824, 0, 0, 0 } };
-  const drdc_WePose_t we0 = { 45 * NAS_DEG, 10 * NAS_DEG, 0,
-                              { 0u, 0u, 0u } };
-  const drdc_lPose_t l = { { M(10), M(20), M(-3) }, { 1073741824, 0, 0, 0 } };
-  const drdc_lePose_t le = { { M(10), M(20), M(-3) }, { 0u, 0u, 0u } };
+  static const int64_t heights[] = {INT64_MAX, INT64_MIN, INT64_MAX - M(1),
+                                    INT64_MIN + M(1)};
+  static const int64_t separations[] = {DRDC_GEO_HEIGHT_MAX,
+                                        -DRDC_GEO_HEIGHT_MAX};
+  const drdc_WPose_t w0 = {
+      45 * NAS_DEG, 10 * NAS_DEG, 0, {1073741824, 0, 0, 0}};
+  const drdc_WePose_t we0 = {45 * NAS_DEG, 10 * NAS_DEG, 0, {0u, 0u, 0u}};
+  const drdc_lPose_t l = {{M(10), M(20), M(-3)}, {1073741824, 0, 0, 0}};
+  const drdc_lePose_t le = {{M(10), M(20), M(-3)}, {0u, 0u, 0u}};
   size_t i;
   size_t j;
 
@@ -712,14 +703,13 @@ static void test_local_poses_far_heights_do_not_overflow(void)
 
 static void test_drdc_pose_le_from_we_errors(void)
 {
-  drdc_WePose_t ref = { 0, 0, 0, { 0u, 0u, 0u } };
-  drdc_WePose_t w = { 0, 0, 0, { 0u, 0u, 0u } };
+  drdc_WePose_t ref = {0, 0, 0, {0u, 0u, 0u}};
+  drdc_WePose_t w = {0, 0, 0, {0u, 0u, 0u}};
   drdc_lePose_t out;
 
   out.p.x = 77;
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_le_from_we(NULL, 0, &w, &out));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
-                        drdc_pose_le_from_we(&ref, 0, NULL, &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_le_from_we(&ref, 0, NULL, &out));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_pose_le_from_we(&ref, 0, &w, NULL));
   w.latitude = (-90 * NAS_DEG) - 1;
   TEST_ASSERT_EQUAL_INT(DRDC_E_LATITUDE,
@@ -730,8 +720,7 @@ static void test_drdc_pose_le_from_we_errors(void)
                         drdc_pose_le_from_we(&ref, 0, &w, &out));
   w.longitude = 0;
   w.height = DRDC_GEO_HEIGHT_MAX + 1;
-  TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT,
-                        drdc_pose_le_from_we(&ref, 0, &w, &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_HEIGHT, drdc_pose_le_from_we(&ref, 0, &w, &out));
   w.height = M(40000);
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
                         drdc_pose_le_from_we(&ref, 0, &w, &out));
@@ -745,21 +734,21 @@ static const struct {
   drdc_nas_t lat;
   drdc_nas_t lon;
 } grid_points[] = {
-  { 45 * NAS_DEG, -170 * NAS_DEG },
-  { INT64_C(-119880000000000), INT64_C(544320000000000) },
-  { 85 * NAS_DEG, 45 * NAS_DEG },
-  { -85 * NAS_DEG, -100 * NAS_DEG },
-  { 10 * NAS_DEG, 3 * NAS_DEG },
+    {45 * NAS_DEG, -170 * NAS_DEG},
+    {INT64_C(-119880000000000), INT64_C(544320000000000)},
+    {85 * NAS_DEG, 45 * NAS_DEG},
+    {-85 * NAS_DEG, -100 * NAS_DEG},
+    {10 * NAS_DEG, 3 * NAS_DEG},
 };
 
 /* Attitudes: inside [-1, 1] (one pass), beyond it with a turn that fits
  * Q1.30, and beyond it with one that overflows wherever the convergence
  * is not 0. */
 static const drdc_quat_t grid_attitudes[] = {
-  { 1073741824, 0, 0, 0 },
-  { -601295421, 536870912, -644245094, 268435456 },
-  { 1610612736, -107374182, 214748364, 268435456 },
-  { INT32_MAX, 0, 0, INT32_MIN },
+    {1073741824, 0, 0, 0},
+    {-601295421, 536870912, -644245094, 268435456},
+    {1610612736, -107374182, 214748364, 268435456},
+    {INT32_MAX, 0, 0, INT32_MIN},
 };
 
 /* {W-UTM} and {W-MGRS} -> {W} against the public building blocks step by
@@ -784,18 +773,16 @@ static void test_w_from_grid_step_by_step(void)
       drdc_nas_t lat = 0;
       drdc_nas_t lon = 0;
       drdc_nas_t gamma = 0;
-      drdc_quat_t q = { 0, 0, 0, 0 };
+      drdc_quat_t q = {0, 0, 0, 0};
       drdc_status_t st;
 
       u.height = M(123);
       u.q = grid_attitudes[j];
-      TEST_ASSERT_EQUAL_INT(DRDC_OK,
-                            drdc_geo_to_utm(grid_points[i].lat,
-                                            grid_points[i].lon,
-                                            DRDC_GEO_ZONE_STANDARD, &u.utm,
-                                            NULL, NULL));
-      TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_from_utm(&u.utm, &lat, &lon,
-                                                       &gamma, NULL));
+      TEST_ASSERT_EQUAL_INT(
+          DRDC_OK, drdc_geo_to_utm(grid_points[i].lat, grid_points[i].lon,
+                                   DRDC_GEO_ZONE_STANDARD, &u.utm, NULL, NULL));
+      TEST_ASSERT_EQUAL_INT(
+          DRDC_OK, drdc_geo_from_utm(&u.utm, &lat, &lon, &gamma, NULL));
       st = drdc_pose_true_from_grid(&u.q, gamma, &q);
       memset(&out, 0x5A, sizeof out);
       memcpy(&before, &out, sizeof out);
@@ -815,14 +802,13 @@ static void test_w_from_grid_step_by_step(void)
       memset(&m, 0, sizeof m);
       m.height = M(-45);
       m.q = grid_attitudes[j];
-      TEST_ASSERT_EQUAL_INT(DRDC_OK,
-                            drdc_geo_mgrs_encode(grid_points[i].lat,
-                                                 grid_points[i].lon, 5,
-                                                 m.mgrs, sizeof m.mgrs));
-      TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_mgrs_decode(m.mgrs, &corner,
-                                                          &centre, NULL));
-      TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_from_utm(&centre, &lat, &lon,
-                                                       &gamma, NULL));
+      TEST_ASSERT_EQUAL_INT(
+          DRDC_OK, drdc_geo_mgrs_encode(grid_points[i].lat, grid_points[i].lon,
+                                        5, m.mgrs, sizeof m.mgrs));
+      TEST_ASSERT_EQUAL_INT(
+          DRDC_OK, drdc_geo_mgrs_decode(m.mgrs, &corner, &centre, NULL));
+      TEST_ASSERT_EQUAL_INT(
+          DRDC_OK, drdc_geo_from_utm(&centre, &lat, &lon, &gamma, NULL));
       st = drdc_pose_true_from_grid(&m.q, gamma, &q);
       memset(&out, 0xA5, sizeof out);
       memcpy(&before, &out, sizeof out);
@@ -854,25 +840,24 @@ static void test_mgrs_from_w_step_by_step(void)
     drdc_geo_utm_t g;
     drdc_nas_t gamma = 0;
     char text[DRDC_GEO_MGRS_SIZE];
-    drdc_WePose_t we = { grid_points[i].lon, grid_points[i].lat, M(7),
-                         { 4000000000u, 12345u, 99u } };
+    drdc_WePose_t we = {grid_points[i].lon,
+                        grid_points[i].lat,
+                        M(7),
+                        {4000000000u, 12345u, 99u}};
     drdc_WeMGRSPose_t me;
 
-    TEST_ASSERT_EQUAL_INT(DRDC_OK,
-                          drdc_geo_to_utm(grid_points[i].lat,
-                                          grid_points[i].lon,
-                                          DRDC_GEO_ZONE_STANDARD, &g, &gamma,
-                                          NULL));
-    TEST_ASSERT_EQUAL_INT(DRDC_OK,
-                          drdc_geo_mgrs_encode(grid_points[i].lat,
-                                               grid_points[i].lon, 11, text,
-                                               sizeof text));
+    TEST_ASSERT_EQUAL_INT(
+        DRDC_OK, drdc_geo_to_utm(grid_points[i].lat, grid_points[i].lon,
+                                 DRDC_GEO_ZONE_STANDARD, &g, &gamma, NULL));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_mgrs_encode(grid_points[i].lat,
+                                                        grid_points[i].lon, 11,
+                                                        text, sizeof text));
     for (j = 0; j < COUNT(grid_attitudes); j++) {
-      drdc_WPose_t w = { grid_points[i].lon, grid_points[i].lat, M(7),
-                         grid_attitudes[j] };
+      drdc_WPose_t w = {grid_points[i].lon, grid_points[i].lat, M(7),
+                        grid_attitudes[j]};
       drdc_WMGRSPose_t out;
       drdc_WMGRSPose_t before;
-      drdc_quat_t q = { 0, 0, 0, 0 };
+      drdc_quat_t q = {0, 0, 0, 0};
       drdc_status_t st = drdc_pose_grid_from_true(&w.q, gamma, &q);
 
       memset(&out, 0x5A, sizeof out);
@@ -889,9 +874,8 @@ static void test_mgrs_from_w_step_by_step(void)
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_wemgrs_from_we(&we, 11, &me));
     TEST_ASSERT_EQUAL_STRING(text, me.mgrs);
     TEST_ASSERT_EQUAL_INT64(M(7), me.height);
-    TEST_ASSERT_EQUAL_UINT32(4000000000u
-                               - drdc_pose_bam_from_convergence(gamma),
-                             me.e.yaw);
+    TEST_ASSERT_EQUAL_UINT32(
+        4000000000u - drdc_pose_bam_from_convergence(gamma), me.e.yaw);
     TEST_ASSERT_EQUAL_UINT32(12345u, me.e.pitch);
     TEST_ASSERT_EQUAL_UINT32(99u, me.e.roll);
   }
@@ -906,16 +890,20 @@ static void test_mgrs_from_w_step_by_step(void)
 static void test_mgrs_text_of_a_pose_cannot_fail(void)
 {
   static const drdc_nas_t lats[] = {
-    -90 * NAS_DEG, (-80 * NAS_DEG) - 1, -80 * NAS_DEG, 0,
-    56 * NAS_DEG, (64 * NAS_DEG) - 1, 72 * NAS_DEG, (84 * NAS_DEG) - 1,
-    84 * NAS_DEG, 90 * NAS_DEG,
+      -90 * NAS_DEG, (-80 * NAS_DEG) - 1, -80 * NAS_DEG, 0,
+      56 * NAS_DEG,  (64 * NAS_DEG) - 1,  72 * NAS_DEG,  (84 * NAS_DEG) - 1,
+      84 * NAS_DEG,  90 * NAS_DEG,
   };
   static const drdc_nas_t lons[] = {
-    -180 * NAS_DEG, (-177 * NAS_DEG) - 1, -177 * NAS_DEG, 0,
-    (3 * NAS_DEG) - 1, 3 * NAS_DEG, (9 * NAS_DEG) - 1, 9 * NAS_DEG,
-    (12 * NAS_DEG) - 1, 12 * NAS_DEG, (21 * NAS_DEG) - 1, 21 * NAS_DEG,
-    (33 * NAS_DEG) - 1, 33 * NAS_DEG, (42 * NAS_DEG) - 1, 42 * NAS_DEG,
-    (180 * NAS_DEG) - 1,
+      -180 * NAS_DEG,      (-177 * NAS_DEG) - 1,
+      -177 * NAS_DEG,      0,
+      (3 * NAS_DEG) - 1,   3 * NAS_DEG,
+      (9 * NAS_DEG) - 1,   9 * NAS_DEG,
+      (12 * NAS_DEG) - 1,  12 * NAS_DEG,
+      (21 * NAS_DEG) - 1,  21 * NAS_DEG,
+      (33 * NAS_DEG) - 1,  33 * NAS_DEG,
+      (42 * NAS_DEG) - 1,  42 * NAS_DEG,
+      (180 * NAS_DEG) - 1,
   };
   char text[DRDC_GEO_MGRS_SIZE];
   size_t i;
@@ -955,20 +943,18 @@ static void test_we_from_wemgrs_step_by_step(void)
     m.e.yaw = 123456789u;
     m.e.pitch = 5u;
     m.e.roll = 6u;
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_mgrs_encode(grid_points[i].lat,
+                                                        grid_points[i].lon, 3,
+                                                        m.mgrs, sizeof m.mgrs));
     TEST_ASSERT_EQUAL_INT(DRDC_OK,
-                          drdc_geo_mgrs_encode(grid_points[i].lat,
-                                               grid_points[i].lon, 3, m.mgrs,
-                                               sizeof m.mgrs));
-    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_mgrs_decode(m.mgrs, &corner,
-                                                        &centre, NULL));
-    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_from_utm(&centre, &lat, &lon,
-                                                     &gamma, NULL));
+                          drdc_geo_mgrs_decode(m.mgrs, &corner, &centre, NULL));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_geo_from_utm(&centre, &lat, &lon, &gamma, NULL));
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_we_from_wemgrs(&m, &out));
     TEST_ASSERT_EQUAL_INT64(lat, out.latitude);
     TEST_ASSERT_EQUAL_INT64(lon, out.longitude);
     TEST_ASSERT_EQUAL_INT64(M(3), out.height);
-    TEST_ASSERT_EQUAL_UINT32(123456789u
-                               + drdc_pose_bam_from_convergence(gamma),
+    TEST_ASSERT_EQUAL_UINT32(123456789u + drdc_pose_bam_from_convergence(gamma),
                              out.e.yaw);
     TEST_ASSERT_EQUAL_UINT32(5u, out.e.pitch);
     TEST_ASSERT_EQUAL_UINT32(6u, out.e.roll);
@@ -983,18 +969,18 @@ static void test_w_from_wutm_wide_position_errors(void)
     drdc_geo_utm_t utm;
     drdc_status_t st;
   } rows[] = {
-    { { 61, true, M(500000), M(0) }, DRDC_E_ZONE },
-    { { 31, true, M(1000000) + 1, M(0) }, DRDC_E_EASTING },
-    { { 31, false, M(500000), M(900000) - 1 }, DRDC_E_NORTHING },
-    { { 0, true, M(2800000) + 1, M(2000000) }, DRDC_E_EASTING },
-    { { 0, false, M(2000000), M(700000) - 1 }, DRDC_E_NORTHING },
+      {{61, true, M(500000), M(0)}, DRDC_E_ZONE},
+      {{31, true, M(1000000) + 1, M(0)}, DRDC_E_EASTING},
+      {{31, false, M(500000), M(900000) - 1}, DRDC_E_NORTHING},
+      {{0, true, M(2800000) + 1, M(2000000)}, DRDC_E_EASTING},
+      {{0, false, M(2000000), M(700000) - 1}, DRDC_E_NORTHING},
   };
   size_t i;
   size_t j;
 
   for (i = 0; i < COUNT(rows); i++) {
     for (j = 0; j < COUNT(grid_attitudes); j++) {
-      drdc_WUTMPose_t u = { rows[i].utm, M(1), grid_attitudes[j] };
+      drdc_WUTMPose_t u = {rows[i].utm, M(1), grid_attitudes[j]};
       drdc_WPose_t out;
       drdc_WPose_t before;
 
@@ -1011,12 +997,10 @@ static void test_w_from_wutm_wide_position_errors(void)
  * attitude's when both fail; out may be ref */
 static void test_drdc_pose_w_from_l_unchanged_on_error(void)
 {
-  static const drdc_quat_t zero = { 0, 0, 0, 0 };
-  static const drdc_quat_t big = { INT32_MAX, INT32_MAX, INT32_MAX,
-                                   INT32_MAX };
-  drdc_WPose_t ref = { 10 * NAS_DEG, 45 * NAS_DEG, M(100),
-                       { INT32_MAX, 0, 0, 0 } };
-  drdc_lPose_t l = { { M(1), 0, 0 }, { 0, 0, 0, 0 } };
+  static const drdc_quat_t zero = {0, 0, 0, 0};
+  static const drdc_quat_t big = {INT32_MAX, INT32_MAX, INT32_MAX, INT32_MAX};
+  drdc_WPose_t ref = {10 * NAS_DEG, 45 * NAS_DEG, M(100), {INT32_MAX, 0, 0, 0}};
+  drdc_lPose_t l = {{M(1), 0, 0}, {0, 0, 0, 0}};
   drdc_WPose_t out;
   drdc_WPose_t before;
   drdc_WPose_t alias;
@@ -1029,8 +1013,7 @@ static void test_drdc_pose_w_from_l_unchanged_on_error(void)
   TEST_ASSERT_EQUAL_MEMORY(&before, &out, sizeof out);
   /* parts near 2 times near 2: the product's scalar part near 4 */
   l.q = big;
-  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
-                        drdc_pose_w_from_l(&ref, 0, &l, &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_pose_w_from_l(&ref, 0, &l, &out));
   TEST_ASSERT_EQUAL_MEMORY(&before, &out, sizeof out);
   /* 1 km above the highest reference: the result's height first */
   ref.height = DRDC_GEO_HEIGHT_MAX;
@@ -1050,8 +1033,7 @@ static void test_drdc_pose_w_from_l_unchanged_on_error(void)
   l.q.s = 1073741824;
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_w_from_l(&ref, M(30), &l, &out));
   alias = ref;
-  TEST_ASSERT_EQUAL_INT(DRDC_OK,
-                        drdc_pose_w_from_l(&alias, M(30), &l, &alias));
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_w_from_l(&alias, M(30), &l, &alias));
   TEST_ASSERT_EQUAL_MEMORY(&out, &alias, sizeof out);
 }
 
@@ -1059,9 +1041,9 @@ static void test_drdc_pose_w_from_l_unchanged_on_error(void)
  * position is no longer the last step); out may be ref */
 static void test_drdc_pose_we_from_le_unchanged_on_error(void)
 {
-  drdc_WePose_t ref = { 10 * NAS_DEG, 45 * NAS_DEG, DRDC_GEO_HEIGHT_MAX,
-                        { 1u << 29, 0u, 0u } };
-  drdc_lePose_t le = { { 0, 0, -M(1000) }, { 1u << 28, 1u << 27, 0u } };
+  drdc_WePose_t ref = {
+      10 * NAS_DEG, 45 * NAS_DEG, DRDC_GEO_HEIGHT_MAX, {1u << 29, 0u, 0u}};
+  drdc_lePose_t le = {{0, 0, -M(1000)}, {1u << 28, 1u << 27, 0u}};
   drdc_WePose_t out;
   drdc_WePose_t before;
   drdc_WePose_t alias;
@@ -1077,8 +1059,7 @@ static void test_drdc_pose_we_from_le_unchanged_on_error(void)
   le.p.x = M(1200);
   le.p.y = -M(300);
   le.p.z = M(20);
-  TEST_ASSERT_EQUAL_INT(DRDC_OK,
-                        drdc_pose_we_from_le(&ref, M(30), &le, &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_we_from_le(&ref, M(30), &le, &out));
   alias = ref;
   TEST_ASSERT_EQUAL_INT(DRDC_OK,
                         drdc_pose_we_from_le(&alias, M(30), &le, &alias));

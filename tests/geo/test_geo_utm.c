@@ -21,15 +21,15 @@
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
 
 /* Documented bounds (geo.h), the maxima measured on these vectors. */
-#define EN_TOL 1       /* easting, northing, x, y: LSB of Q47.16 (15 um) */
-#define CONV_TOL 1     /* forward convergence: nas (2.8e-13 degree) */
-#define SCALE_TOL 307  /* scale: LSB of Q5.58 (1.1e-15; oracle has 1e-16) */
+#define EN_TOL       1   /* easting, northing, x, y: LSB of Q47.16 (15 um) */
+#define CONV_TOL     1   /* forward convergence: nas (2.8e-13 degree) */
+#define SCALE_TOL    307 /* scale: LSB of Q5.58 (1.1e-15; oracle has 1e-16) */
 #define TM_SCALE_TOL 262 /* the same, drdc_geo_tm_forward beyond the zones */
-#define LATLON_TOL 1   /* reverse latitude and longitude: nas */
+#define LATLON_TOL   1   /* reverse latitude and longitude: nas */
 /* reverse convergence and scale, compared with the forward row's values
  * at the unrounded point (the UTM input was rounded to 15 um) */
-#define REV_CONV_TOL 2079    /* nas = 5.8e-10 degree */
-#define REV_SCALE_TOL 25141  /* LSB of Q5.58 = 8.7e-14 */
+#define REV_CONV_TOL  2079  /* nas = 5.8e-10 degree */
+#define REV_SCALE_TOL 25141 /* LSB of Q5.58 = 8.7e-14 */
 
 #define NAS_DEG INT64_C(3600000000000)
 
@@ -71,18 +71,17 @@ static void check_rows(const struct geo_fwd_vector *v,
   size_t i;
 
   for (i = 0; i < n; i++) {
-    drdc_geo_utm_t u = { 0, false, 0, 0 };
+    drdc_geo_utm_t u = {0, false, 0, 0};
     drdc_nas_t conv = 0;
     drdc_q5_58_t k = 0;
     drdc_nas_t lat = 0;
     drdc_nas_t lon = 0;
     drdc_geo_utm_t in;
 
-    TEST_ASSERT_EQUAL_INT(DRDC_OK,
-                          drdc_geo_to_utm(v[i].lat, v[i].lon,
-                                          forced ? v[i].zone
-                                                 : DRDC_GEO_ZONE_STANDARD,
-                                          &u, &conv, &k));
+    TEST_ASSERT_EQUAL_INT(
+        DRDC_OK, drdc_geo_to_utm(v[i].lat, v[i].lon,
+                                 forced ? v[i].zone : DRDC_GEO_ZONE_STANDARD,
+                                 &u, &conv, &k));
     TEST_ASSERT_EQUAL_INT32(v[i].zone, u.zone);
     TEST_ASSERT_EQUAL_INT(v[i].north != 0, u.north);
     keep(&w->en, dist(u.easting, v[i].easting));
@@ -93,10 +92,9 @@ static void check_rows(const struct geo_fwd_vector *v,
     in.north = (v[i].north != 0);
     in.easting = v[i].easting;
     in.northing = v[i].northing;
-    TEST_ASSERT_EQUAL_INT(DRDC_OK,
-                          drdc_geo_from_utm(&in, &lat, &lon,
-                                            with_scale ? &conv : NULL,
-                                            with_scale ? &k : NULL));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_from_utm(&in, &lat, &lon,
+                                                     with_scale ? &conv : NULL,
+                                                     with_scale ? &k : NULL));
     keep(&w->latlon, dist(lat, rv[i].lat));
     keep(&w->latlon, lon_dist(lon, rv[i].lon));
     /* in UPS the convergence is the longitude, as ill-conditioned as
@@ -122,28 +120,27 @@ static void assert_worst(const struct worst *w)
 
 static void test_utm_random(void)
 {
-  struct worst w = { 0, 0, 0, 0, 0, 0 };
+  struct worst w = {0, 0, 0, 0, 0, 0};
 
-  check_rows(geo_random_vectors, geo_random_rev, COUNT(geo_random_vectors),
-             0, 0, &w);
+  check_rows(geo_random_vectors, geo_random_rev, COUNT(geo_random_vectors), 0,
+             0, &w);
   assert_worst(&w);
 }
 
 static void test_utm_edges(void)
 {
-  struct worst w = { 0, 0, 0, 0, 0, 0 };
+  struct worst w = {0, 0, 0, 0, 0, 0};
 
-  check_rows(geo_edge_vectors, geo_edge_rev, COUNT(geo_edge_vectors), 0, 1,
-             &w);
+  check_rows(geo_edge_vectors, geo_edge_rev, COUNT(geo_edge_vectors), 0, 1, &w);
   assert_worst(&w);
 }
 
 static void test_utm_forced_zone(void)
 {
-  struct worst w = { 0, 0, 0, 0, 0, 0 };
+  struct worst w = {0, 0, 0, 0, 0, 0};
 
-  check_rows(geo_forced_vectors, geo_forced_rev, COUNT(geo_forced_vectors),
-             1, 1, &w);
+  check_rows(geo_forced_vectors, geo_forced_rev, COUNT(geo_forced_vectors), 1,
+             1, &w);
   assert_worst(&w);
 }
 
@@ -161,8 +158,8 @@ static void test_tm_outside_zone(void)
     drdc_nas_t conv = 0;
     drdc_q5_58_t k = 0;
 
-    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_tm_forward(v->lat, v->dlon, &x,
-                                                       &y, &conv, &k));
+    TEST_ASSERT_EQUAL_INT(
+        DRDC_OK, drdc_geo_tm_forward(v->lat, v->dlon, &x, &y, &conv, &k));
     keep(&w_en, dist(x, v->x));
     keep(&w_en, dist(y, v->y));
     keep(&w_conv, dist(conv, v->convergence));
@@ -213,19 +210,16 @@ static void test_utm_zone_rules(void)
 /* The example of geo.h: lat 10, lon 20 -> 34n 390399.2275 1105578.5892 */
 static void test_utm_header_example(void)
 {
-  drdc_geo_utm_t u = { 0, false, 0, 0 };
+  drdc_geo_utm_t u = {0, false, 0, 0};
 
-  TEST_ASSERT_EQUAL_INT(DRDC_OK,
-                        drdc_geo_to_utm(10 * NAS_DEG, 20 * NAS_DEG,
-                                        DRDC_GEO_ZONE_STANDARD, &u, NULL,
-                                        NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_geo_to_utm(10 * NAS_DEG, 20 * NAS_DEG,
+                                                 DRDC_GEO_ZONE_STANDARD, &u,
+                                                 NULL, NULL));
   TEST_ASSERT_EQUAL_INT32(34, u.zone);
   TEST_ASSERT_TRUE(u.north);
   /* 390399.2275 m and 1105578.5892 m in Q47.16, within 0.1 mm */
-  TEST_ASSERT_LESS_OR_EQUAL_INT64(7, dist(u.easting,
-                                          INT64_C(25585203773)));
-  TEST_ASSERT_LESS_OR_EQUAL_INT64(7, dist(u.northing,
-                                          INT64_C(72455198422)));
+  TEST_ASSERT_LESS_OR_EQUAL_INT64(7, dist(u.easting, INT64_C(25585203773)));
+  TEST_ASSERT_LESS_OR_EQUAL_INT64(7, dist(u.northing, INT64_C(72455198422)));
 }
 
 static int64_t bam_dist(drdc_bam32_t a, drdc_bam32_t b)
@@ -235,10 +229,10 @@ static int64_t bam_dist(drdc_bam32_t a, drdc_bam32_t b)
   return (d > 0x80000000u) ? (int64_t)(0u - d) : (int64_t)d;
 }
 
-#define M(v) ((int64_t)(v) * INT64_C(65536))
+#define M(v) ((int64_t)(v)*INT64_C(65536))
 /* geo_pose.h bounds, the maxima measured here */
-#define YAW_TOL 4       /* binary-angle LSB (3.4e-7 degree) */
-#define PR_TOL 3        /* pitch and roll, binary-angle LSB */
+#define YAW_TOL   4     /* binary-angle LSB (3.4e-7 degree) */
+#define PR_TOL    3     /* pitch and roll, binary-angle LSB */
 #define POSE_ROWS 2000u /* rows of the 22 000 used (QEMU time) */
 
 static void test_grid_from_true_turns_the_yaw_by_gamma(void)
@@ -251,10 +245,9 @@ static void test_grid_from_true_turns_the_yaw_by_gamma(void)
   for (i = 0; i < POSE_ROWS; i++) {
     const struct geo_fwd_vector *v = &geo_random_vectors[i];
     /* a different attitude per row, pitch within +-60 degrees */
-    drdc_euler_t e = { (drdc_bam32_t)(i * 2654435761u),
-                       (drdc_bam32_t)((i * 40503u) % 715827882u)
-                         - 357913941u,
-                       (drdc_bam32_t)(i * 97u * 1000003u) };
+    drdc_euler_t e = {(drdc_bam32_t)(i * 2654435761u),
+                      (drdc_bam32_t)((i * 40503u) % 715827882u) - 357913941u,
+                      (drdc_bam32_t)(i * 97u * 1000003u)};
     drdc_quat_t qt;
     drdc_quat_t qg;
     drdc_quat_t back;
@@ -266,11 +259,12 @@ static void test_grid_from_true_turns_the_yaw_by_gamma(void)
                           drdc_pose_grid_from_true(&qt, v->convergence, &qg));
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_euler_from_quat(&qg, &eg));
     w_yaw = (bam_dist(eg.yaw, e.yaw - gamma) > w_yaw)
-              ? bam_dist(eg.yaw, e.yaw - gamma) : w_yaw;
+                ? bam_dist(eg.yaw, e.yaw - gamma)
+                : w_yaw;
     w_pr = (bam_dist(eg.pitch, e.pitch) > w_pr) ? bam_dist(eg.pitch, e.pitch)
                                                 : w_pr;
-    w_pr = (bam_dist(eg.roll, e.roll) > w_pr) ? bam_dist(eg.roll, e.roll)
-                                              : w_pr;
+    w_pr =
+        (bam_dist(eg.roll, e.roll) > w_pr) ? bam_dist(eg.roll, e.roll) : w_pr;
     TEST_ASSERT_EQUAL_INT(DRDC_OK,
                           drdc_pose_true_from_grid(&qg, v->convergence, &back));
     w_trip = (dist(back.s, qt.s) > w_trip) ? dist(back.s, qt.s) : w_trip;
@@ -287,14 +281,12 @@ static void test_wutm_round_trip(void)
 
   for (i = 0; i < POSE_ROWS; i += 4u) {
     const struct geo_fwd_vector *v = &geo_random_vectors[i];
-    drdc_WPose_t w = { v->lon, v->lat, M(123),
-                       { 759250125, 0, 0, 759250125 } };
+    drdc_WPose_t w = {v->lon, v->lat, M(123), {759250125, 0, 0, 759250125}};
     drdc_WUTMPose_t u;
     drdc_WPose_t back;
 
-    TEST_ASSERT_EQUAL_INT(DRDC_OK,
-                          drdc_pose_wutm_from_w(&w, DRDC_GEO_ZONE_STANDARD,
-                                                &u));
+    TEST_ASSERT_EQUAL_INT(
+        DRDC_OK, drdc_pose_wutm_from_w(&w, DRDC_GEO_ZONE_STANDARD, &u));
     TEST_ASSERT_EQUAL_INT32(v->zone, u.utm.zone);
     TEST_ASSERT_INT64_WITHIN(1, v->easting, u.utm.easting);
     TEST_ASSERT_INT64_WITHIN(1, v->northing, u.utm.northing);
@@ -317,7 +309,7 @@ static void test_wutm_round_trip(void)
  * neighbours. */
 static void check_mul_shift(int64_t b, unsigned n)
 {
-  static const int64_t named[] = { 0, 1, -1, INT64_C(0x1fffffffffffffff) };
+  static const int64_t named[] = {0, 1, -1, INT64_C(0x1fffffffffffffff)};
   uint64_t seed = UINT64_C(0x9E3779B97F4A7C15);
   int64_t half = INT64_C(1) << (n - 1u);
   int64_t want;
@@ -327,8 +319,8 @@ static void check_mul_shift(int64_t b, unsigned n)
 
   TEST_ASSERT_TRUE(((uint64_t)b & 1u) == 1u);
   for (i = 0u; i < 4000u; i++) {
-    seed = (seed * UINT64_C(6364136223846793005))
-           + UINT64_C(1442695040888963407);
+    seed =
+        (seed * UINT64_C(6364136223846793005)) + UINT64_C(1442695040888963407);
     /* 61 bits down to 1: the quotient stays within int64_t for
      * b < 2^63 and n >= 61 */
     a = (int64_t)(seed >> (3u + (i % 61u)));
@@ -343,8 +335,8 @@ static void check_mul_shift(int64_t b, unsigned n)
       a = (i < COUNT(named)) ? (half + k) : named[i - COUNT(named)];
       a = ((i & 1u) != 0u) ? -a : a;
       want = 0;
-      TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_fx_muldiv_s64(
-                                         a, b, INT64_C(1) << n, &want));
+      TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                            drdc_fx_muldiv_s64(a, b, INT64_C(1) << n, &want));
       TEST_ASSERT_EQUAL_INT64(want, drdc__geo_mul_shift(a, b, n));
     }
   }

@@ -12,8 +12,8 @@
 
 /** Running digest state. */
 typedef struct golden {
-  uint32_t crc;  /**< CRC-32 (IEEE 802.3, reflected) so far, not inverted */
-  uint32_t rng;  /**< xorshift32 state of the golden input generator */
+  uint32_t crc; /**< CRC-32 (IEEE 802.3, reflected) so far, not inverted */
+  uint32_t rng; /**< xorshift32 state of the golden input generator */
 } golden_t;
 
 /** Fold the bytes of a value into the digest, least significant first, so

@@ -21,13 +21,13 @@ void golden_geo(golden_t *g)
     /* about +-95 degrees of latitude and +-597 of longitude, in nas */
     drdc_nas_t lat = ((int64_t)(int32_t)golden_next(g)) * 80000;
     drdc_nas_t lon = ((int64_t)(int32_t)golden_next(g)) * 500000;
-    drdc_geo_utm_t utm = { 0, false, 0, 0 };
+    drdc_geo_utm_t utm = {0, false, 0, 0};
     drdc_nas_t convergence = 0;
     drdc_q5_58_t scale = 0;
     drdc_nas_t back_lat = 0;
     drdc_nas_t back_lon = 0;
     drdc_geo_point_t p;
-    drdc_vec3_q47_16_t ecef = { 0, 0, 0 };
+    drdc_vec3_q47_16_t ecef = {0, 0, 0};
     char text[DRDC_GEO_MGRS_SIZE];
     size_t k;
 
@@ -39,14 +39,16 @@ void golden_geo(golden_t *g)
     golden_i64(g, utm.northing);
     golden_i64(g, convergence);
     golden_i64(g, scale);
-    golden_i32(g, (int32_t)drdc_geo_from_utm(&utm, &back_lat, &back_lon, NULL, NULL));
+    golden_i32(
+        g, (int32_t)drdc_geo_from_utm(&utm, &back_lat, &back_lon, NULL, NULL));
     golden_i64(g, back_lat);
     golden_i64(g, back_lon);
     for (k = 0u; k < sizeof text; k++) {
       text[k] = '\0';
     }
-    golden_i32(g, (int32_t)drdc_geo_mgrs_encode(lat, lon, (int32_t)(golden_next(g) % 13u) - 1,
-                                                text, sizeof text));
+    golden_i32(g, (int32_t)drdc_geo_mgrs_encode(
+                      lat, lon, (int32_t)(golden_next(g) % 13u) - 1, text,
+                      sizeof text));
     for (k = 0u; k < sizeof text; k++) {
       golden_u32(g, (uint32_t)(unsigned char)text[k]);
     }

@@ -13,8 +13,8 @@
 
 #include "golden.h"
 
-static const char seed[] =
-  "$GNGGA,170001.00,5016.20050,N,11110.20080,W,4,12,0.7,754.4,M,-16.2,M,1.0,0001*6D\r\n";
+static const char seed[] = "$GNGGA,170001.00,5016.20050,N,11110.20080,W,4,12,0."
+                           "7,754.4,M,-16.2,M,1.0,0001*6D\r\n";
 
 /* every field zero: what the digest reads after a failed parse */
 static const drdc_nmea_t blank;
@@ -43,9 +43,9 @@ void golden_interop(golden_t *g)
      * arguments of a call differs between compilers and targets */
     type = (drdc_jaus_type_t)(golden_next(g) % 6u);
     form = (drdc_jaus_form_t)(golden_next(g) % 2u);
-    golden_i32(g, (int32_t)drdc_jaus_scaled_encode(
-                      raw, INT64_C(-2147483648), INT64_C(2147483647), type,
-                      form, &integer));
+    golden_i32(g, (int32_t)drdc_jaus_scaled_encode(raw, INT64_C(-2147483648),
+                                                   INT64_C(2147483647), type,
+                                                   form, &integer));
     golden_i64(g, integer);
     for (k = 0u; k < sizeof seed; k++) {
       text[k] = seed[k];

@@ -25,12 +25,12 @@ void golden_orient(golden_t *g)
   for (i = 0; i < 1024; i++) {
     drdc_quat_t a;
     drdc_quat_t b;
-    drdc_quat_t r = { 0, 0, 0, 0 };
+    drdc_quat_t r = {0, 0, 0, 0};
     drdc_euler_t e;
-    drdc_euler_t back = { 0u, 0u, 0u };
+    drdc_euler_t back = {0u, 0u, 0u};
     drdc_dcm_t m;
     drdc_vec3_q15_16_t v;
-    drdc_vec3_q15_16_t w = { 0, 0, 0 };
+    drdc_vec3_q15_16_t w = {0, 0, 0};
     unsigned k;
 
     /* parts of any size: unit-scale (>> 2) for the first, raw for b */
@@ -66,6 +66,8 @@ void golden_orient(golden_t *g)
       golden_i32(g, m.m[k / 3u][k % 3u]);
     }
     fold_quat(g, drdc_quat_from_dcm(&m, &r), &r);
-    fold_quat(g, drdc_quat_slerp(&a, &b, (drdc_q1_30_t)(golden_next(g) >> 2), &r), &r);
+    fold_quat(g,
+              drdc_quat_slerp(&a, &b, (drdc_q1_30_t)(golden_next(g) >> 2), &r),
+              &r);
   }
 }

@@ -160,8 +160,8 @@ static void golden_jaus_bodies(golden_t *g)
   for (k = 0u; k < sizeof buf; k++) {
     buf[k] = 0u;
   }
-  golden_i32(g, (int32_t)drdc_jaus_global_pose_pack(&gb, form, buf,
-                                                    sizeof buf, &length));
+  golden_i32(g, (int32_t)drdc_jaus_global_pose_pack(&gb, form, buf, sizeof buf,
+                                                    &length));
   golden_u32(g, (uint32_t)length);
   fold_bytes(g, buf, sizeof buf);
 
@@ -177,8 +177,7 @@ static void golden_jaus_bodies(golden_t *g)
                               &length);
   }
   gb = global_blank;
-  golden_i32(g, (int32_t)drdc_jaus_global_pose_unpack(buf, length, form,
-                                                      &gb));
+  golden_i32(g, (int32_t)drdc_jaus_global_pose_unpack(buf, length, form, &gb));
   golden_u32(g, gb.presence);
   fold_we(g, &gb.pose);
   golden_i32(g, gb.position_rms);
@@ -197,13 +196,12 @@ static void golden_jaus_bodies(golden_t *g)
     buf[k] = 0u;
   }
   length = 0u;
-  golden_i32(g, (int32_t)drdc_jaus_local_pose_pack(&lb, form, buf,
-                                                   sizeof buf, &length));
+  golden_i32(g, (int32_t)drdc_jaus_local_pose_pack(&lb, form, buf, sizeof buf,
+                                                   &length));
   golden_u32(g, (uint32_t)length);
   fold_bytes(g, buf, sizeof buf);
   lb = local_blank;
-  golden_i32(g, (int32_t)drdc_jaus_local_pose_unpack(buf, length, form,
-                                                     &lb));
+  golden_i32(g, (int32_t)drdc_jaus_local_pose_unpack(buf, length, form, &lb));
   golden_u32(g, lb.presence);
   fold_le(g, &lb.pose);
   golden_i32(g, lb.position_rms);

@@ -44,10 +44,10 @@ void golden_time_scales(golden_t *g)
 
   for (i = 0; i < 2048; i++) {
     drdc_time_t utc;
-    drdc_time_t back = { 0, 0 };
-    drdc_time_count_t count = { 0, 0 };
-    drdc_time_gps_t gps = { 0, 0, 0 };
-    drdc_time_civil_t civil = { 0, 0, 0, 0, 0, 0, 0 };
+    drdc_time_t back = {0, 0};
+    drdc_time_count_t count = {0, 0};
+    drdc_time_gps_t gps = {0, 0, 0};
+    drdc_time_civil_t civil = {0, 0, 0, 0, 0, 0, 0};
     char text[40];
     size_t k;
 
@@ -73,7 +73,8 @@ void golden_time_scales(golden_t *g)
     for (k = 0; k < sizeof text; k++) {
       text[k] = '\0';
     }
-    golden_i32(g, (int32_t)drdc_time_iso8601_format(NULL, &utc, 9, text, sizeof text));
+    golden_i32(
+        g, (int32_t)drdc_time_iso8601_format(NULL, &utc, 9, text, sizeof text));
     for (k = 0; k < sizeof text; k++) {
       golden_u32(g, (uint32_t)(unsigned char)text[k]);
     }

@@ -24,7 +24,7 @@ static void golden_part(golden_t *g, const char *name, void (*part)(golden_t *))
 
 static void test_golden_digest_is_the_conformance_value(void)
 {
-  golden_t g = { 0xFFFFFFFFu, 2463534242u };
+  golden_t g = {0xFFFFFFFFu, 2463534242u};
   uint32_t digest;
 
   /* one line per module, so a port that differs sees where */

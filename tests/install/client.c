@@ -19,8 +19,8 @@ int main(void)
 
   while (scanf("%" SCNd64 " %" SCNd64, &lat, &lon) == 2) {
     drdc_geo_utm_t utm;
-    drdc_status_t st = drdc_geo_to_utm(lat, lon, DRDC_GEO_ZONE_STANDARD,
-                                       &utm, NULL, NULL);
+    drdc_status_t st =
+        drdc_geo_to_utm(lat, lon, DRDC_GEO_ZONE_STANDARD, &utm, NULL, NULL);
 
     if (drdc_status_is_error(st)) {
       printf("ERROR: %s\n", drdc_status_name(st));
@@ -29,8 +29,7 @@ int main(void)
     }
     /* Q47.16 metres to millimetres, rounded half away from zero */
     printf("%d%c %" PRId64 " %" PRId64 "\n", (int)utm.zone,
-           utm.north ? 'n' : 's',
-           (utm.easting * 1000 + (1 << 15)) >> 16,
+           utm.north ? 'n' : 's', (utm.easting * 1000 + (1 << 15)) >> 16,
            (utm.northing * 1000 + (1 << 15)) >> 16);
   }
   return failed;

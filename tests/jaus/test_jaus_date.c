@@ -86,15 +86,21 @@ static void test_drdc_jaus_date_unpack_bad_input(void)
   int32_t m = 7;
   int32_t d = 7;
 
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_jaus_date_unpack(0x0021u, NULL, &m, &d));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_jaus_date_unpack(0x0021u, &y, NULL, &d));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_jaus_date_unpack(0x0021u, &y, &m, NULL));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_MONTH, drdc_jaus_date_unpack(0x0001u, &y, &m, &d));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_MONTH, drdc_jaus_date_unpack(0x01A1u, &y, &m, &d));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_jaus_date_unpack(0x0021u, NULL, &m, &d));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_jaus_date_unpack(0x0021u, &y, NULL, &d));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_jaus_date_unpack(0x0021u, &y, &m, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_MONTH,
+                        drdc_jaus_date_unpack(0x0001u, &y, &m, &d));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_MONTH,
+                        drdc_jaus_date_unpack(0x01A1u, &y, &m, &d));
   TEST_ASSERT_EQUAL_INT(DRDC_E_DAY, drdc_jaus_date_unpack(0x0020u, &y, &m, &d));
   /* 2023-02-29 */
-  TEST_ASSERT_EQUAL_INT(DRDC_E_DAY, drdc_jaus_date_unpack((uint16_t)((23u << 9) | (2u << 5) | 29u),
-                                                         &y, &m, &d));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_DAY, drdc_jaus_date_unpack(
+                      (uint16_t)((23u << 9) | (2u << 5) | 29u), &y, &m, &d));
   TEST_ASSERT_EQUAL_INT32(7, y);
   TEST_ASSERT_EQUAL_INT32(7, m);
   TEST_ASSERT_EQUAL_INT32(7, d);

@@ -18,8 +18,8 @@
 
 /* Encode or decode: the plain and the _sat form have the same type. */
 typedef drdc_status_t (*scaled_fn)(int64_t in, int64_t min, int64_t max,
-                                   drdc_jaus_type_t type,
-                                   drdc_jaus_form_t form, int64_t *out);
+                                   drdc_jaus_type_t type, drdc_jaus_form_t form,
+                                   int64_t *out);
 
 /* Every vector through both forms. Clamped: the plain form gives
  * `range_status` and leaves its output, the _sat form `sat_status`; in
@@ -81,14 +81,17 @@ static void test_round_trips_are_exact(void)
     int64_t real = 0;
     int64_t back = 0;
 
-    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_jaus_scaled_range(v->type, v->form, &ilo, &ihi));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_jaus_scaled_range(v->type, v->form, &ilo, &ihi));
     if ((v->clamped != 0u) || ((v->max - v->min) < (ihi - ilo))) {
       continue;
     }
     TEST_ASSERT_EQUAL_INT(DRDC_OK,
-                          drdc_jaus_scaled_decode(v->in, v->min, v->max, v->type, v->form, &real));
-    TEST_ASSERT_EQUAL_INT(DRDC_OK,
-                          drdc_jaus_scaled_encode(real, v->min, v->max, v->type, v->form, &back));
+                          drdc_jaus_scaled_decode(v->in, v->min, v->max,
+                                                  v->type, v->form, &real));
+    TEST_ASSERT_EQUAL_INT(
+        DRDC_OK,
+        drdc_jaus_scaled_encode(real, v->min, v->max, v->type, v->form, &back));
     TEST_ASSERT_EQUAL_INT64(v->in, back);
     checked++;
   }
@@ -106,27 +109,34 @@ static void test_named_cases(void)
   int64_t ihi = 0;
 
   /* 90 degrees in -180..180 -> 16383.5 -> 16384; -90 -> -16384 */
-  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_jaus_scaled_encode(90 * deg, -180 * deg, 180 * deg,
-                                                         DRDC_JAUS_INT16, DRDC_JAUS_FORM_RA3, &i));
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_jaus_scaled_encode(
+                                     90 * deg, -180 * deg, 180 * deg,
+                                     DRDC_JAUS_INT16, DRDC_JAUS_FORM_RA3, &i));
   TEST_ASSERT_EQUAL_INT64(16384, i);
-  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_jaus_scaled_encode(-90 * deg, -180 * deg, 180 * deg,
-                                                         DRDC_JAUS_INT16, DRDC_JAUS_FORM_RA3, &j));
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_jaus_scaled_encode(
+                                     -90 * deg, -180 * deg, 180 * deg,
+                                     DRDC_JAUS_INT16, DRDC_JAUS_FORM_RA3, &j));
   TEST_ASSERT_EQUAL_INT64(-16384, j);
   /* RA: the midpoint is integer 0; AS6009: min is the type's minimum */
-  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_jaus_scaled_encode(5, 0, 10, DRDC_JAUS_INT8,
-                                                         DRDC_JAUS_FORM_RA3, &i));
+  TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                        drdc_jaus_scaled_encode(5, 0, 10, DRDC_JAUS_INT8,
+                                                DRDC_JAUS_FORM_RA3, &i));
   TEST_ASSERT_EQUAL_INT64(0, i);
-  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_jaus_scaled_encode(0, 0, 10, DRDC_JAUS_INT8,
-                                                         DRDC_JAUS_FORM_AS6009, &i));
+  TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                        drdc_jaus_scaled_encode(0, 0, 10, DRDC_JAUS_INT8,
+                                                DRDC_JAUS_FORM_AS6009, &i));
   TEST_ASSERT_EQUAL_INT64(-128, i);
-  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_jaus_scaled_encode(0, 0, 10, DRDC_JAUS_INT8,
-                                                         DRDC_JAUS_FORM_RA3, &i));
+  TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                        drdc_jaus_scaled_encode(0, 0, 10, DRDC_JAUS_INT8,
+                                                DRDC_JAUS_FORM_RA3, &i));
   TEST_ASSERT_EQUAL_INT64(-127, i);
-  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_jaus_scaled_range(DRDC_JAUS_UINT32, DRDC_JAUS_FORM_RA3,
-                                                        &ilo, &ihi));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_OK,
+      drdc_jaus_scaled_range(DRDC_JAUS_UINT32, DRDC_JAUS_FORM_RA3, &ilo, &ihi));
   TEST_ASSERT_EQUAL_INT64(0, ilo);
   TEST_ASSERT_EQUAL_INT64(INT64_C(4294967295), ihi);
-  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_jaus_scaled_range(DRDC_JAUS_INT32, DRDC_JAUS_FORM_AS6009,
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_jaus_scaled_range(DRDC_JAUS_INT32,
+                                                        DRDC_JAUS_FORM_AS6009,
                                                         &ilo, &ihi));
   TEST_ASSERT_EQUAL_INT64(INT64_C(-2147483648), ilo);
   TEST_ASSERT_EQUAL_INT64(INT64_C(2147483647), ihi);
@@ -137,14 +147,18 @@ static void test_drdc_jaus_scaled_range_bad_input(void)
   int64_t ilo = 7;
   int64_t ihi = 7;
 
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
-                        drdc_jaus_scaled_range(DRDC_JAUS_INT8, DRDC_JAUS_FORM_RA3, NULL, &ihi));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
-                        drdc_jaus_scaled_range(DRDC_JAUS_INT8, DRDC_JAUS_FORM_RA3, &ilo, NULL));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_NULL,
+      drdc_jaus_scaled_range(DRDC_JAUS_INT8, DRDC_JAUS_FORM_RA3, NULL, &ihi));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_NULL,
+      drdc_jaus_scaled_range(DRDC_JAUS_INT8, DRDC_JAUS_FORM_RA3, &ilo, NULL));
   TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
-                        drdc_jaus_scaled_range((drdc_jaus_type_t)6, DRDC_JAUS_FORM_RA3, &ilo, &ihi));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
-                        drdc_jaus_scaled_range(DRDC_JAUS_INT8, (drdc_jaus_form_t)2, &ilo, &ihi));
+                        drdc_jaus_scaled_range((drdc_jaus_type_t)6,
+                                               DRDC_JAUS_FORM_RA3, &ilo, &ihi));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_RANGE,
+      drdc_jaus_scaled_range(DRDC_JAUS_INT8, (drdc_jaus_form_t)2, &ilo, &ihi));
   TEST_ASSERT_EQUAL_INT64(7, ilo);
   TEST_ASSERT_EQUAL_INT64(7, ihi);
 }
@@ -153,22 +167,27 @@ static void test_drdc_jaus_scaled_encode_bad_input(void)
 {
   int64_t i = 7;
 
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_jaus_scaled_encode(0, -1, 1, DRDC_JAUS_INT8,
-                                                             DRDC_JAUS_FORM_RA3, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_jaus_scaled_encode(0, -1, 1, DRDC_JAUS_INT8,
+                                                DRDC_JAUS_FORM_RA3, NULL));
   /* a NULL output wins over an outside value (the plain form refuses an
    * outside value before it hands over to the saturating body) */
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
                         drdc_jaus_scaled_encode(5, -1, 1, DRDC_JAUS_INT8,
                                                 DRDC_JAUS_FORM_RA3, NULL));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_jaus_scaled_encode(2, -1, 1, DRDC_JAUS_INT8,
-                                                              DRDC_JAUS_FORM_RA3, &i));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_jaus_scaled_encode(1, 1, 1, DRDC_JAUS_INT8,
-                                                              DRDC_JAUS_FORM_RA3, &i));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_jaus_scaled_encode(0, INT64_MIN, INT64_MAX,
-                                                              DRDC_JAUS_INT8, DRDC_JAUS_FORM_RA3,
-                                                              &i));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_jaus_scaled_encode(0, -1, 1, (drdc_jaus_type_t)9,
-                                                              DRDC_JAUS_FORM_RA3, &i));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
+                        drdc_jaus_scaled_encode(2, -1, 1, DRDC_JAUS_INT8,
+                                                DRDC_JAUS_FORM_RA3, &i));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_RANGE,
+      drdc_jaus_scaled_encode(1, 1, 1, DRDC_JAUS_INT8, DRDC_JAUS_FORM_RA3, &i));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
+                        drdc_jaus_scaled_encode(0, INT64_MIN, INT64_MAX,
+                                                DRDC_JAUS_INT8,
+                                                DRDC_JAUS_FORM_RA3, &i));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
+                        drdc_jaus_scaled_encode(0, -1, 1, (drdc_jaus_type_t)9,
+                                                DRDC_JAUS_FORM_RA3, &i));
   TEST_ASSERT_EQUAL_INT64(7, i);
 }
 
@@ -176,13 +195,16 @@ static void test_drdc_jaus_scaled_encode_sat_bad_input(void)
 {
   int64_t i = 7;
 
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_jaus_scaled_encode_sat(0, -1, 1, DRDC_JAUS_INT8,
-                                                                 DRDC_JAUS_FORM_RA3, NULL));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_jaus_scaled_encode_sat(0, 2, 1, DRDC_JAUS_INT8,
-                                                                  DRDC_JAUS_FORM_RA3, &i));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_jaus_scaled_encode_sat(0, -1, 1, DRDC_JAUS_INT8,
+                                                    DRDC_JAUS_FORM_RA3, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
+                        drdc_jaus_scaled_encode_sat(0, 2, 1, DRDC_JAUS_INT8,
+                                                    DRDC_JAUS_FORM_RA3, &i));
   TEST_ASSERT_EQUAL_INT64(7, i);
-  TEST_ASSERT_EQUAL_INT(DRDC_W_SATURATED, drdc_jaus_scaled_encode_sat(-5, -1, 1, DRDC_JAUS_INT8,
-                                                                      DRDC_JAUS_FORM_RA3, &i));
+  TEST_ASSERT_EQUAL_INT(DRDC_W_SATURATED,
+                        drdc_jaus_scaled_encode_sat(-5, -1, 1, DRDC_JAUS_INT8,
+                                                    DRDC_JAUS_FORM_RA3, &i));
   TEST_ASSERT_EQUAL_INT64(-127, i);
   TEST_ASSERT_EQUAL_INT(DRDC_W_SATURATED,
                         drdc_jaus_scaled_encode_sat(-5, -1, 1, DRDC_JAUS_INT8,
@@ -194,23 +216,27 @@ static void test_drdc_jaus_scaled_decode_bad_input(void)
 {
   int64_t v = 7;
 
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_jaus_scaled_decode(0, -1, 1, DRDC_JAUS_INT8,
-                                                             DRDC_JAUS_FORM_RA3, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_jaus_scaled_decode(0, -1, 1, DRDC_JAUS_INT8,
+                                                DRDC_JAUS_FORM_RA3, NULL));
   /* and over an outside integer (200 > 127) */
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
                         drdc_jaus_scaled_decode(200, -1, 1, DRDC_JAUS_INT8,
                                                 DRDC_JAUS_FORM_RA3, NULL));
   /* -32768 is outside the RA 3.x int16 range, inside the AS6009 one */
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_jaus_scaled_decode(-32768, -1000, 1000,
-                                                              DRDC_JAUS_INT16,
-                                                              DRDC_JAUS_FORM_RA3, &v));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_jaus_scaled_decode(256, -1000, 1000, DRDC_JAUS_UINT8,
-                                                              DRDC_JAUS_FORM_AS6009, &v));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_jaus_scaled_decode(0, 1000, -1000, DRDC_JAUS_UINT8,
-                                                              DRDC_JAUS_FORM_AS6009, &v));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_jaus_scaled_decode(
+                                          -32768, -1000, 1000, DRDC_JAUS_INT16,
+                                          DRDC_JAUS_FORM_RA3, &v));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_RANGE, drdc_jaus_scaled_decode(256, -1000, 1000, DRDC_JAUS_UINT8,
+                                            DRDC_JAUS_FORM_AS6009, &v));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
+                        drdc_jaus_scaled_decode(0, 1000, -1000, DRDC_JAUS_UINT8,
+                                                DRDC_JAUS_FORM_AS6009, &v));
   TEST_ASSERT_EQUAL_INT64(7, v);
-  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_jaus_scaled_decode(-32768, -1000, 1000, DRDC_JAUS_INT16,
-                                                         DRDC_JAUS_FORM_AS6009, &v));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_OK, drdc_jaus_scaled_decode(-32768, -1000, 1000, DRDC_JAUS_INT16,
+                                       DRDC_JAUS_FORM_AS6009, &v));
   TEST_ASSERT_EQUAL_INT64(-1000, v);
 }
 
@@ -218,14 +244,16 @@ static void test_drdc_jaus_scaled_decode_sat_bad_input(void)
 {
   int64_t v = 7;
 
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_jaus_scaled_decode_sat(0, -1, 1, DRDC_JAUS_INT8,
-                                                                 DRDC_JAUS_FORM_RA3, NULL));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_jaus_scaled_decode_sat(0, 0, 0, DRDC_JAUS_INT8,
-                                                                  DRDC_JAUS_FORM_RA3, &v));
-  TEST_ASSERT_EQUAL_INT64(7, v);
-  TEST_ASSERT_EQUAL_INT(DRDC_W_SATURATED,
-                        drdc_jaus_scaled_decode_sat(-128, -1000, 1000, DRDC_JAUS_INT8,
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_jaus_scaled_decode_sat(0, -1, 1, DRDC_JAUS_INT8,
+                                                    DRDC_JAUS_FORM_RA3, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
+                        drdc_jaus_scaled_decode_sat(0, 0, 0, DRDC_JAUS_INT8,
                                                     DRDC_JAUS_FORM_RA3, &v));
+  TEST_ASSERT_EQUAL_INT64(7, v);
+  TEST_ASSERT_EQUAL_INT(DRDC_W_SATURATED, drdc_jaus_scaled_decode_sat(
+                                              -128, -1000, 1000, DRDC_JAUS_INT8,
+                                              DRDC_JAUS_FORM_RA3, &v));
   TEST_ASSERT_EQUAL_INT64(-1000, v);
 }
 

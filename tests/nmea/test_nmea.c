@@ -18,7 +18,7 @@
 #include "vectors_nmea.h"
 
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
-#define BUFFER 128u
+#define BUFFER   128u
 
 static void sentinel(drdc_nmea_t *n)
 {
@@ -48,7 +48,8 @@ static int unchanged(const drdc_nmea_t *n)
 static void parse_ok(const char *text, size_t length, drdc_nmea_t *n)
 {
   sentinel(n);
-  TEST_ASSERT_EQUAL_INT_MESSAGE(DRDC_OK, drdc_nmea_parse(text, length, n), text);
+  TEST_ASSERT_EQUAL_INT_MESSAGE(DRDC_OK, drdc_nmea_parse(text, length, n),
+                                text);
 }
 
 static void test_corpus_matches_the_fraction_model(void)
@@ -104,10 +105,10 @@ static void test_corpus_matches_the_fraction_model(void)
 static void test_drdc_nmea_parse_malformations(void)
 {
   static const drdc_status_t documented[] = {
-    DRDC_E_SYNTAX,  DRDC_E_CHARACTER,     DRDC_E_TRUNCATED, DRDC_E_OVERLONG,
-    DRDC_E_TRAILING, DRDC_E_CHECKSUM,     DRDC_E_SENTENCE,  DRDC_E_NO_FIX,
-    DRDC_E_MISSING_FIELD, DRDC_E_HOUR,    DRDC_E_MINUTE,    DRDC_E_SECOND,
-    DRDC_E_DAY,     DRDC_E_MONTH,         DRDC_E_YEAR,      DRDC_E_RANGE,
+      DRDC_E_SYNTAX,        DRDC_E_CHARACTER, DRDC_E_TRUNCATED, DRDC_E_OVERLONG,
+      DRDC_E_TRAILING,      DRDC_E_CHECKSUM,  DRDC_E_SENTENCE,  DRDC_E_NO_FIX,
+      DRDC_E_MISSING_FIELD, DRDC_E_HOUR,      DRDC_E_MINUTE,    DRDC_E_SECOND,
+      DRDC_E_DAY,           DRDC_E_MONTH,     DRDC_E_YEAR,      DRDC_E_RANGE,
   };
   size_t i;
   size_t k;
@@ -117,7 +118,8 @@ static void test_drdc_nmea_parse_malformations(void)
     drdc_nmea_t n;
 
     sentinel(&n);
-    TEST_ASSERT_EQUAL_INT_MESSAGE(v->status, drdc_nmea_parse(v->text, v->length, &n), v->text);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(
+        v->status, drdc_nmea_parse(v->text, v->length, &n), v->text);
     TEST_ASSERT_TRUE(unchanged(&n));
   }
   for (k = 0u; k < COUNT(documented); k++) {
@@ -138,8 +140,9 @@ static void test_drdc_nmea_parse_null(void)
 
   sentinel(&n);
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_nmea_parse(NULL, 10u, &n));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_nmea_parse(nmea_vectors[0].text,
-                                                     nmea_vectors[0].length, NULL));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_NULL,
+      drdc_nmea_parse(nmea_vectors[0].text, nmea_vectors[0].length, NULL));
   TEST_ASSERT_TRUE(unchanged(&n));
 }
 
@@ -198,24 +201,32 @@ static void test_drdc_nmea_utc_stitching(void)
   drdc_nmea_t gga;
   drdc_nmea_t zda;
   drdc_nmea_t leap;
-  drdc_time_t t = { 0, 0 };
+  drdc_time_t t = {0, 0};
 
-  parse_text("$GPRMC,235959.00,A,4807.038,N,01131.000,E,22.4,84.4,311216,3.1,W,A*2C\r\n", &rmc);
-  parse_text("$GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,*47\r\n", &gga);
+  parse_text("$GPRMC,235959.00,A,4807.038,N,01131.000,E,22.4,84.4,311216,3.1,W,"
+             "A*2C\r\n",
+             &rmc);
+  parse_text(
+      "$GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,*47\r\n",
+      &gga);
 
   TEST_ASSERT_EQUAL_INT64(INT64_C(173222280000000), gga.latitude);
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_nmea_utc(NULL, &rmc, &rmc, &t));
-  TEST_ASSERT_EQUAL_INT64(INT64_C(1483228799), t.sec); /* 2016-12-31T23:59:59Z */
+  TEST_ASSERT_EQUAL_INT64(INT64_C(1483228799),
+                          t.sec); /* 2016-12-31T23:59:59Z */
   TEST_ASSERT_EQUAL_INT32(0, t.nsec);
   gga.time.hour = 0;
   gga.time.minute = 0;
   gga.time.second = 1;
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_nmea_utc(NULL, &rmc, &gga, &t));
-  TEST_ASSERT_EQUAL_INT64(INT64_C(1483228801), t.sec); /* 2017-01-01T00:00:01Z */
+  TEST_ASSERT_EQUAL_INT64(INT64_C(1483228801),
+                          t.sec); /* 2017-01-01T00:00:01Z */
   parse_text("$GPZDA,235960.50,31,12,2016,-05,30*47\r\n", &zda);
   TEST_ASSERT_EQUAL_INT32(-5, zda.zone_hours);
   TEST_ASSERT_EQUAL_INT32(30, zda.zone_minutes);
-  parse_text("$GPGGA,235960.50,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,*6A\r\n", &leap);
+  parse_text("$GPGGA,235960.50,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,"
+             "*6A\r\n",
+             &leap);
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_nmea_utc(NULL, &zda, &leap, &t));
   TEST_ASSERT_EQUAL_INT64(INT64_C(1483228799), t.sec);
   TEST_ASSERT_EQUAL_INT32(1500000000, t.nsec);
@@ -223,22 +234,26 @@ static void test_drdc_nmea_utc_stitching(void)
   rmc.time.hour = 0;
   gga.time.hour = 23;
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_nmea_utc(NULL, &rmc, &gga, &t));
-  TEST_ASSERT_EQUAL_INT64(INT64_C(1483138801), t.sec); /* 2016-12-30T23:00:01Z */
+  TEST_ASSERT_EQUAL_INT64(INT64_C(1483138801),
+                          t.sec); /* 2016-12-30T23:00:01Z */
 }
 
 static void test_drdc_nmea_utc_bad_input(void)
 {
   drdc_nmea_t zda;
   drdc_nmea_t gga;
-  drdc_time_t t = { 7, 7 };
+  drdc_time_t t = {7, 7};
 
   parse_text("$GPZDA,235959.00,31,12,9999,,*66\r\n", &zda);
-  parse_text("$GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,*47\r\n", &gga);
+  parse_text(
+      "$GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,*47\r\n",
+      &gga);
 
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_nmea_utc(NULL, NULL, &gga, &t));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_nmea_utc(NULL, &zda, NULL, &t));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_nmea_utc(NULL, &zda, &gga, NULL));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_MISSING_FIELD, drdc_nmea_utc(NULL, &gga, &gga, &t));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_MISSING_FIELD,
+                        drdc_nmea_utc(NULL, &gga, &gga, &t));
   /* 00:00:01 after 9999-12-31T23:59:59 is past the calendar */
   gga.time.hour = 0;
   gga.time.minute = 0;
@@ -264,12 +279,13 @@ static void test_nmea_utc_extreme_time_fields_do_not_overflow(void)
    * UBSan: utc.c seconds_of_day(), hour INT32_MIN times 60). Hand-filled
    * fields at the ends of int32_t now wrap modulo 2^32 and reach
    * drdc_time_from_civil(), which refuses them; utc unchanged. */
-  static const int32_t far[] = { INT32_MIN, INT32_MIN + 1, INT32_MAX };
+  static const int32_t far[] = {INT32_MIN, INT32_MIN + 1, INT32_MAX};
   drdc_nmea_t rmc;
   size_t i;
 
   parse_text("$GPRMC,161229.487,A,3723.2475,N,12158.3416,W,0.13,309.62,"
-             "120598,,*10\r\n", &rmc);
+             "120598,,*10\r\n",
+             &rmc);
   for (i = 0; i < COUNT(far); i++) {
     drdc_nmea_t s = rmc;
     drdc_time_t t;
@@ -285,8 +301,7 @@ static void test_nmea_utc_extreme_time_fields_do_not_overflow(void)
     TEST_ASSERT_EQUAL_INT(DRDC_E_SECOND, drdc_nmea_utc(NULL, &rmc, &s, &t));
     s = rmc;
     s.time.nsec = far[i];
-    TEST_ASSERT_EQUAL_INT(DRDC_E_NANOSECOND,
-                          drdc_nmea_utc(NULL, &rmc, &s, &t));
+    TEST_ASSERT_EQUAL_INT(DRDC_E_NANOSECOND, drdc_nmea_utc(NULL, &rmc, &s, &t));
     TEST_ASSERT_EACH_EQUAL_HEX8(0x5A, &t, sizeof t);
   }
 }
@@ -298,10 +313,10 @@ static void test_nmea_utc_dated_time_out_of_range_is_refused(void)
    * a day moved by it. Each field just outside its range and at the ends of
    * int32_t now gives the status drdc_time_from_civil() gives for `s`'s,
    * and utc is unchanged. */
-  static const int32_t hours[] = { -1, 24, 100, INT32_MIN, INT32_MAX };
-  static const int32_t minutes[] = { -1, 60, INT32_MIN, INT32_MAX };
-  static const int32_t seconds[] = { -1, 61, INT32_MIN, INT32_MAX };
-  static const int32_t nsecs[] = { -1, 1000000000, INT32_MIN, INT32_MAX };
+  static const int32_t hours[] = {-1, 24, 100, INT32_MIN, INT32_MAX};
+  static const int32_t minutes[] = {-1, 60, INT32_MIN, INT32_MAX};
+  static const int32_t seconds[] = {-1, 61, INT32_MIN, INT32_MAX};
+  static const int32_t nsecs[] = {-1, 1000000000, INT32_MIN, INT32_MAX};
   drdc_nmea_t rmc;
   drdc_nmea_t gga;
   drdc_nmea_t dated;
@@ -309,9 +324,11 @@ static void test_nmea_utc_dated_time_out_of_range_is_refused(void)
   size_t i;
 
   parse_text("$GPRMC,161229.487,A,3723.2475,N,12158.3416,W,0.13,309.62,"
-             "120598,,*10\r\n", &rmc);
+             "120598,,*10\r\n",
+             &rmc);
   parse_text("$GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,"
-             "M,,*47\r\n", &gga);
+             "M,,*47\r\n",
+             &gga);
   memset(&t, 0x5A, sizeof t);
   for (i = 0; i < COUNT(hours); i++) {
     dated = rmc;
@@ -321,14 +338,12 @@ static void test_nmea_utc_dated_time_out_of_range_is_refused(void)
   for (i = 0; i < COUNT(minutes); i++) {
     dated = rmc;
     dated.time.minute = minutes[i];
-    TEST_ASSERT_EQUAL_INT(DRDC_E_MINUTE,
-                          drdc_nmea_utc(NULL, &dated, &gga, &t));
+    TEST_ASSERT_EQUAL_INT(DRDC_E_MINUTE, drdc_nmea_utc(NULL, &dated, &gga, &t));
   }
   for (i = 0; i < COUNT(seconds); i++) {
     dated = rmc;
     dated.time.second = seconds[i];
-    TEST_ASSERT_EQUAL_INT(DRDC_E_SECOND,
-                          drdc_nmea_utc(NULL, &dated, &gga, &t));
+    TEST_ASSERT_EQUAL_INT(DRDC_E_SECOND, drdc_nmea_utc(NULL, &dated, &gga, &t));
   }
   for (i = 0; i < COUNT(nsecs); i++) {
     dated = rmc;

@@ -17,7 +17,7 @@
  * -DORIENT_PRINT_MAXIMA (host measurement builds for docs/accuracy.md). */
 #ifdef ORIENT_PRINT_MAXIMA
 #include <stdio.h>
-#define ORIENT_REPORT(name, value)                                         \
+#define ORIENT_REPORT(name, value)                                             \
   printf("MAX %-40s %lld\n", (name), (long long)(value))
 #else
 #define ORIENT_REPORT(name, value) ((void)(name), (void)(value))
@@ -58,7 +58,7 @@ static inline int64_t orient_maxdiff32(const int32_t *a, const int32_t *b,
  * whichever is nearer. */
 static inline int64_t orient_qdiff(const drdc_quat_t *q, const int32_t r[4])
 {
-  const int32_t a[4] = { q->s, q->x, q->y, q->z };
+  const int32_t a[4] = {q->s, q->x, q->y, q->z};
   int64_t plus = 0;
   int64_t minus = 0;
   unsigned i;
@@ -76,7 +76,7 @@ static inline int64_t orient_qdiff(const drdc_quat_t *q, const int32_t r[4])
 static inline int64_t orient_qdiff_signed(const drdc_quat_t *q,
                                           const int32_t r[4])
 {
-  const int32_t a[4] = { q->s, q->x, q->y, q->z };
+  const int32_t a[4] = {q->s, q->x, q->y, q->z};
 
   return orient_maxdiff32(a, r, 4u);
 }
@@ -109,8 +109,8 @@ static inline int64_t orient_angle_err(uint32_t a, int64_t ref, int64_t sub)
  * 2^32 of these units). */
 static inline int64_t orient_norm_err(const drdc_quat_t *q)
 {
-  int64_t n = ((int64_t)q->s * q->s) + ((int64_t)q->x * q->x)
-              + ((int64_t)q->y * q->y) + ((int64_t)q->z * q->z);
+  int64_t n = ((int64_t)q->s * q->s) + ((int64_t)q->x * q->x) +
+              ((int64_t)q->y * q->y) + ((int64_t)q->z * q->z);
 
   return orient_abs64(n - ((int64_t)1 << 60));
 }

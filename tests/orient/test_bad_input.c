@@ -31,40 +31,33 @@
 
 #define ONE30 INT32_C(0x40000000) /* 1.0 in Q1.30 */
 #define ONE16 INT32_C(0x10000)    /* 1 m in Q15.16 */
-#define C45 INT32_C(759250125)    /* cos 45 deg in Q1.30, rounded */
+#define C45   INT32_C(759250125)  /* cos 45 deg in Q1.30, rounded */
 
 /* Pre-filled into every output; an error must leave it there. Each is
  * the byte SENTINEL_BYTE repeated, so fill() and untouched() below serve
  * outputs of any type. */
 #define SENTINEL_BYTE 0x5Au
-#define SENTINEL32 INT32_C(0x5A5A5A5A)
-#define SENTINEL64 INT64_C(0x5A5A5A5A5A5A5A5A)
-#define SENTINEL_BAM UINT32_C(0x5A5A5A5A)
+#define SENTINEL32    INT32_C(0x5A5A5A5A)
+#define SENTINEL64    INT64_C(0x5A5A5A5A5A5A5A5A)
+#define SENTINEL_BAM  UINT32_C(0x5A5A5A5A)
 
-static const drdc_quat_t zero_q = { 0, 0, 0, 0 };
-static const drdc_quat_t identity_q = { ONE30, 0, 0, 0 };
-static const drdc_quat_t yaw90_q = { C45, 0, 0, C45 };
-static const drdc_quat_t roll90_q = { C45, C45, 0, 0 };
+static const drdc_quat_t zero_q = {0, 0, 0, 0};
+static const drdc_quat_t identity_q = {ONE30, 0, 0, 0};
+static const drdc_quat_t yaw90_q = {C45, 0, 0, C45};
+static const drdc_quat_t roll90_q = {C45, C45, 0, 0};
 
-static const drdc_dcm_t eye = { { { ONE30, 0, 0 },
-                                  { 0, ONE30, 0 },
-                                  { 0, 0, ONE30 } } };
-static const drdc_dcm_t yaw45 = { { { C45, -C45, 0 },
-                                    { C45, C45, 0 },
-                                    { 0, 0, ONE30 } } };
+static const drdc_dcm_t eye = {{{ONE30, 0, 0}, {0, ONE30, 0}, {0, 0, ONE30}}};
+static const drdc_dcm_t yaw45 = {
+    {{C45, -C45, 0}, {C45, C45, 0}, {0, 0, ONE30}}};
 
-static const drdc_vec3_q15_16_t v_local = { ONE16, 2 * ONE16, 3 * ONE16 };
-static const drdc_vec3_q47_16_t v_global = { ONE16, 2 * ONE16, 3 * ONE16 };
-static const drdc_euler_t e_level = { 0u, 0u, 0u };
+static const drdc_vec3_q15_16_t v_local = {ONE16, 2 * ONE16, 3 * ONE16};
+static const drdc_vec3_q47_16_t v_global = {ONE16, 2 * ONE16, 3 * ONE16};
+static const drdc_euler_t e_level = {0u, 0u, 0u};
 
 static const drdc_transform_t t_local = {
-  { { { ONE30, 0, 0 }, { 0, ONE30, 0 }, { 0, 0, ONE30 } } },
-  { ONE16, 0, 0 }
-};
+    {{{ONE30, 0, 0}, {0, ONE30, 0}, {0, 0, ONE30}}}, {ONE16, 0, 0}};
 static const drdc_transform_global_t t_global = {
-  { { { ONE30, 0, 0 }, { 0, ONE30, 0 }, { 0, 0, ONE30 } } },
-  { INT64_C(1) << 40, 0, 0 }
-};
+    {{{ONE30, 0, 0}, {0, ONE30, 0}, {0, 0, ONE30}}}, {INT64_C(1) << 40, 0, 0}};
 
 /* ------------------------------------------------ sentinel helpers */
 
@@ -186,12 +179,12 @@ static void test_rotate_q15_16_beyond_32768_gives_overflow(void)
 {
   /* [1, 0, 0, 0.5]: x' = 0.6 x - 0.8 y = 0.6 (2^31 - 1) + 0.8 2^31 raw
    * = 1.4 2^31 - 0.6, far beyond INT32_MAX */
-  static const drdc_quat_t q345 = { ONE30, 0, 0, ONE30 / 2 };
-  static const drdc_vec3_q15_16_t far = { INT32_MAX, INT32_MIN, 0 };
+  static const drdc_quat_t q345 = {ONE30, 0, 0, ONE30 / 2};
+  static const drdc_vec3_q15_16_t far = {INT32_MAX, INT32_MIN, 0};
   /* yaw 90: x' = -y = +2^31 raw = +32768 m, one LSB beyond INT32_MAX
    * (|v| = 32768 sqrt(2) m) */
-  static const drdc_quat_t q90 = { ONE30, 0, 0, ONE30 };
-  static const drdc_vec3_q15_16_t edge = { 0, INT32_MIN, INT32_MIN };
+  static const drdc_quat_t q90 = {ONE30, 0, 0, ONE30};
+  static const drdc_vec3_q15_16_t edge = {0, INT32_MIN, INT32_MIN};
   drdc_vec3_q15_16_t v;
 
   fill(&v, sizeof v);
@@ -215,13 +208,13 @@ static void test_rotate_q15_16_beyond_32768_gives_overflow(void)
 static void test_rotate_q47_16_beyond_max_gives_range(void)
 {
   static const drdc_vec3_q47_16_t beyond[] = {
-    { DRDC_ORIENT_Q47_16_MAX + 1, 0, 0 },
-    { 0, -DRDC_ORIENT_Q47_16_MAX - 1, 0 },
-    { 0, 0, INT64_MAX },
-    { INT64_MIN, 0, 0 },
+      {DRDC_ORIENT_Q47_16_MAX + 1, 0, 0},
+      {0, -DRDC_ORIENT_Q47_16_MAX - 1, 0},
+      {0, 0, INT64_MAX},
+      {INT64_MIN, 0, 0},
   };
-  static const drdc_vec3_q47_16_t at_max = { DRDC_ORIENT_Q47_16_MAX,
-                                             -DRDC_ORIENT_Q47_16_MAX, 0 };
+  static const drdc_vec3_q47_16_t at_max = {DRDC_ORIENT_Q47_16_MAX,
+                                            -DRDC_ORIENT_Q47_16_MAX, 0};
   drdc_vec3_q47_16_t g;
   size_t i;
 
@@ -256,19 +249,19 @@ static void test_compose_with_zero_gives_domain(void)
 /* A part of a * b at 2.0 or beyond: |a| |b| >= 2. */
 static void test_compose_product_beyond_2_gives_overflow(void)
 {
-  static const drdc_quat_t minus2 = { INT32_MIN, 0, 0, 0 };     /* -2 */
-  static const drdc_quat_t minus1 = { -ONE30, 0, 0, 0 };        /* -1 */
-  static const drdc_quat_t sx_plus = { ONE30, ONE30, 0, 0 };    /* [1, 1] */
-  static const drdc_quat_t sx_minus = { ONE30, -ONE30, 0, 0 };  /* [1, -1] */
+  static const drdc_quat_t minus2 = {INT32_MIN, 0, 0, 0};    /* -2 */
+  static const drdc_quat_t minus1 = {-ONE30, 0, 0, 0};       /* -1 */
+  static const drdc_quat_t sx_plus = {ONE30, ONE30, 0, 0};   /* [1, 1] */
+  static const drdc_quat_t sx_minus = {ONE30, -ONE30, 0, 0}; /* [1, -1] */
   drdc_quat_t q;
 
   fill(&q, sizeof q);
   /* -2 * -2 = 4 */
-  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_quat_compose(&minus2, &minus2,
-                                                           &q));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        drdc_quat_compose(&minus2, &minus2, &q));
   /* -2 * -1 = 2 */
-  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_quat_compose(&minus2, &minus1,
-                                                           &q));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        drdc_quat_compose(&minus2, &minus1, &q));
   /* [1, 1, 0, 0] [1, -1, 0, 0]: s = 1 - (1)(-1) = 2, x = -1 + 1 = 0 */
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
                         drdc_quat_compose(&sx_plus, &sx_minus, &q));
@@ -343,13 +336,10 @@ static void test_matrix_null_pointers_give_null(void)
  * direction. */
 static void test_euler_from_dcm_zero_column_and_row_gives_domain(void)
 {
-  static const drdc_dcm_t zero_m = { { { 0, 0, 0 },
-                                       { 0, 0, 0 },
-                                       { 0, 0, 0 } } };
+  static const drdc_dcm_t zero_m = {{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}};
   /* the rest of the matrix is not zero */
-  static const drdc_dcm_t hollow = { { { 0, ONE30, ONE30 },
-                                       { 0, ONE30, -ONE30 },
-                                       { 0, 0, 0 } } };
+  static const drdc_dcm_t hollow = {
+      {{0, ONE30, ONE30}, {0, ONE30, -ONE30}, {0, 0, 0}}};
   drdc_euler_t e;
 
   fill(&e, sizeof e);
@@ -362,24 +352,20 @@ static void test_euler_from_dcm_zero_column_and_row_gives_domain(void)
 static void test_dcm_mul_beyond_2_gives_overflow(void)
 {
   /* rows and columns [1, 1, 0]: element (1, 1) = 1 + 1 = 2.0 */
-  static const drdc_dcm_t shear = { { { ONE30, ONE30, 0 },
-                                      { ONE30, ONE30, 0 },
-                                      { 0, 0, ONE30 } } };
+  static const drdc_dcm_t shear = {
+      {{ONE30, ONE30, 0}, {ONE30, ONE30, 0}, {0, 0, ONE30}}};
   /* every element 1.0: each product element is 3.0 */
-  static const drdc_dcm_t ones = { { { ONE30, ONE30, ONE30 },
-                                     { ONE30, ONE30, ONE30 },
-                                     { ONE30, ONE30, ONE30 } } };
+  static const drdc_dcm_t ones = {
+      {{ONE30, ONE30, ONE30}, {ONE30, ONE30, ONE30}, {ONE30, ONE30, ONE30}}};
   /* every element -2.0: each product element is 12.0, whose Q60 sum
    * (3 2^62) is beyond int64 as well */
-  static const drdc_dcm_t minus2 = { { { INT32_MIN, INT32_MIN, INT32_MIN },
-                                       { INT32_MIN, INT32_MIN, INT32_MIN },
-                                       { INT32_MIN, INT32_MIN, INT32_MIN } } };
-  static const drdc_dcm_t late_a = { { { ONE30, 0, 0 },
-                                       { 0, ONE30, 0 },
-                                       { ONE30, ONE30, 0 } } };
-  static const drdc_dcm_t late_b = { { { ONE30, 0, 0 },
-                                       { ONE30, 0, 0 },
-                                       { 0, 0, ONE30 } } };
+  static const drdc_dcm_t minus2 = {{{INT32_MIN, INT32_MIN, INT32_MIN},
+                                     {INT32_MIN, INT32_MIN, INT32_MIN},
+                                     {INT32_MIN, INT32_MIN, INT32_MIN}}};
+  static const drdc_dcm_t late_a = {
+      {{ONE30, 0, 0}, {0, ONE30, 0}, {ONE30, ONE30, 0}}};
+  static const drdc_dcm_t late_b = {
+      {{ONE30, 0, 0}, {ONE30, 0, 0}, {0, 0, ONE30}}};
   drdc_dcm_t m;
 
   fill(&m, sizeof m);
@@ -401,7 +387,7 @@ static void test_dcm_apply_q15_16_beyond_32768_gives_overflow(void)
 {
   /* yaw 45: x' = c (x - y) / 2^30 = c (2^32 - 1) / 2^30 raw
    * > 0.7 (2^32 - 1), about 1.4 2^31: beyond INT32_MAX */
-  static const drdc_vec3_q15_16_t far = { INT32_MAX, INT32_MIN, 0 };
+  static const drdc_vec3_q15_16_t far = {INT32_MAX, INT32_MIN, 0};
   drdc_vec3_q15_16_t v;
 
   fill(&v, sizeof v);
@@ -421,9 +407,9 @@ static void test_dcm_apply_q15_16_beyond_32768_gives_overflow(void)
 static void test_dcm_apply_q47_16_beyond_max_gives_range(void)
 {
   static const drdc_vec3_q47_16_t beyond[] = {
-    { DRDC_ORIENT_Q47_16_MAX + 1, 0, 0 },
-    { 0, -DRDC_ORIENT_Q47_16_MAX - 1, 0 },
-    { 0, 0, INT64_MIN },
+      {DRDC_ORIENT_Q47_16_MAX + 1, 0, 0},
+      {0, -DRDC_ORIENT_Q47_16_MAX - 1, 0},
+      {0, 0, INT64_MIN},
   };
   drdc_vec3_q47_16_t g;
   size_t i;
@@ -441,15 +427,13 @@ static void test_dcm_apply_q47_16_beyond_max_gives_range(void)
  * three, 3 2^62, does not fit int64. */
 static void test_dcm_apply_q47_16_sum_beyond_int64_gives_overflow(void)
 {
-  static const drdc_dcm_t row_minus2 = { { { INT32_MIN, INT32_MIN, INT32_MIN },
-                                           { 0, ONE30, 0 },
-                                           { 0, 0, ONE30 } } };
-  static const drdc_vec3_q47_16_t at_min = { -DRDC_ORIENT_Q47_16_MAX,
-                                             -DRDC_ORIENT_Q47_16_MAX,
-                                             -DRDC_ORIENT_Q47_16_MAX };
-  static const drdc_vec3_q47_16_t at_max = { DRDC_ORIENT_Q47_16_MAX,
-                                             DRDC_ORIENT_Q47_16_MAX,
-                                             DRDC_ORIENT_Q47_16_MAX };
+  static const drdc_dcm_t row_minus2 = {
+      {{INT32_MIN, INT32_MIN, INT32_MIN}, {0, ONE30, 0}, {0, 0, ONE30}}};
+  static const drdc_vec3_q47_16_t at_min = {-DRDC_ORIENT_Q47_16_MAX,
+                                            -DRDC_ORIENT_Q47_16_MAX,
+                                            -DRDC_ORIENT_Q47_16_MAX};
+  static const drdc_vec3_q47_16_t at_max = {
+      DRDC_ORIENT_Q47_16_MAX, DRDC_ORIENT_Q47_16_MAX, DRDC_ORIENT_Q47_16_MAX};
   drdc_vec3_q47_16_t g;
 
   fill(&g, sizeof g);
@@ -478,24 +462,15 @@ static void test_interpolation_null_pointers_give_null(void)
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_quat_slerp(NULL, b, half, &q));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_quat_slerp(a, NULL, half, &q));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_quat_slerp(a, b, half, NULL));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
-                        drdc_quat_squad_control(NULL, b, c, &q));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
-                        drdc_quat_squad_control(a, NULL, c, &q));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
-                        drdc_quat_squad_control(a, b, NULL, &q));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
-                        drdc_quat_squad_control(a, b, c, NULL));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
-                        drdc_quat_squad(NULL, b, a, b, half, &q));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
-                        drdc_quat_squad(a, NULL, a, b, half, &q));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
-                        drdc_quat_squad(a, b, NULL, b, half, &q));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
-                        drdc_quat_squad(a, b, a, NULL, half, &q));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
-                        drdc_quat_squad(a, b, a, b, half, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_quat_squad_control(NULL, b, c, &q));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_quat_squad_control(a, NULL, c, &q));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_quat_squad_control(a, b, NULL, &q));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_quat_squad_control(a, b, c, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_quat_squad(NULL, b, a, b, half, &q));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_quat_squad(a, NULL, a, b, half, &q));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_quat_squad(a, b, NULL, b, half, &q));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_quat_squad(a, b, a, NULL, half, &q));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_quat_squad(a, b, a, b, half, NULL));
   TEST_ASSERT_TRUE(untouched(&q, sizeof q));
 }
 
@@ -518,7 +493,7 @@ static void test_nlerp_to_zero_gives_domain(void)
 
 static void test_slerp_of_zero_gives_domain(void)
 {
-  static const drdc_q1_30_t ts[] = { 0, ONE30 / 2, ONE30 };
+  static const drdc_q1_30_t ts[] = {0, ONE30 / 2, ONE30};
   drdc_quat_t q;
   size_t i;
 
@@ -537,9 +512,8 @@ static void test_squad_control_zero_key_gives_domain(void)
   drdc_quat_t q;
 
   fill(&q, sizeof q);
-  TEST_ASSERT_EQUAL_INT(
-      DRDC_E_DOMAIN,
-      drdc_quat_squad_control(&zero_q, &identity_q, &yaw90_q, &q));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN, drdc_quat_squad_control(
+                                           &zero_q, &identity_q, &yaw90_q, &q));
   TEST_ASSERT_EQUAL_INT(
       DRDC_E_DOMAIN, drdc_quat_squad_control(&roll90_q, &zero_q, &yaw90_q, &q));
   TEST_ASSERT_EQUAL_INT(
@@ -553,7 +527,7 @@ static void test_squad_zero_quaternion_gives_domain(void)
   const drdc_quat_t *a = &identity_q;
   const drdc_quat_t *b = &yaw90_q;
   const drdc_quat_t *z = &zero_q;
-  static const drdc_q1_30_t ts[] = { 0, ONE30 / 2, ONE30 };
+  static const drdc_q1_30_t ts[] = {0, ONE30 / 2, ONE30};
   drdc_quat_t q;
   size_t i;
 
@@ -628,8 +602,7 @@ static void test_transform_null_pointers_give_null(void)
                         drdc_transform_compose(&t_local, &t_local, NULL));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_transform_invert(NULL, &t));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_transform_invert(&t_local, NULL));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
-                        drdc_transform_point(NULL, &v_local, &v));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_transform_point(NULL, &v_local, &v));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_transform_point(&t_local, NULL, &v));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
                         drdc_transform_point(&t_local, &v_local, NULL));
@@ -679,18 +652,12 @@ static void test_transform_compose_beyond_32768_gives_overflow(void)
 {
   /* identity rotations: t = (2^31 - 1) + (2^31 - 1) raw in x */
   static const drdc_transform_t far_x = {
-    { { { ONE30, 0, 0 }, { 0, ONE30, 0 }, { 0, 0, ONE30 } } },
-    { INT32_MAX, 0, 0 }
-  };
+      {{{ONE30, 0, 0}, {0, ONE30, 0}, {0, 0, ONE30}}}, {INT32_MAX, 0, 0}};
   /* -2^31 + -1 raw in y */
   static const drdc_transform_t far_y = {
-    { { { ONE30, 0, 0 }, { 0, ONE30, 0 }, { 0, 0, ONE30 } } },
-    { 0, INT32_MIN, 0 }
-  };
+      {{{ONE30, 0, 0}, {0, ONE30, 0}, {0, 0, ONE30}}}, {0, INT32_MIN, 0}};
   static const drdc_transform_t minus_y = {
-    { { { ONE30, 0, 0 }, { 0, ONE30, 0 }, { 0, 0, ONE30 } } },
-    { 0, -1, 0 }
-  };
+      {{{ONE30, 0, 0}, {0, ONE30, 0}, {0, 0, ONE30}}}, {0, -1, 0}};
   drdc_transform_t t;
 
   fill(&t, sizeof t);
@@ -719,9 +686,8 @@ static void test_transform_compose_beyond_32768_gives_overflow(void)
 static void test_transform_invert_beyond_32768_gives_overflow(void)
 {
   static const drdc_transform_t far = {
-    { { { C45, -C45, 0 }, { C45, C45, 0 }, { 0, 0, ONE30 } } },
-    { INT32_MIN, INT32_MAX, 0 }
-  };
+      {{{C45, -C45, 0}, {C45, C45, 0}, {0, 0, ONE30}}},
+      {INT32_MIN, INT32_MAX, 0}};
   drdc_transform_t t;
 
   fill(&t, sizeof t);
@@ -742,9 +708,9 @@ static void test_transform_invert_beyond_32768_gives_overflow(void)
 static void test_quat_difference_with_int32_min_vector_part_overflows(void)
 {
   /* a = [0, -2, 0, 0]: conj(a) needs +2.0 in x, beyond Q1.30's [-2, 2) */
-  const drdc_quat_t a = { 0, INT32_MIN, 0, 0 };
-  const drdc_quat_t b = { ONE30, 0, 0, 0 };
-  drdc_quat_t out = { SENTINEL32, SENTINEL32, SENTINEL32, SENTINEL32 };
+  const drdc_quat_t a = {0, INT32_MIN, 0, 0};
+  const drdc_quat_t b = {ONE30, 0, 0, 0};
+  drdc_quat_t out = {SENTINEL32, SENTINEL32, SENTINEL32, SENTINEL32};
 
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, drdc_quat_difference(&a, &b, &out));
   TEST_ASSERT_EQUAL_INT32(SENTINEL32, out.s);

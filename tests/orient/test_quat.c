@@ -23,20 +23,20 @@
 #include "vectors_orient.h"
 
 /* Measured maxima (LSB of Q1.30 unless said otherwise). */
-#define TOL_EULER_TO_QUAT 1      /* Euler -> quaternion, per part */
-#define TOL_EULER_TO_DCM 1       /* Euler -> matrix, per element */
-#define TOL_QUAT_TO_DCM 2        /* quaternion -> matrix (2: parts > 1.0) */
+#define TOL_EULER_TO_QUAT     1  /* Euler -> quaternion, per part */
+#define TOL_EULER_TO_DCM      1  /* Euler -> matrix, per element */
+#define TOL_QUAT_TO_DCM       2  /* quaternion -> matrix (2: parts > 1.0) */
 #define TOL_QUAT_TO_EULER_SUB 18 /* 1/16 binary-angle units (1e-7 deg = 19) */
-#define TOL_DCM_TO_EULER_SUB 25 /* rounded matrix -> Euler, 1/16 units */
-#define TOL_DCM_TO_QUAT 1        /* matrix -> quaternion, per part */
-#define TOL_NORM_LSB2 (INT64_C(1) << 32) /* |q|^2 - 1: 2 LSB of |q| - 1 */
-#define TOL_ROT_Q15_16 0         /* rotated local vector, LSB of Q15.16 */
-#define TOL_ROT_Q47_16 1         /* rotated global vector, LSB of Q47.16 */
-#define TOL_AXIS_ANGLE 1         /* axis-angle -> quaternion, per part */
-#define TOL_SLERP 2              /* slerp against SciPy's Slerp, per part */
-#define TOL_ROUND_TRIP_EULER 3   /* Euler -> q -> Euler, binary-angle units */
-#define TOL_ROUND_TRIP_DCM 1     /* q -> matrix -> q, per part */
-#define TOL_Q_CONJ_Q 2           /* q conj(q) - 1 = 2 (|q| - 1), rounded */
+#define TOL_DCM_TO_EULER_SUB  25 /* rounded matrix -> Euler, 1/16 units */
+#define TOL_DCM_TO_QUAT       1  /* matrix -> quaternion, per part */
+#define TOL_NORM_LSB2         (INT64_C(1) << 32) /* |q|^2 - 1: 2 LSB of |q| - 1 */
+#define TOL_ROT_Q15_16        0 /* rotated local vector, LSB of Q15.16 */
+#define TOL_ROT_Q47_16        1 /* rotated global vector, LSB of Q47.16 */
+#define TOL_AXIS_ANGLE        1 /* axis-angle -> quaternion, per part */
+#define TOL_SLERP             2 /* slerp against SciPy's Slerp, per part */
+#define TOL_ROUND_TRIP_EULER  3 /* Euler -> q -> Euler, binary-angle units */
+#define TOL_ROUND_TRIP_DCM    1 /* q -> matrix -> q, per part */
+#define TOL_Q_CONJ_Q          2 /* q conj(q) - 1 = 2 (|q| - 1), rounded */
 
 /* Number of in-test random cases of each consistency check. */
 #define RANDOM_CASES 20000u
@@ -67,8 +67,7 @@ static void parts_of(const drdc_quat_t *q, int32_t p[4])
 
 /* Each product of a table: the status, and on success the four parts,
  * exactly (the tables hold the correctly rounded product). */
-static void expect_mul_table(const struct orient_mul_vector *vectors,
-                             size_t n)
+static void expect_mul_table(const struct orient_mul_vector *vectors, size_t n)
 {
   size_t i;
 
@@ -76,7 +75,7 @@ static void expect_mul_table(const struct orient_mul_vector *vectors,
     const struct orient_mul_vector *v = &vectors[i];
     drdc_quat_t a = quat_of(v->a);
     drdc_quat_t b = quat_of(v->b);
-    drdc_quat_t p = { 7, 7, 7, 7 };
+    drdc_quat_t p = {7, 7, 7, 7};
 
     TEST_ASSERT_EQUAL_INT(v->status, drdc_quat_mul(&a, &b, &p));
     if (v->status == 0) {
@@ -238,7 +237,7 @@ static void test_rotate_q15_16_is_correctly_rounded(void)
     const struct orient_rotate_exact_vector *v =
         &orient_rotate_exact_vectors[i];
     drdc_quat_t q = quat_of(v->q);
-    drdc_vec3_q15_16_t l = { v->v[0], v->v[1], v->v[2] };
+    drdc_vec3_q15_16_t l = {v->v[0], v->v[1], v->v[2]};
 
     TEST_ASSERT_EQUAL_INT(v->status, drdc_quat_rotate_q15_16(&q, &l, &l));
     if (v->status == 0) {
@@ -261,8 +260,8 @@ static void test_rotate_vectors_match_scipy_and_mpmath(void)
   for (i = 0; i < COUNT(orient_rotate_vectors); i++) {
     const struct orient_rotate_vector *v = &orient_rotate_vectors[i];
     drdc_quat_t q = quat_of(v->q);
-    drdc_vec3_q15_16_t l = { v->v[0], v->v[1], v->v[2] };
-    drdc_vec3_q47_16_t g = { v->g[0], v->g[1], v->g[2] };
+    drdc_vec3_q15_16_t l = {v->v[0], v->v[1], v->v[2]};
+    drdc_vec3_q47_16_t g = {v->g[0], v->g[1], v->g[2]};
     int64_t d;
 
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_quat_rotate_q15_16(&q, &l, &l));
@@ -289,19 +288,19 @@ static void test_axis_angle_matches_scipy(void)
 
   for (i = 0; i < COUNT(orient_axis_vectors); i++) {
     const struct orient_axis_vector *v = &orient_axis_vectors[i];
-    drdc_vec3_q1_30_t axis = { v->axis[0], v->axis[1], v->axis[2] };
+    drdc_vec3_q1_30_t axis = {v->axis[0], v->axis[1], v->axis[2]};
     drdc_vec3_q1_30_t back;
     drdc_quat_t q;
     drdc_bam32_t angle;
     int64_t d;
 
-    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_quat_from_axis_angle(&axis, v->angle,
-                                                             &q));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_quat_from_axis_angle(&axis, v->angle, &q));
     d = orient_qdiff_signed(&q, v->q);
     mq = (d > mq) ? d : mq;
     /* and back: the same rotation (angle in [0, 180] degrees) */
-    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_axis_angle_from_quat(&q, &back,
-                                                             &angle));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_axis_angle_from_quat(&q, &back, &angle));
     TEST_ASSERT_TRUE(angle <= (UINT32_C(1) << 31));
   }
   ORIENT_REPORT("axis-angle->quat LSB", mq);
@@ -451,21 +450,21 @@ static void test_random_dcm_round_trip(void)
 static void test_euler_canonical(void)
 {
   static const uint32_t in[4][3] = {
-    { 0u, UINT32_C(0x50000000), 0u },          /* pitch 112.5 */
-    { 5u, UINT32_C(0xB0000000), 7u },          /* pitch -112.5 */
-    { UINT32_C(0x20000000), UINT32_C(0x40000000), UINT32_C(0x10000000) },
-    { UINT32_C(0x20000000), UINT32_C(0xC0000000), UINT32_C(0x10000000) },
+      {0u, UINT32_C(0x50000000), 0u}, /* pitch 112.5 */
+      {5u, UINT32_C(0xB0000000), 7u}, /* pitch -112.5 */
+      {UINT32_C(0x20000000), UINT32_C(0x40000000), UINT32_C(0x10000000)},
+      {UINT32_C(0x20000000), UINT32_C(0xC0000000), UINT32_C(0x10000000)},
   };
   static const uint32_t want[4][3] = {
-    { UINT32_C(0x80000000), UINT32_C(0x30000000), UINT32_C(0x80000000) },
-    { UINT32_C(0x80000005), UINT32_C(0xD0000000), UINT32_C(0x80000007) },
-    { UINT32_C(0x10000000), UINT32_C(0x40000000), 0u },
-    { UINT32_C(0x30000000), UINT32_C(0xC0000000), 0u },
+      {UINT32_C(0x80000000), UINT32_C(0x30000000), UINT32_C(0x80000000)},
+      {UINT32_C(0x80000005), UINT32_C(0xD0000000), UINT32_C(0x80000007)},
+      {UINT32_C(0x10000000), UINT32_C(0x40000000), 0u},
+      {UINT32_C(0x30000000), UINT32_C(0xC0000000), 0u},
   };
   unsigned k;
 
   for (k = 0u; k < 4u; k++) {
-    drdc_euler_t e = { in[k][0], in[k][1], in[k][2] };
+    drdc_euler_t e = {in[k][0], in[k][1], in[k][2]};
 
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_euler_canonical(&e, &e));
     TEST_ASSERT_EQUAL_HEX32(want[k][0], e.yaw);
@@ -477,12 +476,11 @@ static void test_euler_canonical(void)
 
 static void test_gimbal_lock_sets_roll_to_zero(void)
 {
-  static const uint32_t pitches[2] = { UINT32_C(1) << 30,
-                                       UINT32_C(3) << 30 };
+  static const uint32_t pitches[2] = {UINT32_C(1) << 30, UINT32_C(3) << 30};
   unsigned k;
 
   for (k = 0u; k < 2u; k++) {
-    drdc_euler_t e = { UINT32_C(0x15555555), pitches[k], UINT32_C(1) << 28 };
+    drdc_euler_t e = {UINT32_C(0x15555555), pitches[k], UINT32_C(1) << 28};
     drdc_euler_t back;
     drdc_dcm_t m;
     drdc_dcm_t m2;
@@ -491,13 +489,12 @@ static void test_gimbal_lock_sets_roll_to_zero(void)
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_quat_from_euler(&e, &q));
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_euler_from_quat(&q, &back));
     TEST_ASSERT_EQUAL_UINT32(0u, back.roll);
-    TEST_ASSERT_TRUE(orient_abs64(orient_bam_diff(back.pitch, pitches[k]))
-                     <= 64);
+    TEST_ASSERT_TRUE(orient_abs64(orient_bam_diff(back.pitch, pitches[k])) <=
+                     64);
     /* yaw - roll (pitch +90) or yaw + roll (pitch -90) carries it all */
     TEST_ASSERT_TRUE(
         orient_abs64(orient_bam_diff(
-            back.yaw, (k == 0u) ? (e.yaw - e.roll) : (e.yaw + e.roll)))
-        <= 64);
+            back.yaw, (k == 0u) ? (e.yaw - e.roll) : (e.yaw + e.roll))) <= 64);
     /* and it is the same rotation */
     (void)drdc_dcm_from_quat(&q, &m);
     (void)drdc_dcm_from_euler(&back, &m2);
@@ -542,11 +539,11 @@ static void test_near_gimbal_lock_keeps_the_rotation(void)
 
 static void test_zero_and_null_inputs(void)
 {
-  const drdc_quat_t zero = { 0, 0, 0, 0 };
-  drdc_quat_t out = { 5, 5, 5, 5 };
-  drdc_euler_t e = { 1u, 2u, 3u };
+  const drdc_quat_t zero = {0, 0, 0, 0};
+  drdc_quat_t out = {5, 5, 5, 5};
+  drdc_euler_t e = {1u, 2u, 3u};
   drdc_dcm_t m;
-  drdc_vec3_q1_30_t axis = { 0, 0, 0 };
+  drdc_vec3_q1_30_t axis = {0, 0, 0};
 
   TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN, drdc_quat_normalize(&zero, &out));
   TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN, drdc_euler_from_quat(&zero, &e));
@@ -561,8 +558,8 @@ static void test_zero_and_null_inputs(void)
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_quat_from_euler(NULL, &out));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_euler_from_quat(&zero, NULL));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_quat_from_dcm(NULL, &out));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_axis_angle_from_quat(&zero, NULL,
-                                                               NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_axis_angle_from_quat(&zero, NULL, NULL));
   {
     unsigned k;
 
@@ -579,22 +576,22 @@ static void test_zero_and_null_inputs(void)
 static void test_near_zero_and_huge_quaternions(void)
 {
   static const drdc_quat_t in[] = {
-    { 1, 0, 0, 0 },
-    { 0, 0, 0, -1 },
-    { 1, 1, 1, 1 },
-    { INT32_MIN, INT32_MIN, INT32_MIN, INT32_MIN },
-    { INT32_MAX, INT32_MAX, INT32_MAX, INT32_MAX },
-    { INT32_MIN, 0, 0, 0 },
-    { INT32_MAX, 1, 0, -1 },
+      {1, 0, 0, 0},
+      {0, 0, 0, -1},
+      {1, 1, 1, 1},
+      {INT32_MIN, INT32_MIN, INT32_MIN, INT32_MIN},
+      {INT32_MAX, INT32_MAX, INT32_MAX, INT32_MAX},
+      {INT32_MIN, 0, 0, 0},
+      {INT32_MAX, 1, 0, -1},
   };
   static const drdc_quat_t want[] = {
-    { 1 << 30, 0, 0, 0 },
-    { 0, 0, 0, -(1 << 30) },
-    { 1 << 29, 1 << 29, 1 << 29, 1 << 29 },
-    { -(1 << 29), -(1 << 29), -(1 << 29), -(1 << 29) },
-    { 1 << 29, 1 << 29, 1 << 29, 1 << 29 },
-    { -(1 << 30), 0, 0, 0 },
-    { 1 << 30, 1, 0, -1 }, /* 1 / (2^31 - 1) 2^30 = 0.5000000002 */
+      {1 << 30, 0, 0, 0},
+      {0, 0, 0, -(1 << 30)},
+      {1 << 29, 1 << 29, 1 << 29, 1 << 29},
+      {-(1 << 29), -(1 << 29), -(1 << 29), -(1 << 29)},
+      {1 << 29, 1 << 29, 1 << 29, 1 << 29},
+      {-(1 << 30), 0, 0, 0},
+      {1 << 30, 1, 0, -1}, /* 1 / (2^31 - 1) 2^30 = 0.5000000002 */
   };
   size_t i;
 
@@ -611,11 +608,11 @@ static void test_near_zero_and_huge_quaternions(void)
 
 static void test_conj_inverse_canonical(void)
 {
-  drdc_quat_t q = { 1 << 29, -(1 << 29), 1 << 29, 1 << 29 };
+  drdc_quat_t q = {1 << 29, -(1 << 29), 1 << 29, 1 << 29};
   drdc_quat_t r;
-  drdc_quat_t big = { INT32_MIN, INT32_MIN, 0, 0 };
-  drdc_quat_t half = { 1 << 29, 0, 0, 0 };
-  drdc_quat_t small = { 1 << 28, 0, 0, 0 };
+  drdc_quat_t big = {INT32_MIN, INT32_MIN, 0, 0};
+  drdc_quat_t half = {1 << 29, 0, 0, 0};
+  drdc_quat_t small = {1 << 28, 0, 0, 0};
 
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_quat_conj(&q, &r));
   TEST_ASSERT_EQUAL_INT32(1 << 29, r.s);
@@ -649,8 +646,8 @@ static void test_conj_inverse_canonical(void)
 static void test_compose_difference_and_angle(void)
 {
   /* yaw 30 degrees then 60 more: 90 degrees between them */
-  drdc_euler_t e1 = { UINT32_C(0x15555555), 0u, 0u };
-  drdc_euler_t e2 = { UINT32_C(0x40000000), 0u, 0u };
+  drdc_euler_t e1 = {UINT32_C(0x15555555), 0u, 0u};
+  drdc_euler_t e2 = {UINT32_C(0x40000000), 0u, 0u};
   drdc_quat_t a;
   drdc_quat_t b;
   drdc_quat_t d;
@@ -666,8 +663,8 @@ static void test_compose_difference_and_angle(void)
   parts_of(&b, want);
   TEST_ASSERT_TRUE(orient_qdiff(&c, want) <= 2);
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_quat_angle_between(&a, &b, &ang));
-  TEST_ASSERT_TRUE(orient_abs64(orient_bam_diff(ang, UINT32_C(0x2AAAAAAB)))
-                   <= 4);
+  TEST_ASSERT_TRUE(orient_abs64(orient_bam_diff(ang, UINT32_C(0x2AAAAAAB))) <=
+                   4);
   /* q and -q: angle 0 */
   nb.s = -b.s;
   nb.x = -b.x;
@@ -679,12 +676,12 @@ static void test_compose_difference_and_angle(void)
 
 static void test_frames(void)
 {
-  drdc_vec3_q15_16_t v = { 1, 2, 3 };
-  drdc_vec3_q47_16_t g = { INT64_C(1) << 40, -2, 3 };
+  drdc_vec3_q15_16_t v = {1, 2, 3};
+  drdc_vec3_q47_16_t g = {INT64_C(1) << 40, -2, 3};
   drdc_quat_t q;
   drdc_quat_t r;
   drdc_quat_t back;
-  drdc_euler_t e = { UINT32_C(0x20000000), 0u, 0u }; /* yaw 45 degrees */
+  drdc_euler_t e = {UINT32_C(0x20000000), 0u, 0u}; /* yaw 45 degrees */
   drdc_dcm_t m;
   int32_t want[4];
 
@@ -720,10 +717,10 @@ static void test_frames(void)
 
 static void test_nlerp_squad_ends(void)
 {
-  drdc_euler_t e0 = { 0u, 0u, 0u };
-  drdc_euler_t e1 = { UINT32_C(0x10000000), UINT32_C(0x08000000), 0u };
-  drdc_euler_t e2 = { UINT32_C(0x20000000), 0u, UINT32_C(0x04000000) };
-  drdc_euler_t e3 = { UINT32_C(0x30000000), UINT32_C(0xF8000000), 0u };
+  drdc_euler_t e0 = {0u, 0u, 0u};
+  drdc_euler_t e1 = {UINT32_C(0x10000000), UINT32_C(0x08000000), 0u};
+  drdc_euler_t e2 = {UINT32_C(0x20000000), 0u, UINT32_C(0x04000000)};
+  drdc_euler_t e3 = {UINT32_C(0x30000000), UINT32_C(0xF8000000), 0u};
   drdc_quat_t q0;
   drdc_quat_t q1;
   drdc_quat_t q2;

@@ -19,7 +19,7 @@
 
 /* Measured maxima: quaternion parts in LSB of Q1.30, angles in 1/16
  * binary-angle units (1e-7 degree = 19). */
-#define TOL_RANDOM_QUAT 2
+#define TOL_RANDOM_QUAT      2
 #define TOL_RANDOM_EULER_SUB 15
 
 /* The generator's sequence: yaw, pitch in [-89, 89] degrees, roll. */
@@ -62,8 +62,8 @@ static void test_20000_random_orientations_match_scipy(void)
     d = orient_angle_err(back.pitch,
                          ((int64_t)(int32_t)e.pitch * 16) + delta[1], 16);
     me = (d > me) ? d : me;
-    d = orient_angle_err(back.roll,
-                         ((int64_t)(int32_t)e.roll * 16) + delta[2], 16);
+    d = orient_angle_err(back.roll, ((int64_t)(int32_t)e.roll * 16) + delta[2],
+                         16);
     me = (d > me) ? d : me;
   }
   ORIENT_REPORT("random euler->quat LSB", mq);
@@ -75,9 +75,9 @@ static void test_20000_random_orientations_match_scipy(void)
 /* angle_between, nlerp and axis-angle against SciPy / numpy (200 pairs:
  * random, q vs -q, nearly equal, exactly 180 degrees apart). */
 #define TOL_ANGLE_BETWEEN_SUB 32 /* 1/16 units: 2 binary-angle units */
-#define TOL_NLERP 2
-#define TOL_AXIS 1
-#define TOL_ROT_ANGLE_SUB 26
+#define TOL_NLERP             2
+#define TOL_AXIS              1
+#define TOL_ROT_ANGLE_SUB     26
 
 static void test_angle_nlerp_axis_match_scipy(void)
 {
@@ -89,8 +89,8 @@ static void test_angle_nlerp_axis_match_scipy(void)
 
   for (i = 0; i < COUNT(orient_extra_vectors); i++) {
     const struct orient_extra_vector *v = &orient_extra_vectors[i];
-    const drdc_quat_t a = { v->a[0], v->a[1], v->a[2], v->a[3] };
-    const drdc_quat_t b = { v->b[0], v->b[1], v->b[2], v->b[3] };
+    const drdc_quat_t a = {v->a[0], v->a[1], v->a[2], v->a[3]};
+    const drdc_quat_t b = {v->b[0], v->b[1], v->b[2], v->b[3]};
     drdc_quat_t n;
     drdc_vec3_q1_30_t axis;
     drdc_bam32_t ang;

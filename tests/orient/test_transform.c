@@ -19,19 +19,18 @@
 #include "unity.h"
 #include "vectors_dh.h"
 
-#define TOL_DH_ROT 2          /* LSB of Q1.30 per element */
-#define TOL_DH_POS_SUB 127    /* 2^-24 m units: 7.6 um */
-#define TOL_CHAIN_ROT 3       /* link-by-link compose vs forward, LSB */
-#define TOL_CHAIN_POS 3       /* LSB of Q15.16 */
-#define TOL_INVERSE_ROT 4     /* T T^-1 - I, LSB of Q1.30 */
-#define TOL_INVERSE_POS 1     /* LSB of Q15.16 */
+#define TOL_DH_ROT      2   /* LSB of Q1.30 per element */
+#define TOL_DH_POS_SUB  127 /* 2^-24 m units: 7.6 um */
+#define TOL_CHAIN_ROT   3   /* link-by-link compose vs forward, LSB */
+#define TOL_CHAIN_POS   3   /* LSB of Q15.16 */
+#define TOL_INVERSE_ROT 4   /* T T^-1 - I, LSB of Q1.30 */
+#define TOL_INVERSE_POS 1   /* LSB of Q15.16 */
 
 /* In-test random configurations of the consistency checks. */
 #define CHAIN_CASES 500u
 
-static void check_table(drdc_dh_convention_t conv,
-                        const drdc_dh_link_t *links, unsigned n,
-                        const struct dh_vector *v, size_t count,
+static void check_table(drdc_dh_convention_t conv, const drdc_dh_link_t *links,
+                        unsigned n, const struct dh_vector *v, size_t count,
                         const char *name)
 {
   int64_t mr = 0;
@@ -122,8 +121,8 @@ static void test_chain_compose_and_invert(void)
     TEST_ASSERT_EQUAL_INT(DRDC_OK,
                           drdc_dh_link_transform(conv, &links[0], q[0], &acc));
     for (k = 1u; k < n; k++) {
-      TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_dh_link_transform(conv, &links[k],
-                                                            q[k], &lt));
+      TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                            drdc_dh_link_transform(conv, &links[k], q[k], &lt));
       TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_transform_compose(&acc, &lt, &acc));
     }
     d = orient_maxdiff32(&fk.r.m[0][0], &acc.r.m[0][0], 9u);
@@ -157,9 +156,9 @@ static void test_chain_compose_and_invert(void)
  * 10 m from it: to world and back is exact to the rounding of R. */
 static void test_global_local_round_trip(void)
 {
-  const drdc_quat_t q = { 759250125, 0, 0, 759250125 }; /* yaw 90 deg */
-  const drdc_vec3_q15_16_t zero = { 0, 0, 0 };
-  const drdc_vec3_q15_16_t p = { 10 << 16, 3 << 16, -(1 << 15) };
+  const drdc_quat_t q = {759250125, 0, 0, 759250125}; /* yaw 90 deg */
+  const drdc_vec3_q15_16_t zero = {0, 0, 0};
+  const drdc_vec3_q15_16_t p = {10 << 16, 3 << 16, -(1 << 15)};
   drdc_transform_t local;
   drdc_transform_global_t g;
   drdc_transform_global_t g2;
@@ -195,8 +194,8 @@ static void test_global_local_round_trip(void)
                         drdc_transform_global_to_local(&g, &w, &back));
   /* a global frame followed by a local one */
   local.t = p;
-  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_transform_global_compose(&g, &local,
-                                                               &g2));
+  TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                        drdc_transform_global_compose(&g, &local, &g2));
   TEST_ASSERT_TRUE(g2.t.y == -(INT64_C(12345) << 16) + (INT64_C(10) << 16));
   /* directions ignore the translation */
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_transform_direction(&local, &p, &dir));
@@ -223,9 +222,8 @@ static void test_dh_bad_inputs(void)
                         drdc_dh_forward(DRDC_DH_STANDARD, links, 17u, q, &t));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
                         drdc_dh_forward(DRDC_DH_STANDARD, NULL, 2u, q, &t));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
-                        drdc_dh_forward((drdc_dh_convention_t)7, links, 2u, q,
-                                        &t));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_RANGE, drdc_dh_forward((drdc_dh_convention_t)7, links, 2u, q, &t));
   /* prismatic joint beyond the Q15.16 range */
   bad.d = INT32_MAX - 5;
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
@@ -248,7 +246,7 @@ static void test_dh_status_order_row_by_row(void)
 {
   drdc_transform_t t;
   drdc_dh_link_t links[8];
-  int32_t q[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
+  int32_t q[8] = {0, 0, 0, 0, 0, 0, 0, 0};
   unsigned k;
 
   for (k = 0u; k < 8u; k++) {

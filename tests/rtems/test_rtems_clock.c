@@ -24,11 +24,11 @@
 #include "../time/vectors_time.h"
 
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
-#define NS DRDC_NS_PER_SECOND
+#define NS       DRDC_NS_PER_SECOND
 /* The RTEMS time of day: 1988 (the RTEMS epoch) up to 2099 in every RTEMS
  * release (later ones accept more). */
 #define TOD_YEAR_FIRST 1988
-#define TOD_YEAR_LAST 2099
+#define TOD_YEAR_LAST  2099
 /* Far more than a set and a read take under QEMU (a few microseconds). */
 #define CLOCK_RUN_MAX_NS INT64_C(100000000)
 
@@ -52,8 +52,8 @@ static const struct time_special *row_at(int64_t sec)
   size_t i;
 
   for (i = 0; i < COUNT(time_specials); i++) {
-    if (((int64_t)time_specials[i].utc_sec == sec)
-        && (time_specials[i].nsec == 0)) {
+    if (((int64_t)time_specials[i].utc_sec == sec) &&
+        (time_specials[i].nsec == 0)) {
       return &time_specials[i];
     }
   }
@@ -77,7 +77,7 @@ static void expect_tod_fields(const struct time_special *civil,
 static void set_from_gps_and_read_back(const struct time_special *v,
                                        int64_t tick_ns)
 {
-  drdc_time_t utc = { (int64_t)v->utc_sec, v->nsec };
+  drdc_time_t utc = {(int64_t)v->utc_sec, v->nsec};
   drdc_time_gps_t gps;
   drdc_time_t from_gps;
   drdc_time_t now;
@@ -85,20 +85,20 @@ static void set_from_gps_and_read_back(const struct time_special *v,
   int64_t late_ns;
 
   /* beyond the leap table's expiry these succeed with a warning */
-  TEST_ASSERT_FALSE(drdc_status_is_error(drdc_time_utc_to_gps(NULL, &utc,
-                                                              &gps)));
-  TEST_ASSERT_FALSE(drdc_status_is_error(drdc_time_gps_to_utc(NULL, &gps,
-                                                              &from_gps)));
+  TEST_ASSERT_FALSE(
+      drdc_status_is_error(drdc_time_utc_to_gps(NULL, &utc, &gps)));
+  TEST_ASSERT_FALSE(
+      drdc_status_is_error(drdc_time_gps_to_utc(NULL, &gps, &from_gps)));
   TEST_ASSERT_EQUAL_INT64(utc.sec, from_gps.sec);
   TEST_ASSERT_EQUAL_INT32(utc.nsec, from_gps.nsec);
-  TEST_ASSERT_FALSE(drdc_status_is_error(drdc_rtems_clock_set_utc(NULL,
-                                                                  &from_gps)));
+  TEST_ASSERT_FALSE(
+      drdc_status_is_error(drdc_rtems_clock_set_utc(NULL, &from_gps)));
   TEST_ASSERT_EQUAL_INT(RTEMS_SUCCESSFUL, rtems_clock_get_tod(&tod));
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_rtems_clock_get_utc(&now));
 
   if ((posix_ns(v) % NS) < (NS - CLOCK_RUN_MAX_NS)) {
     const struct time_special *civil =
-      (v->nsec >= NS) ? row_at((int64_t)v->utc_sec + 1) : v;
+        (v->nsec >= NS) ? row_at((int64_t)v->utc_sec + 1) : v;
     if (civil != NULL) {
       expect_tod_fields(civil, &tod);
     }
@@ -134,8 +134,8 @@ static void test_clock_set_from_gps_reads_back_erfa_utc(void)
  * truncation aside. */
 static void test_clock_across_the_2016_leap_second(void)
 {
-  const drdc_time_gps_t gps = { 1930, 17, 500000000 };
-  const drdc_time_t leap = { INT64_C(1483228799), 1500000000 };
+  const drdc_time_gps_t gps = {1930, 17, 500000000};
+  const drdc_time_t leap = {INT64_C(1483228799), 1500000000};
   drdc_time_t utc;
   rtems_time_of_day tod;
 
@@ -152,13 +152,12 @@ static void test_clock_across_the_2016_leap_second(void)
   TEST_ASSERT_EQUAL_UINT32(0, tod.second);
   /* half a second of ticks, less the truncation and the run */
   TEST_ASSERT_UINT32_WITHIN(rtems_clock_get_ticks_per_second() / 10u,
-                            rtems_clock_get_ticks_per_second() / 2u,
-                            tod.ticks);
+                            rtems_clock_get_ticks_per_second() / 2u, tod.ticks);
 }
 
 static void test_clock_refuses_what_rtems_cannot_hold(void)
 {
-  const drdc_time_t before_epoch = { INT64_C(567993599), 0 }; /* 1987 */
+  const drdc_time_t before_epoch = {INT64_C(567993599), 0}; /* 1987 */
   drdc_time_t now;
 
   TEST_ASSERT_NOT_EQUAL_INT(DRDC_OK,

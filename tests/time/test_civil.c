@@ -21,8 +21,8 @@ static void test_days_from_civil_matches_datetime(void)
     const struct civil_vector *v = &civil_vectors[i];
     int32_t days = 0;
 
-    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_time_days_from_civil(
-                                       v->year, v->month, v->day, &days));
+    TEST_ASSERT_EQUAL_INT(
+        DRDC_OK, drdc_time_days_from_civil(v->year, v->month, v->day, &days));
     TEST_ASSERT_EQUAL_INT32(v->days, days);
   }
 }
@@ -37,7 +37,8 @@ static void test_civil_from_days_matches_datetime(void)
     int32_t m = 0;
     int32_t d = 0;
 
-    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_time_civil_from_days(v->days, &y, &m, &d));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_time_civil_from_days(v->days, &y, &m, &d));
     TEST_ASSERT_EQUAL_INT32(v->year, y);
     TEST_ASSERT_EQUAL_INT32(v->month, m);
     TEST_ASSERT_EQUAL_INT32(v->day, d);
@@ -50,13 +51,13 @@ static void test_civil_from_days_matches_datetime(void)
  * covers all 3 652 059 days. */
 static void test_every_day_follows_the_previous(void)
 {
-  static const int32_t month_days[13] = { 0, 31, 28, 31, 30, 31, 30,
-                                          31, 31, 30, 31, 30, 31 };
+  static const int32_t month_days[13] = {0,  31, 28, 31, 30, 31, 30,
+                                         31, 31, 30, 31, 30, 31};
   int32_t y = 1;
   int32_t m = 1;
   int32_t d = 1;
   int32_t days;
-  int32_t first_bad = INT32_MIN;  /* day count of the first mismatch */
+  int32_t first_bad = INT32_MIN; /* day count of the first mismatch */
 
   /* Plain comparisons in the loop: an assertion per day would spend most
    * of the run inside Unity. */
@@ -67,9 +68,10 @@ static void test_every_day_follows_the_previous(void)
     int32_t back = 0;
     int32_t last;
 
-    if ((drdc_time_civil_from_days(days, &gy, &gm, &gd) != DRDC_OK) || (gy != y)
-        || (gm != m) || (gd != d)
-        || (drdc_time_days_from_civil(y, m, d, &back) != DRDC_OK) || (back != days)) {
+    if ((drdc_time_civil_from_days(days, &gy, &gm, &gd) != DRDC_OK) ||
+        (gy != y) || (gm != m) || (gd != d) ||
+        (drdc_time_days_from_civil(y, m, d, &back) != DRDC_OK) ||
+        (back != days)) {
       first_bad = days;
       break;
     }
@@ -87,8 +89,9 @@ static void test_every_day_follows_the_previous(void)
       }
     }
   }
-  TEST_ASSERT_EQUAL_INT32_MESSAGE(INT32_MIN, first_bad, "first day count where the walk broke");
-  TEST_ASSERT_EQUAL_INT32(10000, y);  /* walked exactly to 10000-01-01 */
+  TEST_ASSERT_EQUAL_INT32_MESSAGE(INT32_MIN, first_bad,
+                                  "first day count where the walk broke");
+  TEST_ASSERT_EQUAL_INT32(10000, y); /* walked exactly to 10000-01-01 */
 }
 
 static void test_unix_epoch_is_day_zero(void)
@@ -106,29 +109,31 @@ static void test_bad_dates_give_their_status(void)
     int32_t year, month, day;
     drdc_status_t status;
   } bad[] = {
-    { 2024, 13, 1, DRDC_E_MONTH },  /* month 13 */
-    { 2024, 0, 1, DRDC_E_MONTH },   /* month 0 */
-    { 2024, 1, 0, DRDC_E_DAY },     /* day 0 */
-    { 2024, 1, 32, DRDC_E_DAY },    /* past the month's end */
-    { 2023, 2, 29, DRDC_E_DAY },    /* Feb 29 in a common year */
-    { 1900, 2, 29, DRDC_E_DAY },    /* century that is not a leap year */
-    { 2000, 2, 30, DRDC_E_DAY },    /* Feb 30 even in a leap year */
-    { 2024, 4, 31, DRDC_E_DAY },    /* 30-day month */
-    { 0, 1, 1, DRDC_E_YEAR },       /* before DRDC_YEAR_MIN */
-    { 10000, 1, 1, DRDC_E_YEAR },   /* after DRDC_YEAR_MAX */
-    { INT32_MIN, INT32_MIN, INT32_MIN, DRDC_E_YEAR },
-    { INT32_MAX, INT32_MAX, INT32_MAX, DRDC_E_YEAR },
+      {2024, 13, 1, DRDC_E_MONTH}, /* month 13 */
+      {2024, 0, 1, DRDC_E_MONTH},  /* month 0 */
+      {2024, 1, 0, DRDC_E_DAY},    /* day 0 */
+      {2024, 1, 32, DRDC_E_DAY},   /* past the month's end */
+      {2023, 2, 29, DRDC_E_DAY},   /* Feb 29 in a common year */
+      {1900, 2, 29, DRDC_E_DAY},   /* century that is not a leap year */
+      {2000, 2, 30, DRDC_E_DAY},   /* Feb 30 even in a leap year */
+      {2024, 4, 31, DRDC_E_DAY},   /* 30-day month */
+      {0, 1, 1, DRDC_E_YEAR},      /* before DRDC_YEAR_MIN */
+      {10000, 1, 1, DRDC_E_YEAR},  /* after DRDC_YEAR_MAX */
+      {INT32_MIN, INT32_MIN, INT32_MIN, DRDC_E_YEAR},
+      {INT32_MAX, INT32_MAX, INT32_MAX, DRDC_E_YEAR},
   };
   size_t i;
 
   for (i = 0; i < COUNT(bad); i++) {
     int32_t days = 12345;
 
-    TEST_ASSERT_EQUAL_INT(bad[i].status, drdc_time_days_from_civil(
-                                             bad[i].year, bad[i].month, bad[i].day, &days));
+    TEST_ASSERT_EQUAL_INT(bad[i].status,
+                          drdc_time_days_from_civil(bad[i].year, bad[i].month,
+                                                    bad[i].day, &days));
     TEST_ASSERT_EQUAL_INT32(12345, days);
   }
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_time_days_from_civil(2024, 2, 29, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_time_days_from_civil(2024, 2, 29, NULL));
 }
 
 static void test_bad_day_counts_give_range(void)
@@ -137,15 +142,20 @@ static void test_bad_day_counts_give_range(void)
   int32_t m = 7;
   int32_t d = 7;
 
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_time_civil_from_days(DRDC_TIME_DAYS_MIN - 1, &y, &m, &d));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_time_civil_from_days(DRDC_TIME_DAYS_MAX + 1, &y, &m, &d));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_time_civil_from_days(INT32_MIN, &y, &m, &d));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_time_civil_from_days(INT32_MAX, &y, &m, &d));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_time_civil_from_days(
+                                          DRDC_TIME_DAYS_MIN - 1, &y, &m, &d));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_time_civil_from_days(
+                                          DRDC_TIME_DAYS_MAX + 1, &y, &m, &d));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
+                        drdc_time_civil_from_days(INT32_MIN, &y, &m, &d));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
+                        drdc_time_civil_from_days(INT32_MAX, &y, &m, &d));
   TEST_ASSERT_EQUAL_INT32(7, y);
   TEST_ASSERT_EQUAL_INT32(7, m);
   TEST_ASSERT_EQUAL_INT32(7, d);
   /* every output may be NULL */
-  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_time_civil_from_days(0, NULL, NULL, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                        drdc_time_civil_from_days(0, NULL, NULL, NULL));
 }
 
 static void test_status_names(void)

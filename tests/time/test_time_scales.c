@@ -15,10 +15,10 @@
 #include "vectors_time.h"
 
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
-#define NS INT32_C(1000000000)
-#define DAY INT64_C(86400)
+#define NS       INT32_C(1000000000)
+#define DAY      INT64_C(86400)
 /* TAI seconds since 1958 of the GPS epoch (GPS = TAI - 19 s). */
-#define GPS_EPOCH_TAI INT64_C(694656019)
+#define GPS_EPOCH_TAI  INT64_C(694656019)
 #define UNIX_GPS_EPOCH INT64_C(315964800)
 
 static int64_t floor_div(int64_t a, int64_t b)
@@ -30,8 +30,8 @@ static int64_t floor_div(int64_t a, int64_t b)
 static drdc_status_t expected_status(int64_t utc_sec)
 {
   return (floor_div(utc_sec, DAY) >= LEAP_ORACLE_EXPIRY_DAY)
-           ? DRDC_W_LEAP_EXPIRED
-           : DRDC_OK;
+             ? DRDC_W_LEAP_EXPIRED
+             : DRDC_OK;
 }
 
 static void test_builtin_table_is_the_iers_table(void)
@@ -56,59 +56,59 @@ static const char *check_instant(const drdc_time_civil_t *c, int64_t utc_sec,
                                  int32_t nsec, int64_t tai_sec)
 {
   drdc_status_t want = expected_status(utc_sec);
-  drdc_time_t t = { 0, 0 };
-  drdc_time_t back = { 0, 0 };
+  drdc_time_t t = {0, 0};
+  drdc_time_t back = {0, 0};
   drdc_time_civil_t c2;
-  drdc_time_count_t k = { 0, 0 };
-  drdc_time_gps_t g = { 0, 0, 0 };
+  drdc_time_count_t k = {0, 0};
+  drdc_time_gps_t g = {0, 0, 0};
   int32_t sub = nsec % NS;
   int64_t unix_sec = utc_sec + ((nsec >= NS) ? 1 : 0);
 
-  if ((drdc_time_from_civil(NULL, c, &t) != DRDC_OK) || (t.sec != utc_sec)
-      || (t.nsec != nsec)) {
+  if ((drdc_time_from_civil(NULL, c, &t) != DRDC_OK) || (t.sec != utc_sec) ||
+      (t.nsec != nsec)) {
     return "civil -> utc";
   }
-  if ((drdc_time_to_civil(NULL, &t, &c2) != DRDC_OK) || (c2.year != c->year)
-      || (c2.month != c->month) || (c2.day != c->day) || (c2.hour != c->hour)
-      || (c2.minute != c->minute) || (c2.second != c->second)
-      || (c2.nsec != c->nsec)) {
+  if ((drdc_time_to_civil(NULL, &t, &c2) != DRDC_OK) || (c2.year != c->year) ||
+      (c2.month != c->month) || (c2.day != c->day) || (c2.hour != c->hour) ||
+      (c2.minute != c->minute) || (c2.second != c->second) ||
+      (c2.nsec != c->nsec)) {
     return "utc -> civil";
   }
-  if ((drdc_time_utc_to_tai(NULL, &t, &k) != want) || (k.sec != tai_sec)
-      || (k.nsec != sub)) {
+  if ((drdc_time_utc_to_tai(NULL, &t, &k) != want) || (k.sec != tai_sec) ||
+      (k.nsec != sub)) {
     return "utc -> tai";
   }
-  if ((drdc_time_tai_to_utc(NULL, &k, &back) != want) || (back.sec != t.sec)
-      || (back.nsec != t.nsec)) {
+  if ((drdc_time_tai_to_utc(NULL, &k, &back) != want) || (back.sec != t.sec) ||
+      (back.nsec != t.nsec)) {
     return "tai -> utc";
   }
   if (utc_sec >= UNIX_GPS_EPOCH) {
     int64_t gs = tai_sec - GPS_EPOCH_TAI;
 
-    if ((drdc_time_utc_to_gps(NULL, &t, &g) != want)
-        || (g.week != (int32_t)(gs / 604800))
-        || (g.tow != (int32_t)(gs % 604800)) || (g.nsec != sub)) {
+    if ((drdc_time_utc_to_gps(NULL, &t, &g) != want) ||
+        (g.week != (int32_t)(gs / 604800)) ||
+        (g.tow != (int32_t)(gs % 604800)) || (g.nsec != sub)) {
       return "utc -> gps";
     }
-    if ((drdc_time_gps_to_utc(NULL, &g, &back) != want) || (back.sec != t.sec)
-        || (back.nsec != t.nsec)) {
+    if ((drdc_time_gps_to_utc(NULL, &g, &back) != want) ||
+        (back.sec != t.sec) || (back.nsec != t.nsec)) {
       return "gps -> utc";
     }
   }
-  if ((drdc_time_utc_to_unix(NULL, &t, &k) != DRDC_OK) || (k.sec != unix_sec)
-      || (k.nsec != sub)) {
+  if ((drdc_time_utc_to_unix(NULL, &t, &k) != DRDC_OK) || (k.sec != unix_sec) ||
+      (k.nsec != sub)) {
     return "utc -> unix";
   }
-  if ((drdc_time_unix_to_utc(&k, &back) != DRDC_OK) || (back.sec != unix_sec)
-      || (back.nsec != sub)) {
+  if ((drdc_time_unix_to_utc(&k, &back) != DRDC_OK) || (back.sec != unix_sec) ||
+      (back.nsec != sub)) {
     return "unix -> utc";
   }
-  if ((drdc_time_utc_to_rtems(NULL, &t, &k) != DRDC_OK)
-      || (k.sec != unix_sec - DRDC_TIME_RTEMS_EPOCH_UNIX) || (k.nsec != sub)) {
+  if ((drdc_time_utc_to_rtems(NULL, &t, &k) != DRDC_OK) ||
+      (k.sec != unix_sec - DRDC_TIME_RTEMS_EPOCH_UNIX) || (k.nsec != sub)) {
     return "utc -> rtems";
   }
-  if ((drdc_time_rtems_to_utc(&k, &back) != DRDC_OK) || (back.sec != unix_sec)
-      || (back.nsec != sub)) {
+  if ((drdc_time_rtems_to_utc(&k, &back) != DRDC_OK) ||
+      (back.sec != unix_sec) || (back.nsec != sub)) {
     return "rtems -> utc";
   }
   return NULL;
@@ -131,8 +131,8 @@ static void test_special_instants_match_erfa(void)
     c.second = v->second;
     c.nsec = v->nsec % NS;
     what = check_instant(&c, (int64_t)v->utc_sec, v->nsec,
-                         (int64_t)v->utc_sec + DRDC_TIME_TAI_EPOCH_TO_UNIX
-                           + v->tai_excess);
+                         (int64_t)v->utc_sec + DRDC_TIME_TAI_EPOCH_TO_UNIX +
+                             v->tai_excess);
     if (what != NULL) {
       UnityPrint("special instant ");
       UnityPrintNumber((UNITY_INT)i);
@@ -171,14 +171,14 @@ static void test_random_instants_match_erfa(void)
     c.second = sod % 60;
     c.nsec = nsec;
     /* the expected status comes from the table's flag, cross-checked */
-    if (((random_tai_utc[i] & 0x80) != 0)
-        != (expected_status(sec) == DRDC_W_LEAP_EXPIRED)) {
+    if (((random_tai_utc[i] & 0x80) != 0) !=
+        (expected_status(sec) == DRDC_W_LEAP_EXPIRED)) {
       TEST_FAIL_MESSAGE("expiry flag of the vector disagrees");
       return;
     }
     what = check_instant(&c, sec, nsec,
-                         sec + DRDC_TIME_TAI_EPOCH_TO_UNIX
-                           + (random_tai_utc[i] & 0x7f));
+                         sec + DRDC_TIME_TAI_EPOCH_TO_UNIX +
+                             (random_tai_utc[i] & 0x7f));
     if (what != NULL) {
       UnityPrint("random instant ");
       UnityPrintNumber((UNITY_INT)i);
@@ -202,14 +202,14 @@ static void test_random_instants_jaus_stamps(void)
     int64_t sec = RANDOM_START + (int64_t)(((uint64_t)a * RANDOM_SPAN) >> 32);
     int32_t nsec = (int32_t)(((uint64_t)b * (uint64_t)NS) >> 32);
     uint32_t sod = (uint32_t)(sec % DAY);
-    uint32_t want = ((uint32_t)(random_dates[i] & 31) << 27)
-                    | ((sod / 3600) << 22) | (((sod / 60) % 60) << 16)
-                    | ((sod % 60) << 10) | (uint32_t)(nsec / 1000000);
+    uint32_t want = ((uint32_t)(random_dates[i] & 31) << 27) |
+                    ((sod / 3600) << 22) | (((sod / 60) % 60) << 16) |
+                    ((sod % 60) << 10) | (uint32_t)(nsec / 1000000);
     /* reference: within 14 days - 1 s, from bits already drawn */
     int64_t shift = (int64_t)((a ^ b) % (28u * 86400u - 1u)) - (14 * DAY - 1);
-    drdc_time_t t = { sec, nsec };
-    drdc_time_t ref = { sec + shift, (int32_t)(b % (uint32_t)NS) };
-    drdc_time_t back = { 0, 0 };
+    drdc_time_t t = {sec, nsec};
+    drdc_time_t ref = {sec + shift, (int32_t)(b % (uint32_t)NS)};
+    drdc_time_t back = {0, 0};
     uint32_t stamp = 0;
 
     if ((drdc_time_jaus_pack(NULL, &t, &stamp) != DRDC_OK) || (stamp != want)) {
@@ -217,8 +217,8 @@ static void test_random_instants_jaus_stamps(void)
       TEST_FAIL_MESSAGE("jaus pack");
       return;
     }
-    if ((drdc_time_jaus_to_utc(NULL, stamp, &ref, &back) != DRDC_OK)
-        || (back.sec != sec) || (back.nsec != (nsec / 1000000) * 1000000)) {
+    if ((drdc_time_jaus_to_utc(NULL, stamp, &ref, &back) != DRDC_OK) ||
+        (back.sec != sec) || (back.nsec != (nsec / 1000000) * 1000000)) {
       UnityPrintNumber((UNITY_INT)i);
       TEST_FAIL_MESSAGE("jaus to utc");
       return;

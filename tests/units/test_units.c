@@ -30,7 +30,8 @@ static const drdc_unit_t *unit(const char *name)
 {
   const drdc_unit_t *u = NULL;
 
-  TEST_ASSERT_EQUAL_INT_MESSAGE(DRDC_OK, drdc_units_find(name, length_of(name), &u), name);
+  TEST_ASSERT_EQUAL_INT_MESSAGE(
+      DRDC_OK, drdc_units_find(name, length_of(name), &u), name);
   return u;
 }
 
@@ -42,13 +43,13 @@ static drdc_unit_info_t info_of(const drdc_unit_t *u)
   return info;
 }
 
-static int64_t convert(int64_t raw, unsigned from_frac, const char *from, unsigned to_frac,
-                       const char *to)
+static int64_t convert(int64_t raw, unsigned from_frac, const char *from,
+                       unsigned to_frac, const char *to)
 {
   int64_t out = 0;
 
-  TEST_ASSERT_EQUAL_INT(DRDC_OK,
-                        drdc_units_convert(raw, from_frac, unit(from), to_frac, unit(to), &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_units_convert(raw, from_frac, unit(from),
+                                                    to_frac, unit(to), &out));
   return out;
 }
 
@@ -122,19 +123,23 @@ static void test_table_rules(void)
 static void test_named_conversions(void)
 {
   /* the header's example: 10 ft in Q47.16 metres */
-  TEST_ASSERT_EQUAL_INT64(199754, convert(INT64_C(10) << 16, 16, "ft", 16, "m"));
+  TEST_ASSERT_EQUAL_INT64(199754,
+                          convert(INT64_C(10) << 16, 16, "ft", 16, "m"));
   /* exact definitions */
   TEST_ASSERT_EQUAL_INT64(1852, convert(1, 0, "nmi", 0, "m"));
-  TEST_ASSERT_EQUAL_INT64(INT64_C(45359237000), convert(100000000, 0, "lb", 0, "g"));
+  TEST_ASSERT_EQUAL_INT64(INT64_C(45359237000),
+                          convert(100000000, 0, "lb", 0, "g"));
   TEST_ASSERT_EQUAL_INT64(INT64_C(44482216152605),
                           convert(INT64_C(10000000000000), 0, "lbf", 0, "N"));
   TEST_ASSERT_EQUAL_INT64(4184, convert(1000, 0, "cal", 0, "J"));
   /* pi-based: 360 degree is one turn; 1 degree = 3600 arcsec exactly */
-  TEST_ASSERT_EQUAL_INT64(INT64_C(1) << 40, convert(INT64_C(360) << 40, 40, "degree", 40, "turn"));
+  TEST_ASSERT_EQUAL_INT64(
+      INT64_C(1) << 40, convert(INT64_C(360) << 40, 40, "degree", 40, "turn"));
   TEST_ASSERT_EQUAL_INT64(3600, convert(1, 0, "degree", 0, "arcsec"));
   /* rpm and Hz share a dimension, as in GNU units: 60 rpm = 2 pi / s */
   TEST_ASSERT_EQUAL_INT64(6, convert(60, 0, "rpm", 0, "Hz"));
-  TEST_ASSERT_EQUAL_INT64(INT64_C(6283185307), convert(INT64_C(60000000000), 0, "rpm", 0, "radian/s"));
+  TEST_ASSERT_EQUAL_INT64(INT64_C(6283185307), convert(INT64_C(60000000000), 0,
+                                                       "rpm", 0, "radian/s"));
   /* data rate */
   TEST_ASSERT_EQUAL_INT64(125000, convert(1, 0, "Mbps", 0, "byte/s"));
 }
@@ -145,11 +150,15 @@ static void test_temperatures_are_affine(void)
   const int64_t one = INT64_C(1) << 32;
 
   /* 273.15 x 2^32 = 1173170316902.4 */
-  TEST_ASSERT_EQUAL_INT64(INT64_C(1173170316902), convert(0, 32, "degC", 32, "K"));
-  TEST_ASSERT_EQUAL_INT64(INT64_C(-1173170316902), convert(0, 32, "K", 32, "degC"));
+  TEST_ASSERT_EQUAL_INT64(INT64_C(1173170316902),
+                          convert(0, 32, "degC", 32, "K"));
+  TEST_ASSERT_EQUAL_INT64(INT64_C(-1173170316902),
+                          convert(0, 32, "K", 32, "degC"));
   TEST_ASSERT_EQUAL_INT64(0, convert(32 * one, 32, "degF", 32, "degC"));
-  TEST_ASSERT_EQUAL_INT64(-40 * one, convert(-40 * one, 32, "degC", 32, "degF"));
-  TEST_ASSERT_EQUAL_INT64(212 * one, convert(100 * one, 32, "tempC", 32, "tempF"));
+  TEST_ASSERT_EQUAL_INT64(-40 * one,
+                          convert(-40 * one, 32, "degC", 32, "degF"));
+  TEST_ASSERT_EQUAL_INT64(212 * one,
+                          convert(100 * one, 32, "tempC", 32, "tempF"));
   TEST_ASSERT_EQUAL_INT64(0, convert(0, 32, "K", 32, "degR"));
   /* -459.67 degF rounds to -460 */
   TEST_ASSERT_EQUAL_INT64(-460, convert(0, 0, "degR", 0, "degF"));
@@ -174,7 +183,7 @@ static void test_rounding_is_symmetric(void)
  * to 7 bits; temperatures with from_frac <= 48 and |raw| <= 2^53. */
 static void test_no_range_error_to_and_from_si(void)
 {
-  static const unsigned fracs[] = { 0u, 7u, 16u, 32u, 48u, 55u, 62u };
+  static const unsigned fracs[] = {0u, 7u, 16u, 32u, 48u, 55u, 62u};
   size_t i;
 
   for (i = 0u; i < N_VECTORS; i += 1u) {
@@ -184,8 +193,8 @@ static void test_no_range_error_to_and_from_si(void)
     size_t f;
     int d;
 
-    if ((i > 0u) && (units_vectors[i - 1u].from == units_vectors[i].from)
-        && (units_vectors[i - 1u].to == units_vectors[i].to)) {
+    if ((i > 0u) && (units_vectors[i - 1u].from == units_vectors[i].from) &&
+        (units_vectors[i - 1u].to == units_vectors[i].to)) {
       continue; /* one pass per unit pair */
     }
     for (f = 0u; f < sizeof fracs / sizeof fracs[0]; f++) {
@@ -197,8 +206,8 @@ static void test_no_range_error_to_and_from_si(void)
         if ((to < 0) || (to > 62) || (affine && (fracs[f] > 48u))) {
           continue;
         }
-        st = drdc_units_convert(affine ? (INT64_C(1) << 53) : INT64_C(1), fracs[f], a,
-                                (unsigned)to, b, &out);
+        st = drdc_units_convert(affine ? (INT64_C(1) << 53) : INT64_C(1),
+                                fracs[f], a, (unsigned)to, b, &out);
         TEST_ASSERT_TRUE_MESSAGE((st == DRDC_OK) || (st == DRDC_E_OVERFLOW),
                                  units_vectors[i].from);
         st = drdc_units_convert(-1, fracs[f], a, (unsigned)to, b, &out);
@@ -217,7 +226,8 @@ static void test_drdc_units_find_bad_input(void)
   u = keep;
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_units_find(NULL, 2, &u));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_units_find("ft", 2, NULL));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_UNKNOWN_UNIT, drdc_units_find("furlongs", 8, &u));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_UNKNOWN_UNIT,
+                        drdc_units_find("furlongs", 8, &u));
   TEST_ASSERT_EQUAL_INT(DRDC_E_UNKNOWN_UNIT, drdc_units_find("ft", 0, &u));
   TEST_ASSERT_EQUAL_INT(DRDC_E_UNKNOWN_UNIT, drdc_units_find("FT", 2, &u));
   TEST_ASSERT_EQUAL_PTR(keep, u);
@@ -233,7 +243,7 @@ static void test_drdc_units_find_bad_input(void)
  * last rows, and the bad input of drdc_units_describe. */
 static void test_drdc_units_describe(void)
 {
-  static const int8_t force[DRDC_UNITS_DIMENSIONS] = { 1, 1, -2, 0, 0 };
+  static const int8_t force[DRDC_UNITS_DIMENSIONS] = {1, 1, -2, 0, 0};
   drdc_unit_info_t info = info_of(unit("ft"));
   drdc_unit_info_t keep;
   size_t i;
@@ -260,7 +270,8 @@ static void test_drdc_units_describe(void)
   TEST_ASSERT_EQUAL_INT64(100, info.offset_den);
   TEST_ASSERT_EQUAL_INT(1, info.dimension[DRDC_UNITS_DIM_KELVIN]);
   /* lightyear: c x 365.25 d = 9460730472580800 m */
-  TEST_ASSERT_EQUAL_INT64(INT64_C(9460730472580800), info_of(unit("lightyear")).factor_num);
+  TEST_ASSERT_EQUAL_INT64(INT64_C(9460730472580800),
+                          info_of(unit("lightyear")).factor_num);
   /* first and last rows */
   TEST_ASSERT_EQUAL_STRING("m", info_of(drdc_units_at(0)).name);
   info = info_of(drdc_units_at(drdc_units_count() - 1u));
@@ -271,8 +282,9 @@ static void test_drdc_units_describe(void)
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_units_describe(NULL, &info));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_units_describe(unit("m"), NULL));
   /* a pointer that is no row of the table (compared, never read) */
-  TEST_ASSERT_EQUAL_INT(DRDC_E_UNKNOWN_UNIT,
-                        drdc_units_describe((const drdc_unit_t *)(const void *)&keep, &info));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_UNKNOWN_UNIT,
+      drdc_units_describe((const drdc_unit_t *)(const void *)&keep, &info));
   TEST_ASSERT_EQUAL_PTR(keep.name, info.name);
   TEST_ASSERT_EQUAL_INT64(keep.factor_num, info.factor_num);
 }
@@ -281,33 +293,47 @@ static void test_drdc_units_convert_bad_input(void)
 {
   int64_t out = 7;
 
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_units_convert(1, 0, NULL, 0, unit("m"), &out));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_units_convert(1, 0, unit("m"), 0, NULL, &out));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_units_convert(1, 0, unit("m"), 0, unit("ft"), NULL));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_DIMENSION,
-                        drdc_units_convert(1, 0, unit("ft"), 0, unit("kg"), &out));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_DIMENSION,
-                        drdc_units_convert(1, 0, unit("degC"), 0, unit("Pa"), &out));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_units_convert(1, 63, unit("m"), 0, unit("ft"), &out));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE, drdc_units_convert(1, 0, unit("m"), 63, unit("ft"), &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_units_convert(1, 0, NULL, 0, unit("m"), &out));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_units_convert(1, 0, unit("m"), 0, NULL, &out));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_NULL, drdc_units_convert(1, 0, unit("m"), 0, unit("ft"), NULL));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_DIMENSION,
+      drdc_units_convert(1, 0, unit("ft"), 0, unit("kg"), &out));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_DIMENSION,
+      drdc_units_convert(1, 0, unit("degC"), 0, unit("Pa"), &out));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_RANGE, drdc_units_convert(1, 63, unit("m"), 0, unit("ft"), &out));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_RANGE, drdc_units_convert(1, 0, unit("m"), 63, unit("ft"), &out));
   /* 9.46e25: no 63-bit factor */
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
-                        drdc_units_convert(1, 0, unit("lightyear"), 0, unit("angstrom"), &out));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
-                        drdc_units_convert(INT64_MAX / 100, 0, unit("km"), 0, unit("mm"), &out));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
-                        drdc_units_convert(INT64_MIN, 0, unit("ft"), 0, unit("in"), &out));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_RANGE,
+      drdc_units_convert(1, 0, unit("lightyear"), 0, unit("angstrom"), &out));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_OVERFLOW,
+      drdc_units_convert(INT64_MAX / 100, 0, unit("km"), 0, unit("mm"), &out));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_OVERFLOW,
+      drdc_units_convert(INT64_MIN, 0, unit("ft"), 0, unit("in"), &out));
   TEST_ASSERT_EQUAL_INT64(7, out);
 }
 
 static void test_drdc_units_compatible_bad_input(void)
 {
-  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_units_compatible(unit("rpm"), unit("Hz")));
-  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_units_compatible(unit("degree"), unit("radian")));
+  TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                        drdc_units_compatible(unit("rpm"), unit("Hz")));
+  TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                        drdc_units_compatible(unit("degree"), unit("radian")));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_units_compatible(NULL, unit("m")));
   TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_units_compatible(unit("m"), NULL));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_DIMENSION, drdc_units_compatible(unit("bps"), unit("Hz")));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_DIMENSION, drdc_units_compatible(unit("J"), unit("W")));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DIMENSION,
+                        drdc_units_compatible(unit("bps"), unit("Hz")));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DIMENSION,
+                        drdc_units_compatible(unit("J"), unit("W")));
 }
 
 void suite_units(void)

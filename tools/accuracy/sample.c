@@ -85,12 +85,11 @@ static void sample_line(const char *line)
   } else if (strcmp(op, "euler") == 0) {
     drdc_quat_t q;
     drdc_euler_t e;
-    if (sscanf(args, "%" SCNd32 " %" SCNd32 " %" SCNd32 " %" SCNd32, &q.s,
-               &q.x, &q.y, &q.z) == 4) {
+    if (sscanf(args, "%" SCNd32 " %" SCNd32 " %" SCNd32 " %" SCNd32, &q.s, &q.x,
+               &q.y, &q.z) == 4) {
       drdc_status_t st = drdc_euler_from_quat(&q, &e);
       if (st == DRDC_OK) {
-        printf("%" PRIu32 " %" PRIu32 " %" PRIu32 "\n", e.yaw, e.pitch,
-               e.roll);
+        printf("%" PRIu32 " %" PRIu32 " %" PRIu32 "\n", e.yaw, e.pitch, e.roll);
       } else {
         answer_status(st);
       }

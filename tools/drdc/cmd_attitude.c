@@ -36,8 +36,8 @@ static long long round_ll(long double x)
 
 enum repr { REPR_EULER, REPR_QUAT, REPR_DCM, REPR_NONE };
 
-static const char *const repr_names[3] = { "euler", "quat", "dcm" };
-static const int repr_fields[3] = { 3, 4, 9 };
+static const char *const repr_names[3] = {"euler", "quat", "dcm"};
+static const int repr_fields[3] = {3, 4, 9};
 
 /* Longest accepted line; longer ones are an error of their own. */
 #define LINE_MAX_CHARS 4096
@@ -77,8 +77,8 @@ static int parse_numbers(char *line, double *v, int max, char *err,
       return -1;
     }
     /* NaN, infinities (and overflowing text) are rejected */
-    if ((x != x) || (absd(x) > 1e300)
-        || ((errno == ERANGE) && (absd(x) > 1.0))) {
+    if ((x != x) || (absd(x) > 1e300) ||
+        ((errno == ERANGE) && (absd(x) > 1.0))) {
       snprintf(err, errlen, "'%.40s' is not a finite number", tok);
       return -1;
     }
@@ -138,21 +138,22 @@ static int check_rotation(const double *m, char *err, size_t errlen)
   }
   for (i = 0; i < 3; i++) {
     for (j = 0; j < 3; j++) {
-      double d = (m[3 * i] * m[3 * j]) + (m[3 * i + 1] * m[3 * j + 1])
-                 + (m[3 * i + 2] * m[3 * j + 2]) - ((i == j) ? 1.0 : 0.0);
+      double d = (m[3 * i] * m[3 * j]) + (m[3 * i + 1] * m[3 * j + 1]) +
+                 (m[3 * i + 2] * m[3 * j + 2]) - ((i == j) ? 1.0 : 0.0);
 
       if (absd(d) > DCM_TOLERANCE) {
-        snprintf(err, errlen, "not a rotation matrix (rows not orthonormal"
+        snprintf(err, errlen,
+                 "not a rotation matrix (rows not orthonormal"
                  " to 1e-4)");
         return -1;
       }
     }
   }
-  det = m[0] * (m[4] * m[8] - m[5] * m[7])
-        - m[1] * (m[3] * m[8] - m[5] * m[6])
-        + m[2] * (m[3] * m[7] - m[4] * m[6]);
+  det = m[0] * (m[4] * m[8] - m[5] * m[7]) -
+        m[1] * (m[3] * m[8] - m[5] * m[6]) + m[2] * (m[3] * m[7] - m[4] * m[6]);
   if (det < 0.0) {
-    snprintf(err, errlen, "not a rotation matrix (determinant -1: a "
+    snprintf(err, errlen,
+             "not a rotation matrix (determinant -1: a "
              "reflection)");
     return -1;
   }
@@ -175,8 +176,8 @@ static int convert(enum repr from, enum repr to, char *line, char *out,
     return -1;
   }
   if (n != repr_fields[from]) {
-    snprintf(err, errlen, "expected %d numbers (%s), got %d",
-             repr_fields[from], repr_names[from], n);
+    snprintf(err, errlen, "expected %d numbers (%s), got %d", repr_fields[from],
+             repr_names[from], n);
     return -1;
   }
   /* Input -> the library's representation of the same kind. */
@@ -274,8 +275,7 @@ static int convert(enum repr from, enum repr to, char *line, char *out,
 
       for (i = 0; (i < 9) && (len >= 0) && ((size_t)len < outlen); i++) {
         len += snprintf(out + len, outlen - (size_t)len, "%s%.10f",
-                        (i == 0) ? "" : " ",
-                        real_of_q30(m.m[i / 3][i % 3]));
+                        (i == 0) ? "" : " ", real_of_q30(m.m[i / 3][i % 3]));
       }
     }
     break;
@@ -288,21 +288,21 @@ static int convert(enum repr from, enum repr to, char *line, char *out,
 }
 
 static const char usage[] =
-  "usage: drdc attitude --from F --to T\n"
-  "\n"
-  "Reads one orientation per line on standard input and writes it in\n"
-  "another representation (F, T: euler, quat, dcm):\n"
-  "  euler  YAW PITCH ROLL, Z-Y-X, decimal degrees; output with 8\n"
-  "         decimals, yaw and roll in (-180, 180], pitch in [-90, 90]\n"
-  "         (at pitch +-90: roll 0, all rotation in yaw)\n"
-  "  quat   QS QX QY QZ, scalar first; input of any non-zero length is\n"
-  "         normalised; output with 10 decimals and QS > 0 (when QS = 0,\n"
-  "         the first non-zero part is positive)\n"
-  "  dcm    the 9 elements of the body-to-world rotation matrix, row by\n"
-  "         row, 10 decimals\n"
-  "Body frame x forward, y right, z down; world frame north-east-down.\n"
-  "A line that cannot be converted gives 'ERROR: <reason>'; the other\n"
-  "lines go on, and the exit status is 1 at the end.\n";
+    "usage: drdc attitude --from F --to T\n"
+    "\n"
+    "Reads one orientation per line on standard input and writes it in\n"
+    "another representation (F, T: euler, quat, dcm):\n"
+    "  euler  YAW PITCH ROLL, Z-Y-X, decimal degrees; output with 8\n"
+    "         decimals, yaw and roll in (-180, 180], pitch in [-90, 90]\n"
+    "         (at pitch +-90: roll 0, all rotation in yaw)\n"
+    "  quat   QS QX QY QZ, scalar first; input of any non-zero length is\n"
+    "         normalised; output with 10 decimals and QS > 0 (when QS = 0,\n"
+    "         the first non-zero part is positive)\n"
+    "  dcm    the 9 elements of the body-to-world rotation matrix, row by\n"
+    "         row, 10 decimals\n"
+    "Body frame x forward, y right, z down; world frame north-east-down.\n"
+    "A line that cannot be converted gives 'ERROR: <reason>'; the other\n"
+    "lines go on, and the exit status is 1 at the end.\n";
 
 int drdc_cmd_attitude(int argc, char **argv)
 {
@@ -317,13 +317,15 @@ int drdc_cmd_attitude(int argc, char **argv)
       fputs(usage, stdout);
       return 0;
     }
-    if (((strcmp(argv[i], "--from") == 0) || (strcmp(argv[i], "--to") == 0))
-        && (i + 1 < argc)) {
+    if (((strcmp(argv[i], "--from") == 0) || (strcmp(argv[i], "--to") == 0)) &&
+        (i + 1 < argc)) {
       enum repr r = parse_repr(argv[i + 1]);
 
       if (r == REPR_NONE) {
-        fprintf(stderr, "drdc attitude: unknown representation '%s' "
-                "(euler, quat or dcm)\n", argv[i + 1]);
+        fprintf(stderr,
+                "drdc attitude: unknown representation '%s' "
+                "(euler, quat or dcm)\n",
+                argv[i + 1]);
         return 2;
       }
       if (argv[i][2] == 'f') {
@@ -333,14 +335,13 @@ int drdc_cmd_attitude(int argc, char **argv)
       }
       i++;
     } else {
-      fprintf(stderr, "drdc attitude: unexpected argument '%s'\n%s",
-              argv[i], usage);
+      fprintf(stderr, "drdc attitude: unexpected argument '%s'\n%s", argv[i],
+              usage);
       return 2;
     }
   }
   if ((from == REPR_NONE) || (to == REPR_NONE)) {
-    fprintf(stderr, "drdc attitude: --from and --to are required\n%s",
-            usage);
+    fprintf(stderr, "drdc attitude: --from and --to are required\n%s", usage);
     return 2;
   }
   while (fgets(line, (int)sizeof(line), stdin) != NULL) {

@@ -19,27 +19,27 @@
 #include "commands.h"
 
 static const char usage[] =
-  "usage: drdc geo [-g | -u | -m | -c] [-p PREC]\n"
-  "\n"
-  "Reads one position per line on standard input and writes it like\n"
-  "GeographicLib's GeoConvert:\n"
-  "  input   'LAT LON' in decimal degrees, or 'ZONE{n|s} EASTING NORTHING'\n"
-  "          (UTM, metres; UPS with the hemisphere alone, 'n E N'), or\n"
-  "          MGRS (the centre of its cell)\n"
-  "  -g      output 'LAT LON' in decimal degrees (PREC + 5 decimals;\n"
-  "          the default)\n"
-  "  -u      output UTM/UPS 'ZONE{n|s} EASTING NORTHING' (PREC decimals\n"
-  "          of a metre; the standard zone)\n"
-  "  -m      output MGRS with PREC + 5 digits per coordinate (truncated)\n"
-  "  -c      output the meridian convergence in degrees (PREC + 5\n"
-  "          decimals) and the point scale (PREC + 7 decimals)\n"
-  "  -p PREC precision, -6..9 (default 0)\n"
-  "A line that cannot be converted gives 'ERROR: <reason>'; the others go\n"
-  "on and the exit status is 1 at the end.\n";
+    "usage: drdc geo [-g | -u | -m | -c] [-p PREC]\n"
+    "\n"
+    "Reads one position per line on standard input and writes it like\n"
+    "GeographicLib's GeoConvert:\n"
+    "  input   'LAT LON' in decimal degrees, or 'ZONE{n|s} EASTING NORTHING'\n"
+    "          (UTM, metres; UPS with the hemisphere alone, 'n E N'), or\n"
+    "          MGRS (the centre of its cell)\n"
+    "  -g      output 'LAT LON' in decimal degrees (PREC + 5 decimals;\n"
+    "          the default)\n"
+    "  -u      output UTM/UPS 'ZONE{n|s} EASTING NORTHING' (PREC decimals\n"
+    "          of a metre; the standard zone)\n"
+    "  -m      output MGRS with PREC + 5 digits per coordinate (truncated)\n"
+    "  -c      output the meridian convergence in degrees (PREC + 5\n"
+    "          decimals) and the point scale (PREC + 7 decimals)\n"
+    "  -p PREC precision, -6..9 (default 0)\n"
+    "A line that cannot be converted gives 'ERROR: <reason>'; the others go\n"
+    "on and the exit status is 1 at the end.\n";
 
 #define NAS_PER_DEG INT64_C(3600000000000)
-#define Q16_PER_M INT64_C(65536)
-#define Q58_ONE INT64_C(288230376151711744)
+#define Q16_PER_M   INT64_C(65536)
+#define Q58_ONE     INT64_C(288230376151711744)
 
 static int64_t pow10_i64(int n)
 {
@@ -195,7 +195,7 @@ static bool convert_line(char *line, enum mode mode, int prec)
   drdc_geo_utm_t u;
   drdc_nas_t conv = 0;
   drdc_q5_58_t k = 0;
-  bool west = false; /* the point is west of its central meridian */
+  bool west = false;       /* the point is west of its central meridian */
   bool grid_input = false; /* UTM/UPS or MGRS input: -m keeps its zone */
 
   if (*w4 != '\0') {
@@ -239,8 +239,8 @@ static bool convert_line(char *line, enum mode mode, int prec)
     }
     u.zone = (int32_t)z;
     u.north = (h == 'n');
-    if (!parse_decimal(w2, Q16_PER_M, &u.easting)
-        || !parse_decimal(w3, Q16_PER_M, &u.northing)) {
+    if (!parse_decimal(w2, Q16_PER_M, &u.easting) ||
+        !parse_decimal(w3, Q16_PER_M, &u.northing)) {
       printf("ERROR: bad easting or northing\n");
       return false;
     }
@@ -248,8 +248,8 @@ static bool convert_line(char *line, enum mode mode, int prec)
     grid_input = true;
     west = (u.easting < (INT64_C(500000) * Q16_PER_M));
   } else {
-    if ((*w2 == '\0') || !parse_decimal(w1, NAS_PER_DEG, &lat)
-        || !parse_decimal(w2, NAS_PER_DEG, &lon)) {
+    if ((*w2 == '\0') || !parse_decimal(w1, NAS_PER_DEG, &lat) ||
+        !parse_decimal(w2, NAS_PER_DEG, &lon)) {
       printf("ERROR: expected 'LAT LON' or 'ZONE{n|s} EASTING NORTHING'\n");
       return false;
     }
@@ -284,11 +284,10 @@ static bool convert_line(char *line, enum mode mode, int prec)
   } else if (mode == MODE_MGRS) {
     char text[DRDC_GEO_MGRS_SIZE];
     int32_t mp = ((prec + 5) > DRDC_GEO_MGRS_PREC_MAX) ? DRDC_GEO_MGRS_PREC_MAX
-                                                        : (prec + 5);
+                                                       : (prec + 5);
 
     if (grid_input) {
-      st = drdc_geo_mgrs_from_utm(&u, (mp < -1) ? -1 : mp, text,
-                                  sizeof text);
+      st = drdc_geo_mgrs_from_utm(&u, (mp < -1) ? -1 : mp, text, sizeof text);
     } else {
       st = drdc_geo_mgrs_encode(lat, lon, (mp < -1) ? -1 : mp, text,
                                 sizeof text);

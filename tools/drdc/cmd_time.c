@@ -16,45 +16,56 @@
 
 enum scale { SCALE_UTC, SCALE_GPS, SCALE_UNIX, SCALE_RTEMS, SCALE_TAI };
 
-static const char *const scale_names[] = { "utc", "gps", "unix", "rtems",
-                                           "tai" };
+static const char *const scale_names[] = {"utc", "gps", "unix", "rtems", "tai"};
 
 static const char usage[] =
-  "usage: drdc time --from F --to T\n"
-  "\n"
-  "Reads one time per line on standard input and writes one line per\n"
-  "input line. F and T are one of:\n"
-  "  utc    YYYY-MM-DDTHH:MM:SS[.fffffffff]Z (written with 9 decimals;\n"
-  "         second 60 only in a leap second)\n"
-  "  gps    WEEK TOW: full GPS week and seconds of week, up to 9 decimals\n"
-  "  unix   seconds since 1970-01-01T00:00:00Z, 86 400 a day\n"
-  "  rtems  seconds since 1988-01-01T00:00:00Z, 86 400 a day\n"
-  "  tai    seconds since 1958-01-01T00:00:00 TAI\n"
-  "Seconds are signed decimals with up to 9 decimals; output has 9.\n"
-  "A leap second has no Unix or RTEMS value of its own: it is written as\n"
-  "the next midnight. A line that cannot be converted gives\n"
-  "'ERROR: <reason>'; the exit status is then 1. Instants past the\n"
-  "built-in leap-second table's expiry are converted with the last known\n"
-  "offset and a warning on standard error.\n";
+    "usage: drdc time --from F --to T\n"
+    "\n"
+    "Reads one time per line on standard input and writes one line per\n"
+    "input line. F and T are one of:\n"
+    "  utc    YYYY-MM-DDTHH:MM:SS[.fffffffff]Z (written with 9 decimals;\n"
+    "         second 60 only in a leap second)\n"
+    "  gps    WEEK TOW: full GPS week and seconds of week, up to 9 decimals\n"
+    "  unix   seconds since 1970-01-01T00:00:00Z, 86 400 a day\n"
+    "  rtems  seconds since 1988-01-01T00:00:00Z, 86 400 a day\n"
+    "  tai    seconds since 1958-01-01T00:00:00 TAI\n"
+    "Seconds are signed decimals with up to 9 decimals; output has 9.\n"
+    "A leap second has no Unix or RTEMS value of its own: it is written as\n"
+    "the next midnight. A line that cannot be converted gives\n"
+    "'ERROR: <reason>'; the exit status is then 1. Instants past the\n"
+    "built-in leap-second table's expiry are converted with the last known\n"
+    "offset and a warning on standard error.\n";
 
 /* What each status means on a line of this command. */
 static const char *reason(drdc_status_t st)
 {
   switch (st) {
-  case DRDC_E_RANGE: return "outside the supported range";
-  case DRDC_E_YEAR: return "year outside 0001..9999";
-  case DRDC_E_MONTH: return "month outside 01..12";
-  case DRDC_E_DAY: return "day outside the month";
-  case DRDC_E_HOUR: return "hour outside 00..23";
-  case DRDC_E_MINUTE: return "minute outside 00..59";
+  case DRDC_E_RANGE:
+    return "outside the supported range";
+  case DRDC_E_YEAR:
+    return "year outside 0001..9999";
+  case DRDC_E_MONTH:
+    return "month outside 01..12";
+  case DRDC_E_DAY:
+    return "day outside the month";
+  case DRDC_E_HOUR:
+    return "hour outside 00..23";
+  case DRDC_E_MINUTE:
+    return "minute outside 00..59";
   case DRDC_E_SECOND:
     return "second outside 00..59, or 60 on a day without a leap second";
-  case DRDC_E_NANOSECOND: return "fraction of a second out of range";
-  case DRDC_E_WEEK: return "GPS week negative or too large";
-  case DRDC_E_TIME_OF_WEEK: return "time of week outside [0, 604800)";
-  case DRDC_E_SYNTAX: return "malformed time";
-  case DRDC_E_TRAILING: return "unexpected text after the time";
-  default: return "conversion failed";
+  case DRDC_E_NANOSECOND:
+    return "fraction of a second out of range";
+  case DRDC_E_WEEK:
+    return "GPS week negative or too large";
+  case DRDC_E_TIME_OF_WEEK:
+    return "time of week outside [0, 604800)";
+  case DRDC_E_SYNTAX:
+    return "malformed time";
+  case DRDC_E_TRAILING:
+    return "unexpected text after the time";
+  default:
+    return "conversion failed";
   }
 }
 
@@ -256,13 +267,15 @@ int drdc_cmd_time(int argc, char **argv)
       fputs(usage, stdout);
       return 0;
     }
-    if (((strcmp(argv[i], "--from") == 0) || (strcmp(argv[i], "--to") == 0))
-        && (i + 1 < argc)) {
+    if (((strcmp(argv[i], "--from") == 0) || (strcmp(argv[i], "--to") == 0)) &&
+        (i + 1 < argc)) {
       int s = scale_of(argv[i + 1]);
 
       if (s < 0) {
-        fprintf(stderr, "drdc time: unknown time scale '%s' (utc, gps, "
-                        "unix, rtems, tai)\n", argv[i + 1]);
+        fprintf(stderr,
+                "drdc time: unknown time scale '%s' (utc, gps, "
+                "unix, rtems, tai)\n",
+                argv[i + 1]);
         return 2;
       }
       if (argv[i][2] == 'f') {
@@ -311,8 +324,9 @@ int drdc_cmd_time(int argc, char **argv)
     }
     printf("%s\n", out);
     if (st == DRDC_W_LEAP_EXPIRED) {
-      fprintf(stderr, "drdc time: warning: line %ld: past the leap-second "
-                      "table's expiry; the last known offset was used\n",
+      fprintf(stderr,
+              "drdc time: warning: line %ld: past the leap-second "
+              "table's expiry; the last known offset was used\n",
               line_no);
     }
   }

@@ -17,16 +17,16 @@
 #include "commands.h"
 
 static const char usage[] =
-  "usage: drdc units\n"
-  "\n"
-  "Reads one conversion per line on standard input, 'VALUE FROM TO'\n"
-  "(for example '3.5 ft m', '100 tempC tempF', '60 rpm Hz'), unit names\n"
-  "as GNU units spells them, and writes the converted value alone with\n"
-  "15 significant digits. Temperatures K, degC, degF, degR (and GNU's\n"
-  "tempC, tempF, tempR, tempK) are points on their scale: '0 degC K'\n"
-  "gives 273.15. An unknown unit, units of different dimensions or a\n"
-  "malformed line give 'ERROR: <reason>'; the exit status is then 1.\n"
-  "'drdc units --list' lists every unit with its SI factor.\n";
+    "usage: drdc units\n"
+    "\n"
+    "Reads one conversion per line on standard input, 'VALUE FROM TO'\n"
+    "(for example '3.5 ft m', '100 tempC tempF', '60 rpm Hz'), unit names\n"
+    "as GNU units spells them, and writes the converted value alone with\n"
+    "15 significant digits. Temperatures K, degC, degF, degR (and GNU's\n"
+    "tempC, tempF, tempR, tempK) are points on their scale: '0 degC K'\n"
+    "gives 273.15. An unknown unit, units of different dimensions or a\n"
+    "malformed line give 'ERROR: <reason>'; the exit status is then 1.\n"
+    "'drdc units --list' lists every unit with its SI factor.\n";
 
 /* Split the next blank-separated word off *s. */
 static const char *next_word(char **s, size_t *length)
@@ -59,14 +59,13 @@ static long double convert(long double v, const drdc_unit_t *from_unit,
 
   (void)drdc_units_describe(from_unit, &from_info);
   (void)drdc_units_describe(to_unit, &to_info);
-  long double si = (v + (long double)from->offset_num
-                          / (long double)from->offset_den)
-                   * (long double)from->factor_num
-                   / (long double)from->factor_den;
-  long double scaled = si * (long double)to->factor_den
-                       / (long double)to->factor_num;
-  long double offset = (long double)to->offset_num
-                       / (long double)to->offset_den;
+  long double si =
+      (v + (long double)from->offset_num / (long double)from->offset_den) *
+      (long double)from->factor_num / (long double)from->factor_den;
+  long double scaled =
+      si * (long double)to->factor_den / (long double)to->factor_num;
+  long double offset =
+      (long double)to->offset_num / (long double)to->offset_den;
   long double r = scaled - offset;
   long double noise = 1e-16L * (fabsl(scaled) + fabsl(offset));
 
@@ -142,8 +141,10 @@ static int convert_line(char *line, char *out, size_t size)
 
     (void)drdc_units_describe(from, &a);
     (void)drdc_units_describe(to, &b);
-    snprintf(out, size, "ERROR: %s and %s measure different quantities "
-             "(%s)", a.name, b.name, drdc_status_name(st));
+    snprintf(out, size,
+             "ERROR: %s and %s measure different quantities "
+             "(%s)",
+             a.name, b.name, drdc_status_name(st));
     return 1;
   }
   snprintf(out, size, "%.15Lg", convert(v, from, to));
@@ -157,8 +158,8 @@ int drdc_cmd_units(int argc, char **argv)
   ssize_t len;
   int failed = 0;
 
-  if ((argc == 2) && ((strcmp(argv[1], "--help") == 0)
-                      || (strcmp(argv[1], "-h") == 0))) {
+  if ((argc == 2) &&
+      ((strcmp(argv[1], "--help") == 0) || (strcmp(argv[1], "-h") == 0))) {
     fputs(usage, stdout);
     return 0;
   }

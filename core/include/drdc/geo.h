@@ -85,8 +85,7 @@ typedef struct drdc_geo_utm {
  *
  * Exact (integer comparisons on nas). Example: lat 60, lon 5 gives 32.
  */
-drdc_status_t drdc_geo_utm_zone(drdc_nas_t lat, drdc_nas_t lon,
-                                int32_t *zone);
+drdc_status_t drdc_geo_utm_zone(drdc_nas_t lat, drdc_nas_t lon, int32_t *zone);
 
 /**
  * Transverse Mercator on WGS-84 with k0 = 0.9996, no false origin: x east
@@ -112,8 +111,7 @@ drdc_status_t drdc_geo_utm_zone(drdc_nas_t lat, drdc_nas_t lon,
  */
 drdc_status_t drdc_geo_tm_forward(drdc_nas_t lat, drdc_nas_t dlon,
                                   drdc_q47_16_t *x, drdc_q47_16_t *y,
-                                  drdc_nas_t *convergence,
-                                  drdc_q5_58_t *scale);
+                                  drdc_nas_t *convergence, drdc_q5_58_t *scale);
 
 /**
  * Geographic -> UTM/UPS, as GeoConvert -u (with -z zone when forced).

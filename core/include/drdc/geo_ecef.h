@@ -27,9 +27,9 @@
 /** A geodetic position: latitude and longitude (nas) and ellipsoidal
  *  height (Q47.16 metres). */
 typedef struct drdc_geo_point {
-  drdc_nas_t lat;         /**< latitude, nas, [-90, 90] degrees */
-  drdc_nas_t lon;         /**< longitude, nas, [-540, 540) degrees */
-  drdc_q47_16_t height;   /**< height above the ellipsoid, Q47.16 m */
+  drdc_nas_t lat;       /**< latitude, nas, [-90, 90] degrees */
+  drdc_nas_t lon;       /**< longitude, nas, [-540, 540) degrees */
+  drdc_q47_16_t height; /**< height above the ellipsoid, Q47.16 m */
 } drdc_geo_point_t;
 
 /**

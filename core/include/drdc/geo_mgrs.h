@@ -62,8 +62,8 @@
  *
  * Example: lat 33.3, lon 44.4, prec 5 gives "38SMB4414084706".
  */
-drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon,
-                                   int32_t prec, char *text, size_t size);
+drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon, int32_t prec,
+                                   char *text, size_t size);
 
 /**
  * UTM/UPS -> MGRS in the position's own zone (a forced or neighbouring

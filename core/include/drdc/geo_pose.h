@@ -25,34 +25,34 @@
  *  (docs/conventions.md, section 9), so initialise it by field name.
  *  Height above mean sea level; q body -> north-east-down, true north. */
 typedef struct drdc_WPose {
-  drdc_nas_t longitude;  /**< longitude, nas, east positive */
-  drdc_nas_t latitude;   /**< latitude, nas, north positive */
-  drdc_q47_16_t height;  /**< height above mean sea level, Q47.16 m */
-  drdc_quat_t q;         /**< attitude, true north (NED), Q1.30 */
+  drdc_nas_t longitude; /**< longitude, nas, east positive */
+  drdc_nas_t latitude;  /**< latitude, nas, north positive */
+  drdc_q47_16_t height; /**< height above mean sea level, Q47.16 m */
+  drdc_quat_t q;        /**< attitude, true north (NED), Q1.30 */
 } drdc_WPose_t;
 
 /** Global pose {We}: as {W} with Z-Y-X Euler angles, yaw from true north. */
 typedef struct drdc_WePose {
-  drdc_nas_t longitude;  /**< longitude, nas */
-  drdc_nas_t latitude;   /**< latitude, nas */
-  drdc_q47_16_t height;  /**< height above mean sea level, Q47.16 m */
-  drdc_euler_t e;        /**< yaw, pitch, roll; yaw from true north */
+  drdc_nas_t longitude; /**< longitude, nas */
+  drdc_nas_t latitude;  /**< latitude, nas */
+  drdc_q47_16_t height; /**< height above mean sea level, Q47.16 m */
+  drdc_euler_t e;       /**< yaw, pitch, roll; yaw from true north */
 } drdc_WePose_t;
 
 /** Global pose {W-UTM}: UTM/UPS position, height, attitude with x of the
  *  world frame towards grid north. */
 typedef struct drdc_WUTMPose {
-  drdc_geo_utm_t utm;    /**< zone, hemisphere, easting, northing */
-  drdc_q47_16_t height;  /**< height above mean sea level, Q47.16 m */
-  drdc_quat_t q;         /**< attitude, grid north, Q1.30 */
+  drdc_geo_utm_t utm;   /**< zone, hemisphere, easting, northing */
+  drdc_q47_16_t height; /**< height above mean sea level, Q47.16 m */
+  drdc_quat_t q;        /**< attitude, grid north, Q1.30 */
 } drdc_WUTMPose_t;
 
 /** Global pose {We-UTM}: as {W-UTM} with Euler angles, yaw from grid
  *  north. */
 typedef struct drdc_WeUTMPose {
-  drdc_geo_utm_t utm;    /**< zone, hemisphere, easting, northing */
-  drdc_q47_16_t height;  /**< height above mean sea level, Q47.16 m */
-  drdc_euler_t e;        /**< yaw, pitch, roll; yaw from grid north */
+  drdc_geo_utm_t utm;   /**< zone, hemisphere, easting, northing */
+  drdc_q47_16_t height; /**< height above mean sea level, Q47.16 m */
+  drdc_euler_t e;       /**< yaw, pitch, roll; yaw from grid north */
 } drdc_WeUTMPose_t;
 
 /** Global pose {W-MGRS}: MGRS position (the cell of a UTM/UPS position
@@ -75,14 +75,14 @@ typedef struct drdc_WeMGRSPose {
 /** Local pose {l}: position x forward, y right, z down (Q15.16 m) and
  *  attitude in the local frame. */
 typedef struct drdc_lPose {
-  drdc_vec3_q15_16_t p;  /**< x, y, z, Q15.16 m */
-  drdc_quat_t q;         /**< attitude, Q1.30 */
+  drdc_vec3_q15_16_t p; /**< x, y, z, Q15.16 m */
+  drdc_quat_t q;        /**< attitude, Q1.30 */
 } drdc_lPose_t;
 
 /** Local pose {le}: as {l} with Euler angles. */
 typedef struct drdc_lePose {
-  drdc_vec3_q15_16_t p;  /**< x, y, z, Q15.16 m */
-  drdc_euler_t e;        /**< yaw, pitch, roll */
+  drdc_vec3_q15_16_t p; /**< x, y, z, Q15.16 m */
+  drdc_euler_t e;       /**< yaw, pitch, roll */
 } drdc_lePose_t;
 
 /**
@@ -433,8 +433,7 @@ drdc_status_t drdc_pose_le_from_l(const drdc_lPose_t *l, drdc_lePose_t *out);
  */
 drdc_status_t drdc_pose_we_from_le(const drdc_WePose_t *ref,
                                    drdc_q47_16_t geoid_separation,
-                                   const drdc_lePose_t *le,
-                                   drdc_WePose_t *out);
+                                   const drdc_lePose_t *le, drdc_WePose_t *out);
 
 /**
  * {We} -> {le} at the reference pose ref (inverse of
@@ -458,8 +457,7 @@ drdc_status_t drdc_pose_we_from_le(const drdc_WePose_t *ref,
  */
 drdc_status_t drdc_pose_le_from_we(const drdc_WePose_t *ref,
                                    drdc_q47_16_t geoid_separation,
-                                   const drdc_WePose_t *we,
-                                   drdc_lePose_t *out);
+                                   const drdc_WePose_t *we, drdc_lePose_t *out);
 
 /** @} */
 

@@ -163,8 +163,8 @@ drdc_status_t drdc_jaus_scaled_encode_sat(int64_t value, int64_t min,
  *         an RA 3.x int16), min >= max, max - min beyond INT64_MAX, or a
  *         bad `type` or `form`
  */
-drdc_status_t drdc_jaus_scaled_decode(int64_t integer, int64_t min,
-                                      int64_t max, drdc_jaus_type_t type,
+drdc_status_t drdc_jaus_scaled_decode(int64_t integer, int64_t min, int64_t max,
+                                      drdc_jaus_type_t type,
                                       drdc_jaus_form_t form, int64_t *value);
 
 /**

@@ -75,15 +75,15 @@ typedef enum drdc_nmea_type {
 } drdc_nmea_type_t;
 
 /** Bits of drdc_nmea_t::has: which optional fields the sentence carried. */
-#define DRDC_NMEA_HAS_POSITION UINT32_C(0x01)   /**< latitude, longitude */
-#define DRDC_NMEA_HAS_ALTITUDE UINT32_C(0x02)   /**< altitude */
-#define DRDC_NMEA_HAS_SEPARATION UINT32_C(0x04) /**< geoid separation */
-#define DRDC_NMEA_HAS_SATELLITES UINT32_C(0x08) /**< satellites */
-#define DRDC_NMEA_HAS_HDOP UINT32_C(0x10)       /**< HDOP */
-#define DRDC_NMEA_HAS_SPEED UINT32_C(0x20)      /**< speed */
-#define DRDC_NMEA_HAS_COURSE UINT32_C(0x40)     /**< course */
-#define DRDC_NMEA_HAS_DATE UINT32_C(0x80)       /**< year, month, day */
-#define DRDC_NMEA_HAS_ZONE UINT32_C(0x100)      /**< local zone */
+#define DRDC_NMEA_HAS_POSITION   UINT32_C(0x01)  /**< latitude, longitude */
+#define DRDC_NMEA_HAS_ALTITUDE   UINT32_C(0x02)  /**< altitude */
+#define DRDC_NMEA_HAS_SEPARATION UINT32_C(0x04)  /**< geoid separation */
+#define DRDC_NMEA_HAS_SATELLITES UINT32_C(0x08)  /**< satellites */
+#define DRDC_NMEA_HAS_HDOP       UINT32_C(0x10)  /**< HDOP */
+#define DRDC_NMEA_HAS_SPEED      UINT32_C(0x20)  /**< speed */
+#define DRDC_NMEA_HAS_COURSE     UINT32_C(0x40)  /**< course */
+#define DRDC_NMEA_HAS_DATE       UINT32_C(0x80)  /**< year, month, day */
+#define DRDC_NMEA_HAS_ZONE       UINT32_C(0x100) /**< local zone */
 /** GST RMS and latitude, longitude, altitude deviations */
 #define DRDC_NMEA_HAS_GST UINT32_C(0x200)
 /** GST error ellipse: sigma_major, sigma_minor, orientation */
@@ -111,17 +111,17 @@ typedef struct drdc_nmea {
   drdc_q47_16_t separation;
   /** GGA fix quality 1..8 (1 GPS, 2 DGPS, 4 RTK fixed, 5 RTK float, ...) */
   int32_t quality;
-  int32_t satellites;      /**< satellites used (GGA, GNS) */
-  drdc_q15_16_t hdop;      /**< horizontal dilution of precision (GGA, GNS) */
-  drdc_q15_16_t speed;     /**< speed over ground, Q15.16 m/s (RMC) */
-  drdc_bam32_t course;     /**< course over ground, true (RMC) */
-  char mode[8];            /**< RMC mode or GNS modes, NUL-terminated */
-  int32_t year;            /**< RMC (yy -> 1980..2079), ZDA */
-  int32_t month;           /**< 1..12 (RMC, ZDA) */
-  int32_t day;             /**< 1..31 (RMC, ZDA) */
-  int32_t zone_hours;      /**< ZDA local zone hours, -13..13 */
-  int32_t zone_minutes;    /**< ZDA local zone minutes, 0..59 */
-  drdc_q15_16_t rms;       /**< GST RMS of the pseudorange residuals, m */
+  int32_t satellites;        /**< satellites used (GGA, GNS) */
+  drdc_q15_16_t hdop;        /**< horizontal dilution of precision (GGA, GNS) */
+  drdc_q15_16_t speed;       /**< speed over ground, Q15.16 m/s (RMC) */
+  drdc_bam32_t course;       /**< course over ground, true (RMC) */
+  char mode[8];              /**< RMC mode or GNS modes, NUL-terminated */
+  int32_t year;              /**< RMC (yy -> 1980..2079), ZDA */
+  int32_t month;             /**< 1..12 (RMC, ZDA) */
+  int32_t day;               /**< 1..31 (RMC, ZDA) */
+  int32_t zone_hours;        /**< ZDA local zone hours, -13..13 */
+  int32_t zone_minutes;      /**< ZDA local zone minutes, 0..59 */
+  drdc_q15_16_t rms;         /**< GST RMS of the pseudorange residuals, m */
   drdc_q15_16_t sigma_major; /**< GST error ellipse semi-major axis, m */
   drdc_q15_16_t sigma_minor; /**< GST error ellipse semi-minor axis, m */
   drdc_bam32_t orientation;  /**< GST semi-major axis from true north */

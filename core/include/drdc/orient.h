@@ -276,8 +276,8 @@ drdc_status_t drdc_quat_compose(const drdc_quat_t *a, const drdc_quat_t *b,
  *         does not fit Q1.30), or the product overflows (only possible
  *         when |a| |b| >= 2)
  */
-drdc_status_t drdc_quat_difference(const drdc_quat_t *a,
-                                   const drdc_quat_t *b, drdc_quat_t *out);
+drdc_status_t drdc_quat_difference(const drdc_quat_t *a, const drdc_quat_t *b,
+                                   drdc_quat_t *out);
 
 /**
  * Angle of the shortest rotation between two orientations, in [0, pi]
@@ -496,8 +496,7 @@ drdc_status_t drdc_dcm_apply_q47_16(const drdc_dcm_t *r,
  * Accuracy: measured max 1 LSB per part against SciPy (48 rows).
  */
 drdc_status_t drdc_quat_from_axis_angle(const drdc_vec3_q1_30_t *axis,
-                                        drdc_bam32_t angle,
-                                        drdc_quat_t *out);
+                                        drdc_bam32_t angle, drdc_quat_t *out);
 
 /**
  * Axis and angle of a quaternion, the angle in [0, 180] degrees (0..2^31)
@@ -563,8 +562,7 @@ drdc_status_t drdc_quat_slerp(const drdc_quat_t *a, const drdc_quat_t *b,
  */
 drdc_status_t drdc_quat_squad_control(const drdc_quat_t *q0,
                                       const drdc_quat_t *q1,
-                                      const drdc_quat_t *q2,
-                                      drdc_quat_t *out);
+                                      const drdc_quat_t *q2, drdc_quat_t *out);
 
 /**
  * Spherical quadrangle interpolation between keys q1 and q2 with control

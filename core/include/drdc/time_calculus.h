@@ -58,9 +58,8 @@
  * drdc_time_delta_derivative(t, f, 3, d);       // d = { 20, 2 }
  * @endcode
  */
-drdc_status_t drdc_time_delta_derivative(const int64_t *t_ns,
-                                         const int32_t *f, size_t n,
-                                         int64_t *deriv);
+drdc_status_t drdc_time_delta_derivative(const int64_t *t_ns, const int32_t *f,
+                                         size_t n, int64_t *deriv);
 
 /**
  * Delta integral from t_0 to t_{n-1}: sum of f_i * mu(t_i) for

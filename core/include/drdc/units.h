@@ -227,8 +227,7 @@ drdc_status_t drdc_units_convert(int64_t raw, unsigned from_frac,
  * @retval DRDC_E_NULL `a` or `b` is NULL
  * @retval DRDC_E_DIMENSION different dimensions
  */
-drdc_status_t drdc_units_compatible(const drdc_unit_t *a,
-                                    const drdc_unit_t *b);
+drdc_status_t drdc_units_compatible(const drdc_unit_t *a, const drdc_unit_t *b);
 
 /** @} */
 

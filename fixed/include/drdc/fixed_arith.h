@@ -181,8 +181,7 @@ drdc_status_t drdc_fx_q1_30_from_q15_16(drdc_q15_16_t x, drdc_q1_30_t *out);
  * @retval DRDC_W_SATURATED written, clamped to the limit
  * @retval DRDC_E_NULL `out` is NULL; nothing written
  */
-drdc_status_t drdc_fx_q1_30_from_q15_16_sat(drdc_q15_16_t x,
-                                            drdc_q1_30_t *out);
+drdc_status_t drdc_fx_q1_30_from_q15_16_sat(drdc_q15_16_t x, drdc_q1_30_t *out);
 
 /** Q1.30 -> Q15.16: x / 2^14 rounded to nearest, ties away from zero;
  *  never fails. Error <= 0.5 LSB of Q15.16 (correctly rounded). */
@@ -362,8 +361,7 @@ drdc_status_t drdc_fx_div_q47_16_sat(drdc_q47_16_t a, drdc_q47_16_t b,
  * @retval DRDC_E_DIVIDE_BY_ZERO c == 0 (also from the _sat form)
  * @retval DRDC_E_OVERFLOW the result does not fit int32_t
  */
-drdc_status_t drdc_fx_muldiv_s32(int32_t a, int32_t b, int32_t c,
-                                 int32_t *out);
+drdc_status_t drdc_fx_muldiv_s32(int32_t a, int32_t b, int32_t c, int32_t *out);
 
 /**
  * Saturating form of drdc_fx_muldiv_s32(): the same correctly rounded result
@@ -386,8 +384,7 @@ drdc_status_t drdc_fx_muldiv_s32_sat(int32_t a, int32_t b, int32_t c,
  * @retval DRDC_E_DIVIDE_BY_ZERO c == 0 (also from the _sat form)
  * @retval DRDC_E_OVERFLOW the result does not fit int64_t
  */
-drdc_status_t drdc_fx_muldiv_s64(int64_t a, int64_t b, int64_t c,
-                                 int64_t *out);
+drdc_status_t drdc_fx_muldiv_s64(int64_t a, int64_t b, int64_t c, int64_t *out);
 
 /**
  * Saturating form of drdc_fx_muldiv_s64(): the same correctly rounded result

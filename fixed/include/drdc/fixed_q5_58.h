@@ -173,8 +173,8 @@ static inline drdc_q5_58_t drdc_fx_mul_q5_58_unchecked(drdc_q5_58_t a,
    * a0 b0 cannot carry into bit 57, where the rounding half 2^25 (of the
    * second word) is added. */
   uint64_t t = (((uint64_t)a0 * b0) >> 32) + ((uint64_t)a0 * b1);
-  uint64_t u = (uint64_t)(uint32_t)t + ((uint64_t)a1 * b0)
-               + (UINT64_C(1) << 25);
+  uint64_t u =
+      (uint64_t)(uint32_t)t + ((uint64_t)a1 * b0) + (UINT64_C(1) << 25);
   uint64_t hi = ((uint64_t)a1 * b1) + (t >> 32) + (u >> 32);
   uint64_t m = (hi << 6) | ((uint64_t)(uint32_t)u >> 26);
 

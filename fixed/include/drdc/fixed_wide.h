@@ -49,8 +49,7 @@
  * of d and at most two corrections. *r becomes the remainder (< d).
  * Exact.
  */
-static inline uint32_t drdc_fx_div_digit16(uint32_t *r, uint32_t u,
-                                           uint32_t d)
+static inline uint32_t drdc_fx_div_digit16(uint32_t *r, uint32_t u, uint32_t d)
 {
   const uint32_t dh = d >> 16u;
   const uint32_t dl = d & 0xFFFFu;
@@ -99,9 +98,8 @@ uint32_t drdc_fx_reciprocal_3by2(uint32_t d1, uint32_t d0);
  * u2 2^32 + u1 < d (Moeller and Granlund, algorithm 5): the floor of the
  * quotient, *r the remainder (< d). Exact.
  */
-static inline uint32_t drdc_fx_div_3by2(uint32_t u2, uint32_t u1,
-                                        uint32_t u0, uint64_t d, uint32_t v,
-                                        uint64_t *r)
+static inline uint32_t drdc_fx_div_3by2(uint32_t u2, uint32_t u1, uint32_t u0,
+                                        uint64_t d, uint32_t v, uint64_t *r)
 {
   const uint32_t d1 = (uint32_t)(d >> 32u);
   const uint32_t d0 = (uint32_t)d;
@@ -140,9 +138,8 @@ static inline uint32_t drdc_fx_round_div_shifted(int64_t p, unsigned t,
   unsigned tr = 64u - t;
   uint64_t lo = mag << t;
   uint64_t r;
-  uint32_t quo = drdc_fx_div_3by2((uint32_t)(mag >> tr),
-                                  (uint32_t)(lo >> 32u), (uint32_t)lo, dn,
-                                  rcp, &r);
+  uint32_t quo = drdc_fx_div_3by2((uint32_t)(mag >> tr), (uint32_t)(lo >> 32u),
+                                  (uint32_t)lo, dn, rcp, &r);
 
   if (r >= (dn - r)) {
     quo++;
@@ -154,8 +151,8 @@ static inline uint32_t drdc_fx_round_div_shifted(int64_t p, unsigned t,
 }
 
 /** x y as 128 bits (*hi, *lo), exact: four 32x32->64 products. */
-static inline void drdc_fx_mul_u64_u128(uint64_t x, uint64_t y,
-                                        uint64_t *hi, uint64_t *lo)
+static inline void drdc_fx_mul_u64_u128(uint64_t x, uint64_t y, uint64_t *hi,
+                                        uint64_t *lo)
 {
   const uint32_t x0 = (uint32_t)x;
   const uint32_t x1 = (uint32_t)(x >> 32u);
@@ -179,9 +176,8 @@ static inline void drdc_fx_mul_u64_u128(uint64_t x, uint64_t y,
  * drdc_fx_reciprocal_3by2(): |p w| 2^z < dn 2^63 is four words, the
  * quotient (< 2^63) two drdc_fx_div_3by2() steps. Exact.
  */
-static inline int64_t drdc_fx_round_div_128(int64_t p, int64_t w,
-                                            uint64_t dn, unsigned z,
-                                            uint32_t rcp)
+static inline int64_t drdc_fx_round_div_128(int64_t p, int64_t w, uint64_t dn,
+                                            unsigned z, uint32_t rcp)
 {
   uint64_t mp = (p < 0) ? (0u - (uint64_t)p) : (uint64_t)p;
   uint64_t mw = (w < 0) ? (0u - (uint64_t)w) : (uint64_t)w;
@@ -254,8 +250,7 @@ static inline int32_t drdc_fx_high_word(int64_t v)
  * the 128-bit product of the magnitudes, half a unit added, shifted; no
  * division and no 128-bit helper frame. Exact.
  */
-static inline int64_t drdc_fx_mul_rshift_round(int64_t a, int64_t b,
-                                               unsigned n)
+static inline int64_t drdc_fx_mul_rshift_round(int64_t a, int64_t b, unsigned n)
 {
   uint64_t ma = (a < 0) ? (0u - (uint64_t)a) : (uint64_t)a;
   uint64_t mb = (b < 0) ? (0u - (uint64_t)b) : (uint64_t)b;

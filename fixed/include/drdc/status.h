@@ -24,19 +24,19 @@
 /** Outcome of a library call. Zero is success; every other value names
  *  one kind of failure so firmware can tell them apart. */
 typedef enum drdc_status {
-  DRDC_OK = 0, /**< success, outputs written */
-  DRDC_E_NULL = 1, /**< a required pointer argument is NULL */
-  DRDC_E_RANGE = 2, /**< an input lies outside the documented domain */
+  DRDC_OK = 0,         /**< success, outputs written */
+  DRDC_E_NULL = 1,     /**< a required pointer argument is NULL */
+  DRDC_E_RANGE = 2,    /**< an input lies outside the documented domain */
   DRDC_E_OVERFLOW = 3, /**< the result does not fit the output format */
   /** a mathematical domain error (sqrt of a negative, asin beyond 1, atanh at
    *  +-1, atan2(0, 0)) */
   DRDC_E_DOMAIN = 4,
   DRDC_E_DIVIDE_BY_ZERO = 5, /**< a divisor is zero */
-  DRDC_E_YEAR = 6, /**< year outside DRDC_YEAR_MIN..DRDC_YEAR_MAX */
-  DRDC_E_MONTH = 7, /**< month outside 1..12 */
-  DRDC_E_DAY = 8, /**< day outside 1..days in that month */
-  DRDC_E_HOUR = 9, /**< hour outside 0..23 */
-  DRDC_E_MINUTE = 10, /**< minute outside 0..59 */
+  DRDC_E_YEAR = 6,           /**< year outside DRDC_YEAR_MIN..DRDC_YEAR_MAX */
+  DRDC_E_MONTH = 7,          /**< month outside 1..12 */
+  DRDC_E_DAY = 8,            /**< day outside 1..days in that month */
+  DRDC_E_HOUR = 9,           /**< hour outside 0..23 */
+  DRDC_E_MINUTE = 10,        /**< minute outside 0..59 */
   /** second outside 0..59, or 60 on a day without a leap second */
   DRDC_E_SECOND = 11,
   /** nanoseconds outside 0..999 999 999 (or the leap-second range) */
@@ -67,7 +67,7 @@ typedef enum drdc_status {
   /** a character outside the allowed set (e.g. non-ASCII in NMEA 0183) */
   DRDC_E_CHARACTER = 27,
   DRDC_E_MISSING_FIELD = 28, /**< a required field is empty or absent */
-  DRDC_E_NO_FIX = 29, /**< the receiver reports no valid position fix */
+  DRDC_E_NO_FIX = 29,        /**< the receiver reports no valid position fix */
   /** a message of a type or from a talker this function does not decode */
   DRDC_E_SENTENCE = 30,
   DRDC_E_LATITUDE = 31, /**< a latitude outside [-90, 90] degrees */
@@ -75,7 +75,7 @@ typedef enum drdc_status {
   DRDC_E_LONGITUDE = 32,
   /** a UTM zone outside 1..60 (or a zone code the function does not take) */
   DRDC_E_ZONE = 33,
-  DRDC_E_EASTING = 34, /**< an easting outside the zone's range */
+  DRDC_E_EASTING = 34,  /**< an easting outside the zone's range */
   DRDC_E_NORTHING = 35, /**< a northing outside the zone's range */
   /** a 100 km MGRS square that does not lie in its latitude band */
   DRDC_E_BAND = 36,
