@@ -787,6 +787,8 @@ class RunChecks(Build.BuildContext):
              ["tools/intcheck.py", "--build", out, "--all"]
              + ["%s:%s" % (n, t["intcheck"]) for n, t in TARGETS.items()
                 if t["intcheck"]]),
+            ("C sources laid out as .clang-format says",
+             ["tools/formatcheck.py"]),
             ("every external name of libdrdc.a starts with drdc_",
              ["tools/symcheck.py", "--build", out]
              + ["%s:%s" % (n, t["cross"]) for n, t in TARGETS.items()]),

@@ -54,6 +54,8 @@ APT_GROUPS = {
         "cppcheck": "2.10-2",
         # API reference without a warning
         "doxygen": "1.9.4-4",
+        # the layout of every C source (tools/formatcheck.py)
+        "clang-format-14": "1:14.0.6-12",
         # GNU units: oracle of the unit-conversion vectors
         # (tests/ref/gen_units.py) and of tools/test_drdc.py
         "units": "2.22-2",
