@@ -192,8 +192,8 @@ static inline void sincos_kernel(drdc_q5_58_t x, drdc_q5_58_t *s,
   r2 = mul(r, r);
   quadrant = ((k % 4) + 4) % 4;
   /* one polynomial at a time, Horner's rule from the highest
-   * coefficient, unrolled: no index or table base live across the
-   * products */
+   * coefficient; unrolled for the timed sincos and atan2 (and the
+   * geodesy above them) of docs/performance.md */
 #pragma GCC unroll 9
   for (i = 9u; i > 0u; i--) {
     ps = sin_coef[i - 1u] + mul(ps, r2);
