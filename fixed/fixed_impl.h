@@ -13,7 +13,6 @@
 #ifndef DRDC_FIXED_IMPL_H
 #define DRDC_FIXED_IMPL_H
 
-#include <drdc/compiler.h>
 #include <stdint.h>
 
 #include <drdc/fixed_wide.h>
@@ -40,8 +39,8 @@ static inline uint64_t fx_abs64(int64_t x)
 }
 
 /** The int32_t whose two's complement bits are v: v itself below 2^31,
- *  v - 2^32 above, computed without an out-of-range conversion (GCC
- *  compiles it to no instruction at all). */
+ *  v - 2^32 above, computed without an out-of-range conversion (which
+ *  C99 leaves implementation-defined); it reduces to a plain move. */
 static inline int32_t fx_s32_from_bits(uint32_t v)
 {
   uint32_t complement = ~v; /* < 2^31 when v >= 2^31 */
@@ -202,12 +201,8 @@ static inline int fx_le_u128(fx_u128_t a, fx_u128_t b)
  * 32-bit quotient words costs two 32x32->64 products
  * (drdc_fx_div_3by2()); no call to libgcc's 64-bit division. The floor
  * quotient and remainder are exact, so the rounding is decided exactly.
- * Always inline: as a function of its own (GCC made one in hyperbolic.c)
- * its 64-byte PowerPC frame, stacked on log_parts(), took
- * drdc_fx_asinh_q5_58() to 272 bytes of stack, over issue 8's 256.
  */
-static inline DRDC_ALWAYS_INLINE int fx_div_round_u128(fx_u128_t n, uint64_t d,
-                                                       uint64_t *q)
+static inline int fx_div_round_u128(fx_u128_t n, uint64_t d, uint64_t *q)
 {
   unsigned s;
   uint64_t v;

@@ -15,7 +15,6 @@
  * |s| <= 3 - 2 sqrt 2 = 0.1716, ln y = e ln 2 + 2 atanh(s), atanh(s) by
  * its series s + s^3/3 + ... (s^2 <= 0.0295: <= 13 terms to 2^-62).
  */
-#include <drdc/compiler.h>
 #include <drdc/fixed_hyper.h>
 
 #include <stddef.h>
@@ -104,8 +103,7 @@ static uint64_t sinh_cosh_mag(uint64_t x, int plus)
 
 /* *out = sinh(x) (plus == 0) or cosh(x) (plus == 1): one body for the
  * two public entries, which call it as their last step. */
-static DRDC_NOINLINE drdc_status_t sinh_cosh(drdc_q5_58_t x, int plus,
-                                             drdc_q5_58_t *out)
+static drdc_status_t sinh_cosh(drdc_q5_58_t x, int plus, drdc_q5_58_t *out)
 {
   uint64_t r;
 
@@ -168,10 +166,8 @@ static unsigned top_bit(uint64_t v)
 
 /* x 2^62 / d rounded to nearest (ties up), 0 when the quotient does
  * not fit 64 bits, given rcp = drdc_fx_reciprocal_3by2() of d normalised:
- * fx_div_round_u128() of (x 2^62, d) bit for bit. A leaf, out of line
- * so that its registers are not saved under any call (#3: worst-case
- * stack). */
-static DRDC_NOINLINE uint64_t div_q62_rcp(uint64_t x, uint64_t d, uint32_t rcp)
+ * fx_div_round_u128() of (x 2^62, d) bit for bit. */
+static uint64_t div_q62_rcp(uint64_t x, uint64_t d, uint32_t rcp)
 {
   unsigned s;
   uint64_t v;
@@ -208,8 +204,8 @@ static DRDC_NOINLINE uint64_t div_q62_rcp(uint64_t x, uint64_t d, uint32_t rcp)
   return quo;
 }
 
-/* x 2^62 / d as div_q62_rcp(), d > 0: the reciprocal first, with only x
- * and d live across its call */
+/* x 2^62 / d as div_q62_rcp(), d > 0, with the reciprocal of d
+ * normalised */
 static inline uint64_t div_q62(uint64_t x, uint64_t d)
 {
   uint64_t v = d << (unsigned)__builtin_clzll(d);
@@ -220,8 +216,8 @@ static inline uint64_t div_q62(uint64_t x, uint64_t d)
 
 /* ln(num / den) = e ln 2 + 2 atanh(s), for num, den > 0: writes e and
  * s (Q62 magnitude, sign in *s_neg). */
-static inline DRDC_ALWAYS_INLINE void
-log_parts(uint64_t num, uint64_t den, int32_t *e, uint64_t *s, int *s_neg)
+static inline void log_parts(uint64_t num, uint64_t den, int32_t *e,
+                             uint64_t *s, int *s_neg)
 {
   unsigned pn = top_bit(num);
   unsigned pd = top_bit(den);
@@ -248,8 +244,7 @@ log_parts(uint64_t num, uint64_t den, int32_t *e, uint64_t *s, int *s_neg)
 }
 
 /* (e ln 2 + 2 atanh(s)) / 2^half rounded to Q58, given at = atanh(s) in
- * Q62 (half = 1 gives ln(y) / 2, half = 0 gives ln(y)); e >= 0 here. The
- * caller evaluates the series first, so the two frames are not stacked. */
+ * Q62 (half = 1 gives ln(y) / 2, half = 0 gives ln(y)); e >= 0 here. */
 static uint64_t log_q58(int32_t e, uint64_t at, int s_neg, unsigned half)
 {
   /* e ln 2 in Q64 (128 bits), then Q62: e <= 64 keeps it < 2^68 */
@@ -270,8 +265,7 @@ static uint64_t log_q58(int32_t e, uint64_t at, int s_neg, unsigned half)
 
 /* *out = atanh(s) / 16 rounded (Q62 -> Q58), negated when neg != 0:
  * |s| <= 0.1716 in Q62 */
-static DRDC_NOINLINE drdc_status_t series_out(uint64_t s, int neg,
-                                              drdc_q5_58_t *out)
+static drdc_status_t series_out(uint64_t s, int neg, drdc_q5_58_t *out)
 {
   uint64_t r = (atanh_series_q62(s) + 8u) >> 4;
 
@@ -280,12 +274,9 @@ static DRDC_NOINLINE drdc_status_t series_out(uint64_t s, int neg,
 }
 
 /* *out = atanh(x) (asinh == 0, |x| < 1) or asinh(x) (asinh != 0) by the
- * logarithm: the large-argument branch of each, inlined (with log_parts())
- * into the public function so that no frame of its own stacks between it
- * and the divisions and the series (#3: worst-case stack) */
-static inline DRDC_ALWAYS_INLINE drdc_status_t log_out(drdc_q5_58_t x,
-                                                       int asinh,
-                                                       drdc_q5_58_t *out)
+ * logarithm: the large-argument branch of each */
+static inline drdc_status_t log_out(drdc_q5_58_t x, int asinh,
+                                    drdc_q5_58_t *out)
 {
   uint64_t ax = fx_abs64(x);
   int32_t e = 0;
@@ -316,9 +307,8 @@ static inline DRDC_ALWAYS_INLINE drdc_status_t log_out(drdc_q5_58_t x,
 }
 
 /* x / sqrt(1 + x^2) in Q62 (magnitude): the atanh argument of asinh(x)
- * for |x| <= 3 - 2 sqrt 2, out of line so that its calls do not stack
- * under the series (#3) */
-static DRDC_NOINLINE uint64_t asinh_series_arg(drdc_q5_58_t x)
+ * for |x| <= 3 - 2 sqrt 2 */
+static uint64_t asinh_series_arg(drdc_q5_58_t x)
 {
   uint64_t h = drdc_fx_hypot_s64(x, INT64_C(1) << 58); /* Q58 */
 

@@ -11,10 +11,9 @@
 
 #include "fixed_impl.h"
 
-/* The work is done in drdc_fx_muldiv_s64()'s own frame (no forwarding
- * wrapper above the 128-bit division), and the saturating form calls it:
- * the plain form fails with DRDC_E_OVERFLOW exactly when the saturating
- * one clamps, and leaves `*out` unchanged then. */
+/* The saturating form calls the plain one: the plain form fails with
+ * DRDC_E_OVERFLOW exactly when the saturating one clamps, and leaves `*out`
+ * unchanged then. */
 drdc_status_t drdc_fx_muldiv_s64(int64_t a, int64_t b, int64_t c, int64_t *out)
 {
   uint64_t q = 0;

@@ -5,7 +5,6 @@
  * @brief Q5.58 sin/cos, atan2, sqrt and quotient (see fixed_q5_58.h for
  *        the method and error of each).
  */
-#include <drdc/compiler.h>
 #include <drdc/fixed_q5_58.h>
 
 #include <stdbool.h>
@@ -45,11 +44,8 @@ static int64_t mul(int64_t a, int64_t b)
  * of mb normalised: fx_div_round_u128() of ma 2^58 by mb, bit for bit;
  * UINT64_MAX when the quotient does not fit 64 bits (no quotient of
  * interest is that large: the callers take anything above 2^63 as an
- * overflow). A leaf on magnitudes, out of line, so that its registers are
- * saved under no call and the signs wait in the caller (#3, #8:
- * worst-case stack). */
-static DRDC_NOINLINE uint64_t quotient_mag(uint64_t ma, uint64_t mb,
-                                           uint32_t rcp)
+ * overflow). */
+static uint64_t quotient_mag(uint64_t ma, uint64_t mb, uint32_t rcp)
 {
   unsigned s;
   unsigned back;
@@ -85,8 +81,7 @@ static DRDC_NOINLINE uint64_t quotient_mag(uint64_t ma, uint64_t mb,
 
 /* a 2^58 / b, rounded (ties away from zero); 0 when b == 0 or the
  * quotient overflows: the result of drdc_fx_muldiv_s64(a, 2^58, b), bit
- * for bit, without its two call levels. The reciprocal of the divisor
- * first, with only a and b live across its call. */
+ * for bit, without its two call levels. */
 static inline int64_t quotient(int64_t a, int64_t b)
 {
   uint64_t v;
@@ -107,7 +102,7 @@ static inline int64_t quotient(int64_t a, int64_t b)
 }
 
 /* quotient() for a >= 0 and b > 0 (Newton's steps of the root): no
- * signs to keep across the calls */
+ * signs to handle */
 static inline int64_t quotient_pos(int64_t a, int64_t b)
 {
   uint64_t v = (uint64_t)b << (unsigned)__builtin_clzll((uint64_t)b);
@@ -132,8 +127,7 @@ drdc_status_t drdc_fx_div_q5_58(drdc_q5_58_t a, drdc_q5_58_t b,
     return DRDC_E_DIVIDE_BY_ZERO;
   }
   /* quotient() without its zero for an overflow: the magnitude tells it
-   * (2^63 fits only when negative), and only the sign waits across the
-   * calls */
+   * (2^63 fits only when negative) */
   negative = ((a < 0) != (b < 0));
   v = fx_abs64(b) << (unsigned)__builtin_clzll(fx_abs64(b));
   q = quotient_mag(fx_abs64(a), fx_abs64(b),
@@ -157,10 +151,9 @@ drdc_q5_58_t drdc_fx_div_q5_58_unchecked(drdc_q5_58_t a, drdc_q5_58_t b)
 }
 
 /* sin and cos of x (Q5.58 radians, |x| <= 16): the body of
- * drdc_fx_sincos_q5_58(), inlined into atan2 so that its frame does not
- * stack on atan2's (#3) */
-static inline DRDC_ALWAYS_INLINE void
-sincos_kernel(drdc_q5_58_t x, drdc_q5_58_t *s, drdc_q5_58_t *c)
+ * drdc_fx_sincos_q5_58(), also used by atan2 for its correction step */
+static inline void sincos_kernel(drdc_q5_58_t x, drdc_q5_58_t *s,
+                                 drdc_q5_58_t *c)
 {
   /* (-1)^i / (2i+1)! and (-1)^i / (2i)! in Q5.58, i = 0..9: on |r| <= pi/4
    * the first omitted terms are below 1e-19. */
@@ -198,8 +191,9 @@ sincos_kernel(drdc_q5_58_t x, drdc_q5_58_t *s, drdc_q5_58_t *c)
   r = x - (k * DRDC_Q5_58_HALF_PI);
   r2 = mul(r, r);
   quadrant = ((k % 4) + 4) % 4;
-  /* one polynomial at a time, unrolled: fewer values (no index, no
-   * table base) live across the products, for atan2's stack (#3) */
+  /* one polynomial at a time, Horner's rule from the highest
+   * coefficient; unrolled for the timed sincos and atan2 (and the
+   * geodesy above them) of docs/performance.md */
 #pragma GCC unroll 9
   for (i = 9u; i > 0u; i--) {
     ps = sin_coef[i - 1u] + mul(ps, r2);
@@ -264,6 +258,8 @@ drdc_status_t drdc_fx_atan2_q5_58(int64_t y, int64_t x, drdc_q5_58_t *out)
   int64_t yn = y;
   int64_t xn = x;
   drdc_bam32_t seed = 0u;
+  int64_t seed_bam; /* the seed as a signed binary angle */
+  int64_t t;        /* the seed in Q5.58 radians */
   int64_t theta;
   int64_t sn = 0;
   int64_t cs = 0;
@@ -295,21 +291,21 @@ drdc_status_t drdc_fx_atan2_q5_58(int64_t y, int64_t x, drdc_q5_58_t *out)
   seed = fx_atan2_bam((int32_t)drdc_fx_rshift_round_s64(yn, 28u),
                       (int32_t)drdc_fx_rshift_round_s64(xn, 28u));
   if (seed >= 0x80000000u) {
-    theta = (int64_t)seed - INT64_C(4294967296);
+    seed_bam = (int64_t)seed - INT64_C(4294967296);
   } else {
-    theta = (int64_t)seed;
+    seed_bam = (int64_t)seed;
   }
-  /* binary angle -> radians: theta pi / 2^31 = (theta 2^27) pi / 2^58 */
-  theta = mul(theta * BAM_TO_Q58, DRDC_Q5_58_PI);
+  /* binary angle -> radians: b pi / 2^31 = (b 2^27) pi / 2^58 */
+  t = mul(seed_bam * BAM_TO_Q58, DRDC_Q5_58_PI);
   /* the remaining angle d has tan d = (y cos t - x sin t) / (x cos t +
    * y sin t); |d| < 3e-9: the seed's 1 LSB (1.47e-9 rad) plus the
    * turn by rounding y and x to 31 bits, at most 0.5 sqrt(2) / (2^29 -
    * 0.5) = 1.32e-9 rad with the larger part >= 2^29; so atan(q) =
    * q - q^3/3 + ... is q to 1e-26 */
-  sincos_kernel(theta, &sn, &cs);
+  sincos_kernel(t, &sn, &cs);
   num = mul(yn, cs) - mul(xn, sn);
   den = mul(xn, cs) + mul(yn, sn);
-  theta = theta + quotient(num, den);
+  theta = t + quotient(num, den);
   if (theta > DRDC_Q5_58_PI) {
     theta = theta - DRDC_Q5_58_TWO_PI;
   } else if (theta <= -DRDC_Q5_58_PI) {

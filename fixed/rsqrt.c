@@ -8,8 +8,7 @@
  * Q1.30). round(sqrt(v)) = floor((floor(2 sqrt(v)) + 1) / 2), and
  * floor(2 sqrt(v)) = isqrt(floor(2^(e+2) / x)): the floor of the root of a
  * real equals the integer root of its floor. So one 64-bit quotient and
- * one integer square root give r exactly, without 128-bit arithmetic (the
- * worst-case stack stays small).
+ * one integer square root give r exactly, without 128-bit arithmetic.
  */
 #include <drdc/fixed_sqrt.h>
 

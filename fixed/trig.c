@@ -8,7 +8,6 @@
  * sin and cos are +-S(r) or +-S(2^30 - r), S the first-quadrant kernel,
  * so every symmetry of sin and cos holds bit for bit.
  */
-#include <drdc/compiler.h>
 #include <drdc/fixed_trig.h>
 
 #include <stddef.h>
@@ -53,15 +52,13 @@ void drdc_fx_sincos_bam32(drdc_bam32_t a, drdc_q1_30_t *s, drdc_q1_30_t *c)
   }
 }
 
-/* Not inlined into cos below, which would copy the kernel again. */
-DRDC_NOINLINE drdc_q1_30_t drdc_fx_sin_bam32(drdc_bam32_t a)
+drdc_q1_30_t drdc_fx_sin_bam32(drdc_bam32_t a)
 {
   return sin_of(a >> 30, a & (FX_BAM_QUARTER - 1u));
 }
 
 /* cos(a) = sin(a + 2^30), bit for bit: the next quadrant q + 1 mirrors
- * where q does not and is negative for q = 1, 2, as cos_of. A tail call,
- * so one copy of the kernel serves both (issue #8, flash). */
+ * where q does not and is negative for q = 1, 2, as cos_of. */
 drdc_q1_30_t drdc_fx_cos_bam32(drdc_bam32_t a)
 {
   return drdc_fx_sin_bam32(a + FX_BAM_QUARTER);

@@ -14,7 +14,7 @@
 #include "fixed_impl.h"
 
 /** Intervals of the sine table: 256 per quarter wave (pi / 512 each).
- *  Not 128 as the atan table (measured for issue 8): with 129 entries
+ *  Not 128 as the atan table: with 129 entries
  *  sin and cos stay within 1 LSB, but 9 % of them change (the entries'
  *  own 0.25-LSB roundings), and what multiplies several of them leaves
  *  its documented bound: Euler to matrix 2 LSB (bound 1), T T^-1 5 LSB
@@ -247,8 +247,7 @@ static inline uint32_t fx_atan_first_quadrant(uint32_t ay, uint32_t ax)
 }
 
 /** drdc_fx_atan2_bam32() of (y, x), not both zero, without the checks:
- *  inline into it and into drdc_fx_atan2_q5_58()'s seed, which then
- *  stacks no frame of its own for it (issue 8's stack). */
+ *  the body of that function and the seed of drdc_fx_atan2_q5_58(). */
 static inline uint32_t fx_atan2_bam(int32_t y, int32_t x)
 {
   uint32_t a = fx_atan_first_quadrant(fx_abs32(y), fx_abs32(x));

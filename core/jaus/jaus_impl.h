@@ -41,7 +41,7 @@ typedef struct jaus_field {
 
 /** Rows of drdc__jaus_fields: the 32 fields of the two messages in the two
  *  forms have 12 distinct ones, each stored once; a message's fields in
- *  a form are their rows, one byte each (issue 8, flash). _RA3 and _AS:
+ *  a form are their rows, one byte each. _RA3 and _AS:
  *  the type of RA 3.x and of AS6009. */
 #define JAUS_F_LAT_RA3   0u
 #define JAUS_F_LAT_AS    1u
@@ -108,10 +108,9 @@ static inline uint32_t jaus_get_le(const uint8_t *p, size_t n)
 /*
  * The two bodies are read and written in place, field by field, through
  * a pair of pointers of which exactly one is set (the other NULL): no
- * copy of the eight raw values on the stack. The time stamp's check is
- * in a file of its own (pose_stamp.c), so its unpacked fields are not in
- * the frame that calls the scaling: the worst-case stack of the pose
- * functions stays well under 256 bytes.
+ * copy of the eight raw values on the stack. The time stamp's check
+ * (pose_stamp.c) is a call of its own, so its unpacked fields are not
+ * live where the fields are scaled.
  */
 
 /**

@@ -6,7 +6,6 @@
  *        sizes, the checks before packing and unpacking, and the time
  *        stamp, little-endian by shifts.
  */
-#include <drdc/compiler.h>
 #include <stddef.h>
 
 #include <drdc/jaus_pose.h>
@@ -104,13 +103,9 @@ static int64_t field_get(const drdc_jaus_local_pose_t *local,
 }
 
 /* Store the raw value of scaled field `bit` into the body; the value lies
- * within the field's limits (and, for a local X, Y, Z, in Q15.16). Out
- * of line like field_get(): a leaf, off the deepest chain (issue 8,
- * flash: its switch inlined was 100/120 B of drdc_jaus_body_unpack() on
- * Cortex-M3/PowerPC). */
-static DRDC_NOINLINE void field_set(drdc_jaus_local_pose_t *local,
-                                    drdc_jaus_global_pose_t *global,
-                                    unsigned bit, int64_t v)
+ * within the field's limits (and, for a local X, Y, Z, in Q15.16). */
+static void field_set(drdc_jaus_local_pose_t *local,
+                      drdc_jaus_global_pose_t *global, unsigned bit, int64_t v)
 {
   drdc_euler_t *e = (local != NULL) ? &local->pose.e : &global->pose.e;
 
@@ -209,9 +204,6 @@ drdc_status_t drdc_jaus_body_pack(const uint8_t *fields, drdc_jaus_form_t form,
    * on the way to DRDC_OK (its status is still passed on). */
   for (bit = 0u; bit < JAUS_POSE_SCALED; bit++) {
     if (jaus_present(presence, bit) != 0) {
-      /* the value first: the field's address is computed after the
-       * call, not held across it (on Cortex-M3 a saved register and 16 B
-       * of frame) */
       int64_t v = field_get(local, global, bit);
       const jaus_field_t *f = &drdc__jaus_fields[fields[bit]];
       int64_t integer = 0;

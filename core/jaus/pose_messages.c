@@ -6,7 +6,6 @@
  *        (4403h) <-> {le} bodies: each message's field tables per form,
  *        and the public pack/unpack of both over pose_body.c.
  */
-#include <drdc/compiler.h>
 #include <stdbool.h>
 #include <stddef.h>
 
@@ -68,12 +67,11 @@ static const uint8_t *fields_of(bool local, drdc_jaus_form_t form)
 }
 
 /* Either message's pack once its body (local or global, the other NULL)
- * is known to be there: the remaining NULL checks, then the form. Inline
- * into each entry, which then calls drdc_jaus_body_pack() itself: no
- * frame between them on the chain (issue 8's stack). */
-static inline DRDC_ALWAYS_INLINE drdc_status_t
-pack(const drdc_jaus_local_pose_t *local, const drdc_jaus_global_pose_t *global,
-     drdc_jaus_form_t form, uint8_t *buf, size_t capacity, size_t *length)
+ * is known to be there: the remaining NULL checks, then the form. */
+static inline drdc_status_t pack(const drdc_jaus_local_pose_t *local,
+                                 const drdc_jaus_global_pose_t *global,
+                                 drdc_jaus_form_t form, uint8_t *buf,
+                                 size_t capacity, size_t *length)
 {
   const uint8_t *fields = fields_of(local != NULL, form);
 
@@ -91,9 +89,10 @@ pack(const drdc_jaus_local_pose_t *local, const drdc_jaus_global_pose_t *global,
  * decoded value lies within its field's limits, which fit the pose
  * types; a local X, Y or Z beyond Q15.16 is DRDC_E_OVERFLOW: JAUS allows
  * +-100 km, {le} holds +-32 km) */
-static inline DRDC_ALWAYS_INLINE drdc_status_t
-unpack(const uint8_t *buf, size_t length, drdc_jaus_form_t form,
-       drdc_jaus_local_pose_t *local, drdc_jaus_global_pose_t *global)
+static inline drdc_status_t unpack(const uint8_t *buf, size_t length,
+                                   drdc_jaus_form_t form,
+                                   drdc_jaus_local_pose_t *local,
+                                   drdc_jaus_global_pose_t *global)
 {
   const uint8_t *fields = fields_of(local != NULL, form);
 

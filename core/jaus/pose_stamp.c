@@ -2,8 +2,9 @@
 /**
  * @file
  * @ingroup drdc_jaus_pose
- * @brief The time stamp check of the JAUS pose bodies, in a file of its
- *        own: its unpacked fields are not in the frame that scales.
+ * @brief The time stamp check of the JAUS pose bodies: a present stamp
+ *        must unpack to valid day, hour, minute, second and millisecond
+ *        fields.
  */
 #include <drdc/time_jaus.h>
 

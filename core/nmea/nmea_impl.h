@@ -25,8 +25,8 @@ typedef struct nmea_field {
 } nmea_field_t;
 
 /** A sentence whose framing, checksum and address are valid. Fields are
- *  kept as one-byte offsets into the text (a sentence has at most 82
- *  characters): 40 bytes instead of a pointer and a length per field. */
+ *  kept as one-byte offsets into the text: a sentence has at most 82
+ *  characters. */
 typedef struct drdc__nmea_frame {
   const char *text; /**< the sentence, from `$` (talker at
                          text[1], text[2]) */
@@ -43,8 +43,7 @@ drdc_status_t drdc__nmea_frame(const char *text, size_t length,
                                nmea_frame_t *fr);
 
 /** Field `i` (1-based as in the standard), or an empty field when the
- *  sentence has fewer. Inline: a call would return the pair through
- *  memory on both targets, a stack temporary at every use. */
+ *  sentence has fewer. */
 static inline nmea_field_t nmea_field(const nmea_frame_t *fr, size_t i)
 {
   nmea_field_t f = {NULL, 0u};
@@ -72,9 +71,7 @@ drdc_status_t drdc__nmea_uint(const nmea_frame_t *fr, size_t i,
                               int32_t *out);
 
 /** [-]digits[.digits] of the `n` characters at `p` -> mantissa and
- *  10^decimals (at most 18 digits, 15 decimals: DRDC_E_RANGE beyond). In
- *  a file of its own so that it is not inlined into drdc__nmea_fixed(), whose
- *  frame then stays small. */
+ *  10^decimals (at most 18 digits, 15 decimals: DRDC_E_RANGE beyond). */
 drdc_status_t drdc__nmea_decimal(const char *p, size_t n, int64_t *mantissa,
                                  int64_t *scale);
 
@@ -89,8 +86,7 @@ typedef enum nmea_scale {
 /** Field `i` as [-]digits[.digits] -> value x num x 2^frac / den of the
  *  scale, rounded once to nearest, ties away from zero
  *  (drdc_fx_muldiv_s64); DRDC_E_RANGE also for a Q15.16 result outside
- *  int32_t. Four register arguments and no wrapper: this call is on the
- *  deepest stack path of drdc_nmea_parse(). */
+ *  int32_t. */
 drdc_status_t drdc__nmea_fixed(const nmea_frame_t *fr, size_t i,
                                nmea_scale_t scale, int64_t *out);
 

@@ -50,8 +50,9 @@ static void clear(drdc_nmea_t *to)
 
 /* The sentence's decoder; with `n` NULL it only checks. The HDOP,
  * altitude and separation of GGA and GNS are decoded here, after the
- * sentence's own fields, not from inside its decoder: one call level
- * less above the 128-bit division of drdc__nmea_fixed(). */
+ * sentence's own fields, not from inside its decoder, so that the
+ * 128-bit division of drdc__nmea_fixed() is not called one level
+ * deeper. */
 static drdc_status_t decode_sentence(const nmea_frame_t *fr, drdc_nmea_t *n)
 {
   drdc_status_t st;
@@ -87,10 +88,8 @@ static drdc_status_t decode_sentence(const nmea_frame_t *fr, drdc_nmea_t *n)
  * first checks every field (the decoders write nothing with NULL), the
  * second, run only when the first succeeded, writes the caller's record.
  * The second pass reads the same text with the same code, so it succeeds
- * too. Without the scratch drdc_nmea_t (136 bytes) and with the fields
- * as one-byte offsets, the worst-case stack fell from 856 to 256 bytes on
- * Cortex-M3 (688 to 256 on PowerPC e500; 112 and 96 of them are
- * drdc_fx_muldiv_s64's), for about twice the decoding cycles.
+ * too. The record is written only on success without a second
+ * drdc_nmea_t on the stack, for about twice the decoding cycles.
  */
 drdc_status_t drdc_nmea_parse(const char *text, size_t length, drdc_nmea_t *out)
 {
@@ -103,8 +102,7 @@ drdc_status_t drdc_nmea_parse(const char *text, size_t length, drdc_nmea_t *out)
     return DRDC_E_NULL;
   }
   st = drdc__nmea_frame(text, length, &fr);
-  /* one call site of decode_sentence(), so that it is inlined (no frame of its
-   * own on the deepest path) */
+  /* pass 0 checks (n NULL), pass 1 decodes into out */
   for (pass = 0u; (pass < 2u) && (st == DRDC_OK); pass++) {
     if (pass == 1u) {
       clear(out);

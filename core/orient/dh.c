@@ -12,7 +12,6 @@
  * value (Q46), so the only roundings are those of the trig values and
  * one per element per link (2^-61 and 2^-46 m: negligible).
  */
-#include <drdc/compiler.h>
 #include <drdc/orient_kinematics.h>
 
 #include <stddef.h>
@@ -41,9 +40,9 @@ typedef struct link_trig {
   int32_t d;       /**< link offset (plus q if prismatic), Q15.16 */
 } link_trig_t;
 
-static inline DRDC_ALWAYS_INLINE drdc_status_t
-link_trig(drdc_dh_convention_t convention, const drdc_dh_link_t *link,
-          int32_t q, link_trig_t *out)
+static inline drdc_status_t link_trig(drdc_dh_convention_t convention,
+                                      const drdc_dh_link_t *link, int32_t q,
+                                      link_trig_t *out)
 {
   drdc_bam32_t theta = link->theta;
   int64_t d = link->d;
@@ -209,10 +208,8 @@ drdc_status_t drdc_dh_link_transform(drdc_dh_convention_t convention,
   return DRDC_OK;
 }
 
-/* round(a b / 2^n): out of line (noinline), so that the twelve products
- * of a link do not spill their 128-bit temporaries into the frame of
- * drdc_dh_forward(). */
-static DRDC_NOINLINE int64_t mul_round(int64_t a, int64_t b, unsigned n)
+/* round(a b / 2^n), correctly rounded from the exact 128-bit product. */
+static int64_t mul_round(int64_t a, int64_t b, unsigned n)
 {
   return drdc_fx_mul_rshift_round(a, b, n);
 }
@@ -238,10 +235,8 @@ typedef struct dh_chain {
  * one before (R' = R R_link, t' = R t_link + t), so each row is carried
  * through the chain on its own with the link's elements formed on
  * demand: four int64 of state instead of the whole 3x3 matrix and
- * translation, and no link element is loop-invariant for GCC to hoist
- * into the frame. The link's sines and cosines are computed once per
- * row (three times per link). Out of line (noinline), so that the
- * caller's result is not in the frame of the deep calls.
+ * translation. The link's sines and cosines are computed once per row
+ * (three times per link).
  * Bad parameters of link k: c->n becomes k, c->bad their status, and
  * that status is returned (nothing written); the rows after stop at k.
  * Otherwise writes the rounded rotation row to row[0..2] (Q1.30) and,
@@ -305,7 +300,9 @@ drdc_status_t drdc_dh_forward(drdc_dh_convention_t convention,
                               const int32_t *q, drdc_transform_t *out)
 {
   drdc_q1_30_t m[2][3]; /* rows 0 and 1 until the last row succeeds */
-  int32_t t[3];
+  int32_t t[2];         /* their translations */
+  drdc_q1_30_t row2[3]; /* row 2 after a bad link: only its status used */
+  int32_t t2;
   dh_chain_t c;
   drdc_status_t st;
 
@@ -334,7 +331,7 @@ drdc_status_t drdc_dh_forward(drdc_dh_convention_t convention,
     st = dh_row(&c, 1u, m[1], &t[1]);
   }
   if ((st != DRDC_E_OVERFLOW) && (c.bad != DRDC_OK)) {
-    st = dh_row(&c, 2u, m[0], &t[2]); /* its overflow only: m is spent */
+    st = dh_row(&c, 2u, row2, &t2); /* its overflow status only */
     if (st == DRDC_OK) {
       st = c.bad;
     }

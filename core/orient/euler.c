@@ -6,7 +6,6 @@
  *        (to them in euler_dcm.c), with the gimbal-lock rule (roll 0,
  *        all rotation in yaw).
  */
-#include <drdc/compiler.h>
 #include <drdc/orient.h>
 
 #include <stddef.h>
@@ -120,12 +119,11 @@ static drdc_status_t euler_from_elements(const int64_t p[3][3], int64_t one,
 }
 
 /* Element (i, j) of the exact Q60 numerators of R(c) for the scaled
- * quaternion c, the value drdc_orient_impl_numerators() gives (exact
- * integers: the same bits whatever the order of the sums). One at a time
- * and out of line: drdc_euler_from_quat() keeps no 3x3 matrix of int64_t
- * on the stack under its atan2 calls (issue 8's stack goal). */
-static DRDC_NOINLINE int64_t numerator(const int32_t c[4], unsigned i,
-                                       unsigned j)
+ * quaternion c, the value drdc_orient_impl_numerator_row() gives (exact
+ * integers: the same bits whatever the order of the sums). One element
+ * at a time, where it is used: drdc_euler_from_quat() keeps no 3x3
+ * matrix of int64_t live across its atan2 calls. */
+static int64_t numerator(const int32_t c[4], unsigned i, unsigned j)
 {
   int64_t a;
   int64_t b;

@@ -25,8 +25,7 @@ static int32_t shl32(int32_t v, unsigned n)
 }
 
 /* drdc_fx_rshift_round_s32(v, 1): v / 2 rounded to nearest, ties away
- * from zero (|INT32_MIN| / 2 = 2^30 fits), in line: a call would put a
- * frame under the rotations' (issue 8's stack) */
+ * from zero (|INT32_MIN| / 2 = 2^30 fits) */
 static int32_t halve_part(int32_t v)
 {
   uint32_t mag = (orient_abs32(v) + 1u) >> 1;

@@ -21,7 +21,6 @@
 
 #include <stdint.h>
 
-#include <drdc/fixed_arith.h>
 #include <drdc/fixed_trig.h>
 #include <drdc/fixed_wide.h>
 #include <drdc/orient.h>
@@ -75,22 +74,6 @@ drdc_status_t drdc_orient_impl_scale(const drdc_quat_t *q,
  *  does not fit int64_t. */
 drdc_status_t drdc_orient_impl_sum4(int64_t a, int64_t b, int64_t c, int64_t d,
                                     int64_t *out);
-
-/** Round a Q60 value to Q1.30 (ties away from zero); DRDC_E_OVERFLOW
- *  when the result does not fit int32_t. */
-static inline drdc_status_t drdc_orient_impl_q60_to_q30(int64_t v,
-                                                        drdc_q1_30_t *out)
-{
-  /* inline: a quaternion product calls it four times */
-  int64_t r = drdc_fx_rshift_round_s64_inline(v, 30u);
-  drdc_status_t st = DRDC_E_OVERFLOW;
-
-  if ((r <= INT32_MAX) && (r >= INT32_MIN)) {
-    *out = (drdc_q1_30_t)r;
-    st = DRDC_OK;
-  }
-  return st;
-}
 
 /**
  * Round a Q60 value to Q1.30 bits (ties away from zero) without a branch,
@@ -211,8 +194,5 @@ static inline void orient_half_sincos_mag(drdc_bam32_t a, orient_half_t *out)
  *  precision left, then drdc_fx_atan2_bam32(). DRDC_E_DOMAIN for (0, 0). */
 drdc_status_t drdc_orient_impl_atan2_s64(int64_t y, int64_t x,
                                          drdc_bam32_t *out);
-
-/* The wide-integer primitives that lived here are in fixed/
- * (<drdc/fixed_wide.h>, issue 3). */
 
 #endif /* DRDC_ORIENT_IMPL_H */

@@ -18,11 +18,10 @@
 #include "orient_impl.h"
 
 /* The end of both products: DRDC_E_OVERFLOW when bit 30 or 31 of ovf
- * is set (a part does not fit int32_t), else the parts' bits into out.
- * Inline: each product keeps its own copy, with no call. */
-static inline DRDC_ALWAYS_INLINE drdc_status_t
-store_parts(uint32_t ovf, uint32_t rs, uint32_t rx, uint32_t ry, uint32_t rz,
-            drdc_quat_t *out)
+ * is set (a part does not fit int32_t), else the parts' bits into out. */
+static inline drdc_status_t store_parts(uint32_t ovf, uint32_t rs, uint32_t rx,
+                                        uint32_t ry, uint32_t rz,
+                                        drdc_quat_t *out)
 {
   if ((ovf >> 30u) != 0u) {
     return DRDC_E_OVERFLOW;
@@ -34,9 +33,10 @@ store_parts(uint32_t ovf, uint32_t rs, uint32_t rx, uint32_t ry, uint32_t rz,
   return DRDC_OK;
 }
 
-/* The product for a part of a beyond (-1, 1]: kept out of line
- * (noinline) so that the common case keeps a light frame; each sum is
- * checked for the 2^63 bound by its high words. */
+/* The product for a part of a beyond (-1, 1]: each sum is checked for
+ * the 2^63 bound by its high words. */
+/* noinline: the quaternion-multiply goal of docs/performance.md (within
+ * 1.5x of the hand floor on ppc-e500) fails when it is inlined. */
 static DRDC_NOINLINE drdc_status_t quat_mul_wide(const drdc_quat_t *a,
                                                  const drdc_quat_t *b,
                                                  drdc_quat_t *out)
@@ -84,12 +84,8 @@ static inline uint32_t round_q60_bits(int64_t v, uint32_t *ovf)
  * [-2^61, 2^61), a negated one within (-2^61, 2^61], and each part below
  * has a negated term whose own product is above -2^61 (it would need a
  * part of a of -2^30): every sum of four, and every partial sum, is in
- * (-2^63, 2^63), exact in int64_t without checks. Inlined into
- * drdc_quat_mul(), so the parts of a loaded for the range test are
- * reused and no second call is paid on the common path; the rare
- * quat_mul_wide() is tail-called before this frame is set up, so the
- * worst-case stack is the larger frame, not their sum. */
-static inline DRDC_ALWAYS_INLINE drdc_status_t
+ * (-2^63, 2^63), exact in int64_t without checks. */
+static inline drdc_status_t
 quat_mul_unit(const drdc_quat_t *a, const drdc_quat_t *b, drdc_quat_t *out)
 {
   const int64_t as = a->s;
@@ -168,6 +164,7 @@ drdc_status_t drdc_quat_normalize(const drdc_quat_t *q, drdc_quat_t *out)
 {
   orient_scaled_quat_t sq;
   unsigned j;
+  unsigned shift;
   unsigned e;
   uint64_t root;
   drdc_status_t st;
@@ -183,8 +180,8 @@ drdc_status_t drdc_quat_normalize(const drdc_quat_t *q, drdc_quat_t *out)
    * root r = sqrt(n2) 2^j is in [2^31, 2^32]; then part = c 2^(30 + j) / r,
    * |c| 2^(30 + j) <= 2^62, |part| <= 2^30: cannot overflow. */
   j = (unsigned)__builtin_clzll((uint64_t)sq.n2) / 2u;
-  e = 2u * j;
-  root = drdc_fx_sqrt_u64((uint64_t)sq.n2 << e);
+  shift = 2u * j;
+  root = drdc_fx_sqrt_u64((uint64_t)sq.n2 << shift);
   e = 30u + j;
   out->s = div_root(sq.c[0], e, root);
   out->x = div_root(sq.c[1], e, root);
@@ -230,6 +227,7 @@ drdc_status_t drdc_quat_angle_between(const drdc_quat_t *a,
 {
   drdc_quat_t na;
   drdc_quat_t nb;
+  drdc_quat_t conj_a;
   drdc_quat_t d;
   uint64_t v2;
   uint64_t vn;
@@ -248,10 +246,11 @@ drdc_status_t drdc_quat_angle_between(const drdc_quat_t *a,
     return st;
   }
   /* Unit inputs: conj never overflows (|x| <= 2^30), nor the product. */
-  na.x = -na.x;
-  na.y = -na.y;
-  na.z = -na.z;
-  (void)drdc_quat_mul(&na, &nb, &d);
+  conj_a.s = na.s;
+  conj_a.x = -na.x;
+  conj_a.y = -na.y;
+  conj_a.z = -na.z;
+  (void)drdc_quat_mul(&conj_a, &nb, &d);
   /* |v| from the exact sum of squares (<= 3 2^60), correctly rounded. */
   v2 = orient_square_u64(d.x) + orient_square_u64(d.y) + orient_square_u64(d.z);
   vn = drdc_fx_sqrt_u64(v2);

@@ -44,8 +44,7 @@ static int32_t vec_norm(const drdc_quat_t *q)
 }
 
 /* [cos(h), sin(h) v / |v|] for a binary angle h and the non-zero vector
- * part v of *vq (its scalar part unused) of length vn (Q1.30 parts); out
- * may be vq (each part of v is read before its own is written). */
+ * part v of *vq (its scalar part unused) of length vn (Q1.30 parts). */
 static void exp_axis(drdc_bam32_t h, const drdc_quat_t *vq, int32_t vn,
                      drdc_quat_t *out)
 {
@@ -101,14 +100,17 @@ drdc_status_t drdc_quat_nlerp(const drdc_quat_t *a, const drdc_quat_t *b,
   return drdc_quat_normalize(&r, out);
 }
 
-/* Two quaternions of storage only (na, and nb which then holds the
- * relative rotation, its power and the product): the frame stays small
- * under the deep normalisations. */
+/* The slerp of the key frames a and b at t, along the shorter arc when
+ * shorter is non-zero: a d^t with d = conj(a) b, both made unit first. */
 static drdc_status_t slerp(const drdc_quat_t *a, const drdc_quat_t *b,
                            drdc_q1_30_t t, int shorter, drdc_quat_t *out)
 {
   drdc_quat_t na;
   drdc_quat_t nb;
+  drdc_quat_t conj_a;
+  drdc_quat_t d;    /* the relative rotation conj(a) b */
+  drdc_quat_t pow;  /* d^t */
+  drdc_quat_t prod; /* a d^t */
   int32_t vn;
   int flip = 0;
   drdc_bam32_t half;
@@ -122,37 +124,35 @@ static drdc_status_t slerp(const drdc_quat_t *a, const drdc_quat_t *b,
   if (st != DRDC_OK) {
     return st;
   }
-  na.x = -na.x; /* conj(a) */
-  na.y = -na.y;
-  na.z = -na.z;
-  (void)drdc_quat_mul(&na, &nb, &nb); /* d; unit operands: no overflow */
-  na.x = -na.x;
-  na.y = -na.y;
-  na.z = -na.z;
-  if ((shorter != 0) && (nb.s < 0)) {
-    negate_unit(&nb);
+  conj_a.s = na.s; /* unit parts: the negations are exact */
+  conj_a.x = -na.x;
+  conj_a.y = -na.y;
+  conj_a.z = -na.z;
+  (void)drdc_quat_mul(&conj_a, &nb, &d); /* unit operands: no overflow */
+  if ((shorter != 0) && (d.s < 0)) {
+    negate_unit(&d);
   }
-  vn = vec_norm(&nb);
+  vn = vec_norm(&d);
   if (vn == 0) {
     /* no rotation between them (or a half turn of the scalar only) */
-    if (nb.s < 0) {
+    if (d.s < 0) {
       flip = 1;
     }
-    nb.s = ORIENT_Q1_30_ONE;
-    nb.x = 0;
-    nb.y = 0;
-    nb.z = 0;
+    pow.s = ORIENT_Q1_30_ONE;
+    pow.x = 0;
+    pow.y = 0;
+    pow.z = 0;
   } else {
-    (void)drdc_fx_atan2_bam32(vn, nb.s, &half); /* [0, 2^31] */
+    (void)drdc_fx_atan2_bam32(vn, d.s, &half); /* [0, 2^31] */
     /* t half: half <= 2^31 as unsigned; the product is <= 2^61 */
     ht = (drdc_bam32_t)drdc_fx_rshift_round_s64((int64_t)half * t, 30u);
-    exp_axis(ht, &nb, vn, &nb);
+    exp_axis(ht, &d, vn, &pow);
   }
-  (void)drdc_quat_mul(&na, &nb, &nb);
+  (void)drdc_quat_mul(&na, &pow, &prod);
   if (flip != 0) {
-    negate_unit(&nb); /* the scalar-only half turn: a -> -a at t = 1 */
+    negate_unit(&prod); /* the scalar-only half turn: a -> -a at t = 1 */
   }
-  return drdc_quat_normalize(&nb, out);
+  return drdc_quat_normalize(&prod, out);
 }
 
 drdc_status_t drdc_quat_slerp(const drdc_quat_t *a, const drdc_quat_t *b,
@@ -173,15 +173,16 @@ drdc_status_t drdc_quat_slerp(const drdc_quat_t *a, const drdc_quat_t *b,
 static drdc_status_t log_rel(const drdc_quat_t *c, const drdc_quat_t *q,
                              drdc_quat_t *w)
 {
-  drdc_quat_t d;
+  drdc_quat_t nq;
+  drdc_quat_t d; /* c q / |q| */
   drdc_bam32_t half;
   int32_t vn;
-  drdc_status_t st = drdc_quat_normalize(q, &d);
+  drdc_status_t st = drdc_quat_normalize(q, &nq);
 
   if (st != DRDC_OK) {
     return st;
   }
-  (void)drdc_quat_mul(c, &d, &d);
+  (void)drdc_quat_mul(c, &nq, &d);
   if (d.s < 0) {
     negate_unit(&d);
   }
@@ -212,8 +213,14 @@ drdc_status_t drdc_quat_squad_control(const drdc_quat_t *q0,
                                       const drdc_quat_t *q2, drdc_quat_t *out)
 {
   drdc_quat_t n1;
-  drdc_quat_t e; /* log(conj(q1) q0), then w, then exp(w), then q1 exp(w) */
+  drdc_quat_t c;    /* conj(q1 / |q1|) */
+  drdc_quat_t w0;   /* log(c q0) */
+  drdc_quat_t w2;   /* log(c q2) */
+  drdc_quat_t w;    /* -(w0 + w2) / 4 */
+  drdc_quat_t ew;   /* exp(w) */
+  drdc_quat_t prod; /* q1 exp(w) */
   uint64_t n2;
+  uint64_t ang;
   drdc_status_t st;
 
   if ((q0 == NULL) || (q1 == NULL) || (q2 == NULL) || (out == NULL)) {
@@ -223,44 +230,39 @@ drdc_status_t drdc_quat_squad_control(const drdc_quat_t *q0,
   if (st != DRDC_OK) {
     return st;
   }
-  n1.x = -n1.x; /* conj(q1): unit parts, exact */
-  n1.y = -n1.y;
-  n1.z = -n1.z;
-  /* log(conj(q1) q2) goes to out as scratch: log_rel() writes it only
-   * on success, after reading q2, and nothing can fail after it. */
-  st = log_rel(&n1, q0, &e);
+  c.s = n1.s; /* unit parts: the negations are exact */
+  c.x = -n1.x;
+  c.y = -n1.y;
+  c.z = -n1.z;
+  st = log_rel(&c, q0, &w0);
   if (st == DRDC_OK) {
-    st = log_rel(&n1, q2, out);
+    st = log_rel(&c, q2, &w2);
   }
   if (st != DRDC_OK) {
     return st;
   }
-  n1.x = -n1.x;
-  n1.y = -n1.y;
-  n1.z = -n1.z;
   /* w = -(w0 + w2) / 4, each part <= 2^29 binary-angle units */
-  e.x = quarter_sum(e.x, out->x);
-  e.y = quarter_sum(e.y, out->y);
-  e.z = quarter_sum(e.z, out->z);
-  n2 = orient_square_u64(e.x) + orient_square_u64(e.y) + orient_square_u64(e.z);
+  w.s = 0;
+  w.x = quarter_sum(w0.x, w2.x);
+  w.y = quarter_sum(w0.y, w2.y);
+  w.z = quarter_sum(w0.z, w2.z);
+  n2 = orient_square_u64(w.x) + orient_square_u64(w.y) + orient_square_u64(w.z);
   if (n2 == 0u) {
     *out = n1;
     return DRDC_OK;
   }
-  {
-    uint64_t ang = drdc_fx_sqrt_u64(n2); /* <= 2^29 sqrt(3) */
-
-    exp_axis((drdc_bam32_t)ang, &e, (int32_t)ang, &e);
-  }
-  (void)drdc_quat_mul(&n1, &e, &e);
-  return drdc_quat_normalize(&e, out);
+  ang = drdc_fx_sqrt_u64(n2); /* <= 2^29 sqrt(3) */
+  exp_axis((drdc_bam32_t)ang, &w, (int32_t)ang, &ew);
+  (void)drdc_quat_mul(&n1, &ew, &prod);
+  return drdc_quat_normalize(&prod, out);
 }
 
 drdc_status_t drdc_quat_squad(const drdc_quat_t *q1, const drdc_quat_t *q2,
                               const drdc_quat_t *s1, const drdc_quat_t *s2,
                               drdc_q1_30_t t, drdc_quat_t *out)
 {
-  drdc_quat_t b;
+  drdc_quat_t ctrl; /* slerp(s1, s2, t) */
+  drdc_quat_t keys; /* slerp(q1, q2, t) */
   drdc_q1_30_t u;
   drdc_status_t st;
 
@@ -271,14 +273,12 @@ drdc_status_t drdc_quat_squad(const drdc_quat_t *q1, const drdc_quat_t *q2,
   if (!t_ok(t)) {
     return DRDC_E_RANGE;
   }
-  /* The slerp between the control points first, into b; then the one
-   * between the keys into out itself (slerp() writes it only on
-   * success, and reads its inputs before): no second buffer. Either can
-   * fail only with DRDC_E_DOMAIN (a zero quaternion), so the order does
-   * not change the status; out is written only when both succeeded. */
-  st = slerp(s1, s2, t, 0, &b);
+  /* Either slerp can fail only with DRDC_E_DOMAIN (a zero quaternion),
+   * so their order does not change the status; out is written only when
+   * both succeeded. */
+  st = slerp(s1, s2, t, 0, &ctrl);
   if (st == DRDC_OK) {
-    st = slerp(q1, q2, t, 1, out);
+    st = slerp(q1, q2, t, 1, &keys);
   }
   if (st != DRDC_OK) {
     return st;
@@ -286,5 +286,5 @@ drdc_status_t drdc_quat_squad(const drdc_quat_t *q1, const drdc_quat_t *q2,
   /* 2 t (1 - t) in Q1.30: t (2^30 - t) <= 2^58, result <= 2^29 */
   u = (drdc_q1_30_t)drdc_fx_rshift_round_s64(
       (int64_t)t * ((int64_t)ORIENT_Q1_30_ONE - t), 29u);
-  return slerp(out, &b, u, 0, out);
+  return slerp(&keys, &ctrl, u, 0, out);
 }

@@ -79,11 +79,11 @@ drdc_status_t drdc_time_jaus_to_utc(const drdc_time_leap_t *leap,
                                     uint32_t stamp, const drdc_time_t *ref,
                                     drdc_time_t *utc)
 {
-  /* Few values live across the three drdc_time_from_civil() calls (each
-   * one costs a saved register; issue 8: stack depth): the candidate
-   * month is stepped in `c` itself, the best candidate is kept as a time
-   * and its distance recomputed. */
+  /* The candidate date `c` (the reference's month stepped from the one
+   * before to the one after, the stamp's day and time of day); the best
+   * candidate is kept as a time and its distance recomputed. */
   drdc_time_civil_t c;
+  int32_t ref_day;
   drdc_time_t t;
   drdc_time_t best;
   int found = 0;
@@ -94,8 +94,8 @@ drdc_status_t drdc_time_jaus_to_utc(const drdc_time_leap_t *leap,
   if ((ref == NULL) || (utc == NULL)) {
     return DRDC_E_NULL;
   }
-  /* The stamp is validated in a block of its own, so that the stack
-   * slots of its unpacked fields can be reused. */
+  /* The stamp's fields must be valid; the candidate takes them from the
+   * stamp's bits below. */
   {
     drdc_time_jaus_fields_t f;
 
@@ -105,15 +105,13 @@ drdc_status_t drdc_time_jaus_to_utc(const drdc_time_leap_t *leap,
     }
   }
   /* the reference's year and month: drdc_time_to_civil() without the
-   * fields not needed (the same check, the day of its UTC second), one
-   * call level less; written into `c` itself, whose day and time of day
-   * then come from the (valid) stamp's bits */
+   * fields not needed (the same check, the day of its UTC second) */
   if (drdc_time_check(leap, ref) != DRDC_OK) {
     return DRDC_E_RANGE;
   }
   (void)drdc_time_civil_from_days(
       (int32_t)drdc_time_floor_div(ref->sec, SECONDS_PER_DAY), &c.year,
-      &c.month, &c.day);
+      &c.month, &ref_day);
   c.day = (int32_t)((stamp >> DAY_SHIFT) & DAY_MASK);
   c.hour = (int32_t)((stamp >> HOUR_SHIFT) & HOUR_MASK);
   c.minute = (int32_t)((stamp >> MINUTE_SHIFT) & MINUTE_MASK);

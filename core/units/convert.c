@@ -42,8 +42,7 @@ drdc_status_t drdc_units_convert(int64_t raw, unsigned from_frac,
   if ((from_frac > DRDC_UNITS_FRAC_MAX) || (to_frac > DRDC_UNITS_FRAC_MAX)) {
     return DRDC_E_RANGE;
   }
-  /* the exact rationals in a function of their own: not in this frame
-   * while the 128-bit division runs */
+  /* the exact input and factor (scale.c) */
   if (drdc__units_prepare(from_frac, from, to_frac, to, &a, &factor) !=
       DRDC_OK) {
     return DRDC_E_RANGE;

@@ -5,12 +5,12 @@
   python3 core/units/gen_table.py      (tests/ref/generate.py --check
                                         proves the committed file is current)
 
-The table is stored compactly (issue 8, flash): the names as one string of
+The table is stored compactly for flash: the names as one string of
 NUL-terminated names in row order (no pointer per row), each distinct
 dimension once, each distinct factor number once (below 2^32 as uint32_t,
 larger ones as int64_t) and three bytes per unit: the two factor indices
 and the dimension and offset rows, four bits each. The numbers are
-the very same exact integers as in units.txt: conversions are unchanged.
+the very same exact integers as in units.txt.
 """
 import os
 import re

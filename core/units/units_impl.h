@@ -21,13 +21,13 @@ typedef struct units_rat {
   int64_t den;
 } units_rat_t;
 
-/* The rationals are passed by pointer (no 16-byte copies on the stack);
- * `out` may be `a` or `b`: every part is read before `out` is written. */
+/* The rationals are passed by pointer; `out` may be `a` or `b`: every
+ * part is read before `out` is written. */
 
 /** a x num / den (den > 0), exact: cross-cancels before multiplying,
  *  so the result is in lowest terms when a and num / den are; the same
  *  as a product of two rationals, with the second one passed as its two
- *  parts (no rational on the caller's stack). DRDC_E_RANGE when a part
+ *  parts. DRDC_E_RANGE when a part
  *  does not fit int64_t (outputs unchanged). */
 drdc_status_t drdc__units_rat_scale(const units_rat_t *a, int64_t num,
                                     int64_t den, units_rat_t *out);
@@ -48,8 +48,7 @@ drdc_status_t drdc__units_mul_s64(int64_t x, int64_t y, int64_t *out);
  *  validated arguments: from the raw input in `*a`, the exact input `*a`
  *  and factor A / B such that the result is round(a x A / B)
  *  (core/units/scale.c). DRDC_E_RANGE when they do not fit 63-bit
- *  integers; `*a` and `*factor` are then undefined (the factor is worked
- *  on in place, in the caller's frame). */
+ *  integers; `*a` and `*factor` are then undefined. */
 drdc_status_t drdc__units_prepare(unsigned from_frac, const drdc_unit_t *from,
                                   unsigned to_frac, const drdc_unit_t *to,
                                   int64_t *a, units_rat_t *factor);
@@ -97,7 +96,7 @@ int64_t drdc__units_number(uint8_t index);
 units_rat_t drdc__units_offset(const drdc_unit_t *unit);
 
 /** The numerator (`part` 0) or denominator (`part` 1) of the unit's
- *  offset, as a value (no rational on the caller's stack). */
+ *  offset, as a value. */
 int64_t drdc__units_offset_part(const drdc_unit_t *unit, unsigned part);
 
 #endif /* DRDC_UNITS_IMPL_H */

@@ -59,8 +59,7 @@
  * intermediate: one factor of the product is the integer span (below
  * 2^32), so quotient and remainder come exactly from 64-bit arithmetic
  * (32 steps of Horner's rule), without a 128-bit product or division;
- * no call but the range lookup (worst-case stack 80 / 104 bytes on
- * Cortex-M3, 80 / 96 on PowerPC e500, encode / decode).
+ * no call but the range lookup.
  *
  * **Round trips**: decode(encode(v)) is within half a ScaleFactor of v;
  * encode(decode(i)) == i exactly whenever the real format resolves the

@@ -15,7 +15,7 @@
 /**
  * @defgroup drdc_orient Orientation
  *
- * Conventions (design brief section 2):
+ * Conventions:
  * - quaternions are scalar first, q = [s, x, y, z], Hamilton product,
  *   each part Q1.30 (2^30 = 1.0); q = [1, 0, 0, 0] is the body x axis on
  *   True North, level, no roll. q and -q are the same orientation.
@@ -123,11 +123,12 @@ typedef struct drdc_vec3_q47_16 {
  * exact Python-integer products (55 cases incl. overflow); q * conj(q) of
  * a normalised q is 1 within 2 LSB.
  *
- * Cost (`./waf bench`, docs/performance.md): 1.39 times the cycles of a
- * hand-written 16 multiply-accumulate product with truncating shifts and
- * the same signature on Cortex-M3, 1.45 times on PowerPC e500 (the
- * rounding, the range test and the overflow checks); soft-float double
- * takes about 20 times as long on Cortex-M3.
+ * Cost: within 1.5 times the cycles of a hand-written 16
+ * multiply-accumulate product with truncating shifts and the same
+ * signature, on Cortex-M3 and PowerPC e500 (the rounding, the range test
+ * and the overflow checks); soft-float double takes more than 10 times
+ * as long on Cortex-M3. docs/performance.md has the measured ratios
+ * (`./waf bench`).
  *
  * @code
  * drdc_quat_t yaw90 = { 759250125, 0, 0, 759250125 }, r;
@@ -159,6 +160,7 @@ drdc_status_t drdc_quat_conj(const drdc_quat_t *q, drdc_quat_t *out);
  * @retval DRDC_E_DOMAIN q is zero
  * @retval DRDC_E_OVERFLOW a part of the inverse is outside [-2, 2)
  *         (|q| below about 0.5)
+ *
  * Accuracy: correctly rounded (0.5 LSB) when every |part| <= 1.0; one
  * more LSB when q had to be halved first.
  */
@@ -172,13 +174,14 @@ drdc_status_t drdc_quat_inverse(const drdc_quat_t *q, drdc_quat_t *out);
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
  * @retval DRDC_E_DOMAIN q is zero: no direction
+ *
  * Method: exact power-of-two prescaling (halving with rounding above 1.0),
  * exact 64-bit sum of squares, a correctly rounded 64-bit square root with
  * 31 to 32 significant bits, one correctly rounded division per part.
  * Accuracy: each part within 0.75 LSB of the exact q / |q| (0.5 for the
  * final rounding, 0.25 from the 31-bit root); | |out| - 1 | measured at
  * most 1.01 LSB of Q1.30 (20 000 random quaternions of every length;
- * issue bound 2 LSB).
+ * required: at most 2 LSB).
  *
  * @code
  * drdc_quat_t q = { 3, 0, 4, 0 }, n;   // any length
@@ -209,6 +212,7 @@ drdc_status_t drdc_quat_canonical(const drdc_quat_t *q, drdc_quat_t *out);
  * @retval DRDC_E_DOMAIN q is zero
  * @retval DRDC_E_OVERFLOW a rotated part is outside +-32768 m (possible
  *         when |v| >= 32768 m)
+ *
  * Method: the exact Q60 numerators p of R(q) and the exact |q|^2 (the
  * matrix is never rounded to Q1.30); each part sum(p v) is exact in 96
  * bits and divided once by |q|^2 with a precomputed reciprocal (two
@@ -239,6 +243,7 @@ drdc_status_t drdc_quat_rotate_q15_16(const drdc_quat_t *q,
  * @retval DRDC_E_NULL a pointer is NULL
  * @retval DRDC_E_DOMAIN q is zero
  * @retval DRDC_E_RANGE a part of v is beyond DRDC_ORIENT_Q47_16_MAX
+ *
  * Method: the exact Q60 numerators of R(q) and |q|^2 as for
  * drdc_quat_rotate_q15_16(), each term p v / |q|^2 rounded with 6 guard
  * bits through a 128-bit intermediate, the sum rounded once.
@@ -259,6 +264,7 @@ drdc_status_t drdc_quat_rotate_q47_16(const drdc_quat_t *q,
  * @retval DRDC_E_DOMAIN the product is zero (a or b zero)
  * @retval DRDC_E_OVERFLOW the product overflows (only possible when
  *         |a| |b| >= 2)
+ *
  * Accuracy: parts within 1 LSB of the exact normalised product (0.5 LSB
  * of the product plus the normalisation), |out| - 1 within 2 LSB.
  */
@@ -309,11 +315,13 @@ drdc_status_t drdc_quat_angle_between(const drdc_quat_t *a,
  *             (s < 0 is possible; q and -q are the same rotation).
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
+ *
  * Method: sin and cos of the half angles from drdc_fx_sincos_bam32()
  * (odd binary angles by the mean of the two neighbours), products kept
  * in 64 bits with one intermediate rounding to Q1.31 and one final one.
  * Accuracy: measured max 2 LSB of Q1.30 per part against SciPy (20 256
- * orientations incl. yaw +-180 and pitch +-90 degrees; issue bound 4).
+ * orientations incl. yaw +-180 and pitch +-90 degrees; required: at
+ * most 4 LSB).
  *
  * @code
  * drdc_euler_t e = { 1u << 30, 0u, 0u };   // heading east (yaw 90 deg)
@@ -333,13 +341,14 @@ drdc_status_t drdc_quat_from_euler(const drdc_euler_t *e, drdc_quat_t *out);
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
  * @retval DRDC_E_DOMAIN q is zero
+ *
  * Method: the matrix elements needed are exact Q60 integers of q; yaw =
  * atan2(R21, R11), pitch = atan2(-R31, hypot(R11, R21)), roll =
  * atan2(R32, R33), each with both arguments scaled to 31 bits.
  * Accuracy: measured max 1.125 binary-angle units (9.4e-8 degree) from
  * SciPy's angles of the exact integer input, when |pitch| is at least
  * 0.001 degree from 90 degrees or exactly in gimbal lock (20 249 cases;
- * issue bound 1e-7 degree). Closer to the lock the angles are
+ * required: at most 1e-7 degree). Closer to the lock the angles are
  * ill-conditioned; they then describe the input rotation to 3 LSB per
  * matrix element.
  *
@@ -386,6 +395,7 @@ drdc_status_t drdc_dcm_from_quat(const drdc_quat_t *q, drdc_dcm_t *out);
  * @retval DRDC_E_DOMAIN the matrix is far from a rotation: the
  *         quaternion it gives has |q|^2 outside [0.5, 2] before
  *         normalisation (e.g. the zero matrix)
+ *
  * Accuracy: measured max 1 LSB per part against SciPy (124 matrices incl.
  * 24 half turns); |out| - 1 within 1.01 LSB.
  */
@@ -412,6 +422,7 @@ drdc_status_t drdc_euler_canonical(const drdc_euler_t *e, drdc_euler_t *out);
  * @param[out] out matrix; unchanged on error
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
+ *
  * Accuracy: measured max 1 LSB per element against SciPy (256 rows).
  */
 drdc_status_t drdc_dcm_from_euler(const drdc_euler_t *e, drdc_dcm_t *out);
@@ -493,6 +504,7 @@ drdc_status_t drdc_dcm_apply_q47_16(const drdc_dcm_t *r,
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
  * @retval DRDC_E_DOMAIN the axis is zero
+ *
  * Accuracy: measured max 1 LSB per part against SciPy (48 rows).
  */
 drdc_status_t drdc_quat_from_axis_angle(const drdc_vec3_q1_30_t *axis,
@@ -544,6 +556,7 @@ drdc_status_t drdc_quat_nlerp(const drdc_quat_t *a, const drdc_quat_t *b,
  * @retval DRDC_E_NULL a pointer is NULL
  * @retval DRDC_E_RANGE t outside [0, 1]
  * @retval DRDC_E_DOMAIN a or b is zero
+ *
  * Accuracy: measured max 2 LSB per part against SciPy's Slerp (48 rows
  * incl. q vs -q and nearly equal keys); |out| - 1 within 1.01 LSB.
  */

@@ -59,6 +59,7 @@ typedef struct drdc_dh_link {
  * @retval DRDC_E_NULL a pointer is NULL
  * @retval DRDC_E_RANGE bad convention or joint type
  * @retval DRDC_E_OVERFLOW d + q leaves +-32768 m (prismatic)
+ *
  * Accuracy: each element of R is one rounding of an exact product of
  * drdc_fx_sincos_bam32() values (max 1 LSB each): within 1.5 LSB;
  * t within 0.5 LSB of Q15.16 plus |a| or |d| times 1 LSB of Q1.30.
@@ -79,6 +80,7 @@ drdc_status_t drdc_dh_link_transform(drdc_dh_convention_t convention,
  * @retval DRDC_E_RANGE n > DRDC_DH_MAX_LINKS, or a bad convention or
  *         joint type
  * @retval DRDC_E_OVERFLOW a translation leaves +-32768 m on the way
+ *
  * Method: the product is accumulated with the rotation in Q2.61 and the
  * translation in Q17.46 (int64), one row at a time (row i of each
  * product needs only row i of the one before), each link's elements
@@ -89,8 +91,8 @@ drdc_status_t drdc_dh_link_transform(drdc_dh_convention_t convention,
  * Accuracy: measured against an independent numpy double model (PUMA 560
  * and a 7-link arm with prismatic joints 2 and 5, standard and modified,
  * 160 configurations): rotation max 2 LSB per element, position max
- * 7.6 um (0.5 LSB of Q15.16, the final rounding; issue bounds 8 LSB and
- * 10 um). Composing the link transforms one by one instead costs up to 3
+ * 7.6 um (0.5 LSB of Q15.16, the final rounding; required: at most 8 LSB
+ * and 10 um). Composing the link transforms one by one instead costs up to 3
  * LSB of both.
  *
  * @code

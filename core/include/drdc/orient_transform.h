@@ -65,6 +65,7 @@ drdc_status_t drdc_transform_from_quat(const drdc_quat_t *q,
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
  * @retval DRDC_E_OVERFLOW the translation leaves +-32768 m
+ *
  * Accuracy: R within 0.5 LSB of Ra Rb as given (each element one
  * rounding); t within 0.5 LSB of Q15.16 (7.6 um) plus |tb| times the
  * error of Ra.
@@ -92,6 +93,7 @@ drdc_status_t drdc_transform_invert(const drdc_transform_t *a,
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
  * @retval DRDC_E_OVERFLOW a part leaves +-32768 m
+ *
  * Accuracy: 0.5 LSB of Q15.16 from the arithmetic plus |p| times the
  * error of R.
  */
@@ -132,6 +134,7 @@ drdc_status_t drdc_transform_global_compose(const drdc_transform_global_t *g,
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
  * @retval DRDC_E_OVERFLOW the result leaves Q47.16
+ *
  * Accuracy: as drdc_transform_point(): 0.5 LSB plus |p_B| times the
  * error of R; the global translation adds no error.
  */
@@ -145,6 +148,7 @@ drdc_status_t drdc_transform_global_to_world(const drdc_transform_global_t *g,
  * @retval DRDC_E_NULL a pointer is NULL
  * @retval DRDC_E_OVERFLOW p_A - t is outside the Q15.16 range in some
  *         part, or the result is
+ *
  * Accuracy: 0.5 LSB plus |p_A - t| times the error of R.
  */
 drdc_status_t drdc_transform_global_to_local(const drdc_transform_global_t *g,

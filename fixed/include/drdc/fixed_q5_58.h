@@ -133,8 +133,8 @@ drdc_status_t drdc_fx_div_q5_58(drdc_q5_58_t a, drdc_q5_58_t b,
  * @param b divisor, Q5.58; the caller guarantees b != 0 and |a / b| < 32.
  * @return the correctly rounded quotient (ties away from zero), Q5.58.
  *
- * Why: the value comes back in registers, so a caller keeps no result
- * slot in its frame (issue 8's worst-case stack). Accuracy: as
+ * Why: for bounded inner loops the quotient is a plain value, with no
+ * status to test and no output pointer. Accuracy: as
  * drdc_fx_div_q5_58(); checked bit for bit against it on the stored
  * quotient vectors (tests/fixed/test_q5_58.c).
  */
@@ -153,9 +153,8 @@ drdc_q5_58_t drdc_fx_div_q5_58_unchecked(drdc_q5_58_t a, drdc_q5_58_t b);
  * @return the rounded product, Q5.58.
  *
  * Method: the magnitudes' 128-bit product from four 32 x 32 -> 64
- * products, plus 2^57, bits 58..121; then the sign. Its inlined body is
- * about a third of the cycles of the call to drdc_fx_mul_q5_58() with its
- * checks and pointer (Cortex-M3). Accuracy: correctly rounded, error
+ * products, plus 2^57, bits 58..121; then the sign; no call, no check
+ * and no output pointer. Accuracy: correctly rounded, error
  * <= 0.5 LSB; checked bit for bit against drdc_fx_mul_q5_58() on the
  * stored product vectors (tests/fixed/test_q5_58.c).
  */

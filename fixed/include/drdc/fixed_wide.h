@@ -16,8 +16,8 @@
  * @defgroup drdc_fixed_wide Wide-integer primitives (internal, shared)
  *
  * Building blocks of the library's own exact arithmetic, for fixed/ and
- * core/ modules (issue 3: no module writes its own rounding or overflow
- * arithmetic). They are not part of the data standard's API: they take
+ * core/ modules, so that no module writes its own rounding or overflow
+ * arithmetic. They are not part of the data standard's API: they take
  * raw integers, state their preconditions instead of checking them and
  * return no status. Outside its stated domain a primitive's result is
  * unspecified (never undefined behaviour: every operation is on unsigned
