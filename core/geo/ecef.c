@@ -24,7 +24,7 @@
 #include <drdc/fixed_arith.h>
 #include <drdc/fixed_sqrt.h>
 
-#include "geo_impl.h"
+#include "geo_ecef_impl.h"
 
 /** a = 6 378 137 m in Q27.36. */
 #define A_Q36 (INT64_C(6378137) * INT64_C(68719476736))
