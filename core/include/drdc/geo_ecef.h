@@ -53,19 +53,17 @@ drdc_status_t drdc_geo_to_ecef(const drdc_geo_point_t *p,
                                drdc_vec3_q47_16_t *ecef);
 
 /**
- * ECEF -> geodetic by Bowring's iteration: from the parametric latitude
- * beta_0 = atan2(a Z, b p) (p = hypot(X, Y)), two steps of
+ * ECEF -> geodetic by Bowring's iteration (B. R. Bowring, Survey Review
+ * 23 (181), 1976): from the parametric latitude beta_0 = atan2(a Z, b p)
+ * (p = hypot(X, Y)), two steps of
  * phi = atan2(Z + e'^2 b sin^3 beta, p - e^2 a cos^3 beta),
  * tan beta = (b / a) tan phi (it converges cubically: within 1.4e-19 rad
  * after two steps for heights -10 km .. 10 000 km, by mpmath), a third
  * step for points more than 50 km below the ellipsoid; then
  * h = p cos phi + Z sin phi - a sqrt(1 - e^2 sin^2 phi). The lengths and
  * unit vectors use reciprocal square roots by Newton steps from a 32-bit
- * seed (no Q5.58 division or square root); two atan2 in all (before:
- * nine atan2, sin/cos and square roots and eight quotients). Speed
- * (docs/performance.md): 9 616 cycles on Cortex-M3 (43 207 before),
- * against 18 910 for the same algorithm in soft-float double; 11 214 on
- * PowerPC e500 (54 345 before).
+ * seed (no Q5.58 division or square root), and two atan2 in all. Cycles
+ * per target: docs/performance.md.
  *
  * @param ecef X, Y, Z in Q47.16 metres.
  * @param[out] p latitude, longitude in [-180, 180] (0 on the polar
@@ -80,7 +78,7 @@ drdc_status_t drdc_geo_to_ecef(const drdc_geo_point_t *p,
  * on the forward results, 2 009 points, heights -10 km .. 10 000 km):
  * latitude and longitude within 1 nas, height equal to CartConvert's
  * rounded to Q47.16 (0 LSB); the ECEF round trip through
- * drdc_geo_to_ecef() exact (0 LSB; the issue asks 0.1 mm).
+ * drdc_geo_to_ecef() exact (0 LSB).
  */
 drdc_status_t drdc_geo_from_ecef(const drdc_vec3_q47_16_t *ecef,
                                  drdc_geo_point_t *p);

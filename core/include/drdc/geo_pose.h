@@ -340,11 +340,15 @@ drdc_status_t drdc_pose_we_from_wemgrs(const drdc_WeMGRSPose_t *m,
  * @retval DRDC_E_NULL ref, l or out is NULL.
  * @retval DRDC_E_LATITUDE ref->latitude outside [-90, 90] degrees.
  * @retval DRDC_E_LONGITUDE ref->longitude outside [-540, 540) degrees.
- * @retval DRDC_E_HEIGHT the reference's or the result's ellipsoidal
- *         height beyond +-10 000 km.
- * @retval DRDC_E_DOMAIN ref->q is zero.
+ * @retval DRDC_E_HEIGHT |geoid_separation|, the reference's or the
+ *         result's ellipsoidal height beyond 10 000 km.
+ * @retval DRDC_E_DOMAIN ref->q or l->q is zero.
  * @retval DRDC_E_OVERFLOW the local offset turned into north-east-down
  *         leaves Q15.16 (an axis beyond 32 km).
+ *
+ * Output unchanged on error; out may be ref. Accuracy: as
+ * drdc_pose_l_from_w(), whose inverse it is (round trips within 2 LSB of
+ * height and the 7.6 um of the Q15.16 position).
  */
 drdc_status_t drdc_pose_w_from_l(const drdc_WPose_t *ref,
                                  drdc_q47_16_t geoid_separation,
@@ -362,14 +366,16 @@ drdc_status_t drdc_pose_w_from_l(const drdc_WPose_t *ref,
  * @retval DRDC_E_NULL ref, w or out is NULL.
  * @retval DRDC_E_LATITUDE a latitude outside [-90, 90] degrees.
  * @retval DRDC_E_LONGITUDE a longitude outside [-540, 540) degrees.
- * @retval DRDC_E_HEIGHT an ellipsoidal height beyond +-10 000 km.
- * @retval DRDC_E_DOMAIN ref->q is zero.
+ * @retval DRDC_E_HEIGHT |geoid_separation| or an ellipsoidal height
+ *         beyond 10 000 km.
+ * @retval DRDC_E_DOMAIN ref->q or w->q is zero.
  * @retval DRDC_E_OVERFLOW w is more than 32 km from ref on an axis.
  *
- * Accuracy (measured on 1 000 CartConvert points, ref facing north and
- * east): the position within 1 LSB of CartConvert's local frame; round
- * trips with drdc_pose_w_from_l() within 2 LSB of height and the 7.6 um
- * of the Q15.16 position in latitude and longitude.
+ * Output unchanged on error. Accuracy (measured on 1 000 CartConvert
+ * points, ref facing north and east): the position within 1 LSB of
+ * CartConvert's local frame; round trips with drdc_pose_w_from_l()
+ * within 2 LSB of height and the 7.6 um of the Q15.16 position in
+ * latitude and longitude.
  */
 drdc_status_t drdc_pose_l_from_w(const drdc_WPose_t *ref,
                                  drdc_q47_16_t geoid_separation,
