@@ -42,21 +42,6 @@
 #define GEO_NAS_180 INT64_C(648000000000000)
 /** Nano-arcseconds in one degree. */
 #define GEO_NAS_DEG INT64_C(3600000000000)
-/** Terms of the series of the conformal latitude (8) and of Krueger's
- *  series (6). */
-#define GEO_CHI_TERMS 8u
-/** Number of Krueger coefficients (6th order in n). */
-#define GEO_KRUEGER_TERMS 6u
-
-/** chi - phi = sum GEO_CHI_FROM_PHI[j] sin(2 (j+1) phi). */
-extern const int64_t drdc__geo_chi_from_phi[GEO_CHI_TERMS];
-/** phi - chi = sum GEO_PHI_FROM_CHI[j] sin(2 (j+1) chi). */
-extern const int64_t drdc__geo_phi_from_chi[GEO_CHI_TERMS];
-/** Krueger alpha_1..6 (geographic -> transverse Mercator). */
-extern const int64_t drdc__geo_alpha[GEO_KRUEGER_TERMS];
-/** Krueger beta_1..6 (transverse Mercator -> geographic). */
-extern const int64_t drdc__geo_beta[GEO_KRUEGER_TERMS];
-
 /** a b / 2^58, rounded to nearest (ties away from zero): the caller keeps
  *  |a b| / 2^58 within Q5.58. One out-of-line copy of
  *  drdc_fx_mul_q5_58_unchecked() (the same bits as drdc_fx_mul_q5_58(),
@@ -127,71 +112,6 @@ typedef struct geo_tm {
 } geo_tm_t;
 
 /**
- * Transverse Mercator (Krueger series, 6th order) of latitude phi and
- * longitude from the central meridian lam (radians, |phi| <= pi/2,
- * |lam| <= pi/2) in out->xi, out->eta (the arguments in the struct: no
- * caller holds outgoing stack arguments). Returns 0 when the point is
- * beyond the series' domain (cos(chi) |sin(lam)| > tanh(0.34)), else 1
- * with *out written.
- */
-int drdc__geo_tm_forward(geo_tm_t *out);
-
-/** 2^62, the divisor that takes k0 A (Q40) times an angle (Q58) to
- *  metres in Q36. */
-#define GEO_TWO_POW_62 INT64_C(4611686018427387904)
-
-/** An angle on the sphere of radius k0 A (Q5.58, the xi and eta of
- *  drdc__geo_tm_forward()) -> metres (Q47.16): the Q28.36 metres (rounded, by
- *  drdc__geo_mul_shift()) rounded again. */
-drdc_q47_16_t drdc__geo_metres_from_angle(int64_t a);
-
-/** Inverse of drdc__geo_tm_forward(): xi, eta (|eta| <= 0.34) in tm->xi,
- *  tm->eta -> phi, lam in the same slots; tm->gamma and tm->k are its
- *  scratch (one struct of the caller's frame holds every intermediate
- *  the stages share). */
-void drdc__geo_tm_reverse(geo_tm_t *tm);
-
-/** cos(chi) / cos(phi) from s = sin(phi), well conditioned up to the
- *  poles: 2 E / ((1 + s) + (1 - s) E^2) with E = exp(e atanh(e s)). */
-int64_t drdc__geo_cos_ratio(int64_t s);
-
-/** sum coef[j] sin(2 (j+1) x), j < GEO_CHI_TERMS, from s = sin x and
- *  c = cos x: the series between the geodetic and the conformal
- *  latitude, one copy for both directions. */
-int64_t drdc__geo_lat_series(const int64_t *coef, int64_t s, int64_t c);
-
-/** chi - phi of the conformal latitude from sin phi, cos phi. */
-static inline int64_t geo_chi_series(int64_t sphi, int64_t cphi)
-{
-  return drdc__geo_lat_series(drdc__geo_chi_from_phi, sphi, cphi);
-}
-
-/** phi - chi from sin chi, cos chi. */
-static inline int64_t geo_phi_series(int64_t schi, int64_t cchi)
-{
-  return drdc__geo_lat_series(drdc__geo_phi_from_chi, schi, cchi);
-}
-
-/**
- * Polar stereographic (UPS, k0 = 0.994) of phi, lam (radians, in out->xi,
- * out->eta as drdc__geo_tm_forward() takes them) on the north or south sheet
- * into out: x, y (out->xi, out->eta) as angles of
- * the sphere of radius 2 k0 a / c (drdc__geo_ups_q36() makes metres),
- * convergence out->gamma (radians) and scale out->k; one pointer, so that
- * no caller's frame holds outgoing arguments for four. Returns 0 when the
- * point is too far on the other hemisphere (sin chi < -0.9), else 1; out
- * is its scratch (it holds intermediate values after 0: the callers pass
- * scratch).
- */
-int drdc__geo_ups_forward(bool north, geo_tm_t *out);
-
-/** Inverse of drdc__geo_ups_forward(): x, y from the pole in metres (Q47.16,
- *  |x|, |y| < 2 000 km) in tm->xi, tm->eta -> phi, lam (radians) in the
- *  same slots; tm->gamma and tm->k are its scratch. No 64-bit argument:
- *  nothing on the caller's stack for the call. */
-void drdc__geo_ups_reverse(bool north, geo_tm_t *tm);
-
-/**
  * MGRS text of a UTM/UPS position already validated by drdc_geo_to_utm()
  * or drdc_geo_from_utm(); lat (nas) picks the UTM latitude band. Returns
  * DRDC_E_RANGE (prec outside -1..11), DRDC_E_EASTING or DRDC_E_NORTHING
@@ -216,9 +136,6 @@ drdc_status_t drdc__geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,
  * and *prec (may be NULL) written only when it returns a code.
  */
 int32_t drdc__geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec);
-
-/** UPS angle -> metres in Q28.36 (2^-36 m, rounded). */
-int64_t drdc__geo_ups_q36(int64_t a);
 
 /** Added to a zone code of drdc_geo_to_utm() (-1..60): utm_forward.c's
  *  forward projection (for MGRS) keeps easting and northing in Q28.36

@@ -5,7 +5,7 @@
  * @brief Shorthands of core/geo for the Q5.58 products and quotients of
  *        fixed/, floor division and the nas <-> radian conversions.
  */
-#include "geo_impl.h"
+#include "geo_projection.h"
 
 #include <drdc/fixed_arith.h>
 #include <drdc/fixed_wide.h>

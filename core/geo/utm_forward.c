@@ -16,7 +16,7 @@
 
 #include <drdc/fixed_arith.h>
 
-#include "geo_impl.h"
+#include "geo_projection.h"
 
 /** Latitude limits of the UTM zones (UPS beyond): [-80, 84) degrees. */
 #define UTM_LAT_MIN (INT64_C(-80) * GEO_NAS_DEG)
@@ -218,10 +218,21 @@ static DRDC_NOINLINE drdc_status_t utm_from_tm(int32_t code,
  * copied, from this file's entries too. */
 DRDC_NOINLINE int drdc__geo_grid_forward_projection(int32_t code, geo_tm_t *tm)
 {
+  geo_projected_t p;
+  int ok;
+
   if ((code % GEO_ZONE_Q36) == DRDC_GEO_ZONE_UPS) {
-    return drdc__geo_ups_forward(code < GEO_CODE_SOUTH, tm);
+    ok = drdc__geo_ups_forward(code < GEO_CODE_SOUTH, tm->xi, tm->eta, &p);
+    tm->xi = p.x;
+    tm->eta = p.y;
+  } else {
+    ok = drdc__geo_tm_forward(tm->xi, tm->eta, &p);
+    tm->xi = p.y;
+    tm->eta = p.x;
   }
-  return drdc__geo_tm_forward(tm);
+  tm->gamma = p.gamma;
+  tm->k = p.k;
+  return ok;
 }
 
 /* The easting and northing of the forward projection in tm, checked, into

@@ -13,7 +13,7 @@
 
 #include <stddef.h>
 
-#include "geo_impl.h"
+#include "geo_projection.h"
 
 /* metres (Q47.16, |v| < 2^43) -> angle on the sphere of radius k0 A */
 static DRDC_NOINLINE int64_t angle_from_metres(drdc_q47_16_t v)
@@ -62,11 +62,15 @@ static DRDC_NOINLINE drdc_status_t reverse_args(int32_t code, geo_tm_t *tm)
  * across them. */
 static DRDC_NOINLINE void grid_reverse_projection(int32_t code, geo_tm_t *tm)
 {
+  geo_phi_lam_t g;
+
   if ((code % GEO_CODE_SOUTH) == DRDC_GEO_ZONE_UPS) {
-    drdc__geo_ups_reverse(code < GEO_CODE_SOUTH, tm);
+    drdc__geo_ups_reverse(code < GEO_CODE_SOUTH, tm->xi, tm->eta, &g);
   } else {
-    drdc__geo_tm_reverse(tm);
+    drdc__geo_tm_reverse(tm->xi, tm->eta, &g);
   }
+  tm->xi = g.phi;
+  tm->eta = g.lam;
 }
 
 /* The latitude and longitude (nas) of the reverse projection's phi and
