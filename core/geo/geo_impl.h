@@ -23,9 +23,7 @@
 #include <drdc/fixed_arith.h>
 #include <drdc/fixed_q5_58.h>
 #include <drdc/fixed_types.h>
-#include <drdc/geo.h>
 #include <drdc/geo_ecef.h>
-#include <drdc/geo_pose.h>
 #include <drdc/types.h>
 
 #include "geo_consts.h"
@@ -42,18 +40,15 @@
 #define GEO_NAS_180 INT64_C(648000000000000)
 /** Nano-arcseconds in one degree. */
 #define GEO_NAS_DEG INT64_C(3600000000000)
+
 /** a b / 2^58, rounded to nearest (ties away from zero): the caller keeps
- *  |a b| / 2^58 within Q5.58. One out-of-line copy of
- *  drdc_fx_mul_q5_58_unchecked() (the same bits as drdc_fx_mul_q5_58(),
- *  without its checks and pointer); the hot loops of tm.c inline it. */
+ *  |a b| / 2^58 within Q5.58. drdc_fx_mul_q5_58_unchecked() (the bits of
+ *  drdc_fx_mul_q5_58() without its checks), one copy out of line; the
+ *  innermost loops of the series inline it. */
 int64_t drdc__geo_mul(int64_t a, int64_t b);
 
-/** a 2^58 / b, rounded; b != 0 and the quotient within int64_t: the
- *  callers keep it so, so it never fails. Inline: an out-of-line wrapper
- *  would put its own frame (32 bytes) on top of drdc_fx_div_q5_58()'s on
- *  the deepest chains of the projections (issue 8's stack goal). */
-/* the quotient in registers (no result slot in the caller's frame); 0
- * where drdc_fx_div_q5_58() fails, as before */
+/** a 2^58 / b, rounded; b != 0 and the quotient within int64_t (the
+ *  callers keep it so): drdc_fx_div_q5_58_unchecked(). */
 static inline int64_t geo_div(int64_t a, int64_t b)
 {
   return drdc_fx_div_q5_58_unchecked(a, b);
@@ -64,8 +59,7 @@ int64_t drdc__geo_muldiv(int64_t a, int64_t b, int64_t c);
 
 /** a b / 2^n rounded to nearest, ties away from zero: the bits of
  *  drdc__geo_muldiv(a, b, 2^n) for b > 0, 0 < n < 64, the quotient within
- *  int64_t. A product and a shift, no 128-bit division: a small frame
- *  with no chain under it (issue 8's stack) and fewer cycles. */
+ *  int64_t, by a 128-bit product and a shift instead of a division. */
 int64_t drdc__geo_mul_shift(int64_t a, int64_t b, unsigned n);
 
 /** sin and cos of x radians: drdc_fx_sincos_q5_58() (s, c not NULL). */
@@ -101,142 +95,6 @@ drdc_nas_t drdc__geo_nas_from_rad(int64_t r);
 
 /** floor(a / b) for b > 0 (integer division rounding towards -inf). */
 int64_t drdc__geo_floor_div(int64_t a, int64_t b);
-
-/** Transverse Mercator result on the unit sphere of radius k0 A:
- *  xi and eta (Q5.58), convergence gamma (rad, Q5.58), point scale k. */
-typedef struct geo_tm {
-  int64_t xi;    /**< northing / (k0 A) */
-  int64_t eta;   /**< easting offset / (k0 A) */
-  int64_t gamma; /**< meridian convergence, radians */
-  int64_t k;     /**< point scale factor (including k0) */
-} geo_tm_t;
-
-/**
- * MGRS text of a UTM/UPS position already validated by drdc_geo_to_utm()
- * or drdc_geo_from_utm(); lat (nas) picks the UTM latitude band. Returns
- * DRDC_E_RANGE (prec outside -1..11), DRDC_E_EASTING or DRDC_E_NORTHING
- * (outside the MGRS limits), DRDC_E_BUFFER (size too small); the text is
- * written only on DRDC_OK.
- */
-drdc_status_t drdc__geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,
-                                    int32_t prec, char *text, size_t size);
-
-/** Added to a zone (0..60) for the southern hemisphere: the code of a
- *  grid position that drdc__geo_mgrs_decode_tm() returns and the reverse
- *  projections of utm_reverse.c take; the forward projection of
- *  utm_forward.c adds it (with GEO_ZONE_Q36) for a point south of the
- *  equator. */
-#define GEO_CODE_SOUTH ((int32_t)512)
-
-/**
- * drdc_geo_mgrs_decode() of text (not NULL) into tm: the cell's centre
- * (Q47.16 metres) in tm->eta (easting) and tm->xi (northing), its corner
- * in tm->gamma and tm->k; returns the zone plus GEO_CODE_SOUTH for the
- * southern hemisphere, or minus the status (same checks, same order); tm
- * and *prec (may be NULL) written only when it returns a code.
- */
-int32_t drdc__geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec);
-
-/** Added to a zone code of drdc_geo_to_utm() (-1..60): utm_forward.c's
- *  forward projection (for MGRS) keeps easting and northing in Q28.36
- *  metres. */
-#define GEO_ZONE_Q36 ((int32_t)256)
-
-/**
- * The forward projection (UPS or transverse Mercator, by the zone of the
- * code) of phi and lam (radians) in tm's xi and eta slots, into tm as
- * drdc__geo_ups_forward() or drdc__geo_tm_forward() leave it: 0 beyond its
- * domain, else 1 (never 0 after the reverse). In utm_forward.c, out of line, a
- * sibling call of either projection; the reverse (utm_reverse.c) calls
- * it for the convergence and scale, so one copy serves both files.
- */
-int drdc__geo_grid_forward_projection(int32_t code, geo_tm_t *tm);
-
-/** Metres in Q47.16. */
-#define GEO_METRES(v) ((int64_t)(v)*INT64_C(65536))
-
-/** GeoConvert's UTM coordinate limits (UTMUPS::CheckCoords, including its
- *  100 km slop), metres; the forward projection checks its result and the
- *  reverse its input against the same ones. */
-#define GEO_UTM_E_MIN                GEO_METRES(0)
-#define GEO_UTM_E_MAX                GEO_METRES(1000000)
-#define GEO_UTM_N_NORTH_MIN          GEO_METRES(-9100000)
-#define GEO_UTM_N_NORTH_MAX          GEO_METRES(9600000)
-#define GEO_UTM_N_SOUTH_MIN          GEO_METRES(900000)
-#define GEO_UTM_N_SOUTH_MAX          GEO_METRES(19600000)
-#define GEO_UTM_FALSE_EASTING        GEO_METRES(500000)
-#define GEO_UTM_FALSE_NORTHING_SOUTH GEO_METRES(10000000)
-
-/** GeoConvert's UPS limits (100 km slop included), metres; the same for
- *  easting and northing. */
-#define GEO_UPS_NORTH_MIN    GEO_METRES(1200000)
-#define GEO_UPS_NORTH_MAX    GEO_METRES(2800000)
-#define GEO_UPS_SOUTH_MIN    GEO_METRES(700000)
-#define GEO_UPS_SOUTH_MAX    GEO_METRES(3300000)
-#define GEO_UPS_FALSE_ORIGIN GEO_METRES(2000000)
-
-/** A UPS easting or northing (Q47.16) within the limits of its
- *  hemisphere. */
-static inline bool geo_ups_in_range(bool north, drdc_q47_16_t v)
-{
-  return north ? ((v >= GEO_UPS_NORTH_MIN) && (v <= GEO_UPS_NORTH_MAX))
-               : ((v >= GEO_UPS_SOUTH_MIN) && (v <= GEO_UPS_SOUTH_MAX));
-}
-
-/** lon (nas) reduced to [-180, 180) degrees. */
-static inline drdc_nas_t geo_lon_normalize(drdc_nas_t lon)
-{
-  drdc_nas_t turn = 360 * GEO_NAS_DEG;
-  drdc_nas_t r = (lon + (180 * GEO_NAS_DEG)) % turn;
-
-  if (r < 0) {
-    r = r + turn;
-  }
-  return r - (180 * GEO_NAS_DEG);
-}
-
-/** Central meridian of a UTM zone (1..60), nas. */
-static inline drdc_nas_t geo_central_meridian(int32_t zone)
-{
-  return ((6 * (int64_t)zone) - 183) * GEO_NAS_DEG;
-}
-
-/** The last step of drdc_pose_w_from_wutm() (u) and
- *  drdc_pose_w_from_wmgrs() (m, u NULL), in utm_reverse.c, after the
- *  reverse projection: the attitude of u or m turned from grid to true
- *  north by the convergence (nas) in tm->gamma straight into out->q, then
- *  the height; out written only on DRDC_OK (else DRDC_E_OVERFLOW). In
- *  pose.c, with the turn: a call to another unit, so the compiler passes
- *  tm's address rather than the 64-bit convergence, which would leave an
- *  argument on the caller's stack on Cortex-M3. */
-drdc_status_t drdc__geo_w_attitude(const drdc_WUTMPose_t *u,
-                                   const drdc_WMGRSPose_t *m,
-                                   const geo_tm_t *tm, drdc_WPose_t *out);
-
-/** The attitude and height of drdc_pose_wmgrs_from_w() (in
- *  utm_forward.c), after the projection: w's attitude turned from true to
- *  grid north by the convergence (radians) in tm->gamma straight into
- *  out->q, then the height; written only on DRDC_OK (else
- *  DRDC_E_OVERFLOW). In pose.c, as drdc__geo_w_attitude(), so the caller passes
- *  tm's address, not a 64-bit argument on its stack. */
-drdc_status_t drdc__geo_wmgrs_attitude(const drdc_WPose_t *w,
-                                       const geo_tm_t *tm,
-                                       drdc_WMGRSPose_t *out);
-
-/** The last step of drdc_pose_weutm_from_we() (in utm_forward.c), after
- *  the projection: height and angles of w into out, the yaw turned from
- *  true to grid north by the convergence parked in out->height. Never
- *  fails. */
-void drdc__geo_weutm_attitude(const drdc_WePose_t *w, drdc_WeUTMPose_t *out);
-
-/**
- * drdc__geo_mgrs_format() of a position whose easting and northing carry
- * frac_bits fraction bits (16: Q47.16; 36: utm_forward.c's projection
- * with GEO_ZONE_Q36): the digits truncate that value.
- */
-drdc_status_t drdc__geo_mgrs_format_bits(const drdc_geo_utm_t *u,
-                                         unsigned frac_bits, drdc_nas_t lat,
-                                         int32_t prec, char *text, size_t size);
 
 /** The checks of drdc_geo_to_ecef() on a point: DRDC_E_LATITUDE,
  *  DRDC_E_LONGITUDE or DRDC_E_HEIGHT out of range, else DRDC_OK. */

@@ -71,87 +71,72 @@ typedef struct tm_complex {
   int64_t im;
 } tm_complex_t;
 
-/* sin 2 zeta and cos 2 zeta of zeta = xi + i eta. */
-typedef struct tm_zeta2 {
-  tm_complex_t sin2;
-  tm_complex_t cos2;
-} tm_zeta2_t;
-
-/* sin 2 zeta and cos 2 zeta from the sine and cosine of 2 xi and the
- * hyperbolic sine and cosine of 2 eta: sin 2 zeta = sin 2xi cosh 2eta +
- * i cos 2xi sinh 2eta, cos 2 zeta = cos 2xi cosh 2eta - i sin 2xi sinh
- * 2eta. */
-static tm_zeta2_t zeta2_of(int64_t s2xi, int64_t c2xi, int64_t sh2eta,
-                           int64_t ch2eta)
-{
-  tm_zeta2_t z;
-
-  z.cos2.re = drdc__geo_mul(c2xi, ch2eta);
-  z.cos2.im = -drdc__geo_mul(s2xi, sh2eta);
-  z.sin2.re = drdc__geo_mul(s2xi, ch2eta);
-  z.sin2.im = drdc__geo_mul(c2xi, sh2eta);
-  return z;
-}
-
-/* The last two terms b_1 and b_2 of Clenshaw's recurrence. */
-typedef struct tm_clenshaw {
-  tm_complex_t b1;
-  tm_complex_t b2;
-} tm_clenshaw_t;
+/* zeta = xi + i eta by the sine and cosine of 2 xi and the hyperbolic
+ * sine and cosine of 2 eta. */
+typedef struct tm_zeta {
+  int64_t s2xi;
+  int64_t c2xi;
+  int64_t sh2eta;
+  int64_t ch2eta;
+} tm_zeta_t;
 
 /* Krueger's series at zeta by Clenshaw's recurrence in complex arithmetic
  * (as GeographicLib does): with A = 2 cos 2 zeta, b_j = c_j + A b_(j+1) -
- * b_(j+2) from b_7 = b_8 = 0. Then sum c_j sin(2 j zeta) = sin(2 zeta)
- * b_1 (krueger_sum()); with c_j replaced by d_j = 2 j c_j (deriv), the
- * derivative 1 + sum d_j cos(2 j zeta) = 1 + cos(2 zeta) b_1 - b_2
- * (krueger_deriv()). |A| <= 2 cosh 0.68 < 2.5 and |b_j| < 2e-3: every
- * product stays far inside Q5.58, and the roundings add up to a few
- * LSB. */
-static tm_clenshaw_t clenshaw(const int64_t *coef, bool deriv,
-                              const tm_complex_t *cos2)
+ * b_(j+2) from b_7 = b_8 = 0, and then
+ *  - the sum: sum c_j sin(2 j zeta) = sin(2 zeta) b_1;
+ *  - with c_j replaced by d_j = 2 j c_j (deriv), the derivative
+ *    d zeta / d zeta' = 1 + sum d_j cos(2 j zeta) = 1 + cos(2 zeta) b_1 -
+ *    b_2 = p - i q, returned as p + i q.
+ * |A| <= 2 cosh 0.68 < 2.5 and |b_j| < 2e-3: every product stays far
+ * inside Q5.58, and the roundings add up to a few LSB. */
+static tm_complex_t krueger(const int64_t *coef, bool deriv, const tm_zeta_t *z)
 {
-  tm_clenshaw_t b = {{0, 0}, {0, 0}};
+  tm_complex_t cos2; /* cos 2 zeta = cos 2xi cosh 2eta - i sin 2xi sinh 2eta */
+  const tm_complex_t *a = &cos2;
+  tm_complex_t b1 = {0, 0};
+  tm_complex_t b2 = {0, 0};
+  tm_complex_t r;
   unsigned j;
 
+  cos2.re = drdc__geo_mul(z->c2xi, z->ch2eta);
+  cos2.im = -drdc__geo_mul(z->s2xi, z->sh2eta);
   for (j = GEO_KRUEGER_TERMS; j > 0u; j--) {
     int64_t c = deriv ? (coef[j - 1u] * (2 * (int64_t)j)) : coef[j - 1u];
     tm_complex_t b0;
 
-    b0.re = ((c - b.b2.re) + drdc__geo_mul(2 * cos2->re, b.b1.re)) -
-            drdc__geo_mul(2 * cos2->im, b.b1.im);
-    b0.im = (drdc__geo_mul(2 * cos2->re, b.b1.im) - b.b2.im) +
-            drdc__geo_mul(2 * cos2->im, b.b1.re);
-    b.b2 = b.b1;
-    b.b1 = b0;
+    b0.re = ((c - b2.re) + drdc__geo_mul(2 * a->re, b1.re)) -
+            drdc__geo_mul(2 * a->im, b1.im);
+    b0.im = (drdc__geo_mul(2 * a->re, b1.im) - b2.im) +
+            drdc__geo_mul(2 * a->im, b1.re);
+    b2 = b1;
+    b1 = b0;
   }
-  return b;
+  if (deriv) {
+    r.re = (GEO_ONE +
+            (drdc__geo_mul(a->re, b1.re) - drdc__geo_mul(a->im, b1.im))) -
+           b2.re;
+    r.im =
+        -((drdc__geo_mul(a->re, b1.im) + drdc__geo_mul(a->im, b1.re)) - b2.im);
+  } else {
+    /* sin 2 zeta = sin 2xi cosh 2eta + i cos 2xi sinh 2eta */
+    tm_complex_t sin2;
+
+    sin2.re = drdc__geo_mul(z->s2xi, z->ch2eta);
+    sin2.im = drdc__geo_mul(z->c2xi, z->sh2eta);
+    r.re = drdc__geo_mul(sin2.re, b1.re) - drdc__geo_mul(sin2.im, b1.im);
+    r.im = drdc__geo_mul(sin2.re, b1.im) + drdc__geo_mul(sin2.im, b1.re);
+  }
+  return r;
 }
 
-/* sin(2 zeta) b_1: the sum of the series. */
-static tm_complex_t krueger_sum(const tm_complex_t *sin2,
-                                const tm_clenshaw_t *b)
+/* *re + i *im plus Krueger's sum at z. */
+static void krueger_add(const int64_t *coef, const tm_zeta_t *z, int64_t *re,
+                        int64_t *im)
 {
-  tm_complex_t s;
+  tm_complex_t sum = krueger(coef, false, z);
 
-  s.re = drdc__geo_mul(sin2->re, b->b1.re) - drdc__geo_mul(sin2->im, b->b1.im);
-  s.im = drdc__geo_mul(sin2->re, b->b1.im) + drdc__geo_mul(sin2->im, b->b1.re);
-  return s;
-}
-
-/* 1 + cos(2 zeta) b_1 - b_2 of the recurrence over d_j = 2 j c_j: the
- * derivative d zeta / d zeta' = p - i q, returned as p + i q. */
-static tm_complex_t krueger_deriv(const tm_complex_t *cos2,
-                                  const tm_clenshaw_t *b)
-{
-  tm_complex_t pq;
-
-  pq.re = (GEO_ONE + (drdc__geo_mul(cos2->re, b->b1.re) -
-                      drdc__geo_mul(cos2->im, b->b1.im))) -
-          b->b2.re;
-  pq.im = -(
-      (drdc__geo_mul(cos2->re, b->b1.im) + drdc__geo_mul(cos2->im, b->b1.re)) -
-      b->b2.im);
-  return pq;
+  *re = *re + sum.re;
+  *im = *im + sum.im;
 }
 
 /* 2^58 / n rounded (n odd or a factorial: no ties in these uses) */
@@ -282,9 +267,7 @@ static int64_t tm_scale(const tm_sphere_t *s, int64_t ratio,
 int drdc__geo_tm_forward(int64_t phi, int64_t lam, geo_projected_t *out)
 {
   tm_sphere_t s;
-  tm_zeta2_t z;
-  tm_clenshaw_t b;
-  tm_complex_t sum;
+  tm_zeta_t z;
   tm_complex_t pq;
   int64_t ratio;
   int64_t xi;
@@ -302,17 +285,15 @@ int drdc__geo_tm_forward(int64_t phi, int64_t lam, geo_projected_t *out)
    * cosh eta': no sin/cos of xi' and no exponential */
   sxi = drdc__geo_mul(s.schi, s.ch_eta);
   cxi = drdc__geo_mul(drdc__geo_mul(s.cchi, s.clam), s.ch_eta);
-  z = zeta2_of(2 * drdc__geo_mul(sxi, cxi),
-               drdc__geo_mul(cxi, cxi) - drdc__geo_mul(sxi, sxi),
-               2 * drdc__geo_mul(s.sh_eta, s.ch_eta),
-               drdc__geo_mul(s.ch_eta, s.ch_eta) +
-                   drdc__geo_mul(s.sh_eta, s.sh_eta));
-  b = clenshaw(drdc__geo_alpha, false, &z.cos2);
-  sum = krueger_sum(&z.sin2, &b);
-  out->y = xi + sum.re;
-  out->x = s.eta + sum.im;
-  b = clenshaw(drdc__geo_alpha, true, &z.cos2);
-  pq = krueger_deriv(&z.cos2, &b);
+  z.s2xi = 2 * drdc__geo_mul(sxi, cxi);
+  z.c2xi = drdc__geo_mul(cxi, cxi) - drdc__geo_mul(sxi, sxi);
+  z.sh2eta = 2 * drdc__geo_mul(s.sh_eta, s.ch_eta);
+  z.ch2eta =
+      drdc__geo_mul(s.ch_eta, s.ch_eta) + drdc__geo_mul(s.sh_eta, s.sh_eta);
+  out->y = xi;
+  out->x = s.eta;
+  krueger_add(drdc__geo_alpha, &z, &out->y, &out->x);
+  pq = krueger(drdc__geo_alpha, true, &z);
   out->gamma = tm_convergence(&s, &pq);
   out->k = tm_scale(&s, ratio, &pq);
   return 1;
@@ -350,8 +331,7 @@ drdc_status_t drdc_geo_tm_forward(drdc_nas_t lat, drdc_nas_t dlon,
 
 void drdc__geo_tm_reverse(int64_t xi, int64_t eta, geo_phi_lam_t *out)
 {
-  tm_zeta2_t z;
-  tm_clenshaw_t b;
+  tm_zeta_t z;
   tm_complex_t sum;
   int64_t s2xi;
   int64_t c2xi;
@@ -371,10 +351,11 @@ void drdc__geo_tm_reverse(int64_t xi, int64_t eta, geo_phi_lam_t *out)
   geo_sincos(2 * xi, &s2xi, &c2xi);
   sh = drdc__geo_sinh_small(eta);
   ch = drdc__geo_cosh_small(eta);
-  z = zeta2_of(s2xi, c2xi, 2 * drdc__geo_mul(sh, ch),
-               drdc__geo_mul(ch, ch) + drdc__geo_mul(sh, sh));
-  b = clenshaw(drdc__geo_beta, false, &z.cos2);
-  sum = krueger_sum(&z.sin2, &b);
+  z.s2xi = s2xi;
+  z.c2xi = c2xi;
+  z.sh2eta = 2 * drdc__geo_mul(sh, ch);
+  z.ch2eta = drdc__geo_mul(ch, ch) + drdc__geo_mul(sh, sh);
+  sum = krueger(drdc__geo_beta, false, &z);
   /* zeta' = xi' + i eta' on the sphere */
   xi1 = xi - sum.re;
   eta1 = eta - sum.im;
