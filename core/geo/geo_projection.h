@@ -53,14 +53,6 @@ int drdc__geo_tm_forward(int64_t phi, int64_t lam, geo_projected_t *out);
  *  phi and lam (from the central meridian). */
 void drdc__geo_tm_reverse(int64_t xi, int64_t eta, geo_phi_lam_t *out);
 
-/** 2^62, the divisor that takes k0 A (Q40) times an angle (Q58) to
- *  metres in Q36. */
-#define GEO_TWO_POW_62 INT64_C(4611686018427387904)
-
-/** A TM angle (radius k0 A) -> metres, Q47.16: the Q28.36 metres of
- *  drdc__geo_mul_shift() rounded again. */
-drdc_q47_16_t drdc__geo_metres_from_angle(int64_t a);
-
 /**
  * Universal Polar Stereographic (k0 = 0.994) of phi and lam (radians,
  * lam from Greenwich) on the north or south sheet into *out: x, y on the
@@ -114,6 +106,9 @@ static inline int64_t geo_phi_series(int64_t schi, int64_t cchi)
 /** cos(chi) / cos(phi) from s = sin(phi), well conditioned up to the
  *  poles: 2 E / ((1 + s) + (1 - s) E^2) with E = exp(e atanh(e s)). */
 int64_t drdc__geo_cos_ratio(int64_t s);
+
+/** 2^58 / n rounded (n odd or a factorial: no ties in these uses). */
+#define GEO_Q58_RECIP(n) ((GEO_ONE + ((n) / 2)) / (n))
 
 /* The small-argument Taylor series (series.c), each on the stated
  * domain, truncated below 0.001 LSB of Q5.58; their rounding errors are

@@ -25,46 +25,6 @@
  */
 #include "geo_projection.h"
 
-/* The product of the real sine series' loop, inline: the same bits as
- * drdc__geo_mul(). */
-static inline int64_t tm_mul(int64_t a, int64_t b)
-{
-  return drdc_fx_mul_q5_58_unchecked(a, b);
-}
-
-/* sum coef[j] sin(2 (j+1) x), j < terms, from s2 = sin 2x and c2 = cos 2x
- * by Clenshaw's recurrence b_j = coef_j + 2 cos(2x) b_(j+1) - b_(j+2),
- * sum = sin(2x) b_1. The coefficients are below 3.4e-3 and |2 cos 2x| <=
- * 2, so |b_j| < 0.01; each product rounds by 0.5 LSB and the recurrence
- * (Chebyshev polynomials of the second kind, |U_n| <= n + 1) amplifies
- * that to a few LSB at most. Trailing zero coefficients are skipped. */
-static int64_t sine_series(const int64_t *coef, unsigned terms, int64_t s2,
-                           int64_t c2)
-{
-  int64_t a = 2 * c2;
-  int64_t b1 = 0;
-  int64_t b2 = 0;
-  unsigned n = terms;
-
-  while ((n > 0u) && (coef[n - 1u] == 0)) {
-    n--;
-  }
-  while (n > 0u) {
-    int64_t b0 = (coef[n - 1u] + tm_mul(a, b1)) - b2;
-
-    b2 = b1;
-    b1 = b0;
-    n--;
-  }
-  return tm_mul(s2, b1);
-}
-
-int64_t drdc__geo_lat_series(const int64_t *coef, int64_t s, int64_t c)
-{
-  return sine_series(coef, GEO_CHI_TERMS, 2 * drdc__geo_mul(s, c),
-                     drdc__geo_mul(c, c) - drdc__geo_mul(s, s));
-}
-
 /* A complex number re + i im. */
 typedef struct tm_complex {
   int64_t re;
@@ -81,8 +41,8 @@ typedef struct tm_zeta {
 } tm_zeta_t;
 
 /* Krueger's series at zeta by Clenshaw's recurrence in complex arithmetic
- * (as GeographicLib does): with A = 2 cos 2 zeta, b_j = c_j + A b_(j+1) -
- * b_(j+2) from b_7 = b_8 = 0, and then
+ * (as GeographicLib does): with A = 2 cos 2 zeta (2 a below), b_j = c_j + A
+ * b_(j+1) - b_(j+2) from b_7 = b_8 = 0, and then
  *  - the sum: sum c_j sin(2 j zeta) = sin(2 zeta) b_1;
  *  - with c_j replaced by d_j = 2 j c_j (deriv), the derivative
  *    d zeta / d zeta' = 1 + sum d_j cos(2 j zeta) = 1 + cos(2 zeta) b_1 -
@@ -91,32 +51,30 @@ typedef struct tm_zeta {
  * inside Q5.58, and the roundings add up to a few LSB. */
 static tm_complex_t krueger(const int64_t *coef, bool deriv, const tm_zeta_t *z)
 {
-  tm_complex_t cos2; /* cos 2 zeta = cos 2xi cosh 2eta - i sin 2xi sinh 2eta */
-  const tm_complex_t *a = &cos2;
+  tm_complex_t a; /* cos 2 zeta = cos 2xi cosh 2eta - i sin 2xi sinh 2eta */
   tm_complex_t b1 = {0, 0};
   tm_complex_t b2 = {0, 0};
   tm_complex_t r;
   unsigned j;
 
-  cos2.re = drdc__geo_mul(z->c2xi, z->ch2eta);
-  cos2.im = -drdc__geo_mul(z->s2xi, z->sh2eta);
+  a.re = drdc__geo_mul(z->c2xi, z->ch2eta);
+  a.im = -drdc__geo_mul(z->s2xi, z->sh2eta);
   for (j = GEO_KRUEGER_TERMS; j > 0u; j--) {
     int64_t c = deriv ? (coef[j - 1u] * (2 * (int64_t)j)) : coef[j - 1u];
     tm_complex_t b0;
 
-    b0.re = ((c - b2.re) + drdc__geo_mul(2 * a->re, b1.re)) -
-            drdc__geo_mul(2 * a->im, b1.im);
-    b0.im = (drdc__geo_mul(2 * a->re, b1.im) - b2.im) +
-            drdc__geo_mul(2 * a->im, b1.re);
+    b0.re = ((c - b2.re) + drdc__geo_mul(2 * a.re, b1.re)) -
+            drdc__geo_mul(2 * a.im, b1.im);
+    b0.im = (drdc__geo_mul(2 * a.re, b1.im) - b2.im) +
+            drdc__geo_mul(2 * a.im, b1.re);
     b2 = b1;
     b1 = b0;
   }
   if (deriv) {
-    r.re = (GEO_ONE +
-            (drdc__geo_mul(a->re, b1.re) - drdc__geo_mul(a->im, b1.im))) -
-           b2.re;
-    r.im =
-        -((drdc__geo_mul(a->re, b1.im) + drdc__geo_mul(a->im, b1.re)) - b2.im);
+    r.re =
+        (GEO_ONE + (drdc__geo_mul(a.re, b1.re) - drdc__geo_mul(a.im, b1.im))) -
+        b2.re;
+    r.im = -((drdc__geo_mul(a.re, b1.im) + drdc__geo_mul(a.im, b1.re)) - b2.im);
   } else {
     /* sin 2 zeta = sin 2xi cosh 2eta + i cos 2xi sinh 2eta */
     tm_complex_t sin2;
@@ -129,7 +87,8 @@ static tm_complex_t krueger(const int64_t *coef, bool deriv, const tm_zeta_t *z)
   return r;
 }
 
-/* *re + i *im plus Krueger's sum at z. */
+/* Krueger's sum at z added to *re + i *im (the forward's xi', eta',
+ * which become xi, eta). */
 static void krueger_add(const int64_t *coef, const tm_zeta_t *z, int64_t *re,
                         int64_t *im)
 {
@@ -138,9 +97,6 @@ static void krueger_add(const int64_t *coef, const tm_zeta_t *z, int64_t *re,
   *re = *re + sum.re;
   *im = *im + sum.im;
 }
-
-/* 2^58 / n rounded (n odd or a factorial: no ties in these uses) */
-#define Q58_RECIP(n) ((GEO_ONE + ((n) / 2)) / (n))
 
 /* sin and cos of x + d from s = sin x, c = cos x and a small d (|d| <=
  * 0.004, the conformal latitude's correction): sin d = d (1 - d^2/6 +
@@ -152,14 +108,15 @@ static void rotate_small(int64_t s, int64_t c, int64_t d, int64_t *s_out,
 {
   int64_t d2 = drdc__geo_mul(d, d);
   int64_t sd = drdc__geo_mul(
-      d, GEO_ONE - drdc__geo_mul(d2, Q58_RECIP(6) -
-                                         drdc__geo_mul(d2, Q58_RECIP(120))));
+      d,
+      GEO_ONE - drdc__geo_mul(d2, GEO_Q58_RECIP(6) -
+                                      drdc__geo_mul(d2, GEO_Q58_RECIP(120))));
   int64_t cd =
       GEO_ONE -
       drdc__geo_mul(
-          d2, Q58_RECIP(2) -
-                  drdc__geo_mul(d2, Q58_RECIP(24) -
-                                        drdc__geo_mul(d2, Q58_RECIP(720))));
+          d2, GEO_Q58_RECIP(2) -
+                  drdc__geo_mul(d2, GEO_Q58_RECIP(24) -
+                                        drdc__geo_mul(d2, GEO_Q58_RECIP(720))));
 
   *s_out = drdc__geo_mul(s, cd) + drdc__geo_mul(c, sd);
   *c_out = drdc__geo_mul(c, cd) - drdc__geo_mul(s, sd);
@@ -245,8 +202,8 @@ static int64_t tm_convergence(const tm_sphere_t *s, const tm_complex_t *pq)
 /* Point scale: k0 (A/a) sqrt(1 - e^2 sin^2 phi) (cos chi / cos phi) cosh
  * eta' |p + i q|, the two roots taken as one. Its argument lies within
  * 1 - 0.0113 .. 1 + 0.0046 in the whole domain, where the binomial series
- * of sqrt(1 + u) is exact to 1 LSB; the general root is kept for safety
- * beyond. */
+ * of sqrt(1 + u) is good to about 1 LSB; the general root stays for any
+ * argument beyond. */
 static int64_t tm_scale(const tm_sphere_t *s, int64_t ratio,
                         const tm_complex_t *pq)
 {
@@ -299,6 +256,14 @@ int drdc__geo_tm_forward(int64_t phi, int64_t lam, geo_projected_t *out)
   return 1;
 }
 
+/* A TM angle (radius k0 A) -> metres, Q47.16: the Q28.36 metres rounded
+ * again (the angles of the projection keep them within int64_t). */
+static drdc_q47_16_t metres_from_angle(int64_t a)
+{
+  return drdc_fx_rshift_round_s64_inline(
+      drdc__geo_mul_shift(a, GEO_K0A_Q40, 62u), 20u);
+}
+
 drdc_status_t drdc_geo_tm_forward(drdc_nas_t lat, drdc_nas_t dlon,
                                   drdc_q47_16_t *x, drdc_q47_16_t *y,
                                   drdc_nas_t *convergence, drdc_q5_58_t *scale)
@@ -318,8 +283,8 @@ drdc_status_t drdc_geo_tm_forward(drdc_nas_t lat, drdc_nas_t dlon,
                            drdc__geo_rad_from_nas(dlon), &p) == 0) {
     return DRDC_E_RANGE;
   }
-  *x = drdc__geo_metres_from_angle(p.x);
-  *y = drdc__geo_metres_from_angle(p.y);
+  *x = metres_from_angle(p.x);
+  *y = metres_from_angle(p.y);
   if (convergence != NULL) {
     *convergence = drdc__geo_nas_from_rad(p.gamma);
   }
@@ -333,8 +298,6 @@ void drdc__geo_tm_reverse(int64_t xi, int64_t eta, geo_phi_lam_t *out)
 {
   tm_zeta_t z;
   tm_complex_t sum;
-  int64_t s2xi;
-  int64_t c2xi;
   int64_t sh;
   int64_t ch;
   int64_t xi1;
@@ -348,11 +311,9 @@ void drdc__geo_tm_reverse(int64_t xi, int64_t eta, geo_phi_lam_t *out)
 
   /* sinh and cosh of 2 eta from the series of sinh and cosh of eta
    * (|eta| <= 0.08 for eastings 0 .. 1 000 km): no exponential */
-  geo_sincos(2 * xi, &s2xi, &c2xi);
+  geo_sincos(2 * xi, &z.s2xi, &z.c2xi);
   sh = drdc__geo_sinh_small(eta);
   ch = drdc__geo_cosh_small(eta);
-  z.s2xi = s2xi;
-  z.c2xi = c2xi;
   z.sh2eta = 2 * drdc__geo_mul(sh, ch);
   z.ch2eta = drdc__geo_mul(ch, ch) + drdc__geo_mul(sh, sh);
   sum = krueger(drdc__geo_beta, false, &z);
@@ -368,102 +329,4 @@ void drdc__geo_tm_reverse(int64_t xi, int64_t eta, geo_phi_lam_t *out)
                                  drdc__geo_mul(cxi1, cxi1)));
   geo_sincos(chi, &schi, &cchi);
   out->phi = chi + geo_phi_series(schi, cchi);
-}
-
-/* horner(coef, n, x) = coef[0] + x (coef[1] + x (... + x coef[n-1])),
- * n >= 1: the one loop of the Taylor series below. */
-static int64_t horner(const int64_t *coef, unsigned n, int64_t x)
-{
-  int64_t acc = coef[n - 1u];
-  unsigned k;
-
-  for (k = n - 1u; k > 0u; k--) {
-    acc = coef[k - 1u] + tm_mul(acc, x);
-  }
-  return acc;
-}
-
-/* atanh(t) = t sum t^(2k) / (2k+1), k <= 18, by Horner in t^2, for |t| <=
- * tanh 0.34 = 0.3275. The first omitted term is t^39 / 39 < 3e-21 (0.001
- * LSB); each of the 20 rounded products adds 0.5 LSB damped by t^2 <
- * 0.108, the coefficients 0.5 LSB each: about 1.5 LSB in all, against the
- * 1 LSB of the general drdc_fx_atanh_q5_58() for a third of its cycles. */
-int64_t drdc__geo_atanh_small(int64_t t)
-{
-  static const int64_t coef[19] = {
-      Q58_RECIP(1),  Q58_RECIP(3),  Q58_RECIP(5),  Q58_RECIP(7),  Q58_RECIP(9),
-      Q58_RECIP(11), Q58_RECIP(13), Q58_RECIP(15), Q58_RECIP(17), Q58_RECIP(19),
-      Q58_RECIP(21), Q58_RECIP(23), Q58_RECIP(25), Q58_RECIP(27), Q58_RECIP(29),
-      Q58_RECIP(31), Q58_RECIP(33), Q58_RECIP(35), Q58_RECIP(37)};
-  return drdc__geo_mul(horner(coef, 19u, drdc__geo_mul(t, t)), t);
-}
-
-/* cosh(x) = sum x^(2k) / (2k)!, k <= 8, by Horner in x^2, for |x| <=
- * 0.34 (first omitted term x^18 / 18! < 1e-23); about 1 LSB. */
-int64_t drdc__geo_cosh_small(int64_t x)
-{
-  static const int64_t coef[9] = {Q58_RECIP(INT64_C(1)),
-                                  Q58_RECIP(INT64_C(2)),
-                                  Q58_RECIP(INT64_C(24)),
-                                  Q58_RECIP(INT64_C(720)),
-                                  Q58_RECIP(INT64_C(40320)),
-                                  Q58_RECIP(INT64_C(3628800)),
-                                  Q58_RECIP(INT64_C(479001600)),
-                                  Q58_RECIP(INT64_C(87178291200)),
-                                  Q58_RECIP(INT64_C(20922789888000))};
-  return horner(coef, 9u, drdc__geo_mul(x, x));
-}
-
-/* sinh(x) = x sum x^(2k) / (2k+1)!, k <= 8, by Horner in x^2, for |x| <=
- * 0.35 (first omitted term x^19 / 19! < 1e-25); about 1 LSB. */
-int64_t drdc__geo_sinh_small(int64_t x)
-{
-  static const int64_t coef[9] = {Q58_RECIP(INT64_C(1)),
-                                  Q58_RECIP(INT64_C(6)),
-                                  Q58_RECIP(INT64_C(120)),
-                                  Q58_RECIP(INT64_C(5040)),
-                                  Q58_RECIP(INT64_C(362880)),
-                                  Q58_RECIP(INT64_C(39916800)),
-                                  Q58_RECIP(INT64_C(6227020800)),
-                                  Q58_RECIP(INT64_C(1307674368000)),
-                                  Q58_RECIP(INT64_C(355687428096000))};
-
-  return drdc__geo_mul(horner(coef, 9u, drdc__geo_mul(x, x)), x);
-}
-
-/* atan(q) = q sum (-1)^k q^(2k) / (2k+1), k <= 14, by Horner in q^2, for
- * |q| <= 0.25; the first omitted term is q^31 / 31 < 2e-21 (0.0005 LSB),
- * the 16 rounded products and the coefficients about 1 LSB. */
-int64_t drdc__geo_atan_small(int64_t q)
-{
-  static const int64_t coef[15] = {
-      Q58_RECIP(1),  -Q58_RECIP(3),  Q58_RECIP(5),  -Q58_RECIP(7),
-      Q58_RECIP(9),  -Q58_RECIP(11), Q58_RECIP(13), -Q58_RECIP(15),
-      Q58_RECIP(17), -Q58_RECIP(19), Q58_RECIP(21), -Q58_RECIP(23),
-      Q58_RECIP(25), -Q58_RECIP(27), Q58_RECIP(29)};
-  return drdc__geo_mul(horner(coef, 15u, drdc__geo_mul(q, q)), q);
-}
-
-/* sqrt(1 + u) by its binomial series to u^9 for |u| <= 0.0125: the
- * coefficients C(1/2, n) are dyadic, exact in Q5.58; the first omitted
- * term is below 2e-21 and the 10 rounded products add about 1 LSB. */
-int64_t drdc__geo_sqrt1p_small(int64_t u)
-{
-  static const int64_t coef[10] = {INT64_C(1) << 58,      INT64_C(1) << 57,
-                                   -(INT64_C(1) << 55),   INT64_C(1) << 54,
-                                   -(INT64_C(5) << 51),   INT64_C(7) << 50,
-                                   -(INT64_C(21) << 48),  INT64_C(33) << 47,
-                                   -(INT64_C(429) << 43), INT64_C(715) << 42};
-  return horner(coef, 10u, u);
-}
-
-int64_t drdc__geo_cos_ratio(int64_t s)
-{
-  /* |e s| <= 0.082 and |w| <= 0.0068: inside the series' domains */
-  int64_t w =
-      drdc__geo_mul(GEO_E, drdc__geo_atanh_small(drdc__geo_mul(GEO_E, s)));
-  int64_t e = drdc__geo_sinh_small(w) + drdc__geo_cosh_small(w);
-
-  return geo_div(2 * e, (GEO_ONE + s) +
-                            drdc__geo_mul(GEO_ONE - s, drdc__geo_mul(e, e)));
 }

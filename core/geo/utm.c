@@ -24,6 +24,9 @@
 #define UTM_LAT_MIN (INT64_C(-80) * GEO_NAS_DEG)
 #define UTM_LAT_MAX (INT64_C(84) * GEO_NAS_DEG)
 
+/* 2^62: k0 A (Q40) times an angle (Q58) over 2^62 is metres in Q36. */
+#define TWO_POW_62 INT64_C(4611686018427387904)
+
 /* Q47.16 metres -> Q28.36 (exact for the false origins used here). */
 #define Q36_FROM_Q16(v) ((v)*INT64_C(1048576))
 
@@ -210,7 +213,7 @@ drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
  * k0 A */
 static int64_t angle_from_metres(drdc_q47_16_t v)
 {
-  return drdc__geo_muldiv(v * INT64_C(1048576), GEO_TWO_POW_62, GEO_K0A_Q40);
+  return drdc__geo_muldiv(v * INT64_C(1048576), TWO_POW_62, GEO_K0A_Q40);
 }
 
 drdc_status_t drdc__geo_grid_reverse(const drdc_geo_utm_t *in, bool with_scale,
