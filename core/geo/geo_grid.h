@@ -93,7 +93,7 @@ drdc_status_t drdc__geo_grid_forward(drdc_nas_t lat, drdc_nas_t lon,
 /** A grid position back on the ellipsoid. */
 typedef struct geo_grid_rev {
   drdc_nas_t lat;       /**< latitude, nas */
-  drdc_nas_t lon;       /**< longitude, nas, [-180, 180) degrees */
+  drdc_nas_t lon;       /**< longitude, nas, [-180, 180] degrees */
   geo_projected_t proj; /**< the forward projection of the point */
 } geo_grid_rev_t;
 

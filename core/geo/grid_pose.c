@@ -136,16 +136,17 @@ static drdc_status_t grid_reverse(const drdc_geo_utm_t *utm, const char *text,
                                   geo_grid_rev_t *g)
 {
   drdc_geo_utm_t centre;
+  const drdc_geo_utm_t *pos = utm;
   drdc_status_t st;
 
-  if (utm == NULL) {
+  if (pos == NULL) {
     st = drdc__geo_mgrs_centre(text, &centre);
     if (st != DRDC_OK) {
       return st;
     }
-    utm = &centre;
+    pos = &centre;
   }
-  return drdc__geo_grid_reverse(utm, true, g);
+  return drdc__geo_grid_reverse(pos, true, g);
 }
 
 /* The attitude q_grid turned to true north, then the position and the
