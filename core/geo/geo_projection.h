@@ -20,14 +20,14 @@
 
 #include "geo_impl.h"
 
-/** A point of a forward projection, on the projection's sphere: x east
- *  and y north as angles (TM: eta and xi on the sphere of radius k0 A;
- *  UPS: on the sphere of radius 2 k0 a / c, from the pole), with the
- *  meridian convergence gamma (radians) and the point scale k (k0
- *  included). */
+/** A point of a forward projection: x east and y north in units of the
+ *  projection's length (TM: the angles eta and xi of the sphere of radius
+ *  k0 A, from the central meridian's point on the equator; UPS: in units
+ *  of 2 k0 a / c, from the pole), with the meridian convergence gamma
+ *  (radians) and the point scale k (k0 included). */
 typedef struct geo_projected {
-  int64_t x;     /**< easting / radius */
-  int64_t y;     /**< northing / radius */
+  int64_t x;     /**< easting / the projection's length */
+  int64_t y;     /**< northing / the projection's length */
   int64_t gamma; /**< meridian convergence, radians */
   int64_t k;     /**< point scale factor */
 } geo_projected_t;
@@ -55,9 +55,9 @@ void drdc__geo_tm_reverse(int64_t xi, int64_t eta, geo_phi_lam_t *out);
 
 /**
  * Universal Polar Stereographic (k0 = 0.994) of phi and lam (radians,
- * lam from Greenwich) on the north or south sheet into *out: x, y on the
- * sphere of radius 2 k0 a / c from the pole (drdc__geo_ups_q36() makes
- * metres), the convergence and the scale. Returns 0 when the point is
+ * lam from Greenwich) on the north or south sheet into *out: x, y from
+ * the pole in units of 2 k0 a / c (drdc__geo_ups_q36() makes metres), the
+ * convergence and the scale. Returns 0 when the point is
  * too far into the other hemisphere (sin chi < -0.9; *out undefined),
  * else 1.
  */
@@ -69,7 +69,7 @@ int drdc__geo_ups_forward(bool north, int64_t phi, int64_t lam,
 void drdc__geo_ups_reverse(bool north, drdc_q47_16_t x, drdc_q47_16_t y,
                            geo_phi_lam_t *out);
 
-/** A UPS angle (radius 2 k0 a / c) -> metres in Q28.36, rounded. */
+/** A UPS x or y (units of 2 k0 a / c) -> metres in Q28.36, rounded. */
 int64_t drdc__geo_ups_q36(int64_t a);
 
 /** Terms of the series of the conformal latitude. */
