@@ -10,6 +10,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 
+#include <drdc/compiler.h>
 #include <drdc/fixed_arith.h>
 #include <drdc/fixed_sqrt.h>
 #include <drdc/fixed_trig.h>
@@ -151,9 +152,12 @@ drdc_q5_58_t drdc_fx_div_q5_58_unchecked(drdc_q5_58_t a, drdc_q5_58_t b)
 }
 
 /* sin and cos of x (Q5.58 radians, |x| <= 16): the body of
- * drdc_fx_sincos_q5_58(), also used by atan2 for its correction step */
-static inline void sincos_kernel(drdc_q5_58_t x, drdc_q5_58_t *s,
-                                 drdc_q5_58_t *c)
+ * drdc_fx_sincos_q5_58(), also used by atan2 for its correction step.
+ * Inlined for the 512-byte stack limit: called from atan2 it adds a frame
+ * to the grid poses' chain through the transverse Mercator, which then
+ * passes the limit on Cortex-M3. */
+static inline DRDC_ALWAYS_INLINE void
+sincos_kernel(drdc_q5_58_t x, drdc_q5_58_t *s, drdc_q5_58_t *c)
 {
   /* (-1)^i / (2i+1)! and (-1)^i / (2i)! in Q5.58, i = 0..9: on |r| <= pi/4
    * the first omitted terms are below 1e-19. */

@@ -163,7 +163,7 @@ def header_text():
 def source_text():
     out = [HEAD % "Series coefficients of core/geo: conformal latitude\n"
            " *        and Krueger's alpha and beta",
-           '#include "geo_impl.h"', ""]
+           '#include "geo_projection.h"', ""]
     for name, size, values in tables():
         items = ["INT64_C(%d)" % rnd(v * ONE) for v in values]
         out.append("const int64_t %s[%s] = {" % (name, size))

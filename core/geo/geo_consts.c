@@ -8,7 +8,7 @@
  *        to nearest; Q5.58 unless named otherwise.
  */
 
-#include "geo_impl.h"
+#include "geo_projection.h"
 
 const int64_t drdc__geo_chi_from_phi[GEO_CHI_TERMS] = {
   INT64_C(-967461000637978), INT64_C(1353118549491), INT64_C(-2361903110),

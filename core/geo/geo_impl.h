@@ -23,9 +23,6 @@
 #include <drdc/fixed_arith.h>
 #include <drdc/fixed_q5_58.h>
 #include <drdc/fixed_types.h>
-#include <drdc/geo.h>
-#include <drdc/geo_ecef.h>
-#include <drdc/geo_pose.h>
 #include <drdc/types.h>
 
 #include "geo_consts.h"
@@ -42,33 +39,15 @@
 #define GEO_NAS_180 INT64_C(648000000000000)
 /** Nano-arcseconds in one degree. */
 #define GEO_NAS_DEG INT64_C(3600000000000)
-/** Terms of the series of the conformal latitude (8) and of Krueger's
- *  series (6). */
-#define GEO_CHI_TERMS 8u
-/** Number of Krueger coefficients (6th order in n). */
-#define GEO_KRUEGER_TERMS 6u
-
-/** chi - phi = sum GEO_CHI_FROM_PHI[j] sin(2 (j+1) phi). */
-extern const int64_t drdc__geo_chi_from_phi[GEO_CHI_TERMS];
-/** phi - chi = sum GEO_PHI_FROM_CHI[j] sin(2 (j+1) chi). */
-extern const int64_t drdc__geo_phi_from_chi[GEO_CHI_TERMS];
-/** Krueger alpha_1..6 (geographic -> transverse Mercator). */
-extern const int64_t drdc__geo_alpha[GEO_KRUEGER_TERMS];
-/** Krueger beta_1..6 (transverse Mercator -> geographic). */
-extern const int64_t drdc__geo_beta[GEO_KRUEGER_TERMS];
 
 /** a b / 2^58, rounded to nearest (ties away from zero): the caller keeps
- *  |a b| / 2^58 within Q5.58. One out-of-line copy of
- *  drdc_fx_mul_q5_58_unchecked() (the same bits as drdc_fx_mul_q5_58(),
- *  without its checks and pointer); the hot loops of tm.c inline it. */
+ *  |a b| / 2^58 within Q5.58. drdc_fx_mul_q5_58_unchecked() (the bits of
+ *  drdc_fx_mul_q5_58() without its checks), one copy out of line; the
+ *  innermost loops of the series inline it. */
 int64_t drdc__geo_mul(int64_t a, int64_t b);
 
-/** a 2^58 / b, rounded; b != 0 and the quotient within int64_t: the
- *  callers keep it so, so it never fails. Inline: an out-of-line wrapper
- *  would put its own frame (32 bytes) on top of drdc_fx_div_q5_58()'s on
- *  the deepest chains of the projections (issue 8's stack goal). */
-/* the quotient in registers (no result slot in the caller's frame); 0
- * where drdc_fx_div_q5_58() fails, as before */
+/** a 2^58 / b, rounded; b != 0 and the quotient within int64_t (the
+ *  callers keep it so): drdc_fx_div_q5_58_unchecked(). */
 static inline int64_t geo_div(int64_t a, int64_t b)
 {
   return drdc_fx_div_q5_58_unchecked(a, b);
@@ -79,8 +58,7 @@ int64_t drdc__geo_muldiv(int64_t a, int64_t b, int64_t c);
 
 /** a b / 2^n rounded to nearest, ties away from zero: the bits of
  *  drdc__geo_muldiv(a, b, 2^n) for b > 0, 0 < n < 64, the quotient within
- *  int64_t. A product and a shift, no 128-bit division: a small frame
- *  with no chain under it (issue 8's stack) and fewer cycles. */
+ *  int64_t, by a 128-bit product and a shift instead of a division. */
 int64_t drdc__geo_mul_shift(int64_t a, int64_t b, unsigned n);
 
 /** sin and cos of x radians: drdc_fx_sincos_q5_58() (s, c not NULL). */
@@ -116,209 +94,5 @@ drdc_nas_t drdc__geo_nas_from_rad(int64_t r);
 
 /** floor(a / b) for b > 0 (integer division rounding towards -inf). */
 int64_t drdc__geo_floor_div(int64_t a, int64_t b);
-
-/** Transverse Mercator result on the unit sphere of radius k0 A:
- *  xi and eta (Q5.58), convergence gamma (rad, Q5.58), point scale k. */
-typedef struct geo_tm {
-  int64_t xi;    /**< northing / (k0 A) */
-  int64_t eta;   /**< easting offset / (k0 A) */
-  int64_t gamma; /**< meridian convergence, radians */
-  int64_t k;     /**< point scale factor (including k0) */
-} geo_tm_t;
-
-/**
- * Transverse Mercator (Krueger series, 6th order) of latitude phi and
- * longitude from the central meridian lam (radians, |phi| <= pi/2,
- * |lam| <= pi/2) in out->xi, out->eta (the arguments in the struct: no
- * caller holds outgoing stack arguments). Returns 0 when the point is
- * beyond the series' domain (cos(chi) |sin(lam)| > tanh(0.34)), else 1
- * with *out written.
- */
-int drdc__geo_tm_forward(geo_tm_t *out);
-
-/** 2^62, the divisor that takes k0 A (Q40) times an angle (Q58) to
- *  metres in Q36. */
-#define GEO_TWO_POW_62 INT64_C(4611686018427387904)
-
-/** An angle on the sphere of radius k0 A (Q5.58, the xi and eta of
- *  drdc__geo_tm_forward()) -> metres (Q47.16): the Q28.36 metres (rounded, by
- *  drdc__geo_mul_shift()) rounded again. */
-drdc_q47_16_t drdc__geo_metres_from_angle(int64_t a);
-
-/** Inverse of drdc__geo_tm_forward(): xi, eta (|eta| <= 0.34) in tm->xi,
- *  tm->eta -> phi, lam in the same slots; tm->gamma and tm->k are its
- *  scratch (one struct of the caller's frame holds every intermediate
- *  the stages share). */
-void drdc__geo_tm_reverse(geo_tm_t *tm);
-
-/** cos(chi) / cos(phi) from s = sin(phi), well conditioned up to the
- *  poles: 2 E / ((1 + s) + (1 - s) E^2) with E = exp(e atanh(e s)). */
-int64_t drdc__geo_cos_ratio(int64_t s);
-
-/** sum coef[j] sin(2 (j+1) x), j < GEO_CHI_TERMS, from s = sin x and
- *  c = cos x: the series between the geodetic and the conformal
- *  latitude, one copy for both directions. */
-int64_t drdc__geo_lat_series(const int64_t *coef, int64_t s, int64_t c);
-
-/** chi - phi of the conformal latitude from sin phi, cos phi. */
-static inline int64_t geo_chi_series(int64_t sphi, int64_t cphi)
-{
-  return drdc__geo_lat_series(drdc__geo_chi_from_phi, sphi, cphi);
-}
-
-/** phi - chi from sin chi, cos chi. */
-static inline int64_t geo_phi_series(int64_t schi, int64_t cchi)
-{
-  return drdc__geo_lat_series(drdc__geo_phi_from_chi, schi, cchi);
-}
-
-/**
- * Polar stereographic (UPS, k0 = 0.994) of phi, lam (radians, in out->xi,
- * out->eta as drdc__geo_tm_forward() takes them) on the north or south sheet
- * into out: x, y (out->xi, out->eta) as angles of
- * the sphere of radius 2 k0 a / c (drdc__geo_ups_q36() makes metres),
- * convergence out->gamma (radians) and scale out->k; one pointer, so that
- * no caller's frame holds outgoing arguments for four. Returns 0 when the
- * point is too far on the other hemisphere (sin chi < -0.9), else 1; out
- * is its scratch (it holds intermediate values after 0: the callers pass
- * scratch).
- */
-int drdc__geo_ups_forward(bool north, geo_tm_t *out);
-
-/** Inverse of drdc__geo_ups_forward(): x, y from the pole in metres (Q47.16,
- *  |x|, |y| < 2 000 km) in tm->xi, tm->eta -> phi, lam (radians) in the
- *  same slots; tm->gamma and tm->k are its scratch. No 64-bit argument:
- *  nothing on the caller's stack for the call. */
-void drdc__geo_ups_reverse(bool north, geo_tm_t *tm);
-
-/**
- * MGRS text of a UTM/UPS position already validated by drdc_geo_to_utm()
- * or drdc_geo_from_utm(); lat (nas) picks the UTM latitude band. Returns
- * DRDC_E_RANGE (prec outside -1..11), DRDC_E_EASTING or DRDC_E_NORTHING
- * (outside the MGRS limits), DRDC_E_BUFFER (size too small); the text is
- * written only on DRDC_OK.
- */
-drdc_status_t drdc__geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,
-                                    int32_t prec, char *text, size_t size);
-
-/** Added to a zone (0..60) for the southern hemisphere: the code of a
- *  grid position that drdc__geo_mgrs_decode_tm() returns and the reverse
- *  projections of utm_reverse.c take; the forward projection of
- *  utm_forward.c adds it (with GEO_ZONE_Q36) for a point south of the
- *  equator. */
-#define GEO_CODE_SOUTH ((int32_t)512)
-
-/**
- * drdc_geo_mgrs_decode() of text (not NULL) into tm: the cell's centre
- * (Q47.16 metres) in tm->eta (easting) and tm->xi (northing), its corner
- * in tm->gamma and tm->k; returns the zone plus GEO_CODE_SOUTH for the
- * southern hemisphere, or minus the status (same checks, same order); tm
- * and *prec (may be NULL) written only when it returns a code.
- */
-int32_t drdc__geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec);
-
-/** UPS angle -> metres in Q28.36 (2^-36 m, rounded). */
-int64_t drdc__geo_ups_q36(int64_t a);
-
-/** Added to a zone code of drdc_geo_to_utm() (-1..60): utm_forward.c's
- *  forward projection (for MGRS) keeps easting and northing in Q28.36
- *  metres. */
-#define GEO_ZONE_Q36 ((int32_t)256)
-
-/**
- * The forward projection (UPS or transverse Mercator, by the zone of the
- * code) of phi and lam (radians) in tm's xi and eta slots, into tm as
- * drdc__geo_ups_forward() or drdc__geo_tm_forward() leave it: 0 beyond its
- * domain, else 1 (never 0 after the reverse). In utm_forward.c, out of line, a
- * sibling call of either projection; the reverse (utm_reverse.c) calls
- * it for the convergence and scale, so one copy serves both files.
- */
-int drdc__geo_grid_forward_projection(int32_t code, geo_tm_t *tm);
-
-/** Metres in Q47.16. */
-#define GEO_METRES(v) ((int64_t)(v)*INT64_C(65536))
-
-/** GeoConvert's UTM coordinate limits (UTMUPS::CheckCoords, including its
- *  100 km slop), metres; the forward projection checks its result and the
- *  reverse its input against the same ones. */
-#define GEO_UTM_E_MIN                GEO_METRES(0)
-#define GEO_UTM_E_MAX                GEO_METRES(1000000)
-#define GEO_UTM_N_NORTH_MIN          GEO_METRES(-9100000)
-#define GEO_UTM_N_NORTH_MAX          GEO_METRES(9600000)
-#define GEO_UTM_N_SOUTH_MIN          GEO_METRES(900000)
-#define GEO_UTM_N_SOUTH_MAX          GEO_METRES(19600000)
-#define GEO_UTM_FALSE_EASTING        GEO_METRES(500000)
-#define GEO_UTM_FALSE_NORTHING_SOUTH GEO_METRES(10000000)
-
-/** GeoConvert's UPS limits (100 km slop included), metres; the same for
- *  easting and northing. */
-#define GEO_UPS_NORTH_MIN    GEO_METRES(1200000)
-#define GEO_UPS_NORTH_MAX    GEO_METRES(2800000)
-#define GEO_UPS_SOUTH_MIN    GEO_METRES(700000)
-#define GEO_UPS_SOUTH_MAX    GEO_METRES(3300000)
-#define GEO_UPS_FALSE_ORIGIN GEO_METRES(2000000)
-
-/** A UPS easting or northing (Q47.16) within the limits of its
- *  hemisphere. */
-static inline bool geo_ups_in_range(bool north, drdc_q47_16_t v)
-{
-  return north ? ((v >= GEO_UPS_NORTH_MIN) && (v <= GEO_UPS_NORTH_MAX))
-               : ((v >= GEO_UPS_SOUTH_MIN) && (v <= GEO_UPS_SOUTH_MAX));
-}
-
-/** lon (nas) reduced to [-180, 180) degrees. */
-static inline drdc_nas_t geo_lon_normalize(drdc_nas_t lon)
-{
-  drdc_nas_t turn = 360 * GEO_NAS_DEG;
-  drdc_nas_t r = (lon + (180 * GEO_NAS_DEG)) % turn;
-
-  if (r < 0) {
-    r = r + turn;
-  }
-  return r - (180 * GEO_NAS_DEG);
-}
-
-/** Central meridian of a UTM zone (1..60), nas. */
-static inline drdc_nas_t geo_central_meridian(int32_t zone)
-{
-  return ((6 * (int64_t)zone) - 183) * GEO_NAS_DEG;
-}
-
-/** The last step of drdc_pose_w_from_wutm() (u) and
- *  drdc_pose_w_from_wmgrs() (m, u NULL), in utm_reverse.c, after the
- *  reverse projection: the attitude of u or m turned from grid to true
- *  north by the convergence (nas) in tm->gamma straight into out->q, then
- *  the height; out written only on DRDC_OK (else DRDC_E_OVERFLOW). In
- *  pose.c, with the turn: a call to another unit, so the compiler passes
- *  tm's address rather than the 64-bit convergence, which would leave an
- *  argument on the caller's stack on Cortex-M3. */
-drdc_status_t drdc__geo_w_attitude(const drdc_WUTMPose_t *u,
-                                   const drdc_WMGRSPose_t *m,
-                                   const geo_tm_t *tm, drdc_WPose_t *out);
-
-/** The attitude and height of drdc_pose_wmgrs_from_w() (in
- *  utm_forward.c), after the projection: w's attitude turned from true to
- *  grid north by the convergence (radians) in tm->gamma straight into
- *  out->q, then the height; written only on DRDC_OK (else
- *  DRDC_E_OVERFLOW). In pose.c, as drdc__geo_w_attitude(), so the caller passes
- *  tm's address, not a 64-bit argument on its stack. */
-drdc_status_t drdc__geo_wmgrs_attitude(const drdc_WPose_t *w,
-                                       const geo_tm_t *tm,
-                                       drdc_WMGRSPose_t *out);
-
-/** The last step of drdc_pose_weutm_from_we() (in utm_forward.c), after
- *  the projection: height and angles of w into out, the yaw turned from
- *  true to grid north by the convergence parked in out->height. Never
- *  fails. */
-void drdc__geo_weutm_attitude(const drdc_WePose_t *w, drdc_WeUTMPose_t *out);
-
-/**
- * drdc__geo_mgrs_format() of a position whose easting and northing carry
- * frac_bits fraction bits (16: Q47.16; 36: utm_forward.c's projection
- * with GEO_ZONE_Q36): the digits truncate that value.
- */
-drdc_status_t drdc__geo_mgrs_format_bits(const drdc_geo_utm_t *u,
-                                         unsigned frac_bits, drdc_nas_t lat,
-                                         int32_t prec, char *text, size_t size);
 
 #endif /* DRDC_GEO_IMPL_H */

@@ -44,13 +44,6 @@ int64_t drdc__geo_mul_shift(int64_t a, int64_t b, unsigned n)
   return (a < 0) ? (int64_t)(UINT64_C(0) - q) : (int64_t)q;
 }
 
-drdc_q47_16_t drdc__geo_metres_from_angle(int64_t a)
-{
-  /* the projection's angles keep the Q36 metres within int64_t */
-  return drdc_fx_rshift_round_s64_inline(
-      drdc__geo_mul_shift(a, GEO_K0A_Q40, 62u), 20u);
-}
-
 int64_t drdc__geo_floor_div(int64_t a, int64_t b)
 {
   int64_t q = a / b;
@@ -83,9 +76,8 @@ drdc_nas_t drdc__geo_nas_from_rad(int64_t r)
   uint64_t q;
   uint64_t rem;
 
-  /* drdc__geo_muldiv(r, GEO_NAS_180, GEO_PI) bit for bit, without the 128-bit
-   * division (its chain of frames was the deepest of the inverse on
-   * Cortex-M3): with x = |r| <= 2^63, c = GEO_NAS_180, d = GEO_PI and
+  /* drdc__geo_muldiv(r, GEO_NAS_180, GEO_PI) bit for bit, without the
+   * 128-bit division: with x = |r| <= 2^63, c = GEO_NAS_180, d = GEO_PI and
    * f = floor(x c / d), the magnitude is f + [2 rem >= d], rem = x c -
    * f d (rounded half up, the sign then put back: to nearest, ties away
    * from zero, as drdc_fx_muldiv_s64()). Here m = NAS_PER_RAD_Q63 =

@@ -2,19 +2,17 @@
 /**
  * @file
  * @ingroup drdc_geo
- * @brief MGRS encode (truncation) and decode (validation, the row placed
- *        in its latitude band) over UTM/UPS; the decoder also into a
- *        geo_tm_t, for the MGRS poses of utm_reverse.c.
+ * @brief MGRS: encode from geographic or UTM/UPS (truncation), decode
+ *        (validation, the row placed in its latitude band), over the grid
+ *        of utm.c.
  *
  * Letter sets and the row placement follow the MGRS standard as
- * GeographicLib implements it (NGA.SIG.0012): UTM columns A-H, J-R, S-Z
- * by zone modulo 3, rows A-V (I and O skipped) shifted by 5 in even zones;
- * UPS columns and rows from their own sets per polar half. Coordinates
- * are whole micrometres, truncated: of the Q28.36 metres of the
- * projection (encode from geographic, drdc_geo_mgrs_encode() in
- * utm_forward.c) or of the Q47.16 input (from UTM).
+ * GeographicLib's MGRS class implements it (NGA.SIG.0012): UTM columns
+ * A-H, J-R, S-Z by zone modulo 3, rows A-V (I and O skipped) shifted by 5
+ * in even zones; UPS columns and rows from their own sets per polar half.
+ * Coordinates are whole micrometres, truncated: of the Q28.36 metres of
+ * the projection (from geographic) or of the Q47.16 input (from UTM).
  */
-#include <drdc/compiler.h>
 #include <drdc/geo_mgrs.h>
 
 #include <stdbool.h>
@@ -22,7 +20,7 @@
 
 #include <drdc/fixed_arith.h>
 
-#include "geo_impl.h"
+#include "geo_grid.h"
 
 /** 100 km in micrometres. */
 #define TILE_UM INT64_C(100000000000)
@@ -51,10 +49,8 @@ static const char *const upscols[4] = {"JKLPQRSTUXYZ", "ABCFGHJKLPQR",
 static const char *const upsrows[2] = {"ABCDEFGHJKLMNPQRSTUVWXYZ",
                                        "ABCDEFGHJKLMNP"};
 
-/* index of c in set, letters in either case; -1 when absent. Out of
- * line: the decoder calls it at seven places, a copy each when inlined
- * (240/412 B of flash on Cortex-M3/PowerPC, issue 8) */
-static DRDC_NOINLINE int32_t lookup(const char *set, char c)
+/* index of c in set, letters in either case; -1 when absent */
+static int32_t lookup(const char *set, char c)
 {
   static const char upper[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZ";
   static const char lower[] = "abcdefghijklmnopqrstuvwxyz";
@@ -101,15 +97,9 @@ static int64_t micrometres(int64_t v, unsigned frac_bits)
                    ((frac * UINT64_C(1000000)) >> frac_bits));
 }
 
-drdc_status_t drdc__geo_mgrs_format(const drdc_geo_utm_t *u, drdc_nas_t lat,
-                                    int32_t prec, char *text, size_t size)
-{
-  return drdc__geo_mgrs_format_bits(u, 16u, lat, prec, text, size);
-}
-
-drdc_status_t drdc__geo_mgrs_format_bits(const drdc_geo_utm_t *u,
-                                         unsigned frac_bits, drdc_nas_t lat,
-                                         int32_t prec, char *text, size_t size)
+drdc_status_t drdc__geo_mgrs_format(const drdc_geo_utm_t *u, unsigned frac_bits,
+                                    drdc_nas_t lat, int32_t prec, char *text,
+                                    size_t size)
 {
   char *buf = text;
   size_t n = 0u;
@@ -208,11 +198,43 @@ drdc_status_t drdc__geo_mgrs_format_bits(const drdc_geo_utm_t *u,
   return DRDC_OK;
 }
 
-/* drdc_geo_mgrs_encode() is in utm_forward.c, in the frame of the
- * projection's body (issue 8's stack) */
+drdc_status_t drdc_geo_mgrs_encode(drdc_nas_t lat, drdc_nas_t lon, int32_t prec,
+                                   char *text, size_t size)
+{
+  geo_grid_fwd_t g;
+  drdc_status_t st;
 
-/* drdc_geo_mgrs_from_utm() is in utm_reverse.c, in the frame of the
- * reverse projection's body (issue 8's stack) */
+  if (text == NULL) {
+    return DRDC_E_NULL;
+  }
+  st = drdc__geo_grid_forward(lat, lon, DRDC_GEO_ZONE_STANDARD, &g);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  /* the metres before their rounding to Q47.16 (2^-36 m), so that the
+   * truncation falls on the side of a digit boundary that GeographicLib's
+   * value falls on, but within nanometres of it */
+  g.utm.easting = g.easting_q36;
+  g.utm.northing = g.northing_q36;
+  return drdc__geo_mgrs_format(&g.utm, 36u, lat, prec, text, size);
+}
+
+drdc_status_t drdc_geo_mgrs_from_utm(const drdc_geo_utm_t *u, int32_t prec,
+                                     char *text, size_t size)
+{
+  geo_grid_rev_t g;
+  drdc_status_t st;
+
+  if ((u == NULL) || (text == NULL)) {
+    return DRDC_E_NULL;
+  }
+  /* the position checked, and its latitude for the band letter */
+  st = drdc__geo_grid_reverse(u, false, &g);
+  if (st != DRDC_OK) {
+    return st;
+  }
+  return drdc__geo_mgrs_format(u, 16u, g.lat, prec, text, size);
+}
 
 /* GeographicLib's placement of a UTM row letter (irow 0..19) in latitude
  * band iband (-10..9): the multiple of 20 rows nearest the band's centre,
@@ -259,11 +281,17 @@ static int64_t tiles_q16(int64_t v, int64_t den)
   return r;
 }
 
-/* drdc_geo_mgrs_decode() into a geo_tm_t, for it and for the pose
- * conversions of utm_reverse.c, which run the reverse projection on these
- * slots: no drdc_geo_utm_t in this frame or in the caller's (issue 8's
- * stack), the values written once, after the last check. */
-int32_t drdc__geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec)
+/* A decoded MGRS text: its cell's south-west corner and centre (Q47.16
+ * metres) in a zone and hemisphere, and its precision. */
+typedef struct mgrs_cell {
+  drdc_geo_utm_t corner;
+  drdc_geo_utm_t centre;
+  int32_t prec;
+} mgrs_cell_t;
+
+/* The cell of text into *cell, with drdc_geo_mgrs_decode()'s statuses
+ * (*cell undefined on error). */
+static drdc_status_t mgrs_decode(const char *text, mgrs_cell_t *cell)
 {
   int32_t p = 0;
   int32_t len = 0;
@@ -290,57 +318,59 @@ int32_t drdc__geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec)
   }
   /* GeographicLib checks the zone's value before its digit count */
   if ((p > 0) && ((zone == 0) || (zone > DRDC_GEO_ZONE_MAX))) {
-    return -(int32_t)DRDC_E_ZONE;
+    return DRDC_E_ZONE;
   }
   if (p > 2) {
-    return -(int32_t)DRDC_E_MGRS;
+    return DRDC_E_MGRS;
   }
   if ((len - p) < 1) {
-    return -(int32_t)DRDC_E_MGRS;
+    return DRDC_E_MGRS;
   }
   utmp = (zone != DRDC_GEO_ZONE_UPS);
   iband = lookup(utmp ? latband : upsband, text[p]);
   p++;
   if (iband < 0) {
-    return -(int32_t)DRDC_E_MGRS;
+    return DRDC_E_MGRS;
   }
   north = (iband >= (utmp ? 10 : 2));
+  cell->corner.zone = zone;
+  cell->corner.north = north;
   if (p == len) {
     /* the grid zone alone: GeographicLib's representative point, corner
      * and centre */
     if (utmp) {
-      tm->eta = (((zone == 31) && (iband == 17)) ? 4 : 5) * TILE_Q16;
-      tm->xi = (drdc__geo_floor_div((160 * (int64_t)iband) - 1511, 18) +
-                (north ? 0 : SOUTH_ROWS)) *
-               TILE_Q16;
+      cell->corner.easting =
+          (((zone == 31) && (iband == 17)) ? 4 : 5) * TILE_Q16;
+      cell->corner.northing =
+          (drdc__geo_floor_div((160 * (int64_t)iband) - 1511, 18) +
+           (north ? 0 : SOUTH_ROWS)) *
+          TILE_Q16;
     } else {
-      tm->eta = ((((iband % 2) == 1) ? 4 : -4) + UPS_POLE_INDEX) * TILE_Q16;
-      tm->xi = UPS_POLE_INDEX * TILE_Q16;
+      cell->corner.easting =
+          ((((iband % 2) == 1) ? 4 : -4) + UPS_POLE_INDEX) * TILE_Q16;
+      cell->corner.northing = UPS_POLE_INDEX * TILE_Q16;
     }
-    tm->gamma = tm->eta;
-    tm->k = tm->xi;
-    if (prec != NULL) {
-      *prec = -1;
-    }
-    return zone + (north ? 0 : GEO_CODE_SOUTH);
+    cell->centre = cell->corner;
+    cell->prec = -1;
+    return DRDC_OK;
   }
   if ((len - p) < 2) {
-    return -(int32_t)DRDC_E_MGRS;
+    return DRDC_E_MGRS;
   }
   icol = lookup(utmp ? utmcols[(zone - 1) % 3] : upscols[iband], text[p]);
   irow = lookup(utmp ? utmrow : upsrows[north ? 1 : 0], text[p + 1]);
   p += 2;
   if ((icol < 0) || (irow < 0)) {
-    return -(int32_t)DRDC_E_MGRS;
+    return DRDC_E_MGRS;
   }
   ndig = len - p;
   for (k = 0; k < ndig; k++) {
     if (lookup(digits, text[p + k]) < 0) {
-      return -(int32_t)DRDC_E_MGRS;
+      return DRDC_E_MGRS;
     }
   }
   if (((ndig % 2) != 0) || (ndig > (2 * DRDC_GEO_MGRS_PREC_MAX))) {
-    return -(int32_t)DRDC_E_MGRS;
+    return DRDC_E_MGRS;
   }
   if (utmp) {
     if ((zone % 2) == 0) {
@@ -348,7 +378,7 @@ int32_t drdc__geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec)
     }
     irow = utm_row(iband - 10, icol, irow);
     if (irow == SOUTH_ROWS) {
-      return -(int32_t)DRDC_E_BAND;
+      return DRDC_E_BAND;
     }
     irow = north ? irow : (irow + SOUTH_ROWS);
     icol = icol + 1;
@@ -368,39 +398,54 @@ int32_t drdc__geo_mgrs_decode_tm(const char *text, geo_tm_t *tm, int32_t *prec)
     y1 = (y1 * 10) + lookup(digits, text[p + ndig + k]);
     unit = unit * 10;
   }
-  /* the corner in the gamma and k slots, the centre in eta and xi */
-  tm->gamma = tiles_q16(x1, unit);
-  tm->k = tiles_q16(y1, unit);
-  tm->eta = tiles_q16((2 * x1) + 1, 2 * unit);
-  tm->xi = tiles_q16((2 * y1) + 1, 2 * unit);
-  if (prec != NULL) {
-    *prec = ndig;
+  cell->corner.easting = tiles_q16(x1, unit);
+  cell->corner.northing = tiles_q16(y1, unit);
+  cell->centre = cell->corner;
+  cell->centre.easting = tiles_q16((2 * x1) + 1, 2 * unit);
+  cell->centre.northing = tiles_q16((2 * y1) + 1, 2 * unit);
+  cell->prec = ndig;
+  return DRDC_OK;
+}
+
+drdc_status_t drdc__geo_mgrs_centre(const char *text, drdc_geo_utm_t *centre)
+{
+  mgrs_cell_t cell;
+  size_t n = 0u;
+  drdc_status_t st;
+
+  /* the decoder must not read beyond the array */
+  while ((n < DRDC_GEO_MGRS_SIZE) && (text[n] != '\0')) {
+    n++;
   }
-  return zone + (north ? 0 : GEO_CODE_SOUTH);
+  if (n == DRDC_GEO_MGRS_SIZE) {
+    return DRDC_E_MGRS;
+  }
+  st = mgrs_decode(text, &cell);
+  if (st == DRDC_OK) {
+    *centre = cell.centre;
+  }
+  return st;
 }
 
 drdc_status_t drdc_geo_mgrs_decode(const char *text, drdc_geo_utm_t *corner,
                                    drdc_geo_utm_t *centre, int32_t *prec)
 {
-  geo_tm_t tm;
-  int32_t code;
+  mgrs_cell_t cell;
+  drdc_status_t st;
 
   if ((text == NULL) || (corner == NULL)) {
     return DRDC_E_NULL;
   }
-  code = drdc__geo_mgrs_decode_tm(text, &tm, prec);
-  if (code < 0) {
-    return (drdc_status_t)-code;
+  st = mgrs_decode(text, &cell);
+  if (st != DRDC_OK) {
+    return st;
   }
-  corner->zone = code % GEO_CODE_SOUTH;
-  corner->north = (code < GEO_CODE_SOUTH);
-  corner->easting = tm.gamma;
-  corner->northing = tm.k;
+  *corner = cell.corner;
   if (centre != NULL) {
-    centre->zone = code % GEO_CODE_SOUTH;
-    centre->north = (code < GEO_CODE_SOUTH);
-    centre->easting = tm.eta;
-    centre->northing = tm.xi;
+    *centre = cell.centre;
+  }
+  if (prec != NULL) {
+    *prec = cell.prec;
   }
   return DRDC_OK;
 }

@@ -291,9 +291,9 @@ static void test_from_ecef_int64_min_does_not_overflow(void)
 {
   /* Regression: a coordinate of INT64_MIN was negated in int64_t by the
    * range check of drdc_geo_from_ecef() (undefined behaviour, caught by
-   * UBSan: ecef.c ecef_abs64()). Each coordinate at INT64_MIN, INT64_MIN + 1
-   * and INT64_MAX, the others on the equator's surface or also extreme:
-   * DRDC_E_HEIGHT, p unchanged. */
+   * UBSan: the magnitude in ecef.c). Each coordinate at INT64_MIN,
+   * INT64_MIN + 1 and INT64_MAX, the others on the equator's surface or
+   * also extreme: DRDC_E_HEIGHT, p unchanged. */
   static const int64_t far[] = {INT64_MIN, INT64_MIN + 1, INT64_MAX};
   size_t i;
   size_t axis;

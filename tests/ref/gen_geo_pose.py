@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: BSD-2-Clause
 """Reference vectors of the pose conversions {W} <-> {W-MGRS},
-{We} <-> {We-MGRS} and {le} <-> {We} (core/geo/pose.c).
+{We} <-> {We-MGRS} and {le} <-> {We} (core/geo/grid_pose.c, local_pose.c).
 
 Oracles: GeographicLib 2.1.2 (Debian `geographiclib-tools`): `GeoConvert
 -m -p P` (MGRS text), `GeoConvert -c -p 9` (convergence, 1e-13 degree) at

@@ -35,9 +35,11 @@
  *
  * **Method**: the conformal latitude by its Fourier series (8 terms,
  * exact for WGS-84), the spherical transverse Mercator, Krueger's series
- * to 6th order in n (as GeographicLib's TransverseMercator), all in Q5.58
- * with 128-bit products (drdc_fx_muldiv_s64()); sin/cos/atan2/sqrt are
- * refined to 2^-58 from the fixed/ primitives. UPS: polar stereographic,
+ * to 6th order in n (Krueger 1912; Karney, "Transverse Mercator with an
+ * accuracy of a few nanometers", J. Geodesy 85, 2011; as GeographicLib's
+ * TransverseMercator), all in Q5.58 with 128-bit products
+ * (drdc_fx_muldiv_s64()); sin/cos/atan2/sqrt are refined to 2^-58 from
+ * the fixed/ primitives. UPS: polar stereographic,
  * k0 = 0.994, false easting and northing 2 000 000 m, through the same
  * conformal latitude. No floating point.
  *
