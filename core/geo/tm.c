@@ -23,6 +23,8 @@
  * is the rounding of the arithmetic, a few LSB on xi and eta (15 um at
  * most on the ground: see docs/accuracy.md).
  */
+#include <drdc/geo.h>
+
 #include "geo_projection.h"
 
 /* A complex number re + i im. */
