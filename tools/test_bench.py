@@ -9,7 +9,7 @@ import unittest
 from tools import bench, footprint
 
 REPORT = {
-    "functions": [{"function": "drdc_f", "target": "arm-cm3", "cycles": 100.0}],
+    "functions": [{"function": "drdc_f", "target": "arm-cm3", "instructions": 100.0}],
     "footprint": {"arm-cm3": {"library": {"text": 1000, "rodata": 100, "data": 0,
                                           "bss": 0},
                               "stack": {"drdc_f": {"bytes": 200}},
@@ -33,12 +33,12 @@ class Guard(unittest.TestCase):
 
     def test_five_percent_more_cycles_passes(self):
         new = copy.deepcopy(REPORT)
-        new["functions"][0]["cycles"] = 105.0
+        new["functions"][0]["instructions"] = 105.0
         self.assertTrue(self.check(new))
 
     def test_six_percent_more_cycles_fails(self):
         new = copy.deepcopy(REPORT)
-        new["functions"][0]["cycles"] = 106.0
+        new["functions"][0]["instructions"] = 106.0
         self.assertFalse(self.check(new))
 
     def test_six_percent_more_flash_fails(self):
@@ -71,6 +71,28 @@ class Guard(unittest.TestCase):
         new["footprint"]["arm-cm3"]["stack"]["drdc_f"] = {
             "bytes": None, "recursion": "drdc_f -> drdc_f"}
         self.assertFalse(self.check(new))
+
+
+class BaselineCheck(unittest.TestCase):
+    """A double baseline that does not compute what the library computes
+    (beyond the library's documented accuracy) fails the bench."""
+    CONSOLE = ("BENCH-CHECK quat_mul worst=500 limit=501 unit=milli-LSB ok\n"
+               "BENCH-CHECK utm_forward.xy worst=90000 limit=15269 unit=nm FAIL\n")
+
+    def test_a_check_beyond_its_limit_fails(self):
+        checks = [m for m in
+                  (bench.CHECK_RE.match(l) for l in self.CONSOLE.splitlines())]
+        self.assertTrue(all(checks))
+        report = {"baseline_checks": {"arm-cm3": [
+            {"name": m.group(1), "worst": int(m.group(2)), "limit": int(m.group(3)),
+             "unit": m.group(4), "ok": m.group(5) == "ok"} for m in checks]}}
+        self.assertEqual(["utm_forward.xy on arm-cm3: worst 90000 nm, limit 15269"],
+                         bench.failed_checks(report))
+
+    def test_checks_within_their_limits_pass(self):
+        report = {"baseline_checks": {"arm-cm3": [
+            {"name": "quat_mul", "worst": 500, "limit": 501, "unit": "x", "ok": True}]}}
+        self.assertEqual([], bench.failed_checks(report))
 
 
 class WorstStack(unittest.TestCase):

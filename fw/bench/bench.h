@@ -31,29 +31,38 @@ extern volatile uint32_t bench_sink;
 
 void bench_inputs_init(void);
 
+/** The double baselines' operands, converted from those of operands.h
+ *  (cases_double.c; empty where there is no soft-float libm). */
+void bench_double_init(void);
+/** Each double baseline against the library on every input: prints one
+ *  "BENCH-CHECK name worst=W limit=L unit=U ok|FAIL" line per output. */
+void bench_check_baselines(void);
+
 /** Case tables, one per module and baseline family; each ends with a
  *  case whose name is NULL. */
 extern const bench_case_t bench_cases_time[];
 extern const bench_case_t bench_cases_fixed[];
 extern const bench_case_t bench_cases_orient[];
-/** An ECEF point (Q47.16 metres) near the Earth's surface from a 32-bit
- *  input, made with integer sin/cos (cases_geo.c; the input of both
- *  ecef_reverse cases). */
-void bench_ecef_point(uint32_t x, int64_t *ex, int64_t *ey, int64_t *ez);
 /** core/geo cases (cases_geo.c). */
 extern const bench_case_t bench_cases_geo[];
 extern const bench_case_t bench_cases_libfixmath[];
 extern const bench_case_t bench_cases_double[];
 
 /** Define `static void fn(uint32_t calls)` that evaluates `expr` (which may
- *  use `x`, the input of the call) `calls` times. */
+ *  use `k`, the index of the call's operands in the tables of operands.h,
+ *  and `x`, its 32-bit input word) `calls` times, folding each result
+ *  into a word. The empty loop (main.c), subtracted from every case, has
+ *  the same index; a case that reads `x` pays its load. */
 #define BENCH_LOOP(fn, expr)                                                   \
   static void fn(uint32_t calls)                                               \
   {                                                                            \
     uint32_t i;                                                                \
     uint32_t acc = 0u;                                                         \
     for (i = 0u; i < calls; i++) {                                             \
-      uint32_t x = bench_u32[i % BENCH_INPUTS];                                \
+      uint32_t k = i % BENCH_INPUTS;                                           \
+      uint32_t x = bench_u32[k];                                               \
+      (void)k;                                                                 \
+      (void)x;                                                                 \
       acc ^= (uint32_t)(expr);                                                 \
     }                                                                          \
     bench_sink = acc;                                                          \

@@ -1,46 +1,113 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /**
  * @file
- * @brief Baselines in double precision: the same algorithms as the library,
- *        as an engineer would write them, compiled with soft-float and
- *        newlib's libm (arm-cm3 only: Debian's PowerPC libgcc has no
- *        soft-float routines). Never linked into the library.
+ * @brief Baselines in double precision: each computation of a timed
+ *        library function as a competent engineer writes it in double,
+ *        compiled with soft-float and newlib's libm (arm-cm3 only:
+ *        Debian's PowerPC libgcc has no soft-float routines). Never
+ *        linked into the library.
+ *
+ * Fairness rules, the same for every baseline:
+ * - the operands are converted to double before any timing (the tables
+ *   below, from those of operands.h): the timed loop holds the call;
+ * - the function is called, not inlined into the loop, with operands and
+ *   results through pointers, like the library's;
+ * - the fewest libm calls the formula needs (one exp for sinh and cosh,
+ *   no square root where a squared norm does, Clenshaw summation for the
+ *   Krueger and conformal-latitude series, as GeographicLib does);
+ * - results folded into the loop's word by their bits, not by a
+ *   soft-float addition;
+ * - bench_check_baselines() compares every baseline's outputs with the
+ *   library's on all the inputs before timing and prints the worst
+ *   difference against the library's documented accuracy; tools/bench.py
+ *   fails when one is beyond it.
  */
-#include "bench.h"
+#include "operands.h"
 
 #if BENCH_DOUBLE
 #include <math.h>
+#include <string.h>
 
-/* Results land here: a double sink, since converting an out-of-range
- * double to an integer would be undefined behaviour. */
-static volatile double sink;
+#include "console.h"
+#include "drdc_board.h"
 
-#define BENCH_LOOP_DOUBLE(fn, expr)                                            \
-  static void fn(uint32_t calls)                                               \
-  {                                                                            \
-    uint32_t i;                                                                \
-    double acc = 0.0;                                                          \
-    for (i = 0u; i < calls; i++) {                                             \
-      uint32_t x = bench_u32[i % BENCH_INPUTS];                                \
-      acc += (expr);                                                           \
-    }                                                                          \
-    sink = acc;                                                                \
-  }
+#define NOINLINE __attribute__((noinline))
 
-/* The calendar algorithm of core/time/civil.c with doubles and floor(). */
-static double days_from_civil(double year, double month, double day)
+typedef struct dquat {
+  double s, x, y, z;
+} dquat_t;
+
+typedef struct dvec3 {
+  double x, y, z;
+} dvec3_t;
+
+typedef struct deuler {
+  double yaw, pitch, roll; /* radians */
+} deuler_t;
+
+typedef struct dgrid {
+  int zone;
+  int north;
+  double easting, northing; /* metres */
+  double convergence;       /* degrees */
+  double scale;
+} dgrid_t;
+
+typedef struct dgeodetic {
+  double lat, lon; /* degrees */
+  double height;   /* metres */
+} dgeodetic_t;
+
+typedef struct dgps {
+  double week, tow;
+} dgps_t;
+
+/* the operands of operands.h in double, made before timing */
+static dquat_t dqa[BENCH_INPUTS];
+static dquat_t dqb[BENCH_INPUTS];
+static dvec3_t dvec[BENCH_INPUTS];
+static deuler_t deuler[BENCH_INPUTS];
+static double dutm_lat[BENCH_INPUTS]; /* degrees */
+static double dutm_lon[BENCH_INPUTS];
+static dgrid_t dutm[BENCH_INPUTS];
+static dgeodetic_t dgeodetic[BENCH_INPUTS];
+static dvec3_t decef[BENCH_INPUTS];
+static double dinstant[BENCH_INPUTS]; /* Unix seconds */
+static dgps_t dgps[BENCH_INPUTS];
+static double dcivil[BENCH_INPUTS][3];
+static double ddays[BENCH_INPUTS];
+
+#define TWO_POW_16     65536.0
+#define TWO_POW_30     1073741824.0
+#define TWO_POW_32     4294967296.0
+#define TWO_POW_58     288230376151711744.0
+#define NAS_PER_DEGREE 3.6e12
+#define PI             3.14159265358979323846
+#define DEG            (PI / 180.0)
+
+static uint32_t fold(double v)
 {
-  double y = (month <= 2.0) ? (year - 1.0) : year;
+  uint64_t bits;
+
+  memcpy(&bits, &v, sizeof bits);
+  return (uint32_t)bits ^ (uint32_t)(bits >> 32);
+}
+
+/* ---- time: the algorithms of core/time with doubles and floor() ---- */
+
+static NOINLINE double days_from_civil_d(const double *ymd)
+{
+  double y = (ymd[1] <= 2.0) ? (ymd[0] - 1.0) : ymd[0];
   double era = floor(y / 400.0);
   double yoe = y - (era * 400.0);
-  double mp = (month > 2.0) ? (month - 3.0) : (month + 9.0);
-  double doy = floor(((153.0 * mp) + 2.0) / 5.0) + day - 1.0;
+  double mp = (ymd[1] > 2.0) ? (ymd[1] - 3.0) : (ymd[1] + 9.0);
+  double doy = floor(((153.0 * mp) + 2.0) / 5.0) + ymd[2] - 1.0;
   double doe = (yoe * 365.0) + floor(yoe / 4.0) - floor(yoe / 100.0) + doy;
 
   return (era * 146097.0) + doe - 719468.0;
 }
 
-static double civil_from_days(double days)
+static NOINLINE void civil_from_days_d(double days, double *ymd)
 {
   double z = days + 719468.0;
   double era = floor(z / 146097.0);
@@ -50,50 +117,53 @@ static double civil_from_days(double days)
                      365.0);
   double doy = doe - ((365.0 * yoe) + floor(yoe / 4.0) - floor(yoe / 100.0));
   double mp = floor(((5.0 * doy) + 2.0) / 153.0);
-  double d = doy - floor(((153.0 * mp) + 2.0) / 5.0) + 1.0;
   double m = (mp < 10.0) ? (mp + 3.0) : (mp - 9.0);
 
-  return (yoe + (era * 400.0) + ((m <= 2.0) ? 1.0 : 0.0)) + m + d;
+  ymd[0] = yoe + (era * 400.0) + ((m <= 2.0) ? 1.0 : 0.0);
+  ymd[1] = m;
+  ymd[2] = doy - floor(((153.0 * mp) + 2.0) / 5.0) + 1.0;
 }
 
-/* UTC -> GPS as it is often written: Unix seconds as a double, a table of
- * leap-second instants, floor and fmod. Leap seconds after 1980 (Unix
- * seconds of the first second with the new TAI - UTC). */
+/* Unix seconds of the first second with each new TAI - UTC after 1980 */
 static const double leaps[] = {
     362793600.0,  394329600.0,  425865600.0,  489024000.0,  567993600.0,
     631152000.0,  662688000.0,  709948800.0,  741484800.0,  773020800.0,
     820454400.0,  867715200.0,  915148800.0,  1136073600.0, 1230768000.0,
     1341100800.0, 1435708800.0, 1483228800.0,
 };
+#define LEAPS          (sizeof leaps / sizeof leaps[0])
+#define GPS_EPOCH_UNIX 315964800.0
+#define WEEK           604800.0
 
-static double gps_seconds(double unix_seconds)
+/* UTC (Unix seconds with fraction) -> GPS week and seconds of week: the
+ * leap seconds counted by a binary search of the table */
+static NOINLINE void utc_to_gps_d(double unix_seconds, dgps_t *out)
 {
-  double leap = 0.0;
-  unsigned i;
+  unsigned lo = 0u;
+  unsigned hi = LEAPS;
+  double s;
 
-  for (i = 0; i < sizeof leaps / sizeof leaps[0]; i++) {
-    if (unix_seconds >= leaps[i]) {
-      leap += 1.0;
+  while (lo < hi) {
+    unsigned mid = (lo + hi) / 2u;
+
+    if (unix_seconds >= leaps[mid]) {
+      lo = mid + 1u;
+    } else {
+      hi = mid;
     }
   }
-  return unix_seconds - 315964800.0 + leap;
+  s = unix_seconds - GPS_EPOCH_UNIX + (double)lo;
+  out->week = floor(s / WEEK);
+  out->tow = s - (out->week * WEEK);
 }
 
-static double utc_to_gps(double unix_seconds)
+static NOINLINE double gps_to_utc_d(const dgps_t *gps)
 {
-  double s = gps_seconds(unix_seconds);
-  double week = floor(s / 604800.0);
-
-  return week + fmod(s, 604800.0);
-}
-
-static double gps_to_utc(double week, double tow)
-{
-  double s = (week * 604800.0) + tow;
-  double u = s + 315964800.0;
+  double u = (gps->week * WEEK) + gps->tow + GPS_EPOCH_UNIX;
   unsigned i;
 
-  for (i = 0; i < sizeof leaps / sizeof leaps[0]; i++) {
+  /* GPS runs ahead by the leaps inserted before it: step back over them */
+  for (i = 0u; i < LEAPS; i++) {
     if (u - (double)(i + 1u) >= leaps[i]) {
       u -= 1.0;
     }
@@ -101,227 +171,658 @@ static double gps_to_utc(double week, double tow)
   return u;
 }
 
-/* Quaternions and Euler angles as an engineer writes them in double. */
-typedef struct {
-  double s, x, y, z;
-} dquat;
+/* ---- orientation ---- */
 
-static dquat dquat_of(uint32_t x)
+static NOINLINE void quat_mul_d(const dquat_t *a, const dquat_t *b, dquat_t *r)
 {
-  dquat q;
-
-  q.s = (double)(x >> 3) / 1073741824.0;
-  q.x = (double)(int32_t)(((x << 7) >> 3) - (1u << 28)) / 1073741824.0;
-  q.y = (double)(int32_t)(((x << 13) >> 3) - (1u << 28)) / 1073741824.0;
-  q.z = (double)(int32_t)(((x << 21) >> 3) - (1u << 28)) / 1073741824.0;
-  return q;
+  r->s = a->s * b->s - a->x * b->x - a->y * b->y - a->z * b->z;
+  r->x = a->s * b->x + a->x * b->s + a->y * b->z - a->z * b->y;
+  r->y = a->s * b->y - a->x * b->z + a->y * b->s + a->z * b->x;
+  r->z = a->s * b->z + a->x * b->y - a->y * b->x + a->z * b->s;
 }
 
-static double quat_mul(uint32_t x)
+/* R(q / |q|) v = v + (s t + u x t) / |q|^2 with t = 2 u x v: one
+ * division, no square root */
+static NOINLINE void quat_rotate_d(const dquat_t *q, const dvec3_t *v,
+                                   dvec3_t *r)
 {
-  dquat a = dquat_of(x);
-  dquat b = dquat_of(x * 2654435761u);
-  dquat r;
+  double inv = 1.0 / (q->s * q->s + q->x * q->x + q->y * q->y + q->z * q->z);
+  double tx = 2.0 * (q->y * v->z - q->z * v->y);
+  double ty = 2.0 * (q->z * v->x - q->x * v->z);
+  double tz = 2.0 * (q->x * v->y - q->y * v->x);
 
-  r.s = a.s * b.s - a.x * b.x - a.y * b.y - a.z * b.z;
-  r.x = a.s * b.x + a.x * b.s + a.y * b.z - a.z * b.y;
-  r.y = a.s * b.y - a.x * b.z + a.y * b.s + a.z * b.x;
-  r.z = a.s * b.z + a.x * b.y - a.y * b.x + a.z * b.s;
-  return r.s + r.x + r.y + r.z;
+  r->x = v->x + inv * (q->s * tx + (q->y * tz - q->z * ty));
+  r->y = v->y + inv * (q->s * ty + (q->z * tx - q->x * tz));
+  r->z = v->z + inv * (q->s * tz + (q->x * ty - q->y * tx));
 }
 
-static double quat_rotate(uint32_t x)
+/* yaw-pitch-roll (z-y-x) to the quaternion q_yaw q_pitch q_roll */
+static NOINLINE void euler_to_quat_d(const deuler_t *e, dquat_t *q)
 {
-  dquat q = dquat_of(x);
-  double n = sqrt(q.s * q.s + q.x * q.x + q.y * q.y + q.z * q.z);
-  double s = q.s / n, a = q.x / n, b = q.y / n, c = q.z / n;
-  double vx = (double)(x & 0xFFFFFu) / 65536.0;
-  double vy = (double)(x >> 12) / 65536.0;
-  double vz = -(double)(x & 0xFFFFu) / 65536.0;
-  double rx = (1 - 2 * (b * b + c * c)) * vx + 2 * (a * b - s * c) * vy +
-              2 * (a * c + s * b) * vz;
-  double ry = 2 * (a * b + s * c) * vx + (1 - 2 * (a * a + c * c)) * vy +
-              2 * (b * c - s * a) * vz;
-  double rz = 2 * (a * c - s * b) * vx + 2 * (b * c + s * a) * vy +
-              (1 - 2 * (a * a + b * b)) * vz;
+  double cy = cos(0.5 * e->yaw), sy = sin(0.5 * e->yaw);
+  double cp = cos(0.5 * e->pitch), sp = sin(0.5 * e->pitch);
+  double cr = cos(0.5 * e->roll), sr = sin(0.5 * e->roll);
 
-  return rx + ry + rz;
+  q->s = cr * cp * cy + sr * sp * sy;
+  q->x = sr * cp * cy - cr * sp * sy;
+  q->y = cr * sp * cy + sr * cp * sy;
+  q->z = cr * cp * sy - sr * sp * cy;
 }
 
-static double euler_to_quat(uint32_t x)
+/* the angles of q / |q|: the squared norm only where the formula needs
+ * a unit quaternion (the pitch's sine) */
+static NOINLINE void quat_to_euler_d(const dquat_t *q, deuler_t *e)
 {
-  double yaw = (double)(int32_t)x * 1.4629180792671596e-9;
-  double pitch =
-      (double)(int32_t)((x * 2654435761u) >> 2) * 1.4629180792671596e-9;
-  double roll = (double)(int32_t)(x * 40503u) * 1.4629180792671596e-9;
-  double cy = cos(yaw / 2), sy = sin(yaw / 2);
-  double cp = cos(pitch / 2), sp = sin(pitch / 2);
-  double cr = cos(roll / 2), sr = sin(roll / 2);
+  double ss = q->s * q->s, xx = q->x * q->x, yy = q->y * q->y, zz = q->z * q->z;
+  double sp = 2.0 * (q->s * q->y - q->z * q->x) / (ss + xx + yy + zz);
 
-  return (cr * cp * cy + sr * sp * sy) + (cr * cp * sy - sr * sp * cy);
+  e->yaw = atan2(2.0 * (q->s * q->z + q->x * q->y), ss + xx - yy - zz);
+  e->pitch = asin((sp > 1.0) ? 1.0 : ((sp < -1.0) ? -1.0 : sp));
+  e->roll = atan2(2.0 * (q->s * q->x + q->y * q->z), ss - xx - yy + zz);
 }
 
-static double quat_to_euler(uint32_t x)
-{
-  dquat q = dquat_of(x);
-  double n = sqrt(q.s * q.s + q.x * q.x + q.y * q.y + q.z * q.z);
-  double s = q.s / n, a = q.x / n, b = q.y / n, c = q.z / n;
-  double yaw = atan2(2 * (s * c + a * b), 1 - 2 * (b * b + c * c));
-  double sp = 2 * (s * b - c * a);
-  double pitch = asin(sp > 1 ? 1 : (sp < -1 ? -1 : sp));
-  double roll = atan2(2 * (s * a + b * c), 1 - 2 * (a * a + b * b));
+/* ---- geodesy: WGS-84 ---- */
 
-  return yaw + pitch + roll;
-}
+#define WGS84_A  6378137.0
+#define WGS84_F  (1.0 / 298.257223563)
+#define WGS84_E2 (WGS84_F * (2.0 - WGS84_F))
+#define WGS84_N  (WGS84_F / (2.0 - WGS84_F))
+#define UTM_K0   0.9996
+/* rectifying radius A = a / (1 + n) (1 + n^2/4 + n^4/64 + n^6/256) */
+#define WGS84_RECT                                                             \
+  (WGS84_A / (1.0 + WGS84_N) *                                                 \
+   (1.0 + WGS84_N * WGS84_N / 4.0 +                                            \
+    WGS84_N * WGS84_N * WGS84_N * WGS84_N / 64.0 +                             \
+    WGS84_N * WGS84_N * WGS84_N * WGS84_N * WGS84_N * WGS84_N / 256.0))
 
-static double angle(uint32_t x)
-{
-  return ((double)(x % 1000000u) / 1000000.0 - 0.5) * 6.283185307179586;
-}
+/* Krueger's series to 6th order in n for WGS-84 (Karney 2011, "Transverse
+ * Mercator with an accuracy of a few nanometers", eqs. 35-36) and the
+ * conformal latitude's (chi - phi, phi - chi), sin(2 j x) coefficients */
+static const double alpha[6] = {8.3773182062446896e-04, 7.6085277735810086e-07,
+                                1.1976455036033506e-09, 2.4291714473267945e-12,
+                                5.7107096829156490e-15, 1.3877787807814457e-17};
+static const double beta[6] = {8.3773216405794854e-04, 5.9058701522979318e-08,
+                               1.6734826718822760e-10, 2.1647961201409771e-13,
+                               3.7816971776294395e-16, 0.0};
+static const double chi_from_phi[6] = {
+    -3.3565546197974264e-03, 4.6945730271634456e-06,  -8.1944975457992619e-09,
+    1.5579967871381939e-11,  -3.1034202985225079e-14, 6.2450045135165055e-17};
+static const double phi_from_chi[7] = {
+    3.3565514691328326e-03, 6.5718731986283419e-06, 1.7646404112253711e-08,
+    5.3877541317248756e-11, 1.7639709137817761e-13, 6.0368376963992887e-16,
+    3.4694469519536142e-18};
 
-/* The transverse Mercator of core/geo/tm.c in double: conformal latitude
- * series, spherical TM, Krueger's 6 terms with their derivative for the
- * convergence and scale (WGS-84, k0 = 0.9996, standard 6-degree zone). */
-static double utm_forward(double lat, double lon)
+/* sum c[j] sin(2 (j+1) x) from sin 2x, cos 2x by Clenshaw's recurrence */
+static double sine_series(const double *c, int terms, double s2, double c2)
 {
-  static const double alpha[6] = {8.3773182062446983e-04,
-                                  7.608527773572307e-07,
-                                  1.197645503242e-09,
-                                  2.4291706e-12,
-                                  5.711e-15,
-                                  1.5e-17};
-  static const double chic[6] = {-3.3565514856e-03, 4.69462275e-06, -8.1946e-09,
-                                 1.558e-11,         -3.1e-14,       6.0e-17};
-  const double deg = 0.017453292519943295;
-  const double e2 = 6.69437999014e-3, e = 0.0818191908426215;
-  const double k0a = 6364902.166165086;
-  double zone = floor((lon + 180.0) / 6.0);
-  double lam = (lon - ((6.0 * zone) - 177.0)) * deg;
-  double phi = lat * deg;
-  double chi = phi, xip, etap, xi, eta, p = 1.0, q = 0.0, gamma, k;
+  double b1 = 0.0, b2 = 0.0;
   int j;
 
-  for (j = 0; j < 6; j++) {
-    chi += chic[j] * sin(2.0 * (j + 1) * phi);
-  }
-  xip = atan2(sin(chi), cos(chi) * cos(lam));
-  etap = atanh(cos(chi) * sin(lam));
-  xi = xip;
-  eta = etap;
-  for (j = 0; j < 6; j++) {
-    double m = 2.0 * (j + 1);
+  for (j = terms - 1; j >= 0; j--) {
+    double b0 = c[j] + 2.0 * c2 * b1 - b2;
 
-    xi += alpha[j] * sin(m * xip) * cosh(m * etap);
-    eta += alpha[j] * cos(m * xip) * sinh(m * etap);
-    p += m * alpha[j] * cos(m * xip) * cosh(m * etap);
-    q += m * alpha[j] * sin(m * xip) * sinh(m * etap);
+    b2 = b1;
+    b1 = b0;
   }
-  gamma = atan2(sin(chi) * sin(lam), cos(lam)) + atan2(q, p);
-  k = 0.99852 * sqrt(1.0 - (e2 * sin(phi) * sin(phi))) * cos(chi) / cos(phi) *
-      cosh(etap) * hypot(p, q);
-  (void)e;
-  return (k0a * eta) + (k0a * xi) + gamma + k;
+  return s2 * b1;
 }
 
-/* geodetic -> ECEF and Bowring's two steps back, as core/geo/ecef.c
- * does them, in double (WGS-84) */
-static double ecef_forward(double lat, double lon, double h)
+/* Krueger's sum over zeta = xi + i eta by Clenshaw's recurrence in
+ * complex arithmetic: sum c_j sin(2 j zeta) into (*dxi, *deta) and its
+ * derivative 1 + sum 2 j sign c_j cos(2 j zeta) into (*p, *q) = p - i q;
+ * sign is +1 forward (alpha), -1 reverse (beta) */
+static void krueger(const double *c, double sign, double xi, double eta,
+                    double *dxi, double *deta, double *p, double *q)
 {
-  const double a = 6378137.0, e2 = 6.69437999014e-3;
-  const double deg = 0.017453292519943295;
-  double sp = sin(lat * deg), cp = cos(lat * deg);
-  double n = a / sqrt(1.0 - (e2 * sp * sp));
+  double ex = exp(2.0 * eta), ch = 0.5 * (ex + 1.0 / ex),
+         sh = 0.5 * (ex - 1.0 / ex);
+  double s2 = sin(2.0 * xi), c2 = cos(2.0 * xi);
+  double ar = 2.0 * c2 * ch, ai = -2.0 * s2 * sh; /* 2 cos 2 zeta */
+  double yr0 = 0.0, yi0 = 0.0, yr1 = 0.0, yi1 = 0.0;
+  double zr0 = 0.0, zi0 = 0.0, zr1 = 0.0, zi1 = 0.0;
+  double sr = s2 * ch, si = c2 * sh; /* sin 2 zeta */
+  int j;
 
-  return ((n + h) * cp * cos(lon * deg)) + ((n + h) * cp * sin(lon * deg)) +
-         (((n * (1.0 - e2)) + h) * sp);
+  for (j = 6; j >= 1; j--) {
+    double cj = sign * c[j - 1];
+    double yr = ar * yr0 - ai * yi0 - yr1 + cj;
+    double yi = ar * yi0 + ai * yr0 - yi1;
+    double zr = ar * zr0 - ai * zi0 - zr1 + 2.0 * j * cj;
+    double zi = ar * zi0 + ai * zr0 - zi1;
+
+    yr1 = yr0;
+    yi1 = yi0;
+    yr0 = yr;
+    yi0 = yi;
+    zr1 = zr0;
+    zi1 = zi0;
+    zr0 = zr;
+    zi0 = zi;
+  }
+  *dxi = sr * yr0 - si * yi0;
+  *deta = sr * yi0 + si * yr0;
+  /* 1 + cos(2 zeta) b'_1 - b'_2 */
+  *p = 1.0 + 0.5 * (ar * zr0 - ai * zi0) - zr1;
+  *q = -(0.5 * (ar * zi0 + ai * zr0) - zi1);
 }
 
-static double ecef_reverse(uint32_t x)
+/* UTM zone of a point, with the Norway and Svalbard exceptions */
+static int utm_zone_d(double lat, double lon)
 {
-  const double a = 6378137.0, e2 = 6.69437999014e-3;
-  const double bova = 0.99664718933525254, e2a = e2 * a;
-  const double ep2b = e2 * a / 0.99664718933525254;
-  int64_t ex, ey, ez;
-  double x0, y0, z, p, u, v, r, c, s, h;
+  int zone = (int)floor((lon + 180.0) / 6.0) + 1;
+
+  if (zone > 60) {
+    zone = 1;
+  }
+  if ((lat >= 56.0) && (lat < 64.0) && (lon >= 3.0) && (lon < 12.0)) {
+    zone = 32;
+  }
+  if ((lat >= 72.0) && (lon >= 0.0) && (lon < 42.0)) {
+    zone = (lon < 9.0) ? 31 : (lon < 21.0) ? 33 : (lon < 33.0) ? 35 : 37;
+  }
+  return zone;
+}
+
+/* geographic (degrees) -> UTM in its standard zone, with convergence
+ * (degrees) and scale: the computation of drdc_geo_to_utm() (conformal
+ * latitude by its series, the sphere's xi', eta', Krueger's series) */
+static NOINLINE void utm_forward_d(double lat, double lon, dgrid_t *out)
+{
+  int zone = utm_zone_d(lat, lon);
+  double lam = (lon - (6.0 * zone - 183.0)) * DEG;
+  double phi = lat * DEG;
+  double sphi = sin(phi), cphi = cos(phi);
+  double chi = phi + sine_series(chi_from_phi, 6, 2.0 * sphi * cphi,
+                                 cphi * cphi - sphi * sphi);
+  double schi = sin(chi), cchi = cos(chi);
+  double slam = sin(lam), clam = cos(lam);
+  double xip = atan2(schi, cchi * clam);
+  double tanh_eta = cchi * slam;
+  double etap = 0.5 * log((1.0 + tanh_eta) / (1.0 - tanh_eta));
+  double dxi, deta, p, q;
+  double cosh_eta = 1.0 / sqrt(1.0 - tanh_eta * tanh_eta);
+
+  krueger(alpha, 1.0, xip, etap, &dxi, &deta, &p, &q);
+  out->zone = zone;
+  out->north = lat >= 0.0;
+  out->easting = 500000.0 + UTM_K0 * WGS84_RECT * (etap + deta);
+  out->northing = UTM_K0 * WGS84_RECT * (xip + dxi) + (lat < 0.0 ? 1e7 : 0.0);
+  out->convergence =
+      atan2(schi * slam * p + clam * q, clam * p - schi * slam * q) / DEG;
+  out->scale = UTM_K0 * WGS84_RECT / WGS84_A *
+               sqrt(1.0 - WGS84_E2 * sphi * sphi) * cchi / cphi * cosh_eta *
+               sqrt(p * p + q * q);
+}
+
+/* UTM -> geographic (degrees) with convergence and scale: the
+ * computation of drdc_geo_from_utm() (Krueger's beta series, the
+ * sphere's chi and lambda, the conformal latitude's inverse series) */
+static NOINLINE void utm_reverse_d(const dgrid_t *in, dgeodetic_t *out,
+                                   double *convergence, double *scale)
+{
+  double xi = (in->northing - (in->north ? 0.0 : 1e7)) / (UTM_K0 * WGS84_RECT);
+  double eta = (in->easting - 500000.0) / (UTM_K0 * WGS84_RECT);
+  double dxi, deta, p, q;
+  double xip, etap, sxip, cxip, shp, chp, chi, schi, cchi, lam, phi;
+
+  krueger(beta, -1.0, xi, eta, &dxi, &deta, &p, &q);
+  xip = xi + dxi;
+  etap = eta + deta;
+  sxip = sin(xip);
+  cxip = cos(xip);
+  {
+    double ex = exp(etap);
+
+    shp = 0.5 * (ex - 1.0 / ex);
+    chp = 0.5 * (ex + 1.0 / ex);
+  }
+  chi = asin(sxip / chp);
+  lam = atan2(shp, cxip);
+  schi = sin(chi);
+  cchi = cos(chi);
+  phi = chi + sine_series(phi_from_chi, 7, 2.0 * schi * cchi,
+                          cchi * cchi - schi * schi);
+  out->lat = phi / DEG;
+  out->lon = (6.0 * in->zone - 183.0) + lam / DEG;
+  out->height = 0.0;
+  /* the sphere's convergence plus the series' (1/derivative: p + i q) */
+  *convergence = (atan2(sxip * shp, cxip * chp) - atan2(q, p)) / DEG;
+  {
+    double sphi = sin(phi), cphi = cos(phi);
+
+    *scale = UTM_K0 * WGS84_RECT / WGS84_A *
+             sqrt(1.0 - WGS84_E2 * sphi * sphi) * cchi / cphi * chp /
+             sqrt(p * p + q * q);
+  }
+}
+
+static NOINLINE void ecef_forward_d(const dgeodetic_t *g, dvec3_t *out)
+{
+  double sp = sin(g->lat * DEG), cp = cos(g->lat * DEG);
+  double sl = sin(g->lon * DEG), cl = cos(g->lon * DEG);
+  double n = WGS84_A / sqrt(1.0 - WGS84_E2 * sp * sp);
+
+  out->x = (n + g->height) * cp * cl;
+  out->y = (n + g->height) * cp * sl;
+  out->z = (n * (1.0 - WGS84_E2) + g->height) * sp;
+}
+
+/* ECEF -> geodetic by Bowring's iteration, two steps, as
+ * drdc_geo_from_ecef() */
+static NOINLINE void ecef_reverse_d(const dvec3_t *e, dgeodetic_t *out)
+{
+  const double bova = 1.0 - WGS84_F;
+  const double e2a = WGS84_E2 * WGS84_A;
+  const double ep2b = WGS84_E2 * WGS84_A / bova;
+  double p = sqrt(e->x * e->x + e->y * e->y);
+  double u = p * bova, v = e->z, r, c, s;
   int i;
 
-  bench_ecef_point(x, &ex, &ey, &ez);
-  x0 = (double)ex / 65536.0;
-  y0 = (double)ey / 65536.0;
-  z = (double)ez / 65536.0;
-  p = hypot(x0, y0);
-  u = p * bova;
-  v = z;
   for (i = 0; i < 2; i++) {
-    r = hypot(u, v);
+    r = sqrt(u * u + v * v);
     c = u / r;
     s = v / r;
     u = p - (e2a * c * c * c);
-    v = z + (ep2b * s * s * s);
+    v = e->z + (ep2b * s * s * s);
     if (i == 0) {
       v = v * bova;
     }
   }
-  r = hypot(u, v);
-  h = (p * u / r) + (z * v / r) - (a * sqrt(1.0 - (e2 * v * v / (r * r))));
-  return atan2(v, u) + atan2(y0, x0) + h;
+  r = sqrt(u * u + v * v);
+  out->lat = atan2(v, u) / DEG;
+  out->lon = atan2(e->y, e->x) / DEG;
+  out->height = (p * u / r) + (e->z * v / r) -
+                WGS84_A * sqrt(1.0 - (WGS84_E2 * v * v / (r * r)));
 }
 
-BENCH_LOOP_DOUBLE(run_days_from_civil,
-                  days_from_civil(1900.0 + (double)(x % 200u),
-                                  1.0 + (double)((x >> 8) % 12u),
-                                  1.0 + (double)((x >> 16) % 28u)))
-BENCH_LOOP_DOUBLE(run_civil_from_days,
-                  civil_from_days((double)(x % 73000u) - 25000.0))
-BENCH_LOOP_DOUBLE(run_utc_to_gps,
-                  utc_to_gps(631152000.0 + (double)(x % 1136073600u) +
-                             (double)((x >> 3) % 1000000000u) * 1e-9))
-BENCH_LOOP_DOUBLE(run_gps_to_utc, gps_to_utc(522.0 + (double)(x % 1900u),
-                                             (double)((x >> 11) % 604800u)))
-BENCH_LOOP_DOUBLE(run_quat_mul, quat_mul(x))
-BENCH_LOOP_DOUBLE(run_quat_rotate, quat_rotate(x))
-BENCH_LOOP_DOUBLE(run_euler_to_quat, euler_to_quat(x))
-BENCH_LOOP_DOUBLE(run_quat_to_euler, quat_to_euler(x))
-BENCH_LOOP_DOUBLE(run_sin, sin(angle(x)))
-BENCH_LOOP_DOUBLE(run_cos, cos(angle(x)))
-BENCH_LOOP_DOUBLE(run_atan2, atan2((double)(x & 0xFFFFu) - 32768.0,
-                                   (double)(x >> 16) - 32768.0))
-BENCH_LOOP_DOUBLE(run_sqrt, sqrt((double)(x >> 1)))
-BENCH_LOOP_DOUBLE(run_mul,
-                  (double)(int32_t)x *(double)(int32_t)(x >> 7) / 65536.0)
-BENCH_LOOP_DOUBLE(
-    run_utm_forward,
-    utm_forward(((double)(x & 0xFFFFu) - 32768.0) * (8.8e9 / 3.6e12),
-                ((double)(x >> 16) - 32768.0) * (19.7e9 / 3.6e12)))
-BENCH_LOOP_DOUBLE(
-    run_ecef_forward,
-    ecef_forward(((double)(x & 0xFFFFu) - 32768.0) * (9.88e9 / 3.6e12),
-                 ((double)((x >> 16) & 0x7FFFu) - 16384.0) * (39.5e9 / 3.6e12),
-                 (double)(x >> 31) * 1e6 - 1e4 +
-                     (double)((x >> 8) & 0xFFu) * 40.0))
-BENCH_LOOP_DOUBLE(run_ecef_reverse, ecef_reverse(x))
+/* ---- the timed calls ---- */
+
+static uint32_t days_from_civil_case(uint32_t k)
+{
+  return fold(days_from_civil_d(dcivil[k]));
+}
+
+static uint32_t civil_from_days_case(uint32_t k)
+{
+  double ymd[3];
+
+  civil_from_days_d(ddays[k], ymd);
+  return fold(ymd[0]) ^ fold(ymd[1]) ^ fold(ymd[2]);
+}
+
+static uint32_t utc_to_gps_case(uint32_t k)
+{
+  dgps_t g;
+
+  utc_to_gps_d(dinstant[k], &g);
+  return fold(g.week) ^ fold(g.tow);
+}
+
+static uint32_t gps_to_utc_case(uint32_t k)
+{
+  return fold(gps_to_utc_d(&dgps[k]));
+}
+
+static uint32_t quat_mul_case(uint32_t k)
+{
+  dquat_t r;
+
+  quat_mul_d(&dqa[k], &dqb[k], &r);
+  return fold(r.s) ^ fold(r.x) ^ fold(r.y) ^ fold(r.z);
+}
+
+static uint32_t quat_rotate_case(uint32_t k)
+{
+  dvec3_t r;
+
+  quat_rotate_d(&dqa[k], &dvec[k], &r);
+  return fold(r.x) ^ fold(r.y) ^ fold(r.z);
+}
+
+static uint32_t euler_to_quat_case(uint32_t k)
+{
+  dquat_t q;
+
+  euler_to_quat_d(&deuler[k], &q);
+  return fold(q.s) ^ fold(q.x) ^ fold(q.y) ^ fold(q.z);
+}
+
+static uint32_t quat_to_euler_case(uint32_t k)
+{
+  deuler_t e;
+
+  quat_to_euler_d(&dqa[k], &e);
+  return fold(e.yaw) ^ fold(e.pitch) ^ fold(e.roll);
+}
+
+static uint32_t utm_forward_case(uint32_t k)
+{
+  dgrid_t g;
+
+  utm_forward_d(dutm_lat[k], dutm_lon[k], &g);
+  return fold(g.easting) ^ fold(g.northing) ^ fold(g.convergence) ^
+         fold(g.scale);
+}
+
+static uint32_t utm_reverse_case(uint32_t k)
+{
+  dgeodetic_t g;
+  double convergence, scale;
+
+  utm_reverse_d(&dutm[k], &g, &convergence, &scale);
+  return fold(g.lat) ^ fold(g.lon) ^ fold(convergence) ^ fold(scale);
+}
+
+static uint32_t ecef_forward_case(uint32_t k)
+{
+  dvec3_t e;
+
+  ecef_forward_d(&dgeodetic[k], &e);
+  return fold(e.x) ^ fold(e.y) ^ fold(e.z);
+}
+
+static uint32_t ecef_reverse_case(uint32_t k)
+{
+  dgeodetic_t g;
+
+  ecef_reverse_d(&decef[k], &g);
+  return fold(g.lat) ^ fold(g.lon) ^ fold(g.height);
+}
+
+BENCH_LOOP(run_days_from_civil, days_from_civil_case(k))
+BENCH_LOOP(run_civil_from_days, civil_from_days_case(k))
+BENCH_LOOP(run_utc_to_gps, utc_to_gps_case(k))
+BENCH_LOOP(run_gps_to_utc, gps_to_utc_case(k))
+BENCH_LOOP(run_quat_mul, quat_mul_case(k))
+BENCH_LOOP(run_quat_rotate, quat_rotate_case(k))
+BENCH_LOOP(run_euler_to_quat, euler_to_quat_case(k))
+BENCH_LOOP(run_quat_to_euler, quat_to_euler_case(k))
+BENCH_LOOP(run_utm_forward, utm_forward_case(k))
+BENCH_LOOP(run_utm_reverse, utm_reverse_case(k))
+BENCH_LOOP(run_ecef_forward, ecef_forward_case(k))
+BENCH_LOOP(run_ecef_reverse, ecef_reverse_case(k))
 
 const bench_case_t bench_cases_double[] = {
-    {"days_from_civil", "double", "run_days_from_civil", run_days_from_civil},
-    {"civil_from_days", "double", "run_civil_from_days", run_civil_from_days},
-    {"utc_to_gps", "double", "run_utc_to_gps", run_utc_to_gps},
-    {"gps_to_utc", "double", "run_gps_to_utc", run_gps_to_utc},
-    {"quat_mul", "double", "run_quat_mul", run_quat_mul},
-    {"quat_rotate", "double", "run_quat_rotate", run_quat_rotate},
-    {"euler_to_quat", "double", "run_euler_to_quat", run_euler_to_quat},
-    {"quat_to_euler", "double", "run_quat_to_euler", run_quat_to_euler},
-    {"sin", "double", "run_sin", run_sin},
-    {"cos", "double", "run_cos", run_cos},
-    {"atan2", "double", "run_atan2", run_atan2},
-    {"sqrt", "double", "run_sqrt", run_sqrt},
-    {"mul_q15_16", "double", "run_mul", run_mul},
-    {"utm_forward", "double", "run_utm_forward", run_utm_forward},
-    {"ecef_forward", "double", "run_ecef_forward", run_ecef_forward},
-    {"ecef_reverse", "double", "run_ecef_reverse", run_ecef_reverse},
+    {"days_from_civil", "double", "days_from_civil_d", run_days_from_civil},
+    {"civil_from_days", "double", "civil_from_days_d", run_civil_from_days},
+    {"utc_to_gps", "double", "utc_to_gps_d", run_utc_to_gps},
+    {"gps_to_utc", "double", "gps_to_utc_d", run_gps_to_utc},
+    {"quat_mul", "double", "quat_mul_d", run_quat_mul},
+    {"quat_rotate", "double", "quat_rotate_d", run_quat_rotate},
+    {"euler_to_quat", "double", "euler_to_quat_d", run_euler_to_quat},
+    {"quat_to_euler", "double", "quat_to_euler_d", run_quat_to_euler},
+    {"utm_forward", "double", "utm_forward_d", run_utm_forward},
+    {"utm_reverse", "double", "utm_reverse_d", run_utm_reverse},
+    {"ecef_forward", "double", "ecef_forward_d", run_ecef_forward},
+    {"ecef_reverse", "double", "ecef_reverse_d", run_ecef_reverse},
     {0, 0, 0, 0},
 };
+
+static dquat_t dquat_of(const drdc_quat_t *q)
+{
+  dquat_t d;
+
+  d.s = q->s / TWO_POW_30;
+  d.x = q->x / TWO_POW_30;
+  d.y = q->y / TWO_POW_30;
+  d.z = q->z / TWO_POW_30;
+  return d;
+}
+
+/* a binary angle as radians in [-pi, pi) */
+static double radians_of(drdc_bam32_t a)
+{
+  return (double)(int32_t)a * (2.0 * PI / TWO_POW_32);
+}
+
+void bench_double_init(void)
+{
+  uint32_t k;
+
+  for (k = 0u; k < BENCH_INPUTS; k++) {
+    dqa[k] = dquat_of(&bench_qa[k]);
+    dqb[k] = dquat_of(&bench_qb[k]);
+    dvec[k].x = bench_vec[k].x / TWO_POW_16;
+    dvec[k].y = bench_vec[k].y / TWO_POW_16;
+    dvec[k].z = bench_vec[k].z / TWO_POW_16;
+    deuler[k].yaw = radians_of(bench_euler[k].yaw);
+    deuler[k].pitch = radians_of(bench_euler[k].pitch);
+    deuler[k].roll = radians_of(bench_euler[k].roll);
+    dutm_lat[k] = (double)bench_utm_lat[k] / NAS_PER_DEGREE;
+    dutm_lon[k] = (double)bench_utm_lon[k] / NAS_PER_DEGREE;
+    dutm[k].zone = bench_utm[k].zone;
+    dutm[k].north = bench_utm[k].north ? 1 : 0;
+    dutm[k].easting = (double)bench_utm[k].easting / TWO_POW_16;
+    dutm[k].northing = (double)bench_utm[k].northing / TWO_POW_16;
+    dgeodetic[k].lat = (double)bench_geodetic[k].lat / NAS_PER_DEGREE;
+    dgeodetic[k].lon = (double)bench_geodetic[k].lon / NAS_PER_DEGREE;
+    dgeodetic[k].height = (double)bench_geodetic[k].height / TWO_POW_16;
+    decef[k].x = (double)bench_ecef[k].x / TWO_POW_16;
+    decef[k].y = (double)bench_ecef[k].y / TWO_POW_16;
+    decef[k].z = (double)bench_ecef[k].z / TWO_POW_16;
+    dinstant[k] = (double)bench_instant[k].sec + bench_instant[k].nsec * 1e-9;
+    dgps[k].week = bench_gps[k].week;
+    dgps[k].tow = bench_gps[k].tow;
+    dcivil[k][0] = bench_civil[k].year;
+    dcivil[k][1] = bench_civil[k].month;
+    dcivil[k][2] = bench_civil[k].day;
+    ddays[k] = bench_days[k];
+  }
+}
+
+/* ---- the check of every baseline against the library ---- */
+
+/* The worst |library - baseline| of one output over the inputs, in
+ * `unit` (an integer scale: thousandths of an LSB, nanometres, ...),
+ * against the library's documented accuracy plus the baseline's own
+ * rounding, in the same unit. */
+typedef struct check {
+  const char *name;
+  const char *unit;
+  double limit;
+  double worst;
+} check_t;
+
+static void note(check_t *c, double diff)
+{
+  double d = fabs(diff);
+
+  if (!(d <= c->worst)) { /* NaN counts as the worst */
+    c->worst = isnan(d) ? 1e300 : d;
+  }
+}
+
+static void report(const check_t *c)
+{
+  int ok = c->worst <= c->limit;
+
+  bsp_puts("BENCH-CHECK ");
+  bsp_puts(c->name);
+  bsp_puts(" worst=");
+  console_put_u64((uint64_t)(c->worst < 1e18 ? c->worst + 0.5 : 1e18));
+  bsp_puts(" limit=");
+  console_put_u64((uint64_t)(c->limit + 0.5));
+  bsp_puts(" unit=");
+  bsp_puts(c->unit);
+  bsp_puts(ok ? " ok\n" : " FAIL\n");
+}
+
+/* difference of two angles in binary-angle units, wrapped to a turn */
+static double bam_diff(drdc_bam32_t lib, double radians)
+{
+  double d = (double)lib - radians * (TWO_POW_32 / (2.0 * PI));
+
+  d = fmod(d, TWO_POW_32);
+  if (d > TWO_POW_32 / 2.0) {
+    d -= TWO_POW_32;
+  } else if (d < -TWO_POW_32 / 2.0) {
+    d += TWO_POW_32;
+  }
+  return d;
+}
+
+static double quat_diff(const drdc_quat_t *lib, const dquat_t *d)
+{
+  double plus = 0.0, minus = 0.0;
+  double l[4] = {lib->s, lib->x, lib->y, lib->z};
+  double b[4] = {d->s * TWO_POW_30, d->x * TWO_POW_30, d->y * TWO_POW_30,
+                 d->z * TWO_POW_30};
+  int i;
+
+  /* q and -q are the same rotation */
+  for (i = 0; i < 4; i++) {
+    plus = fmax(plus, fabs(l[i] - b[i]));
+    minus = fmax(minus, fabs(l[i] + b[i]));
+  }
+  return fmin(plus, minus);
+}
+
+void bench_check_baselines(void)
+{
+  /* limits: the header's accuracy of each function plus a margin for the
+   * baseline's own rounding, stated beside each */
+  check_t mul = {"quat_mul", "milli-LSB(Q1.30)", 500.0 + 1.0, 0.0};
+  check_t rot = {"quat_rotate", "milli-LSB(Q15.16)", 500.0 + 1.0, 0.0};
+  check_t e2q = {"euler_to_quat", "milli-LSB(Q1.30)", 2000.0 + 1.0, 0.0};
+  check_t q2e = {"quat_to_euler", "milli-BAM", 1125.0 + 1.0, 0.0};
+  check_t utm_en = {"utm_forward.xy", "nm", 15259.0 + 10.0, 0.0};
+  check_t utm_g = {"utm_forward.convergence", "milli-nas", 1000.0 + 10.0, 0.0};
+  check_t utm_k = {"utm_forward.scale", "1e-18", 1100.0 + 100.0, 0.0};
+  check_t rev_ll = {"utm_reverse.latlon", "milli-nas", 1000.0 + 10.0, 0.0};
+  check_t rev_g = {"utm_reverse.convergence", "milli-nas", 2079000.0 + 10.0,
+                   0.0};
+  check_t rev_k = {"utm_reverse.scale", "1e-18", 87000.0 + 100.0, 0.0};
+  check_t ecef_f = {"ecef_forward", "nm", 15259.0 + 10.0, 0.0};
+  check_t ecef_ll = {"ecef_reverse.latlon", "milli-nas", 1000.0 + 10.0, 0.0};
+  check_t ecef_h = {"ecef_reverse.height", "nm", 15259.0 + 10.0, 0.0};
+  /* a double holds a 2026 instant to 0.24 us */
+  check_t time = {"time", "us", 1.0, 0.0};
+  uint32_t k;
+
+  for (k = 0u; k < BENCH_INPUTS; k++) {
+    drdc_quat_t q = {0, 0, 0, 0};
+    drdc_vec3_q15_16_t v = {0, 0, 0};
+    drdc_euler_t e = {0u, 0u, 0u};
+    drdc_geo_utm_t u = {0, false, 0, 0};
+    drdc_nas_t g = 0, lat = 0, lon = 0;
+    drdc_q5_58_t scale = 0;
+    drdc_vec3_q47_16_t x = {0, 0, 0};
+    drdc_geo_point_t p = {0, 0, 0};
+    drdc_time_gps_t gps = {0, 0, 0};
+    drdc_time_t t = {0, 0};
+    int32_t days = 0, ymd[3] = {0, 0, 0};
+    dquat_t dq;
+    dvec3_t dv;
+    deuler_t de;
+    dgrid_t dg;
+    dgeodetic_t dgeo;
+    dgps_t dgp;
+    double dconv, dscale, dymd[3];
+    drdc_status_t status;
+
+    (void)drdc_quat_mul(&bench_qa[k], &bench_qb[k], &q);
+    quat_mul_d(&dqa[k], &dqb[k], &dq);
+    note(&mul, 1000.0 * quat_diff(&q, &dq));
+
+    (void)drdc_quat_rotate_q15_16(&bench_qa[k], &bench_vec[k], &v);
+    quat_rotate_d(&dqa[k], &dvec[k], &dv);
+    note(&rot, 1000.0 * (v.x - dv.x * TWO_POW_16));
+    note(&rot, 1000.0 * (v.y - dv.y * TWO_POW_16));
+    note(&rot, 1000.0 * (v.z - dv.z * TWO_POW_16));
+
+    (void)drdc_quat_from_euler(&bench_euler[k], &q);
+    euler_to_quat_d(&deuler[k], &dq);
+    note(&e2q, 1000.0 * quat_diff(&q, &dq));
+
+    (void)drdc_euler_from_quat(&bench_qa[k], &e);
+    quat_to_euler_d(&dqa[k], &de);
+    /* away from gimbal lock, where yaw and roll are ill-conditioned */
+    if (cos(de.pitch) > 1e-3) {
+      note(&q2e, 1000.0 * bam_diff(e.yaw, de.yaw));
+      note(&q2e, 1000.0 * bam_diff(e.roll, de.roll));
+    }
+    note(&q2e, 1000.0 * bam_diff(e.pitch, de.pitch));
+
+    status = drdc_geo_to_utm(bench_utm_lat[k], bench_utm_lon[k],
+                             DRDC_GEO_ZONE_STANDARD, &u, &g, &scale);
+    utm_forward_d(dutm_lat[k], dutm_lon[k], &dg);
+    if ((status != DRDC_OK) || (u.zone != dg.zone) ||
+        ((u.north ? 1 : 0) != dg.north)) {
+      note(&utm_en, 1e300);
+    }
+    note(&utm_en, 1e9 * ((double)u.easting / TWO_POW_16 - dg.easting));
+    note(&utm_en, 1e9 * ((double)u.northing / TWO_POW_16 - dg.northing));
+    note(&utm_g, 1000.0 * ((double)g - dg.convergence * NAS_PER_DEGREE));
+    note(&utm_k, 1e18 * ((double)scale / TWO_POW_58 - dg.scale));
+
+    if (drdc_geo_from_utm(&bench_utm[k], &lat, &lon, &g, &scale) != DRDC_OK) {
+      note(&rev_ll, 1e300);
+    }
+    utm_reverse_d(&dutm[k], &dgeo, &dconv, &dscale);
+    note(&rev_ll, 1000.0 * ((double)lat - dgeo.lat * NAS_PER_DEGREE));
+    /* the same meridian: 360 degrees apart at zone 1's west edge */
+    note(&rev_ll, 1000.0 * remainder((double)lon - dgeo.lon * NAS_PER_DEGREE,
+                                     360.0 * NAS_PER_DEGREE));
+    note(&rev_g, 1000.0 * ((double)g - dconv * NAS_PER_DEGREE));
+    note(&rev_k, 1e18 * ((double)scale / TWO_POW_58 - dscale));
+
+    if (drdc_geo_to_ecef(&bench_geodetic[k], &x) != DRDC_OK) {
+      note(&ecef_f, 1e300);
+    }
+    ecef_forward_d(&dgeodetic[k], &dv);
+    note(&ecef_f, 1e9 * ((double)x.x / TWO_POW_16 - dv.x));
+    note(&ecef_f, 1e9 * ((double)x.y / TWO_POW_16 - dv.y));
+    note(&ecef_f, 1e9 * ((double)x.z / TWO_POW_16 - dv.z));
+
+    if (drdc_geo_from_ecef(&bench_ecef[k], &p) != DRDC_OK) {
+      note(&ecef_ll, 1e300);
+    }
+    ecef_reverse_d(&decef[k], &dgeo);
+    note(&ecef_ll, 1000.0 * ((double)p.lat - dgeo.lat * NAS_PER_DEGREE));
+    note(&ecef_ll, 1000.0 * ((double)p.lon - dgeo.lon * NAS_PER_DEGREE));
+    note(&ecef_h, 1e9 * ((double)p.height / TWO_POW_16 - dgeo.height));
+
+    /* time: whole numbers, equal or not */
+    (void)drdc_time_utc_to_gps(NULL, &bench_instant[k], &gps);
+    utc_to_gps_d(dinstant[k], &dgp);
+    note(&time, 1e6 * ((gps.week - dgp.week) * WEEK + gps.tow +
+                       gps.nsec * 1e-9 - dgp.tow));
+    (void)drdc_time_gps_to_utc(NULL, &bench_gps[k], &t);
+    note(&time, 1e6 * ((double)t.sec + t.nsec * 1e-9 - gps_to_utc_d(&dgps[k])));
+    /* whole days: any difference is a full day, 8.64e10 us */
+    (void)drdc_time_days_from_civil(bench_civil[k].year, bench_civil[k].month,
+                                    bench_civil[k].day, &days);
+    note(&time, 8.64e10 * (days - days_from_civil_d(dcivil[k])));
+    (void)drdc_time_civil_from_days(bench_days[k], &ymd[0], &ymd[1], &ymd[2]);
+    civil_from_days_d(ddays[k], dymd);
+    note(&time, 8.64e10 * ((ymd[0] != dymd[0]) || (ymd[1] != dymd[1]) ||
+                           (ymd[2] != dymd[2])));
+  }
+  report(&mul);
+  report(&rot);
+  report(&e2q);
+  report(&q2e);
+  report(&utm_en);
+  report(&utm_g);
+  report(&utm_k);
+  report(&rev_ll);
+  report(&rev_g);
+  report(&rev_k);
+  report(&ecef_f);
+  report(&ecef_ll);
+  report(&ecef_h);
+  report(&time);
+}
 #else
 const bench_case_t bench_cases_double[] = {
     {0, 0, 0, 0},
 };
+
+void bench_double_init(void)
+{
+}
+
+void bench_check_baselines(void)
+{
+}
 #endif

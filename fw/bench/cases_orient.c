@@ -7,27 +7,13 @@
  */
 #include <drdc/orient.h>
 
-#include "bench.h"
+#include "operands.h"
 
-/* unit-scale quaternion parts from an input word (|part| < 2^29) */
-static drdc_quat_t quat_of(uint32_t x)
+static uint32_t quat_mul(uint32_t k)
 {
-  drdc_quat_t q;
-
-  q.s = (int32_t)(x >> 3);
-  q.x = (int32_t)((x << 7) >> 3) - (INT32_C(1) << 28);
-  q.y = (int32_t)((x << 13) >> 3) - (INT32_C(1) << 28);
-  q.z = (int32_t)((x << 21) >> 3) - (INT32_C(1) << 28);
-  return q;
-}
-
-static uint32_t quat_mul(uint32_t x)
-{
-  drdc_quat_t a = quat_of(x);
-  drdc_quat_t b = quat_of(x * 2654435761u);
   drdc_quat_t r = {0, 0, 0, 0};
 
-  (void)drdc_quat_mul(&a, &b, &r);
+  (void)drdc_quat_mul(&bench_qa[k], &bench_qb[k], &r);
   return (uint32_t)(r.s ^ r.x ^ r.y ^ r.z);
 }
 
@@ -54,55 +40,43 @@ quat_mul_hand(const drdc_quat_t *a, const drdc_quat_t *b, drdc_quat_t *out)
   out->z = (int32_t)(k >> 30);
 }
 
-static uint32_t quat_mul_by_hand(uint32_t x)
+static uint32_t quat_mul_by_hand(uint32_t k)
 {
-  drdc_quat_t a = quat_of(x);
-  drdc_quat_t b = quat_of(x * 2654435761u);
   drdc_quat_t r = {0, 0, 0, 0};
 
-  quat_mul_hand(&a, &b, &r);
+  quat_mul_hand(&bench_qa[k], &bench_qb[k], &r);
   return (uint32_t)(r.s ^ r.x ^ r.y ^ r.z);
 }
 
-static uint32_t quat_rotate(uint32_t x)
+static uint32_t quat_rotate(uint32_t k)
 {
-  drdc_quat_t q = quat_of(x);
-  drdc_vec3_q15_16_t v;
   drdc_vec3_q15_16_t r = {0, 0, 0};
 
-  v.x = (int32_t)(x & 0xFFFFFu);
-  v.y = (int32_t)(x >> 12);
-  v.z = -(int32_t)(x & 0xFFFFu);
-  (void)drdc_quat_rotate_q15_16(&q, &v, &r);
+  (void)drdc_quat_rotate_q15_16(&bench_qa[k], &bench_vec[k], &r);
   return (uint32_t)(r.x ^ r.y ^ r.z);
 }
 
-static uint32_t euler_to_quat(uint32_t x)
+static uint32_t euler_to_quat(uint32_t k)
 {
-  drdc_euler_t e;
   drdc_quat_t q = {0, 0, 0, 0};
 
-  e.yaw = x;
-  e.pitch = (x * 2654435761u) >> 2;
-  e.roll = x * 40503u;
-  (void)drdc_quat_from_euler(&e, &q);
-  return (uint32_t)(q.s ^ q.z);
+  (void)drdc_quat_from_euler(&bench_euler[k], &q);
+  return (uint32_t)(q.s ^ q.x ^ q.y ^ q.z);
 }
 
-static uint32_t quat_to_euler(uint32_t x)
+static uint32_t quat_to_euler(uint32_t k)
 {
-  drdc_quat_t q = quat_of(x);
   drdc_euler_t e = {0u, 0u, 0u};
 
-  (void)drdc_euler_from_quat(&q, &e);
+  (void)drdc_euler_from_quat(&bench_qa[k], &e);
   return e.yaw ^ e.pitch ^ e.roll;
 }
 
-BENCH_LOOP(run_quat_mul, quat_mul(x))
-BENCH_LOOP(run_quat_mul_by_hand, quat_mul_by_hand(x))
-BENCH_LOOP(run_quat_rotate, quat_rotate(x))
-BENCH_LOOP(run_euler_to_quat, euler_to_quat(x))
-BENCH_LOOP(run_quat_to_euler, quat_to_euler(x))
+BENCH_LOOP(run_quat_mul, quat_mul(k))
+BENCH_LOOP(run_quat_mul_by_hand, quat_mul_by_hand(k))
+BENCH_LOOP(run_quat_rotate, quat_rotate(k))
+BENCH_LOOP(run_euler_to_quat, euler_to_quat(k))
+BENCH_LOOP(run_quat_to_euler, quat_to_euler(k))
 
 const bench_case_t bench_cases_orient[] = {
     {"quat_mul", "drdc", "drdc_quat_mul", run_quat_mul},

@@ -6,6 +6,7 @@
  *        shift=0) turns them into instructions per call and the report.
  */
 #include "bench.h"
+#include "operands.h"
 #include "drdc_board.h"
 #include "console.h"
 
@@ -37,7 +38,7 @@ static uint32_t elapsed(uint32_t start)
 }
 
 /* The empty loop: measured like a case and subtracted from every case. */
-BENCH_LOOP(loop_overhead, x)
+BENCH_LOOP(loop_overhead, k)
 
 static const bench_case_t overhead = {"loop", "overhead", "-", loop_overhead};
 
@@ -76,6 +77,8 @@ int main(void)
   uint32_t ticks;
 
   bench_inputs_init();
+  bench_operands_init();
+  bench_double_init();
   bsp_ticks_start();
   bsp_puts("BENCH-TARGET ");
   bsp_puts(bsp_name);
@@ -95,6 +98,7 @@ int main(void)
   console_put_u64(elapsed(start) - ticks);
   bsp_putc('\n');
 
+  bench_check_baselines();
   time_case(&overhead);
   time_table(bench_cases_fixed);
   time_table(bench_cases_orient);
