@@ -19,10 +19,10 @@ static uint32_t quat_mul(uint32_t k)
 
 /* The floor: the product as an engineer writes it by hand, behind the
  * same interface as drdc_quat_mul() (operands and result through
- * pointers, not inlined into the loop, so both pay the same call and
- * memory round trip): the 16 products accumulated in int64 and shifted
- * back, truncating, without checks or rounding. */
-static __attribute__((noinline)) void
+ * pointers, not inlined into the loop nor specialised to its call site,
+ * so both pay the same call and memory round trip): the 16 products accumulated
+ * in int64 and shifted back, truncating, without checks or rounding. */
+static __attribute__((noipa)) void
 quat_mul_hand(const drdc_quat_t *a, const drdc_quat_t *b, drdc_quat_t *out)
 {
   int64_t s = ((int64_t)a->s * b->s) - ((int64_t)a->x * b->x) -
