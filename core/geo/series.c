@@ -21,6 +21,32 @@ static inline int64_t series_mul(int64_t a, int64_t b)
   return drdc_fx_mul_q5_58_unchecked(a, b);
 }
 
+/* Where a shorter series is enough: the first n terms serve |x| up to
+ * the bound whose square is x2_max, the first omitted term there below
+ * 2^-68 (0.001 LSB), as at the end of each function's domain. Rows by
+ * rising bound; the last one is the whole domain. Dropping a term that
+ * small leaves the same error bound: the products' roundings dominate. */
+typedef struct series_cut {
+  int64_t x2_max; /* bound^2, Q5.58 */
+  unsigned terms;
+} series_cut_t;
+
+/* bound^2 in Q5.58 for the bounds 0.04, 0.08, 0.16 and 0.25 */
+#define X2_004 INT64_C(461168601842739)
+#define X2_008 INT64_C(1844674407370955)
+#define X2_016 INT64_C(7378697629483821)
+#define X2_025 INT64_C(18014398509481984)
+
+static unsigned terms_for(const series_cut_t *cuts, int64_t x2)
+{
+  unsigned row = 0u;
+
+  while (x2 > cuts[row].x2_max) {
+    row++;
+  }
+  return cuts[row].terms;
+}
+
 /* horner(coef, n, x) = coef[0] + x (coef[1] + x (... + x coef[n-1])),
  * n >= 1: the one loop of the Taylor series below. */
 static int64_t horner(const int64_t *coef, unsigned n, int64_t x)
@@ -49,7 +75,15 @@ int64_t drdc__geo_atanh_small(int64_t t)
       GEO_Q58_RECIP(25), GEO_Q58_RECIP(27), GEO_Q58_RECIP(29),
       GEO_Q58_RECIP(31), GEO_Q58_RECIP(33), GEO_Q58_RECIP(35),
       GEO_Q58_RECIP(37)};
-  return drdc__geo_mul(horner(coef, 19u, drdc__geo_mul(t, t)), t);
+  /* t^(2n+1) / (2n+1) < 2^-68 */
+  static const series_cut_t cut[] = {{X2_004, 7u},
+                                     {X2_008, 9u},
+                                     {X2_016, 12u},
+                                     {X2_025, 16u},
+                                     {INT64_MAX, 19u}};
+  int64_t t2 = drdc__geo_mul(t, t);
+
+  return drdc__geo_mul(horner(coef, terms_for(cut, t2), t2), t);
 }
 
 /* cosh(x) = sum x^(2k) / (2k)!, k <= 8, by Horner in x^2, for |x| <=
@@ -65,7 +99,12 @@ int64_t drdc__geo_cosh_small(int64_t x)
                                   GEO_Q58_RECIP(INT64_C(479001600)),
                                   GEO_Q58_RECIP(INT64_C(87178291200)),
                                   GEO_Q58_RECIP(INT64_C(20922789888000))};
-  return horner(coef, 9u, drdc__geo_mul(x, x));
+  /* x^(2n) / (2n)! < 2^-68 */
+  static const series_cut_t cut[] = {
+      {X2_004, 5u}, {X2_008, 6u}, {X2_016, 7u}, {INT64_MAX, 9u}};
+  int64_t x2 = drdc__geo_mul(x, x);
+
+  return horner(coef, terms_for(cut, x2), x2);
 }
 
 /* sinh(x) = x sum x^(2k) / (2k+1)!, k <= 8, by Horner in x^2, for |x| <=
@@ -81,8 +120,12 @@ int64_t drdc__geo_sinh_small(int64_t x)
                                   GEO_Q58_RECIP(INT64_C(6227020800)),
                                   GEO_Q58_RECIP(INT64_C(1307674368000)),
                                   GEO_Q58_RECIP(INT64_C(355687428096000))};
+  /* x^(2n+1) / (2n+1)! < 2^-68 */
+  static const series_cut_t cut[] = {
+      {X2_004, 5u}, {X2_008, 6u}, {X2_016, 7u}, {INT64_MAX, 9u}};
+  int64_t x2 = drdc__geo_mul(x, x);
 
-  return drdc__geo_mul(horner(coef, 9u, drdc__geo_mul(x, x)), x);
+  return drdc__geo_mul(horner(coef, terms_for(cut, x2), x2), x);
 }
 
 /* atan(q) = q sum (-1)^k q^(2k) / (2k+1), k <= 14, by Horner in q^2, for
@@ -96,7 +139,12 @@ int64_t drdc__geo_atan_small(int64_t q)
       GEO_Q58_RECIP(13),  -GEO_Q58_RECIP(15), GEO_Q58_RECIP(17),
       -GEO_Q58_RECIP(19), GEO_Q58_RECIP(21),  -GEO_Q58_RECIP(23),
       GEO_Q58_RECIP(25),  -GEO_Q58_RECIP(27), GEO_Q58_RECIP(29)};
-  return drdc__geo_mul(horner(coef, 15u, drdc__geo_mul(q, q)), q);
+  /* q^(2n+1) / (2n+1) < 2^-68 */
+  static const series_cut_t cut[] = {
+      {X2_004, 7u}, {X2_008, 9u}, {X2_016, 12u}, {INT64_MAX, 15u}};
+  int64_t q2 = drdc__geo_mul(q, q);
+
+  return drdc__geo_mul(horner(coef, terms_for(cut, q2), q2), q);
 }
 
 /* sqrt(1 + u) by its binomial series to u^9 for |u| <= 0.0125: the
