@@ -92,17 +92,18 @@ drdc_status_t drdc__geo_grid_forward(drdc_nas_t lat, drdc_nas_t lon,
 
 /** A grid position back on the ellipsoid. */
 typedef struct geo_grid_rev {
-  drdc_nas_t lat;       /**< latitude, nas */
-  drdc_nas_t lon;       /**< longitude, nas, [-180, 180] degrees */
-  geo_projected_t proj; /**< the forward projection of the point */
+  drdc_nas_t lat;      /**< latitude, nas */
+  drdc_nas_t lon;      /**< longitude, nas, [-180, 180] degrees */
+  geo_conv_scale_t cs; /**< convergence and scale at the point */
 } geo_grid_rev_t;
 
 /**
  * drdc_geo_from_utm() after its NULL checks: the zone (DRDC_E_ZONE),
  * easting and northing (DRDC_E_EASTING, DRDC_E_NORTHING) of *in checked,
  * then the reverse projection into out->lat and out->lon and, when
- * with_scale, the forward projection of that point into out->proj (for
- * its convergence and scale; else undefined). *out undefined on error.
+ * with_scale, the convergence and scale there into out->cs (UTM: from
+ * the reverse series' derivative; UPS: by the forward projection of the
+ * point; else undefined). *out undefined on error.
  */
 drdc_status_t drdc__geo_grid_reverse(const drdc_geo_utm_t *in, bool with_scale,
                                      geo_grid_rev_t *out);

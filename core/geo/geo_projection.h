@@ -49,9 +49,19 @@ typedef struct geo_phi_lam {
  */
 int drdc__geo_tm_forward(int64_t phi, int64_t lam, geo_projected_t *out);
 
+/** The meridian convergence (radians) and the point scale (k0
+ *  included) at a point of a projection. */
+typedef struct geo_conv_scale {
+  int64_t gamma; /**< meridian convergence, radians */
+  int64_t k;     /**< point scale factor */
+} geo_conv_scale_t;
+
 /** The inverse of drdc__geo_tm_forward(): xi and eta (|eta| <= 0.34) ->
- *  phi and lam (from the central meridian). */
-void drdc__geo_tm_reverse(int64_t xi, int64_t eta, geo_phi_lam_t *out);
+ *  phi and lam (from the central meridian) into *out and, unless cs is
+ *  NULL, the convergence and scale there into *cs, from the derivative
+ *  of the inverse series itself (as GeographicLib's reverse does). */
+void drdc__geo_tm_reverse(int64_t xi, int64_t eta, geo_phi_lam_t *out,
+                          geo_conv_scale_t *cs);
 
 /**
  * Universal Polar Stereographic (k0 = 0.994) of phi and lam (radians,
@@ -63,6 +73,11 @@ void drdc__geo_tm_reverse(int64_t xi, int64_t eta, geo_phi_lam_t *out);
  */
 int drdc__geo_ups_forward(bool north, int64_t phi, int64_t lam,
                           geo_projected_t *out);
+
+/** The convergence and scale of drdc__geo_ups_forward() at phi, lam (the
+ *  same bits), without the position: for a point the reverse found. */
+void drdc__geo_ups_conv_scale(bool north, int64_t phi, int64_t lam,
+                              geo_conv_scale_t *cs);
 
 /** The inverse of drdc__geo_ups_forward(): x, y from the pole in metres
  *  (Q47.16, |x|, |y| < 2 000 km) -> phi and lam. */

@@ -162,7 +162,7 @@ static drdc_status_t w_from_grid(const drdc_geo_utm_t *utm, const char *text,
   if (st != DRDC_OK) {
     return st;
   }
-  st = turn_about_down(q_grid, drdc__geo_nas_from_rad(g.proj.gamma), &out->q);
+  st = turn_about_down(q_grid, drdc__geo_nas_from_rad(g.cs.gamma), &out->q);
   if (st != DRDC_OK) {
     return st;
   }
@@ -205,7 +205,7 @@ static drdc_status_t we_from_grid(const drdc_geo_utm_t *utm, const char *text,
   out->latitude = g.lat;
   out->longitude = g.lon;
   out->e.yaw = e->yaw + drdc_pose_bam_from_convergence(
-                            drdc__geo_nas_from_rad(g.proj.gamma));
+                            drdc__geo_nas_from_rad(g.cs.gamma));
   out->e.pitch = e->pitch;
   out->e.roll = e->roll;
   out->height = height;

@@ -24,6 +24,17 @@
  *  the UPS ranges end near chi = 65 degrees). */
 #define UPS_MIN_SIN_CHI (-GEO_ONE + (GEO_ONE / 10))
 
+/* k = (2 k0 / c) (cos chi / cos phi) sqrt(1 - e^2 sin^2 phi) / (1 + sin
+ * chi) on the north sheet, from sin phi and sin chi */
+static int64_t ups_scale(int64_t sphi, int64_t schi)
+{
+  int64_t k = drdc__geo_mul(GEO_UPS_2K0_OVER_C, drdc__geo_cos_ratio(sphi));
+
+  k = drdc__geo_mul(
+      k, geo_sqrt(GEO_ONE - drdc__geo_mul(GEO_E2, drdc__geo_mul(sphi, sphi))));
+  return geo_div(k, GEO_ONE + schi);
+}
+
 int drdc__geo_ups_forward(bool north, int64_t phi, int64_t lam,
                           geo_projected_t *out)
 {
@@ -35,14 +46,10 @@ int drdc__geo_ups_forward(bool north, int64_t phi, int64_t lam,
   int64_t cchi;
   int64_t slam;
   int64_t clam;
-  int64_t k;
   int64_t t;
 
   geo_sincos(p, &sphi, &cphi);
   chi = p + geo_chi_series(sphi, cphi);
-  k = drdc__geo_mul(GEO_UPS_2K0_OVER_C, drdc__geo_cos_ratio(sphi));
-  k = drdc__geo_mul(
-      k, geo_sqrt(GEO_ONE - drdc__geo_mul(GEO_E2, drdc__geo_mul(sphi, sphi))));
   geo_sincos(chi, &schi, &cchi);
   if (schi < UPS_MIN_SIN_CHI) {
     return 0;
@@ -53,8 +60,23 @@ int drdc__geo_ups_forward(bool north, int64_t phi, int64_t lam,
   out->x = drdc__geo_mul(t, slam);
   out->y = north ? -drdc__geo_mul(t, clam) : drdc__geo_mul(t, clam);
   out->gamma = north ? lam : -lam;
-  out->k = geo_div(k, GEO_ONE + schi);
+  out->k = ups_scale(sphi, schi);
   return 1;
+}
+
+void drdc__geo_ups_conv_scale(bool north, int64_t phi, int64_t lam,
+                              geo_conv_scale_t *cs)
+{
+  int64_t p = north ? phi : -phi;
+  int64_t sphi;
+  int64_t cphi;
+  int64_t schi;
+  int64_t cchi;
+
+  geo_sincos(p, &sphi, &cphi);
+  geo_sincos(p + geo_chi_series(sphi, cphi), &schi, &cchi);
+  cs->gamma = north ? lam : -lam;
+  cs->k = ups_scale(sphi, schi);
 }
 
 int64_t drdc__geo_ups_q36(int64_t a)

@@ -238,6 +238,9 @@ drdc_status_t drdc__geo_grid_reverse(const drdc_geo_utm_t *in, bool with_scale,
     drdc__geo_ups_reverse(north, e - GEO_UPS_FALSE_ORIGIN,
                           n - GEO_UPS_FALSE_ORIGIN, &g);
     lon = drdc__geo_nas_from_rad(g.lam);
+    if (with_scale) {
+      drdc__geo_ups_conv_scale(north, g.phi, g.lam, &out->cs);
+    }
   } else {
     if ((e < GEO_UTM_E_MIN) || (e > GEO_UTM_E_MAX)) {
       return DRDC_E_EASTING;
@@ -248,17 +251,13 @@ drdc_status_t drdc__geo_grid_reverse(const drdc_geo_utm_t *in, bool with_scale,
     }
     drdc__geo_tm_reverse(
         angle_from_metres(north ? n : (n - GEO_UTM_FALSE_NORTHING_SOUTH)),
-        angle_from_metres(e - GEO_UTM_FALSE_EASTING), &g);
+        angle_from_metres(e - GEO_UTM_FALSE_EASTING), &g,
+        with_scale ? &out->cs : NULL);
     lon = geo_lon_normalize(geo_central_meridian(in->zone) +
                             drdc__geo_nas_from_rad(g.lam));
   }
   out->lat = drdc__geo_nas_from_rad(g.phi);
   out->lon = lon;
-  if (with_scale) {
-    /* within the checked ranges the forward cannot fail: UTM has |lam| <
-     * 30 degrees, UPS sin chi > 0.5 */
-    (void)project(in->zone, north, g.phi, g.lam, &out->proj);
-  }
   return DRDC_OK;
 }
 
@@ -279,10 +278,10 @@ drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
   *lat = g.lat;
   *lon = g.lon;
   if (convergence != NULL) {
-    *convergence = drdc__geo_nas_from_rad(g.proj.gamma);
+    *convergence = drdc__geo_nas_from_rad(g.cs.gamma);
   }
   if (scale != NULL) {
-    *scale = g.proj.k;
+    *scale = g.cs.k;
   }
   return DRDC_OK;
 }

@@ -177,7 +177,12 @@ drdc_status_t drdc_geo_to_utm(drdc_nas_t lat, drdc_nas_t lon, int32_t zone,
  * latitude and longitude within 1 nas (2.8e-13 degree); in UTM the
  * convergence within 2 079 nas (5.8e-10 degree) and the scale within
  * 25 141 LSB of Q5.58 (8.7e-14) of the forward values at the unrounded
- * point (the 15 um input rounding, not the method).
+ * point (the 15 um input rounding, not the method). In UTM the
+ * convergence and scale come from the derivative of the reverse series
+ * (as GeographicLib's reverse); at the grid point itself they are within
+ * 0.84 nas and 334 LSB (1.2e-15) of GeoConvert -c -p 12 (20 000 random
+ * points of every zone and both hemispheres). In UPS they are those of
+ * the forward projection at the reverse's latitude and longitude.
  */
 drdc_status_t drdc_geo_from_utm(const drdc_geo_utm_t *in, drdc_nas_t *lat,
                                 drdc_nas_t *lon, drdc_nas_t *convergence,
