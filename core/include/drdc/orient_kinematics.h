@@ -79,7 +79,14 @@ drdc_status_t drdc_dh_link_transform(drdc_dh_convention_t convention,
  * @retval DRDC_E_NULL a pointer is NULL (links and q may be NULL for n 0)
  * @retval DRDC_E_RANGE n > DRDC_DH_MAX_LINKS, or a bad convention or
  *         joint type
- * @retval DRDC_E_OVERFLOW a translation leaves +-32768 m on the way
+ * @retval DRDC_E_OVERFLOW the translation of a partial product
+ *         T1(q1) ... Tk(qk), k <= n, rounds outside +-32768 m (Q15.16),
+ *         even if later links bring it back, or d + q of a prismatic
+ *         link does: the rule of composing the links one by one with
+ *         drdc_dh_link_transform() and drdc_transform_compose(). The two
+ *         can differ only for a partial translation within their
+ *         position difference (below) of the edge, since each rounds its
+ *         own partial products
  *
  * Method: the product is accumulated with the rotation in Q2.61 and the
  * translation in Q17.46 (int64), one row at a time (row i of each
