@@ -70,18 +70,28 @@ drdc_status_t drdc_axis_angle_from_quat(const drdc_quat_t *q,
   /* exact sum of squares <= 2^60, correctly rounded root <= 2^30 */
   vn = drdc_fx_sqrt_u64(orient_square_u64(n.x) + orient_square_u64(n.y) +
                         orient_square_u64(n.z));
-  if (vn == 0u) {
+  half = 0u;
+  if (vn != 0u) {
+    (void)drdc_fx_atan2_bam32((int32_t)vn, n.s, &half); /* [0, 2^30] */
+  }
+  /* The axis is the input's own vector part made unit, not that of the
+   * rounded n: near the identity n's vector part is a few LSB and its
+   * rounding would turn the axis by degrees. Its sign follows the
+   * input's scalar part, so that the angle is at most 180 degrees. */
+  v.s = 0;
+  v.x = q->x;
+  v.y = q->y;
+  v.z = q->z;
+  if (drdc_quat_normalize(&v, &v) != DRDC_OK) {
     v.x = ORIENT_Q1_30_ONE; /* identity rotation: any axis; x by convention */
     v.y = 0;
     v.z = 0;
-    half = 0u;
+  } else if (q->s < 0) {
+    v.x = -v.x; /* unit parts: negation is safe */
+    v.y = -v.y;
+    v.z = -v.z;
   } else {
-    (void)drdc_fx_atan2_bam32((int32_t)vn, n.s, &half); /* [0, 2^30] */
-    v.s = 0;
-    v.x = n.x;
-    v.y = n.y;
-    v.z = n.z;
-    (void)drdc_quat_normalize(&v, &v);
+    /* axis as it is */
   }
   if (axis != NULL) {
     axis->x = v.x;
