@@ -81,6 +81,13 @@ drdc_status_t drdc_transform_compose(const drdc_transform_t *a,
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
  * @retval DRDC_E_OVERFLOW the translation leaves +-32768 m
+ *
+ * Accuracy: T T^-1 (by drdc_transform_compose()) is the identity to R's
+ * own departure from a rotation: for drdc_dh_forward() results of up to
+ * 16 links, measured within 11 LSB of rotation and 1 LSB plus
+ * 9 x 2^-30 |t| of translation (|t| the largest part of T's: at most
+ * 19 LSB, 0.29 mm, at 32 km): the composed translation is
+ * (I - R R^T) t, and R R^T differs from I by twice R's error.
  */
 drdc_status_t drdc_transform_invert(const drdc_transform_t *a,
                                     drdc_transform_t *out);
