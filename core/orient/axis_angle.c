@@ -44,40 +44,81 @@ drdc_status_t drdc_quat_from_axis_angle(const drdc_vec3_q1_30_t *axis,
   return DRDC_OK;
 }
 
+/* Bit length of v (0 for 0). */
+static unsigned bits_of(uint64_t v)
+{
+  uint64_t w = v;
+  unsigned n = 0u;
+  unsigned step;
+
+  for (step = 32u; step > 0u; step /= 2u) {
+    if ((w >> step) != 0u) {
+      w >>= step;
+      n += step;
+    }
+  }
+  return n + (unsigned)w;
+}
+
 drdc_status_t drdc_axis_angle_from_quat(const drdc_quat_t *q,
                                         drdc_vec3_q1_30_t *axis,
                                         drdc_bam32_t *angle)
 {
-  drdc_quat_t n;
   drdc_quat_t v;
-  uint64_t vn;
-  drdc_bam32_t half;
-  drdc_status_t st;
+  uint64_t vv;  /* exact |v|^2 of the input, <= 3 2^62 */
+  uint64_t s;   /* |s| of the input, <= 2^31 */
+  uint64_t big; /* max(|v|^2, s^2) */
+  uint64_t y;
+  uint64_t x;
+  unsigned len;
+  drdc_bam32_t half = 0u;
 
   if ((q == NULL) || ((axis == NULL) && (angle == NULL))) {
     return DRDC_E_NULL;
   }
-  st = drdc_quat_normalize(q, &n);
-  if (st != DRDC_OK) {
-    return st;
+  if ((q->s == 0) && (q->x == 0) && (q->y == 0) && (q->z == 0)) {
+    return DRDC_E_DOMAIN;
   }
-  if (n.s < 0) { /* unit parts: |part| <= 2^30, negation is safe */
-    n.s = -n.s;
-    n.x = -n.x;
-    n.y = -n.y;
-    n.z = -n.z;
+  /* The half angle atan2(|v|, |s|) from the input's exact parts: both
+   * scaled by one power of two so that the larger lies in [2^30, 2^31]
+   * (|v| the correctly rounded root of the scaled exact sum of squares),
+   * so that only the root's and the atan2's roundings remain, whatever
+   * the input's length. */
+  vv = orient_square_u64(q->x) + orient_square_u64(q->y) +
+       orient_square_u64(q->z);
+  s = (uint64_t)(int64_t)q->s;
+  if (q->s < 0) {
+    s = 0u - s;
   }
-  /* exact sum of squares <= 2^60, correctly rounded root <= 2^30 */
-  vn = drdc_fx_sqrt_u64(orient_square_u64(n.x) + orient_square_u64(n.y) +
-                        orient_square_u64(n.z));
-  half = 0u;
-  if (vn != 0u) {
-    (void)drdc_fx_atan2_bam32((int32_t)vn, n.s, &half); /* [0, 2^30] */
+  if (vv != 0u) {
+    big = s * s;
+    if (vv > big) {
+      big = vv;
+    }
+    len = bits_of(big);
+    if (len > 62u) {
+      /* scale 1/2: the floor of vv / 4 moves the root by < 2^-30 */
+      y = drdc_fx_sqrt_u64(vv >> 2);
+      x = (s + 1u) >> 1; /* s / 2 rounded half up: s >= 0 */
+    } else {
+      const unsigned k = (62u - len) / 2u; /* big 4^k in [2^60, 2^62) */
+      const unsigned k2 = 2u * k;
+
+      y = drdc_fx_sqrt_u64(vv << k2);
+      x = s << k;
+    }
+    if (y > (uint64_t)INT32_MAX) {
+      y = (uint64_t)INT32_MAX; /* 2^31: the root of nearly 2^62 */
+    }
+    if (x > (uint64_t)INT32_MAX) {
+      x = (uint64_t)INT32_MAX;
+    }
+    (void)drdc_fx_atan2_bam32((int32_t)y, (int32_t)x, &half); /* [0, 2^30] */
   }
-  /* The axis is the input's own vector part made unit, not that of the
-   * rounded n: near the identity n's vector part is a few LSB and its
-   * rounding would turn the axis by degrees. Its sign follows the
-   * input's scalar part, so that the angle is at most 180 degrees. */
+  /* The axis is the input's own vector part made unit (not that of a
+   * rounded q / |q|: near the identity that is a few LSB, and its
+   * rounding would turn the axis by degrees), signed with the input's
+   * scalar part so that the angle is at most 180 degrees. */
   v.s = 0;
   v.x = q->x;
   v.y = q->y;

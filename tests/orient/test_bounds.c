@@ -23,21 +23,21 @@
 /* drdc_dh_forward(): rotation in LSB of Q1.30 for up to 16 links;
  * position 0.5 LSB of Q15.16 plus TOL_DH_POS_K_HALVES / 2 times 2^-30
  * of the sum of the link lengths. */
-#define TOL_DH_ROT          5
-#define TOL_DH_POS_K_HALVES 5
+#define TOL_DH_ROT          6
+#define TOL_DH_POS_K_HALVES 8
 /* Link-by-link drdc_transform_compose() from drdc_dh_forward(), LSB. */
 #define TOL_CHAIN_ROT 7
-#define TOL_CHAIN_POS 10
+#define TOL_CHAIN_POS 13
 /* T T^-1 - I: rotation in LSB; translation 1 LSB plus
  * TOL_INV_POS_K times 2^-30 of |t| (the largest part of T's). */
 #define TOL_INV_ROT   11
-#define TOL_INV_POS_K 9
+#define TOL_INV_POS_K 12
 /* Quaternion parts in LSB of Q1.30; the angle in 1/16 binary-angle
- * units. */
+ * units (1.8 units plus the reference's rounding to 1/16). */
 #define TOL_SLERP     3
 #define TOL_NLERP     1
 #define TOL_AXIS      1
-#define TOL_ANGLE_SUB 48
+#define TOL_ANGLE_SUB 29
 
 static int64_t dh_pos_tol(int64_t span)
 {

@@ -286,6 +286,8 @@ def axang_cases(rng, count):
 def axang_oracle(q):
     """[axis x, y, z (Q1.30), angle (binary-angle units)]:
     angle 2 atan2(|v|, |s|), axis v / |v| signed with s."""
+    if not any(q):
+        return None
     s, v = q[0], q[1:]
     vn = mpmath.sqrt(sum(mpmath.mpf(x) ** 2 for x in v))
     if vn == 0:

@@ -84,9 +84,9 @@ drdc_status_t drdc_transform_compose(const drdc_transform_t *a,
  *
  * Accuracy: T T^-1 (by drdc_transform_compose()) is the identity to R's
  * own departure from a rotation: for drdc_dh_forward() results of up to
- * 16 links, measured within 11 LSB of rotation and 1 LSB plus
- * 9 x 2^-30 |t| of translation (|t| the largest part of T's: at most
- * 19 LSB, 0.29 mm, at 32 km): the composed translation is
+ * 16 links, within 11 LSB of rotation and 1 LSB plus 12 x 2^-30 |t|
+ * of translation (|t| the largest part of T's: 25 LSB, 0.38 mm, at
+ * 32 km; measured 9.3 x 2^-30 and 17 LSB): the composed translation is
  * (I - R R^T) t, and R R^T differs from I by twice R's error.
  */
 drdc_status_t drdc_transform_invert(const drdc_transform_t *a,
