@@ -64,7 +64,7 @@ drdc_status_t drdc_axis_angle_from_quat(const drdc_quat_t *q,
                                         drdc_vec3_q1_30_t *axis,
                                         drdc_bam32_t *angle)
 {
-  drdc_quat_t v;
+  int32_t ax[3];
   uint64_t vv;  /* exact |v|^2 of the input, <= 3 2^62 */
   uint64_t s;   /* |s| of the input, <= 2^31 */
   uint64_t big; /* max(|v|^2, s^2) */
@@ -115,29 +115,50 @@ drdc_status_t drdc_axis_angle_from_quat(const drdc_quat_t *q,
     }
     (void)drdc_fx_atan2_bam32((int32_t)y, (int32_t)x, &half); /* [0, 2^30] */
   }
-  /* The axis is the input's own vector part made unit (not that of a
-   * rounded q / |q|: near the identity that is a few LSB, and its
-   * rounding would turn the axis by degrees), signed with the input's
-   * scalar part so that the angle is at most 180 degrees. */
-  v.s = 0;
-  v.x = q->x;
-  v.y = q->y;
-  v.z = q->z;
-  if (drdc_quat_normalize(&v, &v) != DRDC_OK) {
-    v.x = ORIENT_Q1_30_ONE; /* identity rotation: any axis; x by convention */
-    v.y = 0;
-    v.z = 0;
-  } else if (q->s < 0) {
-    v.x = -v.x; /* unit parts: negation is safe */
-    v.y = -v.y;
-    v.z = -v.z;
+  /* The axis is the input's own vector part over its length (not that
+   * of a rounded q / |q|: near the identity that is a few LSB, and its
+   * rounding would turn the axis by degrees), the length again the
+   * correctly rounded root of the exact sum of squares scaled into
+   * [2^30, 2^31], so each part is within 1 LSB (half from the root,
+   * half from the quotient). Signed with the input's scalar part so
+   * that the angle is at most 180 degrees. */
+  if (vv == 0u) {
+    ax[0] = ORIENT_Q1_30_ONE; /* identity rotation: any axis; x by convention */
+    ax[1] = 0;
+    ax[2] = 0;
   } else {
-    /* axis as it is */
+    int32_t unit = ORIENT_Q1_30_ONE; /* 2^30 / |v| scaled as the root */
+    unsigned k = 0u;
+    uint64_t root;
+
+    len = bits_of(vv);
+    if (len > 62u) {
+      root = drdc_fx_sqrt_u64(vv >> 2); /* |v| / 2 */
+      unit = ORIENT_Q1_30_ONE / 2;
+    } else {
+      const unsigned k2 = (62u - len) & ~1u; /* vv 2^k2 in [2^60, 2^62) */
+
+      k = k2 / 2u;
+      root = drdc_fx_sqrt_u64(vv << k2);
+    }
+    if (root > (uint64_t)INT32_MAX) {
+      root = (uint64_t)INT32_MAX;
+    }
+    if (q->s < 0) {
+      unit = -unit;
+    }
+    /* |part| 2^k <= root < 2^31: the products are below 2^61 */
+    ax[0] = (int32_t)drdc_fx_muldiv_round64((int64_t)q->x * orient_pow2_s64(k),
+                                            unit, (int32_t)root);
+    ax[1] = (int32_t)drdc_fx_muldiv_round64((int64_t)q->y * orient_pow2_s64(k),
+                                            unit, (int32_t)root);
+    ax[2] = (int32_t)drdc_fx_muldiv_round64((int64_t)q->z * orient_pow2_s64(k),
+                                            unit, (int32_t)root);
   }
   if (axis != NULL) {
-    axis->x = v.x;
-    axis->y = v.y;
-    axis->z = v.z;
+    axis->x = ax[0];
+    axis->y = ax[1];
+    axis->z = ax[2];
   }
   if (angle != NULL) {
     *angle = half * 2u;

@@ -515,9 +515,9 @@ drdc_status_t drdc_quat_from_axis_angle(const drdc_vec3_q1_30_t *axis,
  * as 2 atan2(|v|, |s|), the axis a unit vector (sign chosen with the
  * angle so that the angle is at most 180 degrees).
  * @param q non-zero quaternion, any int32_t parts
- * @param[out] axis unit axis, Q1.30: q's own vector part made unit,
- *             negated when q's scalar part is negative; [1, 0, 0] when
- *             the vector part is zero; may be NULL
+ * @param[out] axis unit axis, Q1.30: q's own vector part over its
+ *             length, negated when q's scalar part is negative;
+ *             [1, 0, 0] when the vector part is zero; may be NULL
  * @param[out] angle rotation angle; may be NULL
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL both outputs are NULL or q is NULL
@@ -525,8 +525,10 @@ drdc_status_t drdc_quat_from_axis_angle(const drdc_vec3_q1_30_t *axis,
  *
  * Method: the half angle is atan2(|v|, |s|) of q's exact parts, both
  * scaled by one power of two so that the larger lies in [2^30, 2^31]
- * (|v| a correctly rounded root of the exact sum of squares).
- * Accuracy: axis 1 LSB per part (1.30 before rounding), angle 1.8
+ * (|v| a correctly rounded root of the exact sum of squares); the axis
+ * is v 2^30 / |v| with |v| likewise scaled into [2^30, 2^31].
+ * Accuracy: axis 1 LSB per part (within 1 before rounding: half from
+ * the root, half from the quotient; 0.93 measured), angle 1.8
  * binary-angle units (2.6e-9 rad; twice the atan2's error) against
  * mpmath on 112 000 random quaternions of every length from 1 LSB to
  * the int32_t limit, near the identity and near 180 degrees included
