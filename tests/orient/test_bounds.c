@@ -59,6 +59,26 @@ static void chain_of(const struct bounds_chain *c, drdc_dh_link_t *links,
   }
 }
 
+/* The link transforms of links[0 .. n - 1] composed one by one onto
+ * *acc; the first status that is not DRDC_OK, in link order. */
+static drdc_status_t compose_chain(drdc_dh_convention_t cv,
+                                   const drdc_dh_link_t *links,
+                                   const int32_t *q, int32_t n,
+                                   drdc_transform_t *acc)
+{
+  drdc_transform_t lt;
+  drdc_status_t st = DRDC_OK;
+  int32_t k;
+
+  for (k = 0; (k < n) && (st == DRDC_OK); k++) {
+    st = drdc_dh_link_transform(cv, &links[k], q[k], &lt);
+    if (st == DRDC_OK) {
+      st = drdc_transform_compose(acc, &lt, acc);
+    }
+  }
+  return st;
+}
+
 static void test_dh_forward_random_chains(void)
 {
   int64_t mr = 0;
@@ -136,21 +156,15 @@ static void test_dh_compose_and_invert_random_chains(void)
     int32_t q[DRDC_DH_MAX_LINKS];
     drdc_transform_t t;
     drdc_transform_t acc = ident;
-    drdc_transform_t lt;
     drdc_transform_t inv;
     int64_t r;
     int64_t p;
     int64_t tn;
-    int32_t k;
 
     chain_of(c, links, q);
     TEST_ASSERT_EQUAL_INT(DRDC_OK,
                           drdc_dh_forward(cv, links, (unsigned)c->n, q, &t));
-    for (k = 0; k < c->n; k++) {
-      TEST_ASSERT_EQUAL_INT(DRDC_OK,
-                            drdc_dh_link_transform(cv, &links[k], q[k], &lt));
-      TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_transform_compose(&acc, &lt, &acc));
-    }
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, compose_chain(cv, links, q, c->n, &acc));
     r = transform_diff(&acc, &t, &p);
     mcr = (r > mcr) ? r : mcr;
     mcp = (p > mcp) ? p : mcp;
@@ -173,6 +187,44 @@ static void test_dh_compose_and_invert_random_chains(void)
   ORIENT_REPORT("bounds chain vs dh position (LSB)", mcp);
   ORIENT_REPORT("bounds T T^-1 rotation (LSB)", mir);
   ORIENT_REPORT("bounds T T^-1 translation (LSB)", mip);
+}
+
+/* The other side of the overflow rule: chains whose partial translation
+ * leaves +-32768 m on the way (half of them ending back in range) fail
+ * in the forward kinematics as in the link-by-link composition, and
+ * leave the output unchanged. */
+static void test_dh_forward_overflow_random_chains(void)
+{
+  const drdc_transform_t ident = {{{{DRDC_Q1_30_ONE, 0, 0},
+                                    {0, DRDC_Q1_30_ONE, 0},
+                                    {0, 0, DRDC_Q1_30_ONE}}},
+                                  {0, 0, 0}};
+  int back = 0;
+  size_t i;
+
+  for (i = 0u; i < COUNT(bounds_overflows); i++) {
+    const struct bounds_overflow *c = &bounds_overflows[i];
+    const drdc_dh_convention_t cv = (drdc_dh_convention_t)c->convention;
+    drdc_dh_link_t links[DRDC_DH_MAX_LINKS];
+    int32_t q[DRDC_DH_MAX_LINKS];
+    drdc_transform_t t = ident;
+    drdc_transform_t acc = ident;
+    int32_t k;
+
+    for (k = 0; k < c->n; k++) {
+      links[k] = bounds_links[c->first + k].link;
+      q[k] = bounds_links[c->first + k].q;
+    }
+    TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                          drdc_dh_forward(cv, links, (unsigned)c->n, q, &t));
+    TEST_ASSERT_EQUAL_INT32(DRDC_Q1_30_ONE, t.r.m[0][0]);
+    TEST_ASSERT_EQUAL_INT32(0, t.t.x);
+    TEST_ASSERT_EQUAL_INT32(0, t.t.z);
+    TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                          compose_chain(cv, links, q, c->n, &acc));
+    back += c->back;
+  }
+  TEST_ASSERT_TRUE(back > 0);
 }
 
 static void quat_of(const int32_t p[4], drdc_quat_t *q)
@@ -285,6 +337,7 @@ void suite_orient_bounds(void)
   UnitySetTestFile(__FILE__);
   RUN_TEST(test_dh_forward_random_chains);
   RUN_TEST(test_dh_compose_and_invert_random_chains);
+  RUN_TEST(test_dh_forward_overflow_random_chains);
   RUN_TEST(test_slerp_random_pairs);
   RUN_TEST(test_nlerp_random_pairs);
   RUN_TEST(test_interp_arc_from_exact_dot);
