@@ -7,7 +7,9 @@
  *
  * Internal formats of the chain product: rotation elements in Q2.61
  * (int64, |r| <= 1 + small, sums of three <= 1.5 2^62), translations in
- * Q17.46 metres (int64, +-131 km). A link's elements are exact products
+ * Q17.46 metres (int64; every partial translation is held to the
+ * Q15.16 range, +-32 km, so that the chain fails where composing its
+ * links one by one would). A link's elements are exact products
  * of two Q1.30 trig values (Q60) and of a Q15.16 length with a Q1.30
  * value (Q46), so the only roundings are those of the trig values and
  * one per element per link (2^-61 and 2^-46 m: negligible).
@@ -242,8 +244,8 @@ typedef struct dh_chain {
  * Otherwise writes the rounded rotation row to row[0..2] (Q1.30) and,
  * when no link was bad, the translation to *t (Q15.16).
  * @retval DRDC_OK written
- * @retval DRDC_E_OVERFLOW a translation leaves int64 on the way, or
- *         (no link bad) the final one leaves Q15.16 */
+ * @retval DRDC_E_OVERFLOW a partial translation through links 0..k
+ *         (k < c->n) rounds outside Q15.16 */
 static inline drdc_status_t dh_row(dh_chain_t *c, unsigned i,
                                    drdc_q1_30_t row[3], int32_t *t)
 {
@@ -252,6 +254,7 @@ static inline drdc_status_t dh_row(dh_chain_t *c, unsigned i,
   int64_t r1 = (i == 1u) ? one : 0;
   int64_t r2 = (i == 2u) ? one : 0;
   int64_t ti = 0;
+  int32_t tk; /* the partial translation in Q15.16: range check only */
   link_trig_t g;
   unsigned k;
   drdc_status_t st;
@@ -269,11 +272,15 @@ static inline drdc_status_t dh_row(dh_chain_t *c, unsigned i,
       return st;
     }
     /* t += R t_link: Q61 x Q46 / 2^61 -> Q46, correctly rounded each;
-     * |R t_link| <= 1.01 |t_link| <= 2^62. */
-    if (drdc_orient_impl_sum4(mul_round(r0, link_t(cv, &g, 0u), 61u),
-                              mul_round(r1, link_t(cv, &g, 1u), 61u),
-                              mul_round(r2, link_t(cv, &g, 2u), 61u), ti,
-                              &ti) != DRDC_OK) {
+     * |R t_link| <= 1.01 |t_link| <= 2^62. Each partial translation
+     * T1 ... Tk must round into Q15.16, the rule of composing the links
+     * one by one with drdc_transform_compose(); it also keeps |ti| below
+     * 2^61 for the next link. */
+    if ((drdc_orient_impl_sum4(mul_round(r0, link_t(cv, &g, 0u), 61u),
+                               mul_round(r1, link_t(cv, &g, 1u), 61u),
+                               mul_round(r2, link_t(cv, &g, 2u), 61u), ti,
+                               &ti) != DRDC_OK) ||
+        (round30(ti, &tk) != DRDC_OK)) {
       return DRDC_E_OVERFLOW;
     }
     n0 = mul61(r0, link_r(cv, &g, 0u, 0u)) + mul61(r1, link_r(cv, &g, 1u, 0u)) +

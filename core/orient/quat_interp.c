@@ -34,6 +34,30 @@ static void negate_unit(drdc_quat_t *q)
   q->z = -q->z;
 }
 
+/* Sign (-1, 0, 1) of the exact dot product a . b of any int32 parts.
+ * Each product is split as 4 q + r (|r| <= 3): the sum of the q is
+ * within 2^62 and the r add at most 12, folded back into q so that the
+ * remainder alone (|r| <= 3) cannot outweigh a non-zero q. */
+static int dot_sign(const drdc_quat_t *a, const drdc_quat_t *b)
+{
+  const int64_t p[4] = {(int64_t)a->s * b->s, (int64_t)a->x * b->x,
+                        (int64_t)a->y * b->y, (int64_t)a->z * b->z};
+  int64_t hi = 0;
+  int64_t lo = 0;
+  unsigned i;
+
+  for (i = 0u; i < 4u; i++) {
+    hi += p[i] / 4;
+    lo += p[i] % 4;
+  }
+  hi += lo / 4;
+  lo = lo % 4;
+  if (hi == 0) {
+    hi = lo;
+  }
+  return (hi < 0) ? -1 : ((hi > 0) ? 1 : 0);
+}
+
 /* |v| of a unit quaternion, correctly rounded from the exact sum of
  * squares (<= 2^60). */
 static int32_t vec_norm(const drdc_quat_t *q)
@@ -62,16 +86,14 @@ static void exp_axis(drdc_bam32_t h, const drdc_quat_t *vq, int32_t vn,
 drdc_status_t drdc_quat_nlerp(const drdc_quat_t *a, const drdc_quat_t *b,
                               drdc_q1_30_t t, drdc_quat_t *out)
 {
-  const int32_t pa[4] = {(a == NULL) ? 0 : a->s, (a == NULL) ? 0 : a->x,
-                         (a == NULL) ? 0 : a->y, (a == NULL) ? 0 : a->z};
-  const int32_t pb[4] = {(b == NULL) ? 0 : b->s, (b == NULL) ? 0 : b->x,
-                         (b == NULL) ? 0 : b->y, (b == NULL) ? 0 : b->z};
-  int64_t dot = 0;
-  int64_t u = 0;
+  int64_t u[4];
+  uint64_t m = 0u;
   int64_t wa;
   int64_t wb;
   drdc_quat_t r;
-  int32_t p[4];
+  uint64_t v;
+  unsigned sh = 0u;
+  unsigned step;
   unsigned i;
 
   if ((a == NULL) || (b == NULL) || (out == NULL)) {
@@ -80,23 +102,34 @@ drdc_status_t drdc_quat_nlerp(const drdc_quat_t *a, const drdc_quat_t *b,
   if (!t_ok(t)) {
     return DRDC_E_RANGE;
   }
-  /* The sign of a . b decides the arc; halved products (<= 2^61 each)
-   * cannot overflow the sum of four. */
-  for (i = 0u; i < 4u; i++) {
-    dot += ((int64_t)pa[i] * pb[i]) / 4;
-  }
   wa = (int64_t)ORIENT_Q1_30_ONE - t;
-  wb = (dot < 0) ? -(int64_t)t : (int64_t)t;
-  /* (1 - t) a + t b in Q60 (<= 2^61 + 2^61), halved to Q1.30 with one
-   * extra bit dropped so the sum always fits int32 before normalising. */
+  wb = (dot_sign(a, b) < 0) ? -(int64_t)t : (int64_t)t;
+  /* (1 - t) a + t b' exactly: |w| <= 2^30 and |part| <= 2^31, so each
+   * sum is within 2^62. */
+  u[0] = (wa * a->s) + (wb * b->s);
+  u[1] = (wa * a->x) + (wb * b->x);
+  u[2] = (wa * a->y) + (wb * b->y);
+  u[3] = (wa * a->z) + (wb * b->z);
   for (i = 0u; i < 4u; i++) {
-    u = (wa * pa[i]) + (wb * pb[i]);
-    p[i] = (int32_t)drdc_fx_rshift_round_s64(u, 31u);
+    const uint64_t mag = (u[i] < 0) ? (0u - (uint64_t)u[i]) : (uint64_t)u[i];
+    m = (mag > m) ? mag : m;
   }
-  r.s = p[0];
-  r.x = p[1];
-  r.y = p[2];
-  r.z = p[3];
+  /* One common shift brings the largest part to at most 2^30 (and above
+   * 2^29 whenever a shift is needed), so that short inputs keep their
+   * direction to 2^-30 before normalising instead of losing it to a
+   * fixed Q60 -> Q1.30 step. */
+  v = (m > 0u) ? ((m - 1u) >> 30) : 0u; /* sh = bit length of v */
+  for (step = 32u; step > 0u; step /= 2u) {
+    if ((v >> step) != 0u) {
+      v >>= step;
+      sh += step;
+    }
+  }
+  sh += (unsigned)v;
+  r.s = (int32_t)drdc_fx_rshift_round_s64(u[0], sh);
+  r.x = (int32_t)drdc_fx_rshift_round_s64(u[1], sh);
+  r.y = (int32_t)drdc_fx_rshift_round_s64(u[2], sh);
+  r.z = (int32_t)drdc_fx_rshift_round_s64(u[3], sh);
   return drdc_quat_normalize(&r, out);
 }
 
@@ -129,7 +162,9 @@ static drdc_status_t slerp(const drdc_quat_t *a, const drdc_quat_t *b,
   conj_a.y = -na.y;
   conj_a.z = -na.z;
   (void)drdc_quat_mul(&conj_a, &nb, &d); /* unit operands: no overflow */
-  if ((shorter != 0) && (d.s < 0)) {
+  /* The arc follows the exact a . b, not the rounded scalar of d: near
+   * a quarter turn apart the two can differ in sign. */
+  if ((shorter != 0) && (dot_sign(a, b) < 0)) {
     negate_unit(&d);
   }
   vn = vec_norm(&d);

@@ -239,48 +239,144 @@ static void test_dh_bad_inputs(void)
   TEST_ASSERT_EQUAL_INT32(0, t.t.x);
 }
 
-/* drdc_dh_forward() carries the chain row by row: its statuses must come
- * in the order of the link-by-link product all the same. Links of d =
- * 30 000 m along z (alpha = theta = 0): the translation is row 2's. */
-static void test_dh_status_order_row_by_row(void)
+/* Links along z (alpha = theta = 0, a = 0) of offsets d: the partial
+ * translations are exact sums, so the edge of the Q15.16 range can be
+ * hit to the LSB. */
+static void z_links(drdc_dh_link_t *links, const int32_t *d, unsigned n)
 {
-  drdc_transform_t t;
-  drdc_dh_link_t links[8];
-  int32_t q[8] = {0, 0, 0, 0, 0, 0, 0, 0};
   unsigned k;
 
-  for (k = 0u; k < 8u; k++) {
+  for (k = 0u; k < n; k++) {
     links[k].a = 0;
     links[k].alpha = 0u;
-    links[k].d = INT32_C(30000) << 16;
+    links[k].d = d[k];
     links[k].theta = 0u;
     links[k].type = DRDC_JOINT_REVOLUTE;
   }
-  t.r.m[2][2] = 99;
-  t.t.z = 99;
-  /* 60 000 m after two links: only the last row's final range check
-   * fails, and it leaves out unchanged */
+}
+
+/* drdc_transform_compose() of the link transforms one by one: its
+ * status, the first error in link order. */
+static drdc_status_t compose_links(drdc_dh_convention_t cv,
+                                   const drdc_dh_link_t *links, unsigned n,
+                                   const int32_t *q)
+{
+  drdc_transform_t acc;
+  drdc_transform_t lt;
+  drdc_status_t st = drdc_dh_forward(cv, links, 0u, q, &acc); /* identity */
+  unsigned k;
+
+  for (k = 0u; (k < n) && (st == DRDC_OK); k++) {
+    st = drdc_dh_link_transform(cv, &links[k], q[k], &lt);
+    if (st == DRDC_OK) {
+      st = drdc_transform_compose(&acc, &lt, &acc);
+    }
+  }
+  return st;
+}
+
+/* One DRDC_E_OVERFLOW rule for drdc_dh_forward(): a partial translation
+ * T1 ... Tk leaving the Q15.16 range fails the chain, as composing the
+ * links one by one does, even when later links bring it back. Both sides
+ * of the edge (+32768 - 2^-16 m and -32768 m are in range), in both
+ * conventions, and the statuses in the order of the link-by-link
+ * product although drdc_dh_forward() carries the chain row by row. */
+static void test_dh_overflow_rule(void)
+{
+  static const int32_t edge_in[2] = {INT32_C(1) << 30, (INT32_C(1) << 30) - 1};
+  static const int32_t edge_out[2] = {INT32_C(1) << 30, INT32_C(1) << 30};
+  static const int32_t neg_in[2] = {-(INT32_C(1) << 30), -(INT32_C(1) << 30)};
+  static const int32_t neg_out[3] = {-(INT32_C(1) << 30), -(INT32_C(1) << 30),
+                                     -1};
+  static const int32_t there_back[3] = {
+      INT32_C(30000) << 16, INT32_C(30000) << 16, -(INT32_C(30000) << 16)};
+  static const int32_t q[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+  drdc_transform_t t;
+  drdc_dh_link_t links[8];
+  int32_t d8[8];
+  unsigned cv;
+  unsigned k;
+
+  for (cv = 0u; cv < 2u; cv++) {
+    const drdc_dh_convention_t c = (drdc_dh_convention_t)cv;
+
+    z_links(links, edge_in, 2u);
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_dh_forward(c, links, 2u, q, &t));
+    TEST_ASSERT_EQUAL_INT32(INT32_MAX, t.t.z);
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, compose_links(c, links, 2u, q));
+    z_links(links, edge_out, 2u);
+    t.t.z = 99;
+    TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                          drdc_dh_forward(c, links, 2u, q, &t));
+    TEST_ASSERT_EQUAL_INT32(99, t.t.z);
+    TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, compose_links(c, links, 2u, q));
+    z_links(links, neg_in, 2u);
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_dh_forward(c, links, 2u, q, &t));
+    TEST_ASSERT_EQUAL_INT32(INT32_MIN, t.t.z);
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, compose_links(c, links, 2u, q));
+    z_links(links, neg_out, 3u);
+    TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                          drdc_dh_forward(c, links, 3u, q, &t));
+    TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, compose_links(c, links, 3u, q));
+    /* out to 60 km and back to 30 km: the end is in range, the way not */
+    z_links(links, there_back, 3u);
+    TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                          drdc_dh_forward(c, links, 3u, q, &t));
+    TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, compose_links(c, links, 3u, q));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_dh_forward(c, &links[1], 2u, q, &t));
+    TEST_ASSERT_EQUAL_INT32(0, t.t.z);
+  }
+  /* along x (row 0): standard DH puts a along the rotated x */
+  z_links(links, q, 2u);
+  links[0].a = INT32_C(20000) << 16;
+  links[1].a = INT32_C(12768) << 16;
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
                         drdc_dh_forward(DRDC_DH_STANDARD, links, 2u, q, &t));
-  TEST_ASSERT_EQUAL_INT32(99, t.r.m[2][2]);
-  TEST_ASSERT_EQUAL_INT32(99, t.t.z);
-  /* a bad joint type at link 2 comes before that final check */
+  links[1].a -= 1;
+  TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                        drdc_dh_forward(DRDC_DH_STANDARD, links, 2u, q, &t));
+  TEST_ASSERT_EQUAL_INT32(INT32_MAX, t.t.x);
+
+  /* Status order: 30 000 m per link along z, so links 0..1 reach
+   * 60 000 m. */
+  for (k = 0u; k < 8u; k++) {
+    d8[k] = INT32_C(30000) << 16;
+  }
+  z_links(links, d8, 8u);
+  t.r.m[2][2] = 99;
+  t.t.z = 99;
+  /* the overflow at link 1 comes before the bad joint type of link 2 */
   links[2].type = (drdc_joint_type_t)3;
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
                         drdc_dh_forward(DRDC_DH_STANDARD, links, 3u, q, &t));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        compose_links(DRDC_DH_STANDARD, links, 3u, q));
   TEST_ASSERT_EQUAL_INT32(99, t.t.z);
-  /* 150 000 m at link 4 leaves Q17.46 (131 072 m): that overflow, found
-   * in the last row, comes before the bad type of link 6, found by the
-   * first */
+  /* a bad type at link 1 comes before it; found by the first row, while
+   * the overflow would be the last row's */
   links[2].type = DRDC_JOINT_REVOLUTE;
+  links[1].type = (drdc_joint_type_t)3;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
+                        drdc_dh_forward(DRDC_DH_MODIFIED, links, 8u, q, &t));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
+                        compose_links(DRDC_DH_MODIFIED, links, 8u, q));
+  TEST_ASSERT_EQUAL_INT32(99, t.r.m[2][2]);
+  /* the overflow in the last row (link 1) before the bad type of link 6,
+   * found by the first */
+  links[1].type = DRDC_JOINT_REVOLUTE;
   links[6].type = (drdc_joint_type_t)3;
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
                         drdc_dh_forward(DRDC_DH_MODIFIED, links, 8u, q, &t));
   TEST_ASSERT_EQUAL_INT32(99, t.t.z);
-  /* and after the bad type of link 3 it is never reached */
-  links[3].type = (drdc_joint_type_t)3;
-  TEST_ASSERT_EQUAL_INT(DRDC_E_RANGE,
-                        drdc_dh_forward(DRDC_DH_MODIFIED, links, 8u, q, &t));
+  /* a prismatic d + q beyond Q15.16 is an overflow too */
+  links[6].type = DRDC_JOINT_PRISMATIC;
+  links[0].d = INT32_MAX - 5;
+  links[0].type = DRDC_JOINT_PRISMATIC;
+  d8[0] = 10;
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        drdc_dh_forward(DRDC_DH_MODIFIED, links, 1u, d8, &t));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        compose_links(DRDC_DH_MODIFIED, links, 1u, d8));
   TEST_ASSERT_EQUAL_INT32(99, t.r.m[2][2]);
 }
 
@@ -294,5 +390,5 @@ void suite_orient_transform(void)
   RUN_TEST(test_chain_compose_and_invert);
   RUN_TEST(test_global_local_round_trip);
   RUN_TEST(test_dh_bad_inputs);
-  RUN_TEST(test_dh_status_order_row_by_row);
+  RUN_TEST(test_dh_overflow_rule);
 }

@@ -33,6 +33,7 @@ GENERATORS = [
     "gen_fixed_format",
     "gen_orient_quat",
     "gen_orient_dh",
+    "gen_orient_bounds",
     "gen_units",
     "gen_units_table",
     "gen_jaus",

@@ -514,13 +514,25 @@ drdc_status_t drdc_quat_from_axis_angle(const drdc_vec3_q1_30_t *axis,
  * Axis and angle of a quaternion, the angle in [0, 180] degrees (0..2^31)
  * as 2 atan2(|v|, |s|), the axis a unit vector (sign chosen with the
  * angle so that the angle is at most 180 degrees).
- * @param q non-zero quaternion
- * @param[out] axis unit axis, Q1.30; [1, 0, 0] for the identity
- *             rotation; may be NULL
+ * @param q non-zero quaternion, any int32_t parts
+ * @param[out] axis unit axis, Q1.30: q's own vector part over its
+ *             length, negated when q's scalar part is negative;
+ *             [1, 0, 0] when the vector part is zero; may be NULL
  * @param[out] angle rotation angle; may be NULL
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL both outputs are NULL or q is NULL
  * @retval DRDC_E_DOMAIN q is zero
+ *
+ * Method: the half angle is atan2(|v|, |s|) of q's exact parts, both
+ * scaled by one power of two so that the larger lies in [2^30, 2^31]
+ * (|v| a correctly rounded root of the exact sum of squares); the axis
+ * is v 2^30 / |v| with |v| likewise scaled into [2^30, 2^31].
+ * Accuracy: axis 1 LSB per part (within 1 before rounding: half from
+ * the root, half from the quotient; 0.93 measured), angle 1.8
+ * binary-angle units (2.6e-9 rad; twice the atan2's error) against
+ * mpmath on 112 000 random quaternions of every length from 1 LSB to
+ * the int32_t limit, near the identity and near 180 degrees included
+ * (tools/accuracy/orient_bounds.py).
  */
 drdc_status_t drdc_axis_angle_from_quat(const drdc_quat_t *q,
                                         drdc_vec3_q1_30_t *axis,
@@ -534,14 +546,23 @@ drdc_status_t drdc_axis_angle_from_quat(const drdc_quat_t *q,
 
 /**
  * Normalised linear interpolation along the shorter arc:
- * normalize((1 - t) a + t b'), b' = b or -b, whichever is nearer a.
- * @param a, b unit quaternions (non-unit ones weigh by their length)
+ * normalize((1 - t) a + t b'), b' = -b when the exact integer dot
+ * product a . b is negative, else b.
+ * @param a, b unit quaternions (non-unit ones, of any int32_t parts,
+ *        weigh by their length)
  * @param t Q1.30 fraction in [0, 1] (0..2^30)
  * @param[out] out unit quaternion; unchanged on error
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
  * @retval DRDC_E_RANGE t outside [0, 1]
  * @retval DRDC_E_DOMAIN the interpolated quaternion is zero
+ *
+ * Method: (1 - t) a + t b' exactly (int64), shifted as a whole so that
+ * its largest part is within (2^29, 2^30], then normalised.
+ * Accuracy: 1 LSB per part (1.49 before rounding) against mpmath's
+ * normalised weighted sum on 112 000 random pairs of every length from
+ * 1 LSB to the int32_t limit (near-equal, near-opposite and near a
+ * quarter turn apart included; tools/accuracy/orient_bounds.py).
  */
 drdc_status_t drdc_quat_nlerp(const drdc_quat_t *a, const drdc_quat_t *b,
                               drdc_q1_30_t t, drdc_quat_t *out);
@@ -557,8 +578,14 @@ drdc_status_t drdc_quat_nlerp(const drdc_quat_t *a, const drdc_quat_t *b,
  * @retval DRDC_E_RANGE t outside [0, 1]
  * @retval DRDC_E_DOMAIN a or b is zero
  *
- * Accuracy: measured max 2 LSB per part against SciPy's Slerp (48 rows
- * incl. q vs -q and nearly equal keys); |out| - 1 within 1.01 LSB.
+ * The shorter arc is the one of the sign of the exact integer dot
+ * product a . b (at a dot of exactly 0 both arcs are a half turn long;
+ * b is kept).
+ *
+ * Accuracy: 3 LSB per part (3.07 before rounding) against mpmath's
+ * slerp on 112 000 random pairs of every length from 1 LSB to the int32_t
+ * limit (near-equal, near-opposite and near a quarter turn apart
+ * included; tools/accuracy/orient_bounds.py); |out| - 1 within 1.01 LSB.
  */
 drdc_status_t drdc_quat_slerp(const drdc_quat_t *a, const drdc_quat_t *b,
                               drdc_q1_30_t t, drdc_quat_t *out);

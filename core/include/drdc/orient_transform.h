@@ -81,6 +81,13 @@ drdc_status_t drdc_transform_compose(const drdc_transform_t *a,
  * @retval DRDC_OK written
  * @retval DRDC_E_NULL a pointer is NULL
  * @retval DRDC_E_OVERFLOW the translation leaves +-32768 m
+ *
+ * Accuracy: T T^-1 (by drdc_transform_compose()) is the identity to R's
+ * own departure from a rotation: for drdc_dh_forward() results of up to
+ * 16 links, within 11 LSB of rotation and 1 LSB plus 12 x 2^-30 |t|
+ * of translation (|t| the largest part of T's: 25 LSB, 0.38 mm, at
+ * 32 km; measured 9.3 x 2^-30 and 17 LSB): the composed translation is
+ * (I - R R^T) t, and R R^T differs from I by twice R's error.
  */
 drdc_status_t drdc_transform_invert(const drdc_transform_t *a,
                                     drdc_transform_t *out);
