@@ -835,11 +835,7 @@ class RunChecks(Build.BuildContext):
         if os.path.exists(real):
             with open(real) as f:
                 images.append("rtems=rtems-qoriq_e500:" + f.read().strip())
-        # A hang is 30 s without console output: on the Cortex-M0 image
-        # (Thumb-1, 64-bit products by libgcc calls) one MGRS test runs
-        # 6-9 s of wall time on a loaded 2-core machine.
-        failed = _python(self, ["qemu/harness.py", "--inactivity", "30",
-                                "run", "--junit-dir",
+        failed = _python(self, ["qemu/harness.py", "run", "--junit-dir",
                                 os.path.join(out, "reports")] + images)
         if failed:
             self.fatal("test suites failed")

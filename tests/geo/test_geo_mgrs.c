@@ -70,10 +70,11 @@ static int within_last_digit(const char *a, const char *b)
  * vectors, 6 063 points): none at precisions -1..10; at 11 (1 um) the 3
  * points whose GeographicLib coordinate GeoConvert -u -p 9 prints on a
  * 1 um boundary (near_nm 0: within 0.5 nm of it, far inside
- * GeographicLib's own 5 nm error). Each is one unit of the last digit. */
+ * GeographicLib's own 5 nm error), one in each part the tests below
+ * take. Each is one unit of the last digit. */
 #define MGRS_NEAR_NM 0
-static const uint32_t mgrs_mismatches[MGRS_PRECS] = {0, 0, 0, 0, 0, 0, 0,
-                                                     0, 0, 0, 0, 0, 3};
+static const uint32_t mgrs_mismatches_per_part[MGRS_PRECS] = {
+    0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1};
 
 /* the text of GeoConvert at prec (MGRS_PREC_FIRST + p) from its text at
  * the finest precision: the head (zone, band, square) and the leading p
@@ -149,25 +150,52 @@ static void check_point(int64_t lat, int64_t lon, int32_t near_nm,
   }
 }
 
+static void assert_mismatches(const uint32_t *mismatches)
+{
+  int32_t p;
+
+  for (p = 0; p < MGRS_PRECS; p++) {
+    TEST_ASSERT_EQUAL_UINT32(mgrs_mismatches_per_part[p], mismatches[p]);
+  }
+}
+
+/* The vectors in three tests of a few seconds each on the slowest image
+ * (Cortex-M0, where every 64-bit product is a libgcc call), so that the
+ * console reports progress well within the harness's hang limit. */
 static void test_mgrs_encode_every_precision(void)
 {
   uint32_t mismatches[MGRS_PRECS] = {0u};
   size_t i;
-  int32_t p;
 
   for (i = 0; i < COUNT(mgrs_enc_vectors); i++) {
     const struct mgrs_enc_vector *v = &mgrs_enc_vectors[i];
 
     check_point(v->lat, v->lon, v->near_nm, v->text, NULL, mismatches);
   }
-  for (i = 0; i < COUNT(mgrs_fine_vectors); i++) {
+  assert_mismatches(mismatches);
+}
+
+static void check_fine(size_t first, size_t end)
+{
+  uint32_t mismatches[MGRS_PRECS] = {0u};
+  size_t i;
+
+  for (i = first; i < end; i++) {
     const struct mgrs_fine_vector *v = &mgrs_fine_vectors[i];
 
     check_point(v->lat, v->lon, v->near_nm, NULL, v->text, mismatches);
   }
-  for (p = 0; p < MGRS_PRECS; p++) {
-    TEST_ASSERT_EQUAL_UINT32(mgrs_mismatches[p], mismatches[p]);
-  }
+  assert_mismatches(mismatches);
+}
+
+static void test_mgrs_encode_fine_first_half(void)
+{
+  check_fine(0u, COUNT(mgrs_fine_vectors) / 2u);
+}
+
+static void test_mgrs_encode_fine_second_half(void)
+{
+  check_fine(COUNT(mgrs_fine_vectors) / 2u, COUNT(mgrs_fine_vectors));
 }
 
 /* Regression: a northern UTM position south of the equator (negative
@@ -261,6 +289,8 @@ void suite_geo_mgrs(void)
 {
   UnitySetTestFile(__FILE__);
   RUN_TEST(test_mgrs_encode_every_precision);
+  RUN_TEST(test_mgrs_encode_fine_first_half);
+  RUN_TEST(test_mgrs_encode_fine_second_half);
   RUN_TEST(test_mgrs_truncates_before_rounding);
   RUN_TEST(test_mgrs_from_utm_negative_northing);
   RUN_TEST(test_mgrs_decode);
