@@ -235,48 +235,45 @@ static void quat_of(const int32_t p[4], drdc_quat_t *q)
   q->z = p[3];
 }
 
-static void test_slerp_random_pairs(void)
+typedef drdc_status_t (*interp_fn)(const drdc_quat_t *a, const drdc_quat_t *b,
+                                   drdc_q1_30_t t, drdc_quat_t *out);
+
+/* the largest distance of interp() from the oracle over n pairs, each
+ * within tol */
+static int64_t check_interp(interp_fn interp, const struct bounds_interp *v,
+                            size_t n, int64_t tol)
 {
   int64_t m = 0;
   size_t i;
 
-  for (i = 0u; i < COUNT(bounds_slerp); i++) {
-    const struct bounds_interp *v = &bounds_slerp[i];
+  for (i = 0u; i < n; i++) {
     drdc_quat_t a;
     drdc_quat_t b;
     drdc_quat_t r;
     int64_t d;
 
-    quat_of(v->a, &a);
-    quat_of(v->b, &b);
-    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_quat_slerp(&a, &b, v->t, &r));
-    d = orient_qdiff_signed(&r, v->q);
+    quat_of(v[i].a, &a);
+    quat_of(v[i].b, &b);
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, interp(&a, &b, v[i].t, &r));
+    d = orient_qdiff_signed(&r, v[i].q);
     m = (d > m) ? d : m;
-    TEST_ASSERT_TRUE(d <= TOL_SLERP);
+    TEST_ASSERT_TRUE(d <= tol);
   }
-  ORIENT_REPORT("bounds slerp (LSB)", m);
+  return m;
+}
+
+static void test_slerp_random_pairs(void)
+{
+  ORIENT_REPORT("bounds slerp (LSB)",
+                check_interp(drdc_quat_slerp, bounds_slerp, COUNT(bounds_slerp),
+                             TOL_SLERP));
 }
 
 static void test_nlerp_random_pairs(void)
 {
-  int64_t m = 0;
-  size_t i;
-
-  for (i = 0u; i < COUNT(bounds_nlerp); i++) {
-    const struct bounds_interp *v = &bounds_nlerp[i];
-    drdc_quat_t a;
-    drdc_quat_t b;
-    drdc_quat_t r;
-    int64_t d;
-
-    quat_of(v->a, &a);
-    quat_of(v->b, &b);
-    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_quat_nlerp(&a, &b, v->t, &r));
-    d = orient_qdiff_signed(&r, v->q);
-    m = (d > m) ? d : m;
-    TEST_ASSERT_TRUE(d <= TOL_NLERP);
-  }
-  ORIENT_REPORT("bounds nlerp (LSB)", m);
+  ORIENT_REPORT("bounds nlerp (LSB)",
+                check_interp(drdc_quat_nlerp, bounds_nlerp, COUNT(bounds_nlerp),
+                             TOL_NLERP));
 }
 
 /* The arcs from the exact dot product: a quarter turn apart within one
