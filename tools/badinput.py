@@ -21,10 +21,14 @@ TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 HEADERS = ["fixed/include/drdc/*.h", "core/include/drdc/*.h"]
 DOC_BLOCK = re.compile(r"/\*\*(.*?)\*/\s*([^;{/]*?\b(drdc_\w+)\s*\([^;{]*\)\s*;)", re.S)
 RETVAL = re.compile(r"@retval\s+(DRDC_[EW]_\w+)\s+(.*)")
+TOLERATED = re.compile(r"@remark\s+Tolerated:\s+(.*)")
 TEST_FN = re.compile(r"^static void (test_\w+)\(void\)\s*\{", re.M)
 
 
-def catalogue():
+def catalogue(pattern_re=None):
+    """[function, status, condition, header] of each @retval line; with
+    pattern_re=TOLERATED, [function, "", condition, header] of each
+    `@remark Tolerated:` line (input accepted on purpose)."""
     rows = []
     for pattern in HEADERS:
         for path in sorted(glob.glob(os.path.join(TOP, pattern))):
@@ -33,10 +37,14 @@ def catalogue():
                 lines = [re.sub(r"^\s*\*\s?", "", l) for l in doc.splitlines()]
                 current = None
                 for line in lines:
-                    m = RETVAL.match(line.strip())
+                    if pattern_re is None:
+                        m = RETVAL.match(line.strip())
+                    else:
+                        m = pattern_re.match(line.strip())
                     if m:
-                        current = [fn, m.group(1), m.group(2).strip(),
-                                   os.path.relpath(path, TOP)]
+                        status, cond = ((m.group(1), m.group(2)) if pattern_re is None
+                                        else ("", m.group(1)))
+                        current = [fn, status, cond.strip(), os.path.relpath(path, TOP)]
                         rows.append(current)
                     elif current and line.strip() and not line.strip().startswith("@"):
                         current[2] += " " + line.strip()
@@ -79,7 +87,14 @@ def render():
     out.append("%d rows over %d functions; %d rows have a named test, %d have none."
                % (len(rows), functions, tested, len(rows) - tested))
     out.append("")
-    return "\n".join(out + table) + "\n", len(rows), tested
+    tolerated = ["", "## Tolerated input", "",
+                 "Input a strict reading of a standard would refuse, accepted on",
+                 "purpose because real devices send it (`@remark Tolerated:` lines",
+                 "of the headers):", "",
+                 "| function | input and what the function does |", "|---|---|"]
+    tolerated += ["| `%s` | %s |" % (fn, cond.replace("|", "\\|"))
+                  for fn, _, cond, _ in catalogue(TOLERATED)]
+    return "\n".join(out + table + tolerated) + "\n", len(rows), tested
 
 
 def main():

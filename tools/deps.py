@@ -132,6 +132,10 @@ PYTHON_PACKAGES = {
         "0e43c7194e3242083f2350b46c09fd4bf8ba1bcc0ebd1460b98fc47fe2389906",
     "astropy-iers-data==0.2026.11.2.0.34.55":
         "785cd5bc193d9206316bd7c786fe0647e212ebf017cd861beabedd91cbe585bf",
+    # NMEA vectors: an independent decoder (NMEA 0183 v4.11 layouts of
+    # every sentence the library reads) locates and names each field
+    "pynmeagps==1.1.8":
+        "8c529f28ffcc39257277c89b1b0dce6b20d54dd89181da9c81911886d580b779",
     # orientation vectors: SciPy's Rotation (numpy pinned above)
     # cp311 manylinux x86-64 wheels; scipy 1.17.1 supports numpy < 2.7
     "scipy==1.17.1":

@@ -72,34 +72,81 @@ drdc_status_t drdc__nmea_fixed(const nmea_frame_t *fr, size_t i,
                                nmea_scale_t scale, int64_t *out)
 {
   /* num x 2^frac and den of each scale: metres x 2^16, knots x 1852 m /
-   * 3600 s x 2^16, degrees x 2^32 / 360 */
-  static const int64_t scales[4][2] = {{INT64_C(65536), 1},
+   * 3600 s x 2^16, km/h x 1000 m / 3600 s x 2^16, degrees x 2^32 / 360 */
+  static const int64_t scales[5][2] = {{INT64_C(65536), 1},
                                        {INT64_C(65536), 1},
                                        {INT64_C(121372672), 3600},
+                                       {INT64_C(65536000), 3600},
                                        {INT64_C(4294967296), 360}};
   const int64_t *sc = scales[scale];
   int narrow = 0;
   nmea_field_t f = nmea_field(fr, i);
   int64_t m = 0;
   int64_t p10 = 1;
+  int negative;
   drdc_status_t st = drdc__nmea_decimal(f.p, f.n, &m, &p10);
 
-  if ((scale == NMEA_METRES_Q15_16) || (scale == NMEA_KNOTS_Q15_16)) {
+  if ((scale == NMEA_METRES_Q15_16) || (scale == NMEA_KNOTS_Q15_16) ||
+      (scale == NMEA_KMH_Q15_16)) {
     narrow = 1;
   }
   if (st != DRDC_OK) {
     return st;
   }
-  /* den x 10^15 < 2^63 for every scale (at most 15 decimals) */
+  negative = (m < 0) ? 1 : 0;
+  /* den x 10^15 < 2^63 for every scale (at most 15 decimals); the
+   * product itself overflows int64_t only for a Q15.16 or degrees value
+   * of 18 digits, far beyond int32_t */
   st = drdc_fx_muldiv_s64(m, sc[0], sc[1] * p10, &m);
-  if ((st != DRDC_OK) ||
-      ((narrow != 0) && ((m > INT32_MAX) || (m < INT32_MIN)))) {
+  if ((narrow != 0) &&
+      ((st != DRDC_OK) || (m > INT32_MAX) || (m < INT32_MIN))) {
+    m = (negative != 0) ? INT32_MIN : INT32_MAX;
+    st = DRDC_W_SATURATED;
+  } else if (st != DRDC_OK) {
     return DRDC_E_RANGE;
+  } else {
+    /* in range */
   }
   if (out != NULL) {
     *out = m;
   }
+  return st;
+}
+
+drdc_status_t drdc__nmea_q15_16(const nmea_frame_t *fr, size_t i,
+                                nmea_scale_t scale, drdc_nmea_t *n,
+                                drdc_q15_16_t *field, uint32_t has_bit,
+                                uint32_t beyond_bit)
+{
+  int64_t v = 0;
+  drdc_status_t st = drdc__nmea_fixed(fr, i, scale, &v);
+
+  if ((st != DRDC_OK) && (st != DRDC_W_SATURATED)) {
+    return st;
+  }
+  if (n != NULL) {
+    *field = (drdc_q15_16_t)v; /* within int32_t: saturated above */
+    n->has |= has_bit;
+    if (st == DRDC_W_SATURATED) {
+      n->beyond |= beyond_bit;
+    }
+  }
   return DRDC_OK;
+}
+
+drdc_status_t drdc__nmea_letter(const nmea_frame_t *fr, size_t i, char letter)
+{
+  nmea_field_t f = nmea_field(fr, i);
+  drdc_status_t st = DRDC_OK;
+
+  if (f.n == 0u) {
+    st = (fr->strict != 0u) ? DRDC_E_MISSING_FIELD : DRDC_OK;
+  } else if ((f.n != 1u) || (f.p[0] != letter)) {
+    st = DRDC_E_SYNTAX;
+  } else {
+    st = DRDC_OK;
+  }
+  return st;
 }
 
 drdc_status_t drdc__nmea_tod(const nmea_frame_t *fr, size_t i_field,
@@ -224,10 +271,10 @@ drdc_status_t drdc__nmea_angle(const nmea_frame_t *fr, size_t i_field,
   return DRDC_OK;
 }
 
-drdc_status_t drdc__nmea_fix(const nmea_frame_t *fr, size_t latitude,
-                             drdc_nmea_t *n)
+drdc_status_t drdc__nmea_fix(const nmea_frame_t *fr, size_t time,
+                             size_t latitude, drdc_nmea_t *n)
 {
-  drdc_status_t st = drdc__nmea_tod(fr, 1u, (n != NULL) ? &n->time : NULL);
+  drdc_status_t st = drdc__nmea_tod(fr, time, (n != NULL) ? &n->time : NULL);
 
   if (st == DRDC_OK) {
     st = drdc__nmea_angle(fr, latitude, 1, (n != NULL) ? &n->latitude : NULL);
@@ -235,6 +282,9 @@ drdc_status_t drdc__nmea_fix(const nmea_frame_t *fr, size_t latitude,
   if (st == DRDC_OK) {
     st = drdc__nmea_angle(fr, latitude + 2u, 0,
                           (n != NULL) ? &n->longitude : NULL);
+  }
+  if ((st == DRDC_OK) && (n != NULL)) {
+    n->has |= DRDC_NMEA_HAS_TIME | DRDC_NMEA_HAS_POSITION;
   }
   return st;
 }

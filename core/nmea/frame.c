@@ -7,9 +7,6 @@
  */
 #include "nmea_impl.h"
 
-/* Characters up to the end of the checksum: 82 minus CR LF. */
-#define NMEA_BODY_MAX (DRDC_NMEA_LENGTH_MAX - 2u)
-
 /* Value of a hex digit, or -1. */
 static int hex_value(char c)
 {
@@ -35,20 +32,23 @@ static int is_upper(char c)
 /* The sentence formatter of the address, or DRDC_E_SENTENCE. */
 static drdc_status_t formatter(const char *a, drdc_nmea_type_t *type)
 {
-  static const char names[5][3] = {{'G', 'G', 'A'},
-                                   {'R', 'M', 'C'},
-                                   {'G', 'N', 'S'},
-                                   {'Z', 'D', 'A'},
-                                   {'G', 'S', 'T'}};
-  static const drdc_nmea_type_t types[5] = {DRDC_NMEA_GGA, DRDC_NMEA_RMC,
-                                            DRDC_NMEA_GNS, DRDC_NMEA_ZDA,
-                                            DRDC_NMEA_GST};
+  static const struct {
+    char name[3];
+    drdc_nmea_type_t type;
+  } formatters[] = {
+      {{'G', 'G', 'A'}, DRDC_NMEA_GGA}, {{'R', 'M', 'C'}, DRDC_NMEA_RMC},
+      {{'G', 'N', 'S'}, DRDC_NMEA_GNS}, {{'Z', 'D', 'A'}, DRDC_NMEA_ZDA},
+      {{'G', 'S', 'T'}, DRDC_NMEA_GST}, {{'G', 'L', 'L'}, DRDC_NMEA_GLL},
+      {{'V', 'T', 'G'}, DRDC_NMEA_VTG}, {{'H', 'D', 'T'}, DRDC_NMEA_HDT},
+      {{'T', 'H', 'S'}, DRDC_NMEA_THS}, {{'G', 'S', 'A'}, DRDC_NMEA_GSA},
+  };
   size_t i;
 
-  for (i = 0u; i < 5u; i++) {
-    if ((a[0] == names[i][0]) && (a[1] == names[i][1]) &&
-        (a[2] == names[i][2])) {
-      *type = types[i];
+  for (i = 0u; i < (sizeof formatters / sizeof formatters[0]); i++) {
+    const char *name = formatters[i].name;
+
+    if ((a[0] == name[0]) && (a[1] == name[1]) && (a[2] == name[2])) {
+      *type = formatters[i].type;
       return DRDC_OK;
     }
   }
@@ -81,9 +81,10 @@ static int line_end_only(const char *rest, size_t n)
   return ok;
 }
 
-drdc_status_t drdc__nmea_frame(const char *text, size_t length,
+drdc_status_t drdc__nmea_frame(const char *text, size_t length, uint32_t flags,
                                nmea_frame_t *fr)
 {
+  size_t body_max = NMEA_BODY_MAX;
   size_t i = 1u;
   size_t star = 0u;
   unsigned sum = 0u;
@@ -91,6 +92,9 @@ drdc_status_t drdc__nmea_frame(const char *text, size_t length,
   int lo;
   size_t k;
 
+  if ((flags & DRDC_NMEA_STRICT) != 0u) {
+    body_max = NMEA_0183_BODY_MAX;
+  }
   if ((length == 0u) || (text[0] != '$')) {
     return DRDC_E_SYNTAX;
   }
@@ -101,7 +105,7 @@ drdc_status_t drdc__nmea_frame(const char *text, size_t length,
     if (c == (unsigned char)'*') {
       star = i;
     } else if ((c == (unsigned char)'\r') || (c == (unsigned char)'\n')) {
-      return (i > NMEA_BODY_MAX) ? DRDC_E_OVERLONG : DRDC_E_TRUNCATED;
+      return (i > body_max) ? DRDC_E_OVERLONG : DRDC_E_TRUNCATED;
     } else if ((c < 0x20u) || (c > 0x7Eu)) {
       return DRDC_E_CHARACTER;
     } else {
@@ -110,9 +114,9 @@ drdc_status_t drdc__nmea_frame(const char *text, size_t length,
     }
   }
   if (star == 0u) {
-    return (length > NMEA_BODY_MAX) ? DRDC_E_OVERLONG : DRDC_E_TRUNCATED;
+    return (length > body_max) ? DRDC_E_OVERLONG : DRDC_E_TRUNCATED;
   }
-  if ((star + 3u) > NMEA_BODY_MAX) {
+  if ((star + 3u) > body_max) {
     return DRDC_E_OVERLONG;
   }
   if ((star + 3u) > length) {
@@ -138,8 +142,9 @@ drdc_status_t drdc__nmea_frame(const char *text, size_t length,
     return DRDC_E_SENTENCE;
   }
   fr->text = text;
+  fr->strict = ((flags & DRDC_NMEA_STRICT) != 0u) ? 1u : 0u;
   /* fields between the address and '*'; every offset is at most
-   * star + 1 <= NMEA_BODY_MAX - 2, so it fits uint8_t */
+   * star + 1 <= NMEA_BODY_MAX - 2 = 124, so it fits uint8_t */
   fr->count = 0u;
   fr->start[0] = 7u;
   for (k = 7u; k <= star; k++) {

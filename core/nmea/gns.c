@@ -6,22 +6,14 @@
  */
 #include "nmea_impl.h"
 
-/* $--GNS,hhmmss.ss,llll.ll,a,yyyyy.yy,a,c--c,xx,x.x,x.x,x.x,x.x,x.x */
-#define GNS_FIELDS 12u
+/* $--GNS,hhmmss.ss,llll.ll,a,yyyyy.yy,a,c--c,xx,x.x,x.x,x.x,x.x,x.x(,s):
+ * 12 fields (13 in 4.10); the satellites (field 7) are the last one
+ * required. */
+#define GNS_FIELDS          12u
+#define GNS_FIELDS_REQUIRED 7u
 /* mode letters kept (one per constellation: GPS, GLONASS, Galileo, BDS,
  * QZSS, NavIC) */
 #define GNS_MODES_MAX 6u
-
-/* Mode letters of NMEA 0183 v4.10: A autonomous, D differential,
- * E estimated, F float RTK, M manual, N no fix, P precise, R RTK,
- * S simulator. */
-static int is_mode(char c)
-{
-  return ((c == 'A') || (c == 'D') || (c == 'E') || (c == 'F') || (c == 'M') ||
-          (c == 'N') || (c == 'P') || (c == 'R') || (c == 'S'))
-             ? 1
-             : 0;
-}
 
 drdc_status_t drdc__nmea_gns(const nmea_frame_t *fr, drdc_nmea_t *n)
 {
@@ -31,7 +23,7 @@ drdc_status_t drdc__nmea_gns(const nmea_frame_t *fr, drdc_nmea_t *n)
   int fix = 0;
   int32_t satellites = 0;
 
-  if (fr->count < GNS_FIELDS) {
+  if (nmea_has_fields(fr, GNS_FIELDS_REQUIRED, GNS_FIELDS) == 0) {
     return DRDC_E_MISSING_FIELD;
   }
   if (mode.n == 0u) {
@@ -43,7 +35,7 @@ drdc_status_t drdc__nmea_gns(const nmea_frame_t *fr, drdc_nmea_t *n)
   for (i = 0u; i < mode.n; i++) {
     char c = mode.p[i];
 
-    if (is_mode(c) == 0) {
+    if (nmea_is_mode(c) == 0) {
       return DRDC_E_SYNTAX;
     }
     if (c != 'N') {
@@ -53,7 +45,7 @@ drdc_status_t drdc__nmea_gns(const nmea_frame_t *fr, drdc_nmea_t *n)
   if (fix == 0) {
     return DRDC_E_NO_FIX;
   }
-  st = drdc__nmea_fix(fr, 2u, n);
+  st = drdc__nmea_fix(fr, 1u, 2u, n);
   if (st == DRDC_OK) {
     st = drdc__nmea_uint(fr, 7u, 1u, 2u, &satellites);
   }
@@ -66,7 +58,7 @@ drdc_status_t drdc__nmea_gns(const nmea_frame_t *fr, drdc_nmea_t *n)
     }
     n->mode[mode.n] = '\0';
     n->satellites = satellites;
-    n->has |= DRDC_NMEA_HAS_POSITION | DRDC_NMEA_HAS_SATELLITES;
+    n->has |= DRDC_NMEA_HAS_SATELLITES;
   }
   return DRDC_OK;
 }

@@ -6,44 +6,61 @@
  */
 #include "nmea_impl.h"
 
-/* $--GST,hhmmss.ss,x.x,x.x,x.x,x.x,x.x,x.x,x.x */
+/* $--GST,hhmmss.ss,x.x,x.x,x.x,x.x,x.x,x.x,x.x: every field up to the
+ * altitude deviation (field 8) is required. */
 #define GST_FIELDS 8u
 /* RMS, latitude, longitude, altitude deviations, ellipse semi-axes */
 #define GST_DEVIATIONS 6u
 
-/* Where deviation `i` (of GST_DEVIATIONS) goes. */
-static drdc_q15_16_t *deviation(drdc_nmea_t *n, size_t i)
+/* Deviation `i` of GST_DEVIATIONS: its field, where it goes in `n` and
+ * its DRDC_NMEA_BEYOND_* bit. */
+typedef struct gst_deviation {
+  size_t field;
+  drdc_q15_16_t *value;
+  uint32_t beyond;
+} gst_deviation_t;
+
+static gst_deviation_t deviation(drdc_nmea_t *n, size_t i)
 {
-  drdc_q15_16_t *p;
+  gst_deviation_t d = {2u, NULL, DRDC_NMEA_BEYOND_RMS};
 
   switch (i) {
   case 0u:
-    p = &n->rms;
+    d.field = 2u;
+    d.value = (n != NULL) ? &n->rms : NULL;
+    d.beyond = DRDC_NMEA_BEYOND_RMS;
     break;
   case 1u:
-    p = &n->sigma_latitude;
+    d.field = 6u;
+    d.value = (n != NULL) ? &n->sigma_latitude : NULL;
+    d.beyond = DRDC_NMEA_BEYOND_SIGMA_LATITUDE;
     break;
   case 2u:
-    p = &n->sigma_longitude;
+    d.field = 7u;
+    d.value = (n != NULL) ? &n->sigma_longitude : NULL;
+    d.beyond = DRDC_NMEA_BEYOND_SIGMA_LONGITUDE;
     break;
   case 3u:
-    p = &n->sigma_altitude;
+    d.field = 8u;
+    d.value = (n != NULL) ? &n->sigma_altitude : NULL;
+    d.beyond = DRDC_NMEA_BEYOND_SIGMA_ALTITUDE;
     break;
   case 4u:
-    p = &n->sigma_major;
+    d.field = 3u;
+    d.value = (n != NULL) ? &n->sigma_major : NULL;
+    d.beyond = DRDC_NMEA_BEYOND_SIGMA_MAJOR;
     break;
   default:
-    p = &n->sigma_minor;
+    d.field = 4u;
+    d.value = (n != NULL) ? &n->sigma_minor : NULL;
+    d.beyond = DRDC_NMEA_BEYOND_SIGMA_MINOR;
     break;
   }
-  return p;
+  return d;
 }
 
 drdc_status_t drdc__nmea_gst(const nmea_frame_t *fr, drdc_nmea_t *n)
 {
-  /* the deviations in metres -> Q15.16: fields 2, 6, 7, 8 (always) and
-   * 3, 4 (the error ellipse) */
-  static const uint8_t fields[GST_DEVIATIONS] = {2u, 6u, 7u, 8u, 3u, 4u};
   drdc_status_t st;
   int64_t v = 0;
   size_t i;
@@ -59,11 +76,13 @@ drdc_status_t drdc__nmea_gst(const nmea_frame_t *fr, drdc_nmea_t *n)
       (nmea_field(fr, 5u).n != 0u)) {
     count = GST_DEVIATIONS;
   }
+  /* metres -> Q15.16; a deviation beyond 32767 m (a receiver before it
+   * converges) is flagged, not refused */
   for (i = 0u; (i < count) && (st == DRDC_OK); i++) {
-    st = drdc__nmea_fixed(fr, fields[i], NMEA_METRES_Q15_16, &v);
-    if ((st == DRDC_OK) && (n != NULL)) {
-      *deviation(n, i) = (drdc_q15_16_t)v;
-    }
+    gst_deviation_t d = deviation(n, i);
+
+    st = drdc__nmea_q15_16(fr, d.field, NMEA_METRES_Q15_16, n, d.value, 0u,
+                           d.beyond);
   }
   if ((st == DRDC_OK) && (count == GST_DEVIATIONS)) {
     /* degrees from true north -> binary angle, wrapping */
@@ -74,7 +93,7 @@ drdc_status_t drdc__nmea_gst(const nmea_frame_t *fr, drdc_nmea_t *n)
     }
   }
   if ((st == DRDC_OK) && (n != NULL)) {
-    n->has |= DRDC_NMEA_HAS_GST;
+    n->has |= DRDC_NMEA_HAS_TIME | DRDC_NMEA_HAS_GST;
   }
   return st;
 }

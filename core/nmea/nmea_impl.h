@@ -13,10 +13,15 @@
 
 #include <drdc/nmea.h>
 
-/** Most fields kept: the decoders read fields 1..14 at most (GGA's
- *  station id is field 14); a sentence may have more, which no decoder
+/** Most fields kept: the decoders read fields 1..18 at most (GSA's
+ *  system id is field 18); a sentence may have more, which no decoder
  *  reads (the count saturates here, above every decoder's minimum). */
-#define NMEA_FIELDS_MAX 16u
+#define NMEA_FIELDS_MAX 20u
+
+/** Characters up to the end of the checksum: the line limits minus CR LF.
+ *  Both fit the frame's one-byte field offsets. */
+#define NMEA_BODY_MAX      (DRDC_NMEA_LENGTH_MAX - 2u)
+#define NMEA_0183_BODY_MAX (DRDC_NMEA_0183_LENGTH_MAX - 2u)
 
 /** One field: `n` characters at `p` (inside the caller's text). */
 typedef struct nmea_field {
@@ -25,13 +30,14 @@ typedef struct nmea_field {
 } nmea_field_t;
 
 /** A sentence whose framing, checksum and address are valid. Fields are
- *  kept as one-byte offsets into the text: a sentence has at most 82
- *  characters. */
+ *  kept as one-byte offsets into the text: a sentence has at most
+ *  NMEA_BODY_MAX characters. */
 typedef struct drdc__nmea_frame {
   const char *text; /**< the sentence, from `$` (talker at
                          text[1], text[2]) */
   drdc_nmea_type_t type;
-  uint8_t count; /**< fields after the address */
+  uint8_t strict; /**< 1: DRDC_NMEA_STRICT (field counts of the layout) */
+  uint8_t count;  /**< fields after the address */
   /** start[i - 1]: offset of field i; field i ends one character before
    *  start[i] (at its ',' or the '*') */
   uint8_t start[NMEA_FIELDS_MAX + 1u];
@@ -39,8 +45,19 @@ typedef struct drdc__nmea_frame {
 
 /** Check framing, characters, length and checksum, decode the address
  *  and split the fields. */
-drdc_status_t drdc__nmea_frame(const char *text, size_t length,
+drdc_status_t drdc__nmea_frame(const char *text, size_t length, uint32_t flags,
                                nmea_frame_t *fr);
+
+/** Whether the sentence has the fields its decoder needs: `layout`, the
+ *  count of NMEA 0183, in strict mode; else `required`, up to its last
+ *  required field (the fields after it may be left off). */
+static inline int nmea_has_fields(const nmea_frame_t *fr, size_t required,
+                                  size_t layout)
+{
+  size_t need = (fr->strict != 0u) ? layout : required;
+
+  return ((size_t)fr->count >= need) ? 1 : 0;
+}
 
 /** Field `i` (1-based as in the standard), or an empty field when the
  *  sentence has fewer. */
@@ -53,6 +70,17 @@ static inline nmea_field_t nmea_field(const nmea_frame_t *fr, size_t i)
     f.n = ((size_t)fr->start[i] - (size_t)fr->start[i - 1u]) - 1u;
   }
   return f;
+}
+
+/** Mode letters of NMEA 0183 v4.10 (RMC, GLL, VTG, GNS): A autonomous,
+ *  D differential, E estimated, F float RTK, M manual, N no fix,
+ *  P precise, R RTK, S simulator. */
+static inline int nmea_is_mode(char c)
+{
+  return ((c == 'A') || (c == 'D') || (c == 'E') || (c == 'F') || (c == 'M') ||
+          (c == 'N') || (c == 'P') || (c == 'R') || (c == 'S'))
+             ? 1
+             : 0;
 }
 
 /* The field parsers and sentence decoders below write their outputs only
@@ -78,17 +106,31 @@ drdc_status_t drdc__nmea_decimal(const char *p, size_t n, int64_t *mantissa,
 /** Scalings of decimal fields (drdc__nmea_fixed()). */
 typedef enum nmea_scale {
   NMEA_METRES_Q47_16 = 0, /**< metres -> Q47.16 m */
-  NMEA_METRES_Q15_16 = 1, /**< metres -> Q15.16 m (int32_t range) */
-  NMEA_KNOTS_Q15_16 = 2,  /**< knots -> Q15.16 m/s (int32_t range) */
-  NMEA_DEGREES_BAM32 = 3  /**< degrees -> 2^32 per turn (wrap it) */
+  NMEA_METRES_Q15_16 = 1, /**< metres (or a plain number) -> Q15.16 */
+  NMEA_KNOTS_Q15_16 = 2,  /**< knots -> Q15.16 m/s */
+  NMEA_KMH_Q15_16 = 3,    /**< km/h -> Q15.16 m/s */
+  NMEA_DEGREES_BAM32 = 4  /**< degrees -> 2^32 per turn (wrap it) */
 } nmea_scale_t;
 
 /** Field `i` as [-]digits[.digits] -> value x num x 2^frac / den of the
  *  scale, rounded once to nearest, ties away from zero
- *  (drdc_fx_muldiv_s64); DRDC_E_RANGE also for a Q15.16 result outside
- *  int32_t. */
+ *  (drdc_fx_muldiv_s64). A Q15.16 result beyond int32_t is written as
+ *  INT32_MAX (INT32_MIN if negative) with DRDC_W_SATURATED; a Q47.16
+ *  beyond int64_t gives DRDC_E_RANGE. */
 drdc_status_t drdc__nmea_fixed(const nmea_frame_t *fr, size_t i,
                                nmea_scale_t scale, int64_t *out);
+
+/** drdc__nmea_fixed() into a Q15.16 field of `n` (unless `n` is NULL):
+ *  `*field` written, DRDC_W_SATURATED turned into `beyond_bit` in
+ *  n->beyond and `has_bit` set in n->has. */
+drdc_status_t drdc__nmea_q15_16(const nmea_frame_t *fr, size_t i,
+                                nmea_scale_t scale, drdc_nmea_t *n,
+                                drdc_q15_16_t *field, uint32_t has_bit,
+                                uint32_t beyond_bit);
+
+/** One letter field `i` that must be `letter` when not empty (the unit
+ *  letters of VTG and HDT); strict mode also requires it present. */
+drdc_status_t drdc__nmea_letter(const nmea_frame_t *fr, size_t i, char letter);
 
 /** Field `i` as hhmmss[.s..s] (up to 9 decimals) -> time of day, exact. */
 drdc_status_t drdc__nmea_tod(const nmea_frame_t *fr, size_t i,
@@ -100,13 +142,14 @@ drdc_status_t drdc__nmea_tod(const nmea_frame_t *fr, size_t i,
 drdc_status_t drdc__nmea_angle(const nmea_frame_t *fr, size_t i, int latitude,
                                drdc_nas_t *out);
 
-/** The time and position of a fix (GGA, GNS, RMC): field 1 as drdc__nmea_tod(),
- *  field `latitude` and the one after it as a latitude, the two after
- *  those as a longitude (drdc__nmea_angle()), checked in that order (the first
- *  failure's status) and written into n->time, n->latitude and
- *  n->longitude, unless `n` is NULL. */
-drdc_status_t drdc__nmea_fix(const nmea_frame_t *fr, size_t latitude,
-                             drdc_nmea_t *n);
+/** The time and position of a fix (GGA, GNS, RMC, GLL): field `time` as
+ *  drdc__nmea_tod(), field `latitude` and the one after it as a
+ *  latitude, the two after those as a longitude (drdc__nmea_angle()),
+ *  checked in that order (the first failure's status) and written into
+ *  n->time, n->latitude and n->longitude with their has bits, unless `n`
+ *  is NULL. */
+drdc_status_t drdc__nmea_fix(const nmea_frame_t *fr, size_t time,
+                             size_t latitude, drdc_nmea_t *n);
 
 /** Sentence decoders: `fr` is framed; they fill `*n` (zeroed by the
  *  caller) or, with `n` NULL, only check the sentence, returning the
@@ -122,5 +165,10 @@ drdc_status_t drdc__nmea_rmc(const nmea_frame_t *fr, drdc_nmea_t *n);
 drdc_status_t drdc__nmea_gns(const nmea_frame_t *fr, drdc_nmea_t *n);
 drdc_status_t drdc__nmea_zda(const nmea_frame_t *fr, drdc_nmea_t *n);
 drdc_status_t drdc__nmea_gst(const nmea_frame_t *fr, drdc_nmea_t *n);
+drdc_status_t drdc__nmea_gll(const nmea_frame_t *fr, drdc_nmea_t *n);
+drdc_status_t drdc__nmea_vtg(const nmea_frame_t *fr, drdc_nmea_t *n);
+drdc_status_t drdc__nmea_hdt(const nmea_frame_t *fr, drdc_nmea_t *n);
+drdc_status_t drdc__nmea_ths(const nmea_frame_t *fr, drdc_nmea_t *n);
+drdc_status_t drdc__nmea_gsa(const nmea_frame_t *fr, drdc_nmea_t *n);
 
 #endif /* DRDC_NMEA_IMPL_H */

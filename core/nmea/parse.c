@@ -2,8 +2,9 @@
 /**
  * @file
  * @ingroup drdc_nmea
- * @brief drdc_nmea_parse(): frame the sentence, check that every field
- *        decodes, then decode it into the caller's record.
+ * @brief drdc_nmea_parse() and drdc_nmea_parse_with(): frame the
+ *        sentence, check that every field decodes, then decode it into
+ *        the caller's record.
  */
 #include "nmea_impl.h"
 
@@ -21,6 +22,7 @@ static void clear(drdc_nmea_t *to)
     to->mode[i] = '\0';
   }
   to->has = 0u;
+  to->beyond = 0u;
   to->time.hour = 0;
   to->time.minute = 0;
   to->time.second = 0;
@@ -32,8 +34,17 @@ static void clear(drdc_nmea_t *to)
   to->quality = 0;
   to->satellites = 0;
   to->hdop = 0;
+  to->pdop = 0;
+  to->vdop = 0;
   to->speed = 0;
   to->course = 0u;
+  to->course_magnetic = 0u;
+  to->heading = 0u;
+  to->fix_type = 0;
+  to->system_id = 0;
+  for (i = 0u; i < DRDC_NMEA_GSA_IDS; i++) {
+    to->satellite_ids[i] = 0u;
+  }
   to->year = 0;
   to->month = 0;
   to->day = 0;
@@ -76,6 +87,21 @@ static drdc_status_t decode_sentence(const nmea_frame_t *fr, drdc_nmea_t *n)
   case DRDC_NMEA_ZDA:
     st = drdc__nmea_zda(fr, n);
     break;
+  case DRDC_NMEA_GLL:
+    st = drdc__nmea_gll(fr, n);
+    break;
+  case DRDC_NMEA_VTG:
+    st = drdc__nmea_vtg(fr, n);
+    break;
+  case DRDC_NMEA_HDT:
+    st = drdc__nmea_hdt(fr, n);
+    break;
+  case DRDC_NMEA_THS:
+    st = drdc__nmea_ths(fr, n);
+    break;
+  case DRDC_NMEA_GSA:
+    st = drdc__nmea_gsa(fr, n);
+    break;
   default:
     st = drdc__nmea_gst(fr, n);
     break;
@@ -91,7 +117,8 @@ static drdc_status_t decode_sentence(const nmea_frame_t *fr, drdc_nmea_t *n)
  * too. The record is written only on success without a second
  * drdc_nmea_t on the stack, for about twice the decoding cycles.
  */
-drdc_status_t drdc_nmea_parse(const char *text, size_t length, drdc_nmea_t *out)
+drdc_status_t drdc_nmea_parse_with(const char *text, size_t length,
+                                   uint32_t flags, drdc_nmea_t *out)
 {
   nmea_frame_t fr;
   drdc_nmea_t *n = NULL;
@@ -101,7 +128,10 @@ drdc_status_t drdc_nmea_parse(const char *text, size_t length, drdc_nmea_t *out)
   if ((text == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  st = drdc__nmea_frame(text, length, &fr);
+  if ((flags & ~DRDC_NMEA_STRICT) != 0u) {
+    return DRDC_E_RANGE;
+  }
+  st = drdc__nmea_frame(text, length, flags, &fr);
   /* pass 0 checks (n NULL), pass 1 decodes into out */
   for (pass = 0u; (pass < 2u) && (st == DRDC_OK); pass++) {
     if (pass == 1u) {
@@ -114,4 +144,9 @@ drdc_status_t drdc_nmea_parse(const char *text, size_t length, drdc_nmea_t *out)
     st = decode_sentence(&fr, n);
   }
   return st;
+}
+
+drdc_status_t drdc_nmea_parse(const char *text, size_t length, drdc_nmea_t *out)
+{
+  return drdc_nmea_parse_with(text, length, 0u, out);
 }

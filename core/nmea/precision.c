@@ -10,16 +10,13 @@ drdc_status_t drdc__nmea_precision(const nmea_frame_t *fr, size_t separation,
                                    drdc_nmea_t *n)
 {
   drdc_status_t st;
-  int64_t v = 0;
 
   if (nmea_field(fr, 8u).n != 0u) {
-    st = drdc__nmea_fixed(fr, 8u, NMEA_METRES_Q15_16, &v);
+    st = drdc__nmea_q15_16(fr, 8u, NMEA_METRES_Q15_16, n,
+                           (n != NULL) ? &n->hdop : NULL, DRDC_NMEA_HAS_HDOP,
+                           DRDC_NMEA_BEYOND_HDOP);
     if (st != DRDC_OK) {
       return st;
-    }
-    if (n != NULL) {
-      n->hdop = (drdc_q15_16_t)v;
-      n->has |= DRDC_NMEA_HAS_HDOP;
     }
   }
   if (nmea_field(fr, 9u).n != 0u) {

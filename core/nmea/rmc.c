@@ -7,8 +7,10 @@
 #include "nmea_impl.h"
 
 /* $--RMC,hhmmss.ss,A,llll.ll,a,yyyyy.yy,a,x.x,x.x,ddmmyy,x.x,a(,m(,s)):
- * 11 fields before NMEA 2.3, 12 with the mode, 13 in 4.10 */
-#define RMC_FIELDS 11u
+ * 11 fields before NMEA 2.3, 12 with the mode, 13 in 4.10; the date
+ * (field 9) is the last one required. */
+#define RMC_FIELDS          11u
+#define RMC_FIELDS_REQUIRED 9u
 /* Two-digit years: 80..99 are 1980..1999 (the GPS epoch), 00..79 are
  * 2000..2079. */
 #define RMC_PIVOT 80
@@ -26,7 +28,7 @@ drdc_status_t drdc__nmea_rmc(const nmea_frame_t *fr, drdc_nmea_t *n)
   char m = '\0';
   int64_t v = 0;
 
-  if (fr->count < RMC_FIELDS) {
+  if (nmea_has_fields(fr, RMC_FIELDS_REQUIRED, RMC_FIELDS) == 0) {
     return DRDC_E_MISSING_FIELD;
   }
   if (status.n == 0u) {
@@ -42,7 +44,7 @@ drdc_status_t drdc__nmea_rmc(const nmea_frame_t *fr, drdc_nmea_t *n)
   if ((s == 'V') || (m == 'N')) {
     return DRDC_E_NO_FIX;
   }
-  st = drdc__nmea_fix(fr, 3u, n);
+  st = drdc__nmea_fix(fr, 1u, 3u, n);
   if (st == DRDC_OK) {
     st = drdc__nmea_uint(fr, 9u, 6u, 6u, &ddmmyy);
   }
@@ -65,16 +67,14 @@ drdc_status_t drdc__nmea_rmc(const nmea_frame_t *fr, drdc_nmea_t *n)
     n->day = day;
     n->month = month;
     n->year = year;
-    n->has |= DRDC_NMEA_HAS_POSITION | DRDC_NMEA_HAS_DATE;
+    n->has |= DRDC_NMEA_HAS_DATE;
   }
   if (nmea_field(fr, 7u).n != 0u) {
-    st = drdc__nmea_fixed(fr, 7u, NMEA_KNOTS_Q15_16, &v);
+    st = drdc__nmea_q15_16(fr, 7u, NMEA_KNOTS_Q15_16, n,
+                           (n != NULL) ? &n->speed : NULL, DRDC_NMEA_HAS_SPEED,
+                           DRDC_NMEA_BEYOND_SPEED);
     if (st != DRDC_OK) {
       return st;
-    }
-    if (n != NULL) {
-      n->speed = (drdc_q15_16_t)v;
-      n->has |= DRDC_NMEA_HAS_SPEED;
     }
   }
   if (nmea_field(fr, 8u).n != 0u) {

@@ -53,7 +53,9 @@ drdc_status_t drdc_nmea_utc(const drdc_time_leap_t *leap,
   if ((dated == NULL) || (s == NULL) || (utc == NULL)) {
     return DRDC_E_NULL;
   }
-  if ((dated->has & DRDC_NMEA_HAS_DATE) == 0u) {
+  if (((dated->has & DRDC_NMEA_HAS_DATE) == 0u) ||
+      ((dated->has & DRDC_NMEA_HAS_TIME) == 0u) ||
+      ((s->has & DRDC_NMEA_HAS_TIME) == 0u)) {
     return DRDC_E_MISSING_FIELD;
   }
   st = drdc_time_days_from_civil(dated->year, dated->month, dated->day, &days);

@@ -6,9 +6,11 @@
  */
 #include "nmea_impl.h"
 
-/* $--ZDA,hhmmss.ss,xx,xx,xxxx,xx,xx */
-#define ZDA_FIELDS     6u
-#define ZONE_HOURS_MAX 13
+/* $--ZDA,hhmmss.ss,xx,xx,xxxx,xx,xx: 6 fields; the year (field 4) is the
+ * last one required, the local zone is optional. */
+#define ZDA_FIELDS          6u
+#define ZDA_FIELDS_REQUIRED 4u
+#define ZONE_HOURS_MAX      13
 
 drdc_status_t drdc__nmea_zda(const nmea_frame_t *fr, drdc_nmea_t *n)
 {
@@ -20,7 +22,7 @@ drdc_status_t drdc__nmea_zda(const nmea_frame_t *fr, drdc_nmea_t *n)
   int32_t zone_hours = 0;
   int32_t zone_minutes = 0;
 
-  if (fr->count < ZDA_FIELDS) {
+  if (nmea_has_fields(fr, ZDA_FIELDS_REQUIRED, ZDA_FIELDS) == 0) {
     return DRDC_E_MISSING_FIELD;
   }
   st = drdc__nmea_tod(fr, 1u, (n != NULL) ? &n->time : NULL);
@@ -49,7 +51,7 @@ drdc_status_t drdc__nmea_zda(const nmea_frame_t *fr, drdc_nmea_t *n)
     n->day = day;
     n->month = month;
     n->year = year;
-    n->has |= DRDC_NMEA_HAS_DATE;
+    n->has |= DRDC_NMEA_HAS_TIME | DRDC_NMEA_HAS_DATE;
   }
   if (zone.n != 0u) {
     nmea_field_t digits = zone;

@@ -18,7 +18,7 @@
 #include "vectors_nmea.h"
 
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
-#define BUFFER   128u
+#define BUFFER   160u
 
 static void sentinel(drdc_nmea_t *n)
 {
@@ -60,12 +60,14 @@ static void test_corpus_matches_the_fraction_model(void)
   for (i = 0u; i < COUNT(nmea_vectors); i++) {
     const struct nmea_vector *v = &nmea_vectors[i];
     drdc_nmea_t n;
+    drdc_nmea_t strict;
 
     parse_ok(v->text, v->length, &n);
 
     TEST_ASSERT_EQUAL_INT_MESSAGE(v->type, n.type, v->text);
     TEST_ASSERT_EQUAL_STRING(v->talker, n.talker);
     TEST_ASSERT_EQUAL_HEX32_MESSAGE(v->has, n.has, v->text);
+    TEST_ASSERT_EQUAL_HEX32_MESSAGE(v->beyond, n.beyond, v->text);
     TEST_ASSERT_EQUAL_INT32(v->tod[0], n.time.hour);
     TEST_ASSERT_EQUAL_INT32(v->tod[1], n.time.minute);
     TEST_ASSERT_EQUAL_INT32(v->tod[2], n.time.second);
@@ -75,17 +77,25 @@ static void test_corpus_matches_the_fraction_model(void)
     TEST_ASSERT_EQUAL_INT64(v->altitude, n.altitude);
     TEST_ASSERT_EQUAL_INT64(v->separation, n.separation);
     TEST_ASSERT_EQUAL_INT32(v->quality, n.quality);
-    TEST_ASSERT_EQUAL_INT32(v->satellites, n.satellites);
-    TEST_ASSERT_EQUAL_INT32(v->hdop, n.hdop);
-    TEST_ASSERT_EQUAL_INT32(v->speed, n.speed);
-    TEST_ASSERT_EQUAL_UINT32(v->course, n.course);
-    TEST_ASSERT_EQUAL_STRING(v->mode, n.mode);
-    TEST_ASSERT_EQUAL_INT32(v->year, n.year);
-    TEST_ASSERT_EQUAL_INT32(v->month, n.month);
-    TEST_ASSERT_EQUAL_INT32(v->day, n.day);
-    TEST_ASSERT_EQUAL_INT32(v->zone_hours, n.zone_hours);
-    TEST_ASSERT_EQUAL_INT32(v->zone_minutes, n.zone_minutes);
-    TEST_ASSERT_EQUAL_INT32(v->gst[0], n.rms);
+    TEST_ASSERT_EQUAL_INT32_MESSAGE(v->satellites, n.satellites, v->text);
+    TEST_ASSERT_EQUAL_INT32_MESSAGE(v->dop[0], n.hdop, v->text);
+    TEST_ASSERT_EQUAL_INT32_MESSAGE(v->dop[1], n.pdop, v->text);
+    TEST_ASSERT_EQUAL_INT32_MESSAGE(v->dop[2], n.vdop, v->text);
+    TEST_ASSERT_EQUAL_INT32_MESSAGE(v->speed, n.speed, v->text);
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE(v->angle[0], n.course, v->text);
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE(v->angle[1], n.course_magnetic, v->text);
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE(v->angle[2], n.heading, v->text);
+    TEST_ASSERT_EQUAL_STRING_MESSAGE(v->mode, n.mode, v->text);
+    TEST_ASSERT_EQUAL_INT32(v->fix_type, n.fix_type);
+    TEST_ASSERT_EQUAL_INT32(v->system_id, n.system_id);
+    TEST_ASSERT_EQUAL_UINT16_ARRAY_MESSAGE(v->satellite_ids, n.satellite_ids,
+                                           DRDC_NMEA_GSA_IDS, v->text);
+    TEST_ASSERT_EQUAL_INT32(v->date[0], n.year);
+    TEST_ASSERT_EQUAL_INT32(v->date[1], n.month);
+    TEST_ASSERT_EQUAL_INT32(v->date[2], n.day);
+    TEST_ASSERT_EQUAL_INT32(v->date[3], n.zone_hours);
+    TEST_ASSERT_EQUAL_INT32(v->date[4], n.zone_minutes);
+    TEST_ASSERT_EQUAL_INT32_MESSAGE(v->gst[0], n.rms, v->text);
     TEST_ASSERT_EQUAL_INT32(v->gst[1], n.sigma_major);
     TEST_ASSERT_EQUAL_INT32(v->gst[2], n.sigma_minor);
     TEST_ASSERT_EQUAL_UINT32((uint32_t)v->gst[3], n.orientation);
@@ -96,8 +106,20 @@ static void test_corpus_matches_the_fraction_model(void)
       /* the talker is NUL-terminated within its array */
       TEST_ASSERT_TRUE((k < 2u) || (n.talker[k] == '\0'));
     }
+    /* strict mode decodes the same record, or refuses the sentence
+     * without touching the output */
+    sentinel(&strict);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(
+        v->strict,
+        drdc_nmea_parse_with(v->text, v->length, DRDC_NMEA_STRICT, &strict),
+        v->text);
+    if (v->strict == DRDC_OK) {
+      TEST_ASSERT_EQUAL_MEMORY_MESSAGE(&n, &strict, sizeof n, v->text);
+    } else {
+      TEST_ASSERT_TRUE(unchanged(&strict));
+    }
   }
-  TEST_ASSERT_TRUE(COUNT(nmea_vectors) >= 30u);
+  TEST_ASSERT_TRUE(COUNT(nmea_vectors) >= 60u);
 }
 
 /* Every malformation gives its own status and leaves the output as it
@@ -118,8 +140,13 @@ static void test_drdc_nmea_parse_malformations(void)
     drdc_nmea_t n;
 
     sentinel(&n);
+    if (v->flags == 0u) {
+      TEST_ASSERT_EQUAL_INT_MESSAGE(
+          v->status, drdc_nmea_parse(v->text, v->length, &n), v->text);
+    }
     TEST_ASSERT_EQUAL_INT_MESSAGE(
-        v->status, drdc_nmea_parse(v->text, v->length, &n), v->text);
+        v->status, drdc_nmea_parse_with(v->text, v->length, v->flags, &n),
+        v->text);
     TEST_ASSERT_TRUE(unchanged(&n));
   }
   for (k = 0u; k < COUNT(documented); k++) {
@@ -143,6 +170,11 @@ static void test_drdc_nmea_parse_null(void)
   TEST_ASSERT_EQUAL_INT(
       DRDC_E_NULL,
       drdc_nmea_parse(nmea_vectors[0].text, nmea_vectors[0].length, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_nmea_parse_with(NULL, 10u, DRDC_NMEA_STRICT, &n));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_nmea_parse_with(nmea_vectors[0].text,
+                                             nmea_vectors[0].length, 0u, NULL));
   TEST_ASSERT_TRUE(unchanged(&n));
 }
 
