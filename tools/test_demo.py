@@ -96,6 +96,28 @@ class Demo(unittest.TestCase):
             self.assertEqual(round(want_lat * 10 ** 9), round(fractions.Fraction(lat) * 10 ** 9))
             self.assertEqual(round(want_lon * 10 ** 9), round(fractions.Fraction(lon) * 10 ** 9))
 
+    def test_heading_is_the_hdt_and_ths_text(self):
+        """The true heading of the epochs that carry HDT or THS: the
+        sentence's degrees rounded to a binary angle (2^32 per turn), then
+        printed with 8 decimals; the IMU yaw beside it is the {We} yaw."""
+        f = fractions.Fraction
+        src = demo_source()
+        sent = re.findall(r'"\$(GN)(HDT|THS),([0-9.]+),[TA]\*', src)
+        got = re.findall(r"GNSS  heading (\S+) deg true \((\w+)\), IMU yaw - heading (\S+) deg",
+                         self.host)
+        yaws = re.findall(r"yaw (\S+) pitch", self.host)
+        epochs = self.host.split("epoch ")[1:]
+        self.assertEqual(2, len(sent))
+        self.assertEqual(2, len(got))
+        with_heading = [i for i, e in enumerate(epochs) if "GNSS  heading" in e]
+        self.assertEqual([1, 3], with_heading)
+        for (talker, kind, deg), (heading, name, diff), i in zip(sent, got, with_heading):
+            self.assertEqual(talker + kind, name)
+            bam = math.floor(f(deg) * 2 ** 32 / 360 + f(1, 2))
+            want = f(bam * 360, 2 ** 32)
+            self.assertLessEqual(abs(f(heading) - want), f(1, 2 * 10 ** 8))
+            # both printed values are rounded to 1e-8 deg
+            self.assertLessEqual(abs(f(yaws[i]) - f(heading) - f(diff)), f(2, 10 ** 8))
 
     def test_jaus_body_is_the_standard_bytes(self):
         """AS6009: ScaleFactor = (max - min) / (2^n - 1), Bias = min,

@@ -4,7 +4,8 @@
  * @brief Demo firmware: a pose node like one of libdrdc's robot controllers.
  *
  * It reads a scripted stream from a GNSS receiver (NMEA GGA and RMC
- * sentences; on a board this would be a UART) and from an IMU (attitude
+ * sentences, and HDT or THS true heading from a dual-antenna receiver when
+ * it has one; on a board this would be a UART) and from an IMU (attitude
  * quaternions), and for each epoch prints the UTC and GPS time, the global
  * pose {W} (longitude, latitude, height, quaternion), {We} (the same with
  * Z-Y-X Euler angles), the JAUS scaled integers of the position and the
@@ -36,18 +37,29 @@
 #include "console.h"
 
 /* The receiver's stream: one GGA and one RMC per second (RTK fixed, near
- * DRDC Suffield, Alberta), as a u-blox-style receiver sends them. */
-/* one sentence a line, as the receiver sends it */
+ * DRDC Suffield, Alberta), as a u-blox-style receiver sends them, and at
+ * some epochs the true heading of a dual-antenna receiver (HDT, or THS
+ * with its mode). One sentence a line, as the receiver sends it. */
+typedef struct gnss_epoch {
+  const char *gga;
+  const char *rmc;
+  const char *heading; /* HDT or THS, or NULL */
+} gnss_epoch_t;
+
 /* clang-format off */
-static const char *const gnss[] = {
-  "$GNGGA,170000.00,5016.20000,N,11110.20000,W,4,12,0.7,754.3,M,-16.2,M,1.0,0001*66\r\n",
-  "$GNRMC,170000.00,A,5016.20000,N,11110.20000,W,2.57,045.00,221126,,,R*40\r\n",
-  "$GNGGA,170001.00,5016.20050,N,11110.19920,W,4,12,0.7,754.4,M,-16.2,M,1.0,0001*64\r\n",
-  "$GNRMC,170001.00,A,5016.20050,N,11110.19920,W,2.57,045.00,221126,,,R*45\r\n",
-  "$GNGGA,170002.00,5016.20100,N,11110.19840,W,4,12,0.7,754.5,M,-16.2,M,1.0,0001*65\r\n",
-  "$GNRMC,170002.00,A,5016.20100,N,11110.19840,W,2.57,045.00,221126,,,R*45\r\n",
-  "$GNGGA,170003.00,5016.20150,N,11110.19760,W,4,12,0.7,754.6,M,-16.2,M,1.0,0001*6F\r\n",
-  "$GNRMC,170003.00,A,5016.20150,N,11110.19760,W,2.57,045.00,221126,,,R*4C\r\n",
+static const gnss_epoch_t gnss[] = {
+  {"$GNGGA,170000.00,5016.20000,N,11110.20000,W,4,12,0.7,754.3,M,-16.2,M,1.0,0001*66\r\n",
+   "$GNRMC,170000.00,A,5016.20000,N,11110.20000,W,2.57,045.00,221126,,,R*40\r\n",
+   NULL},
+  {"$GNGGA,170001.00,5016.20050,N,11110.19920,W,4,12,0.7,754.4,M,-16.2,M,1.0,0001*64\r\n",
+   "$GNRMC,170001.00,A,5016.20050,N,11110.19920,W,2.57,045.00,221126,,,R*45\r\n",
+   "$GNHDT,46.62,T*2D\r\n"},
+  {"$GNGGA,170002.00,5016.20100,N,11110.19840,W,4,12,0.7,754.5,M,-16.2,M,1.0,0001*65\r\n",
+   "$GNRMC,170002.00,A,5016.20100,N,11110.19840,W,2.57,045.00,221126,,,R*45\r\n",
+   NULL},
+  {"$GNGGA,170003.00,5016.20150,N,11110.19760,W,4,12,0.7,754.6,M,-16.2,M,1.0,0001*6F\r\n",
+   "$GNRMC,170003.00,A,5016.20150,N,11110.19760,W,2.57,045.00,221126,,,R*4C\r\n",
+   "$GNTHS,49.41,A*21\r\n"},
 };
 /* clang-format on */
 
@@ -206,8 +218,22 @@ static drdc_status_t grid_and_local(const drdc_WPose_t *w,
   return DRDC_OK;
 }
 
+/* The GNSS true heading beside the IMU's yaw: a pose node watches the
+ * difference for drift of the IMU's heading. */
+static void put_heading(const drdc_nmea_t *h, drdc_bam32_t imu_yaw)
+{
+  bsp_puts("  GNSS  heading ");
+  put_bam(h->heading);
+  bsp_puts(" deg true (");
+  bsp_puts(h->talker);
+  bsp_puts((h->type == DRDC_NMEA_HDT) ? "HDT" : "THS");
+  bsp_puts("), IMU yaw - heading ");
+  put_bam(imu_yaw - h->heading);
+  bsp_puts(" deg\n");
+}
+
 static void epoch(unsigned k, const drdc_nmea_t *gga, const drdc_nmea_t *rmc,
-                  drdc_WPose_t *first)
+                  const drdc_nmea_t *heading, drdc_WPose_t *first)
 {
   drdc_WPose_t w;
   drdc_time_t utc = {0, 0};
@@ -287,6 +313,9 @@ static void epoch(unsigned k, const drdc_nmea_t *gga, const drdc_nmea_t *rmc,
       " (int32, RA 3.x scaled)\n  JAUS  Report Global Pose body (AS6009) ");
   put_hex(body, body_length);
   bsp_putc('\n');
+  if (heading != NULL) {
+    put_heading(heading, e.yaw);
+  }
 
   w.longitude = gga->longitude;
   w.latitude = gga->latitude;
@@ -311,20 +340,26 @@ int main(void)
   bsp_puts(": GNSS (NMEA) + IMU -> UTC, GPS time, {W}, {We}, JAUS,"
            " {We-UTM}, MGRS, {l}\n");
   for (k = 0u; k < EPOCHS; k++) {
+    const gnss_epoch_t *g = &gnss[k];
     drdc_nmea_t gga;
     drdc_nmea_t rmc;
+    drdc_nmea_t heading;
+    const drdc_nmea_t *has_heading = NULL;
     drdc_status_t st;
 
-    st = drdc_nmea_parse(gnss[2u * k], length_of(gnss[2u * k]), &gga);
+    st = drdc_nmea_parse(g->gga, length_of(g->gga), &gga);
     if (st == DRDC_OK) {
-      st = drdc_nmea_parse(gnss[(2u * k) + 1u], length_of(gnss[(2u * k) + 1u]),
-                           &rmc);
+      st = drdc_nmea_parse(g->rmc, length_of(g->rmc), &rmc);
+    }
+    if ((st == DRDC_OK) && (g->heading != NULL)) {
+      st = drdc_nmea_parse(g->heading, length_of(g->heading), &heading);
+      has_heading = &heading;
     }
     if (st != DRDC_OK) {
       put_status(st);
       continue;
     }
-    epoch(k, &gga, &rmc, &first);
+    epoch(k, &gga, &rmc, has_heading, &first);
   }
   return 0;
 }
