@@ -106,7 +106,7 @@ drdc_status_t drdc__nmea_gsa(const nmea_frame_t *fr, drdc_nmea_t *n)
   }
   if ((st == DRDC_OK) && (system.n != 0u) && (system_id(system) < 0)) {
     st = ((system.n == 1u) && (system.p[0] == '0')) ? DRDC_E_RANGE
-                                                      : DRDC_E_SYNTAX;
+                                                    : DRDC_E_SYNTAX;
   }
   if ((st == DRDC_OK) && (n != NULL)) {
     n->fix_type = fix_type;

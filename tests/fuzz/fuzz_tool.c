@@ -2,11 +2,11 @@
 /**
  * @file
  * @brief Fuzzer of the host tool's input lines: any bytes as standard
- *        input of `drdc time`, `drdc attitude` and `drdc units` (the first
- *        byte picks the command and its formats), through the tool's own
- *        code under ASan and UBSan. A finding is a crash, a sanitizer
- *        report, or an exit status other than 0 (all lines converted) or 1
- *        (some line gave ERROR). Host only.
+ *        input of `drdc time`, `drdc attitude`, `drdc units` and
+ *        `drdc nmea` (the first byte picks the command and its formats),
+ *        through the tool's own code under ASan and UBSan. A finding is a
+ * crash, a sanitizer report, or an exit status other than 0 (all lines
+ * converted) or 1 (some line gave ERROR). Host only.
  */
 #include <stdint.h>
 #include <stdio.h>
@@ -18,6 +18,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 static const char *const scales[] = {"utc", "gps", "unix", "rtems", "tai"};
 static const char *const reprs[] = {"euler", "quat", "dcm"};
+/* first bytes from here on drive `drdc nmea` (odd: --strict, even: --raw);
+ * below it, time, attitude and units as pick % 3 */
+#define NMEA_PICK 0xF0u
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -42,7 +45,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
   }
   /* the commands read standard input: point it at the bytes */
   stdin = in;
-  if ((pick % 3u) == 0u) {
+  if (pick >= NMEA_PICK) {
+    char *argv[] = {"nmea", ((pick & 1u) != 0u) ? "--strict" : "--raw", NULL};
+    status = drdc_cmd_nmea(2, argv);
+  } else if ((pick % 3u) == 0u) {
     char *argv[] = {"time",
                     "--from",
                     (char *)scales[(pick / 3u) % 5u],

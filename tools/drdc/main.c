@@ -31,6 +31,9 @@ static const char usage[] =
     "  geo [-g|-u|-c] [-p PREC]\n"
     "                         convert 'LAT LON' or 'ZONE{n|s} E N' lines\n"
     "                         like GeoConvert (drdc geo --help)\n"
+    "  nmea [--strict] [--raw]\n"
+    "                         decode NMEA 0183 sentences into key=value\n"
+    "                         fields (drdc nmea --help)\n"
     "\n"
     "Options:\n"
     "  --help     this text\n"
@@ -57,6 +60,9 @@ int main(int argc, char **argv)
   }
   if ((argc >= 2) && (strcmp(argv[1], "geo") == 0)) {
     return drdc_cmd_geo(argc - 1, argv + 1);
+  }
+  if ((argc >= 2) && (strcmp(argv[1], "nmea") == 0)) {
+    return drdc_cmd_nmea(argc - 1, argv + 1);
   }
   if (argc < 2) {
     fputs(usage, stderr);
