@@ -133,9 +133,12 @@ drdc_status_t drdc__nmea_frame(const char *text, size_t length, uint32_t flags,
   if (sum != (((unsigned)hi * 16u) + (unsigned)lo)) {
     return DRDC_E_CHECKSUM;
   }
-  /* address: two-letter talker and a three-letter formatter, then ',' */
+  /* address: two-letter talker and a three-letter formatter, then ','.
+   * An address starting with P is proprietary (P and a manufacturer's
+   * code: Quectel's $PQGSA is not a GSA from talker "PQ"); no talker
+   * starts with P. */
   if ((star < 7u) || (text[6] != ',') || (is_upper(text[1]) == 0) ||
-      (is_upper(text[2]) == 0)) {
+      (is_upper(text[2]) == 0) || (text[1] == 'P')) {
     return DRDC_E_SENTENCE;
   }
   if (formatter(&text[3], &fr->type) != DRDC_OK) {

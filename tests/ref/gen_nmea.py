@@ -104,6 +104,32 @@ def named_fields(s):
     return msg, dict(zip(names, payload)), len(msg.payload)
 
 
+# Fields whose value pynmeagps converts itself (decimals 'DE', integers
+# 'IN', hex 'HX'): its value must equal the exact reading of the text to
+# a double's precision.
+def cross_check(msg, f, s):
+    for name, kind in NMEA_PAYLOADS_GET[msg.msgID].items():
+        names = ([name] if not isinstance(kind, tuple)
+                 else ["svid_%02d" % k for k in range(1, kind[0] + 1)])
+        kind = kind if not isinstance(kind, tuple) else "IN"
+        for n in names:
+            if kind not in ("DE", "IN", "HX") or not f.get(n):
+                continue
+            exact = Fraction(int(f[n], 16)) if kind == "HX" else Fraction(f[n])
+            theirs = getattr(msg, n)
+            assert abs(Fraction(theirs) - exact) <= abs(exact) * Fraction(1, 2 ** 52), (s, n)
+    if f.get("time"):
+        h, m, sec, ns = tod(f["time"])
+        t = msg.time
+        if t == "":
+            # what Python's datetime.time cannot hold: a leap second, or
+            # more than 6 decimals of a second
+            assert sec == 60 or len(f["time"].partition(".")[2]) > 6, s
+            return
+        assert (t.hour, t.minute) == (h, m) and abs(t.second + t.microsecond / 1e6
+                                                    - sec - ns / 1e9) < 1e-6, s
+
+
 def model(s):
     """Expected record of a valid sentence, and the status strict mode
     gives it."""
@@ -218,6 +244,7 @@ def model(s):
         if f["stdMajor"] or f["stdMinor"] or f["orient"]:
             r["has"] |= HAS["ELLIPSE"]
         r["gst"] = g
+    cross_check(msg, f, s)
     # strict mode: the 82-character line, every field of the layout, and
     # the GGA quality
     body = s.rstrip("\r\n")
@@ -449,6 +476,10 @@ def bad():
         (sentence("GNGNS,103600.01,5114.51176,N,00012.29380,W,AXNN,07,1.18,111.5,45.6,,"), "DRDC_E_SYNTAX"),
         (sentence("GPGSV,3,1,11,10,63,137,17,07,61,098,15,05,59,290,20,08,54,157,30"), "DRDC_E_SENTENCE"),
         (sentence("PUBX,00,081350.00,4717.113210,N,00833.915187,E"), "DRDC_E_SENTENCE"),
+        # proprietary (P + manufacturer) with a standard formatter after it
+        (sentence("PQGSA,A,3,04,05,,09,12,,,24,,,,,2.5,1.3,2.1"), "DRDC_E_SENTENCE"),
+        (sentence("PQGGA,092750.000,5321.6802,N,00630.3372,W,1,8,1.03,61.7,M,55.2,M,,"),
+         "DRDC_E_SENTENCE"),
         (sentence("G1GGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,"), "DRDC_E_SENTENCE"),
         (sentence("GPGGA"), "DRDC_E_SENTENCE"),
         (ok.rstrip("\r\n") + "\r\nX", "DRDC_E_TRAILING"),

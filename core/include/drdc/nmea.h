@@ -247,7 +247,8 @@ typedef struct drdc_nmea {
  * @retval DRDC_E_TRAILING characters after the checksum other than CR LF
  * @retval DRDC_E_CHECKSUM the checksum does not match
  * @retval DRDC_E_SENTENCE not GGA, RMC, GNS, GLL, VTG, HDT, THS, GSA, ZDA
- *         or GST, or not a two-letter talker
+ *         or GST, not a two-letter talker, or proprietary (`$P...`,
+ *         such as Quectel's `$PQGSA`)
  * @retval DRDC_E_NO_FIX GGA quality 0 (or empty with no position), RMC
  *         status V or mode N, GNS mode N for every constellation
  * @retval DRDC_E_NO_FIX GLL: status V or mode N
