@@ -88,6 +88,39 @@ def expected(r):
     return " ".join(out)
 
 
+NO_FIX = "DRDC_E_NO_FIX"
+
+
+def expected_of_log_line(line):
+    """What `drdc nmea` must print for one line of a receiver's log (the
+    line without its LF): an ERROR with its status for sentences it does
+    not decode and fixes the receiver marks invalid, else the model's
+    record. pynmeagps checks the checksum and names the fields."""
+    body = line.rstrip("\r")
+    kind = body[3:6] if body.startswith("$") and len(body) > 6 else ""
+    if not body.startswith("$"):
+        return "DRDC_E_SYNTAX"
+    if "*" not in body:
+        return "DRDC_E_TRUNCATED"
+    if body.startswith("$P") or kind not in gen_nmea.LAYOUT:
+        return "DRDC_E_SENTENCE"
+    msg, f, _ = gen_nmea.named_fields(body + "\r\n")
+    mode = f.get("posMode", "")
+    if ((kind == "GGA" and f["quality"] == "0")
+            or (kind in ("RMC", "GLL") and f["status"] == "V")
+            or (kind in ("RMC", "GLL", "VTG") and mode == "N")
+            or (kind == "GNS" and set(mode) <= {"N"})
+            or (kind == "GSA" and f["navMode"] == "1")
+            or (kind == "THS" and f["mi"] == "V")):
+        return NO_FIX
+    # the required fields these logs leave empty: an instrument without a
+    # heading, a receiver without a date
+    if ((kind == "HDT" and not f["headingT"])
+            or (kind == "ZDA" and not (f["day"] and f["month"] and f["year"]))):
+        return "DRDC_E_MISSING_FIELD"
+    return expected(gen_nmea.model(body + "\r\n")[0])
+
+
 class NmeaCommand(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
@@ -159,6 +192,31 @@ class NmeaCommand(unittest.TestCase):
         self.assertEqual(1, r.returncode)
         self.assertEqual(len(lines), r.stdout.count(b"\n"))
         self.assertEqual(b"", r.stderr)
+
+    def test_real_logs_line_for_line(self):
+        logs = os.path.join(TOP, "tests", "nmea", "logs")
+        paths = sorted(os.path.join(d, f) for d, _, files in os.walk(logs)
+                       for f in files if f.endswith((".log", ".nmea")))
+        self.assertEqual(5, len(paths))
+        decoded = 0
+        for path in paths:
+            with open(path, "rb") as f:
+                data = f.read()
+            lines = data.split(b"\n")
+            if lines[-1] == b"":
+                lines.pop()
+            r = nmea(data=data)
+            got = r.stdout.decode().splitlines()
+            self.assertEqual(len(lines), len(got), path)
+            for line, out in zip(lines, got):
+                want = expected_of_log_line(line.decode("latin-1"))
+                if want.startswith("DRDC_"):
+                    self.assertTrue(out.startswith("ERROR: ") and out.endswith("(%s)" % want),
+                                    (path, line, out))
+                else:
+                    self.assertEqual(want, out, (path, line))
+                    decoded += 1
+        self.assertGreater(decoded, 2500)
 
     def test_help_and_usage(self):
         r = nmea("--help")
