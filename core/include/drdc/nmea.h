@@ -154,16 +154,21 @@ typedef enum drdc_nmea_type {
 
 /** Bits of drdc_nmea_t::beyond: values beyond the Q15.16 range, written
  *  as INT32_MAX (INT32_MIN if negative). */
-#define DRDC_NMEA_BEYOND_HDOP            UINT32_C(0x01)
-#define DRDC_NMEA_BEYOND_SPEED           UINT32_C(0x02)
-#define DRDC_NMEA_BEYOND_RMS             UINT32_C(0x04)
-#define DRDC_NMEA_BEYOND_SIGMA_MAJOR     UINT32_C(0x08)
-#define DRDC_NMEA_BEYOND_SIGMA_MINOR     UINT32_C(0x10)
-#define DRDC_NMEA_BEYOND_SIGMA_LATITUDE  UINT32_C(0x20)
+#define DRDC_NMEA_BEYOND_HDOP  UINT32_C(0x01) /**< hdop */
+#define DRDC_NMEA_BEYOND_SPEED UINT32_C(0x02) /**< speed */
+#define DRDC_NMEA_BEYOND_RMS   UINT32_C(0x04) /**< rms */
+/** sigma_major */
+#define DRDC_NMEA_BEYOND_SIGMA_MAJOR UINT32_C(0x08)
+/** sigma_minor */
+#define DRDC_NMEA_BEYOND_SIGMA_MINOR UINT32_C(0x10)
+/** sigma_latitude */
+#define DRDC_NMEA_BEYOND_SIGMA_LATITUDE UINT32_C(0x20)
+/** sigma_longitude */
 #define DRDC_NMEA_BEYOND_SIGMA_LONGITUDE UINT32_C(0x40)
-#define DRDC_NMEA_BEYOND_SIGMA_ALTITUDE  UINT32_C(0x80)
-#define DRDC_NMEA_BEYOND_PDOP            UINT32_C(0x100)
-#define DRDC_NMEA_BEYOND_VDOP            UINT32_C(0x200)
+/** sigma_altitude */
+#define DRDC_NMEA_BEYOND_SIGMA_ALTITUDE UINT32_C(0x80)
+#define DRDC_NMEA_BEYOND_PDOP           UINT32_C(0x100) /**< pdop */
+#define DRDC_NMEA_BEYOND_VDOP           UINT32_C(0x200) /**< vdop */
 
 /** UTC time of day as the receiver sent it. */
 typedef struct drdc_nmea_tod {
@@ -237,8 +242,13 @@ typedef struct drdc_nmea {
  *         out->beyond, not refused)
  * @retval DRDC_E_NULL `text` or `out` is NULL
  * @retval DRDC_E_SYNTAX no `$` first, a malformed number, time,
- *         hemisphere, unit letter or checksum digit, or more than 10
- *         decimals of minutes
+ *         hemisphere or checksum digit, or more than 10 decimals of
+ *         minutes; GLL: a status other than A or V; GLL, VTG: a mode
+ *         letter outside NMEA 0183's set; VTG: a unit letter other than
+ *         T, M, N, K in its field (the NMEA 1.5 layout without letters);
+ *         HDT: the letter not T; THS: a mode other than A, E, M, S, V;
+ *         GSA: a mode not A or M, a satellite id of more than 3 digits,
+ *         a system id not one hex digit
  * @retval DRDC_E_CHARACTER a character outside printable ASCII before
  *         the checksum (non-ASCII byte, control character, NUL)
  * @retval DRDC_E_TRUNCATED the text ends before `*hh`
@@ -250,28 +260,15 @@ typedef struct drdc_nmea {
  *         or GST, not a two-letter talker, or proprietary (`$P...`,
  *         such as Quectel's `$PQGSA`)
  * @retval DRDC_E_NO_FIX GGA quality 0 (or empty with no position), RMC
- *         status V or mode N, GNS mode N for every constellation
- * @retval DRDC_E_NO_FIX GLL: status V or mode N
- * @retval DRDC_E_NO_FIX VTG: mode N
- * @retval DRDC_E_NO_FIX THS: mode V (not valid)
- * @retval DRDC_E_NO_FIX GSA: fix type 1 (no fix)
+ *         status V or mode N, GNS mode N for every constellation; GLL:
+ *         status V or mode N; VTG: mode N; THS: mode V (not valid); GSA:
+ *         fix type 1 (no fix)
  * @retval DRDC_E_MISSING_FIELD a required field is empty or the
- *         sentence ends before it (GGA, RMC, GNS, ZDA, GST)
- * @retval DRDC_E_MISSING_FIELD GLL: the status, the time or a coordinate
- *         empty, or fewer than 6 fields
- * @retval DRDC_E_MISSING_FIELD VTG: neither a true course nor a speed
- * @retval DRDC_E_MISSING_FIELD HDT: the heading empty
- * @retval DRDC_E_MISSING_FIELD THS: the heading (with a valid mode) or the
- *         mode empty
- * @retval DRDC_E_MISSING_FIELD GSA: the mode or the fix type empty
- * @retval DRDC_E_SYNTAX GLL: status other than A or V, a mode letter
- *         outside NMEA 0183's set
- * @retval DRDC_E_SYNTAX VTG: a unit letter other than T, M, N, K in its
- *         field (the NMEA 1.5 layout without letters), a bad mode
- * @retval DRDC_E_SYNTAX HDT: the letter not T; THS: a mode other than A,
- *         E, M, S, V
- * @retval DRDC_E_SYNTAX GSA: mode not A or M, a satellite id of more than
- *         3 digits, a system id not one hex digit
+ *         sentence ends before it (GGA, RMC, GNS, ZDA, GST); GLL: the
+ *         status, the time or a coordinate empty, or fewer than 6 fields;
+ *         VTG: neither a true course nor a speed; HDT: the heading empty;
+ *         THS: the mode empty, or the heading with a valid mode; GSA: the
+ *         mode or the fix type empty
  * @retval DRDC_E_HOUR hour of the time above 23
  * @retval DRDC_E_MINUTE minute of the time, or minutes of a latitude or
  *         longitude, 60 or more
@@ -281,9 +278,8 @@ typedef struct drdc_nmea {
  * @retval DRDC_E_YEAR ZDA year outside DRDC_YEAR_MIN..DRDC_YEAR_MAX
  * @retval DRDC_E_RANGE latitude beyond 90 or longitude beyond 180
  *         degrees, a number of more than 18 digits or 15 decimals, an
- *         altitude or separation beyond Q47.16, GGA quality 9, or ZDA
- *         zone hours beyond 13
- * @retval DRDC_E_RANGE GSA: fix type 0 or beyond 3, or system id 0
+ *         altitude or separation beyond Q47.16, GGA quality 9, ZDA zone
+ *         hours beyond 13; GSA: fix type 0 or beyond 3, or system id 0
  *
  * @remark Tolerated: a sentence of 83 to 128 characters (survey and RTK
  *         receivers: GGA and RMC with 7 to 10 decimals of minutes and the
