@@ -109,6 +109,9 @@ ARM_NEWLIB = {
     "hosted_bait": ["features.h", "argp.h"],
 }
 
+# picolibc's libraries for rv32imac, ilp32 (Debian picolibc-riscv64-unknown-elf)
+PICOLIBC_RV32 = "/usr/lib/picolibc/riscv64-unknown-elf/lib/rv32imac/ilp32"
+
 TARGETS = {
     "host": {
         "cross": "", "bsp": "host", "qemu": "host", "ext": "",
@@ -181,6 +184,29 @@ TARGETS = {
                     "-mfloat-abi=hard"],
         soft_float_libm=True,
         abi=["-mcpu=cortex-m0", "-mthumb", "-mfloat-abi=soft"]),
+    # RISC-V rv32imac (the FPU-less RV32 MCUs: integer multiply and
+    # divide, atomics, compressed), machine mode on QEMU's virt board:
+    # 16550 console, SiFive test finisher for the exit status. picolibc
+    # (Debian's, the rv32imac/ilp32 multilib) for the string functions of
+    # the tests and the four GCC asks of every environment.
+    "riscv32": {
+        "cross": "riscv64-unknown-elf-", "bsp": "riscv32", "qemu": "riscv32",
+        "ext": ".elf",
+        "arch": ["-march=rv32imac", "-mabi=ilp32", "-mcmodel=medany",
+                 "-ffreestanding", "-fno-pic", "-fno-pie",
+                 "-fno-stack-protector"],
+        "link": ["-nostdlib", "-nostartfiles", "-static", "-Wl,--gc-sections",
+                 "-Wl,--build-id=none", "-Wl,--no-warn-rwx-segments",
+                 "-L" + PICOLIBC_RV32],
+        # picolibc's string functions; libgcc's 64-bit division
+        "libs": ["c", "gcc"],
+        "hard_float": ["-march=rv32imafdc", "-mabi=ilp32d"],
+        "intcheck": "riscv", "soft_float_libm": False, "apt": ["riscv32"],
+        "headers": ["gcc:include", "gcc:include-fixed",
+                    "/usr/lib/picolibc/riscv64-unknown-elf/include"],
+        "hosted_bait": ["features.h", "argp.h"],
+        "abi": ["-march=rv32imac", "-mabi=ilp32"],
+    },
 }
 
 # RTEMS BSPs that QEMU runs. Their test-runner is linked a second time,

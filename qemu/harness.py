@@ -45,6 +45,9 @@ PROFILES = {
     "arm-cm4f": ["qemu-system-arm", "-M", "mps2-an386", "-nographic",
                  "-semihosting-config", "enable=on,target=native",
                  "-kernel", "{image}"],
+    # QEMU virt, RV32, no firmware: the ELF image runs in machine mode
+    "riscv32": ["qemu-system-riscv32", "-M", "virt", "-bios", "none",
+                "-nographic", "-net", "none", "-kernel", "{image}"],
     # An RTEMS 6 qoriq_e500 application linked for QEMU (wscript's
     # RTEMS_QEMU): its work area reaches 512 MiB and QEMU puts the device
     # tree after RAM, so 1 GiB; the device tree beside the image is QEMU's
@@ -57,7 +60,8 @@ PROFILES = {
 # Boards whose exit status carries the number of failed tests. On ppc-e500
 # the reset request always ends QEMU with 0: the console is the verdict.
 EXIT_STATUS_MEANINGFUL = {"host": True, "ppc-e500": False, "arm-cm3": True,
-                          "arm-cm4f": True, "rtems-qoriq_e500": False}
+                          "arm-cm4f": True, "riscv32": True,
+                          "rtems-qoriq_e500": False}
 
 BEGIN_RE = re.compile(r"^\*\*\* BEGIN OF TEST (.+) \*\*\*$")
 END_RE = re.compile(r"^\*\*\* END OF TEST (.+) \*\*\*$")

@@ -44,6 +44,11 @@ APT_GROUPS = {
     "arm-cm3": {"gcc-arm-none-eabi": "15:12.2.rel1-1",
                 "libnewlib-arm-none-eabi": "3.3.0-1.3+deb12u1",
                 "qemu-system-arm": "1:7.2+dfsg-7+deb12u18+b3"},
+    # riscv32: bare-metal RV32 compiler, picolibc (rv32imac/ilp32
+    # multilib), qemu-system-riscv32 (QEMU's "misc" systems)
+    "riscv32": {"gcc-riscv64-unknown-elf": "12.2.0-14+deb12u1+11+b2",
+                "picolibc-riscv64-unknown-elf": "1.8-1",
+                "qemu-system-misc": "1:7.2+dfsg-7+deb12u18+b3"},
     # ./waf check beyond the targets' own tools
     "check": {
         # pkg-config: reads RTEMS BSP flags, checks the installed drdc.pc

@@ -9,6 +9,8 @@ What is checked, per object file or static library:
        arm     VFP/NEON (every v* mnemonic)
        x86-64  x87 (f*) and SSE/AVX scalar or packed floating-point
                arithmetic, comparison and conversion
+       riscv   the F, D and Q extensions (every f* mnemonic but fence:
+               loads, stores, arithmetic, moves, conversions, c.f*)
   2. No call to anything outside the library except the integer helpers of
      libgcc listed in INTEGER_HELPERS and the four memory functions GCC
      requires of every environment: so no soft-float routine (__adddf3,
@@ -29,6 +31,8 @@ FP_INSTRUCTION = {
     "ppc": re.compile(r"^(f[a-z]+\.?|lf[sd]\w*|stf[sd]\w*|mffs\w*|mtfs\w*|"
                       r"efs\w+|efd\w+|evfs\w+)$"),
     "arm": re.compile(r"^v[a-z]"),
+    # fence and fence.i order memory: integer instructions
+    "riscv": re.compile(r"^(c\.)?f(?!ence)[a-z]"),
     "x86-64": re.compile(r"^(f[a-z0-9]+|"
                          r"v?(add|sub|mul|div|sqrt|min|max|round|rcp|rsqrt|"
                          r"hadd|hsub|dp|andn?|x?or)(ss|sd|ps|pd)|"
@@ -115,7 +119,8 @@ def check(arch, paths, prefix=""):
     return findings
 
 
-PREFIX = {"x86-64": "", "ppc": "powerpc-linux-gnu-", "arm": "arm-none-eabi-"}
+PREFIX = {"x86-64": "", "ppc": "powerpc-linux-gnu-", "arm": "arm-none-eabi-",
+          "riscv": "riscv64-unknown-elf-"}
 
 
 def check_build(build, specs):

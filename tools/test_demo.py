@@ -3,7 +3,8 @@
 
 The demo (fw/demo) prints, per epoch, what a pose node computes from its
 scripted NMEA sentences and IMU quaternions. Checked here:
-- PowerPC e500 and Cortex-M3 print exactly what the host build prints;
+- PowerPC e500, Cortex-M3 and RISC-V rv32 print exactly what the host
+  build prints;
 - UTC -> GPS week and time of week equal `drdc time --from utc --to gps`;
 - yaw, pitch, roll equal `drdc attitude --from quat --to euler` for the
   same Q1.30 quaternions;
@@ -35,7 +36,8 @@ TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DRDC = os.path.join(BUILD, "host", "drdc")
 IMAGES = {"host": os.path.join(BUILD, "host", "fw", "demo", "demo"),
           "ppc-e500": os.path.join(BUILD, "ppc-e500", "fw", "demo", "demo.elf"),
-          "arm-cm3": os.path.join(BUILD, "arm-cm3", "fw", "demo", "demo.elf")}
+          "arm-cm3": os.path.join(BUILD, "arm-cm3", "fw", "demo", "demo.elf"),
+          "riscv32": os.path.join(BUILD, "riscv32", "fw", "demo", "demo.elf")}
 
 
 def console(target):
@@ -62,7 +64,7 @@ class Demo(unittest.TestCase):
         cls.host = console("host")
 
     def test_every_target_prints_the_same_bits(self):
-        for target in ("ppc-e500", "arm-cm3"):
+        for target in ("ppc-e500", "arm-cm3", "riscv32"):
             self.assertEqual(self.host, console(target), target)
 
     def test_gps_time_matches_the_host_tool(self):

@@ -29,9 +29,11 @@ TARGETS = {
     "arm-cm4f": ("elf32-littlearm", ["-mcpu=cortex-m4", "-mthumb",
                                      "-mfloat-abi=hard", "-mfpu=fpv4-sp-d16"]),
     "ppc-8540": ("elf32-powerpc", ["-mcpu=8540", "-msoft-float"]),
+    "riscv32": ("elf32-littleriscv", ["-march=rv32imac", "-mabi=ilp32"]),
 }
 OBJDUMP = {t: ("powerpc-linux-gnu-" if t.startswith("ppc") else
-               "arm-none-eabi-" if t.startswith("arm") else "") + "objdump"
+               "arm-none-eabi-" if t.startswith("arm") else
+               "riscv64-unknown-elf-" if t.startswith("riscv") else "") + "objdump"
            for t in TARGETS}
 # The Arm architecture every object of an Arm library is built for (its
 # build attributes): Thumb-1 only for the Cortex-M0 build, which an
