@@ -61,6 +61,8 @@ SANITIZE = ["-fsanitize=address,undefined", "-fno-sanitize-recover=all",
 #   link       flags for linking images; bsp/<bsp>/link.ld, when there is
 #              one, is added as the linker script
 #   libs       libraries linked after everything else
+#   library_libs  what an application of the library links (drdc-<target>.pc
+#              Libs; default libs)
 #   hard_float flags that make a floating-point unit available: the
 #              integer-only check must catch the instructions they emit
 #   intcheck   instruction set of tools/intcheck.py, or None to skip
@@ -198,8 +200,9 @@ TARGETS = {
         "link": ["-nostdlib", "-nostartfiles", "-static", "-Wl,--gc-sections",
                  "-Wl,--build-id=none", "-Wl,--no-warn-rwx-segments",
                  "-L" + PICOLIBC_RV32],
-        # picolibc's string functions; libgcc's 64-bit division
-        "libs": ["c", "gcc"],
+        # the images: picolibc's string functions and libgcc's 64-bit
+        # division; an application of the library: libgcc only
+        "libs": ["c", "gcc"], "library_libs": ["gcc"],
         "hard_float": ["-march=rv32imafdc", "-mabi=ilp32d"],
         "intcheck": "riscv", "soft_float_libm": False, "apt": ["riscv32"],
         "headers": ["gcc:include", "gcc:include-fixed",
@@ -381,7 +384,8 @@ def configure(conf):
         conf.env.PC_INCLUDEDIR = "${prefix}/include"
         conf.env.PC_NAME = "drdc-" + name
         conf.env.PC_CFLAGS = " ".join(t["abi"] or [])
-        conf.env.PC_LIBS = "".join(" -l" + lib for lib in t["libs"])
+        conf.env.PC_LIBS = "".join(" -l" + lib
+                                   for lib in t.get("library_libs", t["libs"]))
         conf.env.INCLUDEDIR = os.path.join(prefix, "include")
         conf.env.BINDIR = os.path.join(prefix, "bin")
         conf.env.DOCDIR = os.path.join(prefix, "share", "doc", "drdc")

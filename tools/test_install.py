@@ -168,6 +168,7 @@ EXAMPLES = {
     "arm-cm4f": ("cortex-m", "arm-cm4f"),
     "ppc-e500": ("powerpc", "ppc-e500"),
     "ppc-8540": ("powerpc", "ppc-e500"),
+    "riscv32": ("riscv", "riscv32"),
 }
 
 
