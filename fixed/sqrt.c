@@ -19,6 +19,8 @@
 
 #include <stddef.h>
 
+#include <drdc/compiler.h>
+
 #include "sqrt_impl.h"
 
 uint32_t drdc_fx_sqrt_u32(uint32_t n)
@@ -94,7 +96,7 @@ drdc_status_t drdc_fx_sqrt_q15_16(drdc_q15_16_t x, drdc_q15_16_t *out)
   /* n = x 2^16 < 2^47, scaled by 4^k into N = n 4^k = m 2^20 in
    * [2^50, 2^52) with m = x 2^(2 floor(clz / 2)) in [2^30, 2^32), so
    * k = floor(clz / 2) + 2 >= 2. */
-  z = (uint32_t)__builtin_clz((uint32_t)x) & ~1u;
+  z = (uint32_t)drdc__clz32((uint32_t)x) & ~1u;
   m = (uint32_t)x << z;
   k = (z >> 1) + 2u;
   /* floor(sqrt(N)) by one step of Zimmermann's Karatsuba square root

@@ -11,6 +11,8 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include <drdc/compiler.h>
+
 #include "fixed_impl.h"
 
 /** Intervals of the sine table: 256 per quarter wave (pi / 512 each).
@@ -128,7 +130,7 @@ static inline int64_t fx_sin_quadrant_q62(uint32_t r)
 static inline uint32_t fx_div_ratio_q32(uint32_t num, uint32_t den)
 {
   const uint32_t base = UINT32_C(1) << 16;
-  unsigned s = (unsigned)__builtin_clz(den); /* den > num >= 0 */
+  unsigned s = drdc__clz32(den); /* den > num >= 0 */
   uint32_t vn = den << s;
   uint32_t vn1 = vn >> 16;
   uint32_t vn0 = vn & 0xFFFFu;

@@ -8,6 +8,8 @@
 
 #include <stddef.h>
 
+#include <drdc/compiler.h>
+
 #include <drdc/fixed_trig.h>
 
 static uint64_t abs64(int64_t x)
@@ -62,7 +64,7 @@ drdc_status_t drdc_orient_impl_scale(const drdc_quat_t *q,
   } else {
     /* Exact scaling up by 2^shift: largest part into [2^29, 2^30]; for
      * m <= 2^29 the shift that brings bit 29 to the top, clz(m) - 2. */
-    shift = (m > (UINT32_C(1) << 29)) ? 0u : ((unsigned)__builtin_clz(m) - 2u);
+    shift = (m > (UINT32_C(1) << 29)) ? 0u : (drdc__clz32(m) - 2u);
     out->c[0] = shl32(s, shift);
     out->c[1] = shl32(x, shift);
     out->c[2] = shl32(y, shift);

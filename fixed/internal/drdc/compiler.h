@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /**
  * @file
- * @brief Compiler attributes of the library's own code (internal, not
- *        installed): the one place that names them.
+ * @brief Compiler attributes, pragmas and builtins of the library's own
+ *        code (internal, not installed): the one place that names them.
  *
  * The library is C99 built by GCC (every target) and clang (the fuzz
  * build); both take these GNU attributes. A function carries one only
@@ -13,6 +13,9 @@
 #ifndef DRDC_COMPILER_H
 #define DRDC_COMPILER_H
 
+#include <limits.h>
+#include <stdint.h>
+
 /** Keep the function out of line: its frame is not added to the
  *  caller's, so the deepest chain stays that of its deepest callee. */
 #define DRDC_NOINLINE __attribute__((noinline))
@@ -20,5 +23,29 @@
 /** Inline the (static inline) function into every caller, also where
  *  the optimiser's heuristics would call it out of line. */
 #define DRDC_ALWAYS_INLINE __attribute__((always_inline))
+
+/** Unroll the loop that follows `n` times (GCC 8 and later, clang); older
+ *  compilers (avr-gcc 5) would warn of an unknown pragma, so there it is
+ *  left out: the results are the same, only the speed differs. */
+#if defined(__clang__) || (defined(__GNUC__) && (__GNUC__ >= 8))
+#define DRDC_PRAGMA(x) _Pragma(#x)
+#define DRDC_UNROLL(n) DRDC_PRAGMA(GCC unroll n)
+#else
+#define DRDC_UNROLL(n)
+#endif
+
+/** Leading zero bits of a nonzero 32-bit value. __builtin_clz takes an
+ *  unsigned int, which has 16 bits where int has (AVR, MSP430): a
+ *  uint32_t passed to it would lose its high half there. */
+static inline unsigned drdc__clz32(uint32_t x)
+{
+#if UINT_MAX == 0xFFFFFFFFu
+  return (unsigned)__builtin_clz(x);
+#elif ULONG_MAX == 0xFFFFFFFFu
+  return (unsigned)__builtin_clzl(x);
+#else
+  return (unsigned)__builtin_clzll((unsigned long long)x) - 32u;
+#endif
+}
 
 #endif /* DRDC_COMPILER_H */
