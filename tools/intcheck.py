@@ -11,6 +11,7 @@ What is checked, per object file or static library:
                arithmetic, comparison and conversion
        riscv   the F, D and Q extensions (every f* mnemonic but fence:
                loads, stores, arithmetic, moves, conversions, c.f*)
+       avr     none exist: only the calls of step 2
   2. No call to anything outside the library except the integer helpers of
      libgcc listed in INTEGER_HELPERS and the four memory functions GCC
      requires of every environment: so no soft-float routine (__adddf3,
@@ -33,6 +34,9 @@ FP_INSTRUCTION = {
     "arm": re.compile(r"^v[a-z]"),
     # fence and fence.i order memory: integer instructions
     "riscv": re.compile(r"^(c\.)?f(?!ence)[a-z]"),
+    # AVR has no floating-point instruction: floats become libgcc calls,
+    # which outside_calls() reports
+    "avr": re.compile(r"(?!)"),
     "x86-64": re.compile(r"^(f[a-z0-9]+|"
                          r"v?(add|sub|mul|div|sqrt|min|max|round|rcp|rsqrt|"
                          r"hadd|hsub|dp|andn?|x?or)(ss|sd|ps|pd)|"
@@ -57,6 +61,16 @@ INTEGER_HELPERS = {
     # stw/lwz (libgcc's crtsavres), in the caller's own frame
     "_%sgpr_%d%s" % (op, reg, tail) for op in ("save", "rest")
     for reg in range(14, 32) for tail in ("", "_x")
+}
+# AVR (8-bit registers): libgcc's 32- and 64-bit multiply, divide, add,
+# subtract, negate and compare, its switch-table jump, and the start-up's
+# copy of .data into RAM, which every object with initialised or constant
+# data references (constants live in RAM on AVR unless placed in flash).
+INTEGER_HELPERS |= {
+    "__mulsi3", "__divmodsi4", "__udivmodsi4", "__mulsidi3", "__umulsidi3",
+    "__mulohisi3", "__muluhisi3", "__umulhisi3", "__mulhisi3", "__adddi3",
+    "__adddi3_s8", "__subdi3", "__subdi3_s8", "__negdi2", "__cmpdi2_s8",
+    "__tablejump2__", "__do_copy_data", "__do_clear_bss",
 }
 # Thumb-1 (Cortex-M0) switch tables: libgcc's case-table dispatchers.
 INTEGER_HELPERS |= {"__gnu_thumb1_case_%s" % k
@@ -120,7 +134,7 @@ def check(arch, paths, prefix=""):
 
 
 PREFIX = {"x86-64": "", "ppc": "powerpc-linux-gnu-", "arm": "arm-none-eabi-",
-          "riscv": "riscv64-unknown-elf-"}
+          "riscv": "riscv64-unknown-elf-", "avr": "avr-"}
 
 
 def check_build(build, specs):
