@@ -198,12 +198,12 @@ sincos_kernel(drdc_q5_58_t x, drdc_q5_58_t *s, drdc_q5_58_t *c)
   /* one polynomial at a time, Horner's rule from the highest
    * coefficient; unrolled for the timed sincos and atan2 (and the
    * geodesy above them) of docs/performance.md */
-  DRDC_UNROLL(9)
+#pragma GCC unroll 9
   for (i = 9u; i > 0u; i--) {
     ps = sin_coef[i - 1u] + mul(ps, r2);
   }
   ps = mul(ps, r);
-  DRDC_UNROLL(9)
+#pragma GCC unroll 9
   for (i = 9u; i > 0u; i--) {
     pc = cos_coef[i - 1u] + mul(pc, r2);
   }

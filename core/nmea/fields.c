@@ -83,7 +83,7 @@ drdc_status_t drdc__nmea_fixed(const nmea_frame_t *fr, size_t i,
   nmea_field_t f = nmea_field(fr, i);
   int64_t m = 0;
   int64_t p10 = 1;
-  int negative;
+  int negative = 0;
   drdc_status_t st = drdc__nmea_decimal(f.p, f.n, &m, &p10);
 
   if ((scale == NMEA_METRES_Q15_16) || (scale == NMEA_KNOTS_Q15_16) ||
@@ -93,7 +93,9 @@ drdc_status_t drdc__nmea_fixed(const nmea_frame_t *fr, size_t i,
   if (st != DRDC_OK) {
     return st;
   }
-  negative = (m < 0) ? 1 : 0;
+  if (m < 0) {
+    negative = 1;
+  }
   /* den x 10^15 < 2^63 for every scale (at most 15 decimals); the
    * product itself overflows int64_t only for a Q15.16 or degrees value
    * of 18 digits, far beyond int32_t */
@@ -138,10 +140,14 @@ drdc_status_t drdc__nmea_letter(const nmea_frame_t *fr, size_t i, char letter)
 {
   nmea_field_t f = nmea_field(fr, i);
   drdc_status_t st = DRDC_OK;
+  char c = '\0';
 
+  if (f.n != 0u) {
+    c = f.p[0];
+  }
   if (f.n == 0u) {
     st = (fr->strict != 0u) ? DRDC_E_MISSING_FIELD : DRDC_OK;
-  } else if ((f.n != 1u) || (f.p[0] != letter)) {
+  } else if ((f.n != 1u) || (c != letter)) {
     st = DRDC_E_SYNTAX;
   } else {
     st = DRDC_OK;

@@ -29,13 +29,16 @@ static int is_upper(char c)
   return ((c >= 'A') && (c <= 'Z')) ? 1 : 0;
 }
 
+/* A sentence formatter and its type. */
+typedef struct nmea_formatter {
+  char name[3];
+  drdc_nmea_type_t type;
+} nmea_formatter_t;
+
 /* The sentence formatter of the address, or DRDC_E_SENTENCE. */
 static drdc_status_t formatter(const char *a, drdc_nmea_type_t *type)
 {
-  static const struct {
-    char name[3];
-    drdc_nmea_type_t type;
-  } formatters[] = {
+  static const nmea_formatter_t formatters[] = {
       {{'G', 'G', 'A'}, DRDC_NMEA_GGA}, {{'R', 'M', 'C'}, DRDC_NMEA_RMC},
       {{'G', 'N', 'S'}, DRDC_NMEA_GNS}, {{'Z', 'D', 'A'}, DRDC_NMEA_ZDA},
       {{'G', 'S', 'T'}, DRDC_NMEA_GST}, {{'G', 'L', 'L'}, DRDC_NMEA_GLL},
@@ -44,7 +47,7 @@ static drdc_status_t formatter(const char *a, drdc_nmea_type_t *type)
   };
   size_t i;
 
-  for (i = 0u; i < (sizeof formatters / sizeof formatters[0]); i++) {
+  for (i = 0u; i < (sizeof(formatters) / sizeof(formatters[0])); i++) {
     const char *name = formatters[i].name;
 
     if ((a[0] == name[0]) && (a[1] == name[1]) && (a[2] == name[2])) {

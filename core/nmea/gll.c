@@ -16,6 +16,7 @@ drdc_status_t drdc__nmea_gll(const nmea_frame_t *fr, drdc_nmea_t *n)
   nmea_field_t status = nmea_field(fr, 6u);
   nmea_field_t mode = nmea_field(fr, 7u);
   char m = '\0';
+  char s = '\0';
   drdc_status_t st;
 
   if (fr->count < GLL_FIELDS) {
@@ -24,7 +25,8 @@ drdc_status_t drdc__nmea_gll(const nmea_frame_t *fr, drdc_nmea_t *n)
   if (status.n == 0u) {
     return DRDC_E_MISSING_FIELD;
   }
-  if ((status.n != 1u) || ((status.p[0] != 'A') && (status.p[0] != 'V'))) {
+  s = status.p[0];
+  if ((status.n != 1u) || ((s != 'A') && (s != 'V'))) {
     return DRDC_E_SYNTAX;
   }
   if (mode.n != 0u) {
@@ -33,7 +35,7 @@ drdc_status_t drdc__nmea_gll(const nmea_frame_t *fr, drdc_nmea_t *n)
       return DRDC_E_SYNTAX;
     }
   }
-  if ((status.p[0] == 'V') || (m == 'N')) {
+  if ((s == 'V') || (m == 'N')) {
     return DRDC_E_NO_FIX;
   }
   st = drdc__nmea_fix(fr, 5u, 1u, n);

@@ -25,8 +25,11 @@
 static int32_t system_id(nmea_field_t f)
 {
   int32_t v = -1;
-  char c = (f.n == 1u) ? f.p[0] : '\0';
+  char c = '\0';
 
+  if (f.n == 1u) {
+    c = f.p[0];
+  }
   if ((c >= '1') && (c <= '9')) {
     v = (int32_t)c - (int32_t)'0';
   } else if ((c >= 'A') && (c <= 'F')) {
@@ -67,6 +70,8 @@ drdc_status_t drdc__nmea_gsa(const nmea_frame_t *fr, drdc_nmea_t *n)
   nmea_field_t system = nmea_field(fr, GSA_SYSTEM);
   int32_t fix_type = 0;
   int32_t used = 0;
+  char m = '\0';
+  char first_system = '\0';
   drdc_status_t st;
 
   if (nmea_has_fields(fr, GSA_FIELDS_REQUIRED, GSA_FIELDS) == 0) {
@@ -85,7 +90,8 @@ drdc_status_t drdc__nmea_gsa(const nmea_frame_t *fr, drdc_nmea_t *n)
   if (mode.n == 0u) {
     return DRDC_E_MISSING_FIELD;
   }
-  if ((mode.n != 1u) || ((mode.p[0] != 'A') && (mode.p[0] != 'M'))) {
+  m = mode.p[0];
+  if ((mode.n != 1u) || ((m != 'A') && (m != 'M'))) {
     return DRDC_E_SYNTAX;
   }
   st = satellite_ids(fr, n, &used);
@@ -104,13 +110,16 @@ drdc_status_t drdc__nmea_gsa(const nmea_frame_t *fr, drdc_nmea_t *n)
                            (n != NULL) ? &n->vdop : NULL, DRDC_NMEA_HAS_VDOP,
                            DRDC_NMEA_BEYOND_VDOP);
   }
+  if (system.n != 0u) {
+    first_system = system.p[0];
+  }
   if ((st == DRDC_OK) && (system.n != 0u) && (system_id(system) < 0)) {
-    st = ((system.n == 1u) && (system.p[0] == '0')) ? DRDC_E_RANGE
-                                                    : DRDC_E_SYNTAX;
+    st = ((system.n == 1u) && (first_system == '0')) ? DRDC_E_RANGE
+                                                     : DRDC_E_SYNTAX;
   }
   if ((st == DRDC_OK) && (n != NULL)) {
     n->fix_type = fix_type;
-    n->mode[0] = mode.p[0];
+    n->mode[0] = m;
     n->mode[1] = '\0';
     n->satellites = used;
     n->has |= DRDC_NMEA_HAS_FIX_TYPE | DRDC_NMEA_HAS_SATELLITES;

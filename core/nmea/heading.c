@@ -54,20 +54,22 @@ drdc_status_t drdc__nmea_hdt(const nmea_frame_t *fr, drdc_nmea_t *n)
 drdc_status_t drdc__nmea_ths(const nmea_frame_t *fr, drdc_nmea_t *n)
 {
   nmea_field_t mode = nmea_field(fr, 2u);
+  char m = '\0';
   drdc_status_t st;
 
   if ((fr->count < THS_FIELDS) || (mode.n == 0u)) {
     return DRDC_E_MISSING_FIELD;
   }
-  if ((mode.n != 1u) || (is_ths_mode(mode.p[0]) == 0)) {
+  m = mode.p[0];
+  if ((mode.n != 1u) || (is_ths_mode(m) == 0)) {
     return DRDC_E_SYNTAX;
   }
-  if (mode.p[0] == 'V') {
+  if (m == 'V') {
     return DRDC_E_NO_FIX;
   }
   st = heading(fr, n);
   if ((st == DRDC_OK) && (n != NULL)) {
-    n->mode[0] = mode.p[0];
+    n->mode[0] = m;
     n->mode[1] = '\0';
   }
   return st;
