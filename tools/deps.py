@@ -147,6 +147,19 @@ PYTHON_PACKAGES = {
     # cp311 manylinux x86-64 wheels; scipy 1.17.1 supports numpy < 2.7
     "scipy==1.17.1":
         "43af8d1f3bea642559019edfe64e9b11192a8978efbd1539d7bc2aaa23d92de4",
+    # unit-expression vectors: pint's registry, the second oracle beside
+    # GNU units (tests/ref/gen_units_expr.py); pure-Python wheels, pint
+    # 0.25.3 being the last for CPython 3.11
+    "pint==0.25.3":
+        "27eb25143bd5de9fcc4d5a4b484f16faf6b4615aa93ece6b3373a8c1a3c1b97d",
+    "flexcache==0.3":
+        "d43c9fea82336af6e0115e308d9d33a185390b8346a017564611f1466dcd2e32",
+    "flexparser==0.4":
+        "3738b456192dcb3e15620f324c447721023c0293f6af9955b481e91d00179846",
+    "platformdirs==4.3.8":
+        "ff7059bb7eb1179e2685604f4aaf157cfd9535242bd23742eadc3c13542139b4",
+    "typing_extensions==4.14.1":
+        "d1e1e3b58374dc93031d6eda2420a48ea44a36c2b4766a4fdeb3710755731d76",
 }
 
 DEB_SRC_LIST = "/etc/apt/sources.list.d/drdc-deb-src.sources"

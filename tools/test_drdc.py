@@ -345,7 +345,7 @@ class UnitsCommand(unittest.TestCase):
         lines, pairs = [], []
         for name, dim, _ in rows:
             si = gen_units.si_unit(rows, dim)
-            value = 21.5 if dim == (0, 0, 0, 1, 0) else 1.75
+            value = 21.5 if dim == (0, 0, 0, 1, 0, 0) else 1.75
             for src, dst in ((name, si), (si, name)):
                 v = value + 300 if src == "K" else value
                 lines.append("%r %s %s" % (v, src, dst))
@@ -359,7 +359,60 @@ class UnitsCommand(unittest.TestCase):
                   for o in out]
         self.assertGreaterEqual(max(digits), 12)
 
+    def test_expressions(self):
+        """Unit expressions: the issue's three lines exactly, and more
+        against GNU units 2.22 (its spellings hr, radian, knot) to 1e-12."""
+        code, out = units("100 km/h m/s", "1 N*m ft*lbf", "2 kWh J")
+        self.assertEqual(0, code)
+        self.assertEqual(["27.7777777777778", "0.737562149277265", "7200000"], out)
+        import shutil
+        if shutil.which("units") is None:
+            self.skipTest("GNU units not installed")
+        cases = [("1.5 kg*m/s2 N", "1.5 kg*m/s2", "N"),
+                 ("3 (kg m)/s^2 lbf", "3 (kg m)/s^2", "lbf"),
+                 ("2.5 kg/m^3 lb/ft^3", "2.5 kg/m^3", "lb/ft^3"),
+                 ("750 mA*h C", "750 mA*hr", "C"),
+                 ("2200 mAh Ah", "2200 mAh", "Ah"),
+                 ("12 kN*m lbf*ft", "12 kN*m", "lbf*ft"),
+                 ("35 MPa psi", "35 MPa", "psi"),
+                 ("3 rad/s rpm", "3 radian/s", "rpm"),
+                 ("20 kt mph", "20 knot", "mph"),
+                 ("50 uT gauss", "50 uT", "gauss"),
+                 ("1 eV J", "1 eV", "J"),
+                 ("1 parsec lightyear", "1 parsec", "lightyear"),
+                 ("30 inHg mmHg", "30 inHg", "mmHg"),
+                 ("1 bar psi", "1 bar", "psi"),
+                 ("5 gal L", "5 gal", "L"),
+                 ("1 BTU cal", "1 btu", "cal"),
+                 ("4 (m/s s) m/s^2", "4 m/s s", "m/s^2"),
+                 ("9.81 m/s2 ft/s^2", "9.81 m/s2", "ft/s^2"),
+                 ("1 (m/s)^2 (ft/s)2", "1 (m/s)^2", "(ft/s)^2")]
+        code, out = units(*[c[0] for c in cases])
+        self.assertEqual(0, code, out)
+        sys_path = os.path.join(TOP, "tests", "ref")
+        import sys
+        sys.path.insert(0, sys_path)
+        import gen_units
+        want = gen_units.units_batch([(c[1], c[2]) for c in cases])
+        for case, got, ref in zip(cases, out, want):
+            self.assertLessEqual(abs(float(got) - float(ref)),
+                                 1e-12 * abs(float(ref)), case[0])
+
+    def test_expression_errors(self):
+        code, out = units("1 degC/s K/s", "1 m/ m", "1 dB 1", "1 km/h kg",
+                          "1 (((((m))))) m", "1 lightyear^3/nm^3 m^3/m^3")
+        self.assertEqual(1, code)
+        for line, why in zip(out, ["DRDC_E_DOMAIN", "DRDC_E_SYNTAX",
+                                   "DRDC_E_UNKNOWN_UNIT", "DRDC_E_DIMENSION",
+                                   "DRDC_E_RANGE", "DRDC_E_OVERFLOW"]):
+            self.assertTrue(line.startswith("ERROR: "), line)
+            self.assertIn(why, line)
+
     def test_help_and_usage(self):
+        r = run("units", "--help")
+        self.assertEqual(0, r.returncode)
+        for word in ("expression", "power", "prefix", "Planck", "dB"):
+            self.assertIn(word, r.stdout.replace("Prefixes", "prefix"))
         self.assertEqual(0, run("units", "--help").returncode)
         self.assertEqual(2, run("units", "bogus").returncode)
         r = run("units", "--list")

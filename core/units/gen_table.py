@@ -8,8 +8,8 @@
 The table is stored compactly for flash: the names as one string of
 NUL-terminated names in row order (no pointer per row), each distinct
 dimension once, each distinct factor number once (below 2^32 as uint32_t,
-larger ones as int64_t) and three bytes per unit: the two factor indices
-and the dimension and offset rows, four bits each. The numbers are
+larger ones as int64_t) and four bytes per unit: the two factor indices,
+the dimension row, and the offset row with the prefix flag. The numbers are
 the very same exact integers as in units.txt.
 """
 import os
@@ -19,11 +19,15 @@ from fractions import Fraction
 HERE = os.path.dirname(os.path.abspath(__file__))
 SOURCE = os.path.join(HERE, "units.txt")
 ROW = re.compile(r"^(\S+)\s+(-?\d+)\s+(-?\d+)\s+(-?\d+)\s+(-?\d+)\s+(-?\d+)"
-                 r"\s+(\d+)/(\d+)(?:\s+(-?\d+)/(\d+))?$")
+                 r"\s+(-?\d+)\s+(\d+)/(\d+)(?:\s+(-?\d+)/(\d+))?(\s+prefix)?$")
+# The one unit whose factor lies below 2^-56 (1 eV = 1.6e-19 J): its
+# denominator may use all 63 bits.
+WIDE = {"eV"}
 
 
 def read(path=SOURCE):
-    """[(comments, name, dims, num, den, offset_num, offset_den)] in order."""
+    """[(comments, name, dims, num, den, offset_num, offset_den, prefix)]
+    in order."""
     rows, comments = [], []
     with open(path) as f:
         lines = f.read().splitlines()
@@ -39,16 +43,21 @@ def read(path=SOURCE):
         if not m:
             raise SystemExit("units.txt: bad line: " + line)
         g = m.groups()
-        dims = tuple(int(x) for x in g[1:6])
-        num, den = int(g[6]), int(g[7])
-        onum, oden = (int(g[8]), int(g[9])) if g[8] is not None else (0, 1)
+        dims = tuple(int(x) for x in g[1:7])
+        num, den = int(g[7]), int(g[8])
+        onum, oden = (int(g[9]), int(g[10])) if g[9] is not None else (0, 1)
+        prefix = g[11] is not None
+        if prefix and onum != 0:
+            raise SystemExit("units.txt: %s: a scale with an offset takes no"
+                             " prefix" % g[0])
         for a, b in ((num, den), (onum, oden)):
             fr = Fraction(a, b)
             if (fr.numerator, fr.denominator) != (a, b) and a != 0:
                 raise SystemExit("units.txt: %s: %d/%d not in lowest terms" % (g[0], a, b))
-        if not (0 < num < 2 ** 56 and 0 < den < 2 ** 56):
+        limit = 2 ** 63 if g[0] in WIDE else 2 ** 56
+        if not (0 < num < limit and 0 < den < limit):
             raise SystemExit("units.txt: %s: factor outside 1..2^56" % g[0])
-        rows.append((comments, g[0], dims, num, den, onum, oden))
+        rows.append((comments, g[0], dims, num, den, onum, oden, prefix))
         comments = []
     names = [r[1] for r in rows]
     if len(set(names)) != len(names):
@@ -72,9 +81,8 @@ def table_text(path=SOURCE):
     offsets = [(0, 1)] + sorted(set((r[5], r[6]) for r in rows if r[5] != 0))
     if len(rows) > 255 or len(values) > 255:
         raise SystemExit("units.txt: too many units for one-byte indices")
-    if len(dims) > 16 or len(offsets) > 16:
-        raise SystemExit("units.txt: too many dimensions or offsets for"
-                         " four-bit rows")
+    if len(dims) > 255 or len(offsets) > 15:
+        raise SystemExit("units.txt: too many dimensions or offsets")
 
     def indent(lines):
         return ["  " + l if l else l for l in lines]
@@ -89,7 +97,7 @@ def table_text(path=SOURCE):
             line = " "
         line += s
     names.append(line + ";")
-    dimensions = ["/* Exponents of m, kg, s, K, bit. */",
+    dimensions = ["/* Exponents of m, kg, s, K, bit, A. */",
                   "static const int8_t units_dimensions[][DRDC_UNITS_DIMENSIONS] = {"]
     for d in dims:
         dimensions.append("  { %s }," % ", ".join(str(x) for x in d))
@@ -103,7 +111,7 @@ def table_text(path=SOURCE):
             numbers.append(line)
             line = " "
         line += s
-    numbers += [line, "};", "/* Factor numbers from 2^32 up, ascending (all below 2^56). */",
+    numbers += [line, "};", "/* Factor numbers from 2^32 up, ascending (all below 2^63). */",
                 "static const int64_t units_large[] = {"]
     for v in large:
         numbers.append("  INT64_C(%d)," % v)
@@ -130,25 +138,26 @@ def table_text(path=SOURCE):
         " * table and below what GNU units prints. Every other factor is exact.",
         " *",
         " * Compact storage: every name once in units_names (row order), each",
-        " * distinct dimension, factor number and offset once, and three bytes",
-        " * per unit (%d units, %d bytes of rows)." % (len(rows), 3 * len(rows)),
+        " * distinct dimension, factor number and offset once, and four bytes",
+        " * per unit (%d units, %d bytes of rows)." % (len(rows), 4 * len(rows)),
         " */",
         "",
         "/* Number of factor numbers below 2^32 (units_small). */",
         "#define UNITS_SMALL_COUNT %du" % len(small),
         "",
-        "/* { factor num, factor den, (dimension, offset) }: indices into the",
-        " * tables of the readers below; the name is the row's string in",
-        " * units_names. */",
+        "/* { factor num, factor den, dimension, UNITS_FLAGS(offset, prefix) }:",
+        " * indices into the tables of the readers below and whether SI",
+        " * prefixes apply; the name is the row's string in units_names. */",
             "static const drdc_unit_t units_table[] = {"]
-    for comments, name, d, num, den, onum, oden in rows:
+    for comments, name, d, num, den, onum, oden, prefix in rows:
         for c in comments:
             out.append("  /* %s */" % c)
         text = "%s: %d / %d" % (name, num, den)
         if onum:
             text += ", offset %d / %d" % (onum, oden)
-        row = "  { %du, %du, UNITS_DIM_OFFSET(%du, %du) }," % (
-            index[num], index[den], dims.index(d), offsets.index((onum, oden)))
+        row = "  { %du, %du, %du, UNITS_FLAGS(%du, %du) }," % (
+            index[num], index[den], dims.index(d), offsets.index((onum, oden)),
+            1 if prefix else 0)
         if len(row) + len(text) + 7 <= 80:
             out.append("%s /* %s */" % (row, text))
         else:  # 80 columns: the row's comment above it
@@ -188,7 +197,7 @@ def table_text(path=SOURCE):
             "int8_t drdc__units_dimension(const drdc_unit_t *unit, size_t i)",
             "{"] + indent(dimensions) + [
             "",
-            "  return units_dimensions[units_dimension_row(unit)][i];",
+            "  return units_dimensions[unit->dimension][i];",
             "}",
             "",
             "int64_t drdc__units_number(uint8_t index)",

@@ -2,9 +2,12 @@
 /**
  * @file
  * @ingroup drdc_units
- * @brief Exact int64_t rationals for unit factors (no rounding here: an
- *        operation whose exact result does not fit says so).
+ * @brief int64_t rationals for unit factors: exact, or (only in
+ *        drdc__units_rat_mul(), for unit expressions) rounded to 63 bits
+ *        with the rounding reported.
  */
+#include <drdc/fixed_wide.h>
+
 #include "units_impl.h"
 
 /* INT64_MAX as an unsigned constant */
@@ -145,5 +148,205 @@ drdc_status_t drdc__units_rat_sub(int64_t a_num, int64_t a_den,
   r = gcd_s64(num, den);
   out->num = num / r;
   out->den = den / r;
+  return DRDC_OK;
+}
+
+/* A 128-bit unsigned integer. */
+typedef struct rat_u128 {
+  uint64_t hi;
+  uint64_t lo;
+} rat_u128_t;
+
+/* Number of significant bits of x (0 for 0). */
+static unsigned bits_u128(const rat_u128_t *x)
+{
+  uint64_t top = x->lo;
+  unsigned n = 0u;
+
+  if (x->hi != 0u) {
+    top = x->hi;
+    n = 64u;
+  }
+
+  while (top != 0u) {
+    top >>= 1u;
+    n++;
+  }
+  return n;
+}
+
+/* a >= b */
+static int ge_u128(const rat_u128_t *a, const rat_u128_t *b)
+{
+  return (a->hi > b->hi) || ((a->hi == b->hi) && (a->lo >= b->lo));
+}
+
+/* a - b for a >= b, into a */
+static void sub_u128(rat_u128_t *a, const rat_u128_t *b)
+{
+  uint64_t borrow = 0u;
+
+  if (a->lo < b->lo) {
+    borrow = 1u;
+  }
+
+  a->lo -= b->lo;
+  a->hi = a->hi - b->hi - borrow;
+}
+
+/* x x 2^s, s = 0..127, for a result below 2^128 */
+static rat_u128_t shl_u128(const rat_u128_t *x, unsigned s)
+{
+  rat_u128_t r;
+
+  if (s == 0u) {
+    r = *x;
+  } else if (s >= 64u) {
+    r.hi = x->lo << (s - 64u);
+    r.lo = 0u;
+  } else {
+    r.hi = (x->hi << s) | (x->lo >> (64u - s));
+    r.lo = x->lo << s;
+  }
+  return r;
+}
+
+/* x / 2^s, s = 0..127, truncated */
+static rat_u128_t shr_u128(const rat_u128_t *x, unsigned s)
+{
+  rat_u128_t r;
+
+  if (s == 0u) {
+    r = *x;
+  } else if (s >= 64u) {
+    r.hi = 0u;
+    r.lo = x->hi >> (s - 64u);
+  } else {
+    r.hi = x->hi >> s;
+    r.lo = (x->lo >> s) | (x->hi << (64u - s));
+  }
+  return r;
+}
+
+/*
+ * round(l x 2^e / s) for l >= s > 0, both below 2^126, and a quotient
+ * below 2^62: binary long division, the integer bits first (62 steps,
+ * comparing r / 2^b with s so nothing overflows), then e fraction bits
+ * (the remainder stays below s, so doubling it stays below 2^127), then
+ * nearest, ties up.
+ */
+static uint64_t div_round_u128(const rat_u128_t *l, const rat_u128_t *s,
+                               unsigned e)
+{
+  rat_u128_t r = *l;
+  uint64_t q = 0u;
+  unsigned i;
+
+  for (i = 0u; i <= 62u; i++) {
+    unsigned b = 62u - i;
+    rat_u128_t top = shr_u128(&r, b);
+
+    q <<= 1u;
+    if (ge_u128(&top, s) != 0) {
+      rat_u128_t part = shl_u128(s, b);
+
+      sub_u128(&r, &part);
+      q |= 1u;
+    }
+  }
+  for (i = 0u; i < e; i++) {
+    r = shl_u128(&r, 1u);
+    q <<= 1u;
+    if (ge_u128(&r, s) != 0) {
+      sub_u128(&r, s);
+      q |= 1u;
+    }
+  }
+  r = shl_u128(&r, 1u);
+  if (ge_u128(&r, s) != 0) {
+    q++;
+  }
+  return q;
+}
+
+drdc_status_t drdc__units_rat_mul(const units_rat_t *a, int64_t num,
+                                  int64_t den, units_rat_t *out,
+                                  uint8_t *rounded)
+{
+  rat_u128_t n;
+  rat_u128_t d;
+  const rat_u128_t *large;
+  const rat_u128_t *small;
+  unsigned k;
+  unsigned e;
+  uint64_t q;
+  int64_t g1;
+  int64_t g2;
+  int64_t g;
+  int64_t p2;
+  int negative = 0;
+  int64_t den_a;
+  int64_t den_b;
+  uint64_t bit;
+
+  if ((a->num < -INT64_MAX) || (num < -INT64_MAX) || (a->den <= 0) ||
+      (den <= 0)) {
+    return DRDC_E_OVERFLOW;
+  }
+  if ((a->num < 0) != (num < 0)) {
+    negative = 1;
+  }
+  if ((a->num == 0) || (num == 0)) {
+    out->num = 0;
+    out->den = 1;
+    return DRDC_OK;
+  }
+  /* the exact product, cross-cancelled (lowest terms when a and
+   * num / den are), as 128-bit magnitudes, each below 2^126; computed
+   * here rather than by drdc__units_rat_scale() to keep the stack of
+   * drdc_units_parse() within its budget */
+  g1 = gcd_s64(a->num, den);
+  g2 = gcd_s64(num, a->den);
+  drdc_fx_mul_u64_u128(abs_u64(a->num / g1), abs_u64(num / g2), &n.hi, &n.lo);
+  den_a = a->den / g2;
+  den_b = den / g1;
+  drdc_fx_mul_u64_u128((uint64_t)den_a, (uint64_t)den_b, &d.hi, &d.lo);
+  if ((n.hi == 0u) && (n.lo <= INT64_MAX_U) && (d.hi == 0u) &&
+      (d.lo <= INT64_MAX_U)) {
+    out->num = (negative != 0) ? -(int64_t)n.lo : (int64_t)n.lo;
+    out->den = (int64_t)d.lo;
+    return DRDC_OK;
+  }
+  /* v = n / d as Q / 2^e (v >= 1) or 2^e / Q (v < 1), Q = round(large x
+   * 2^e / small) in [2^60, 2^62], e = 61 - k >= 0: relative error below
+   * 2^-61. Values from about 2^61 up (or 2^-61 down) whose exact
+   * fraction does not fit are refused. */
+  if (ge_u128(&n, &d) != 0) {
+    large = &n;
+    small = &d;
+  } else {
+    large = &d;
+    small = &n;
+  }
+  k = bits_u128(large) - bits_u128(small);
+  if (k > 61u) {
+    return DRDC_E_OVERFLOW;
+  }
+  e = 61u - k;
+  q = div_round_u128(large, small, e);
+  bit = (uint64_t)1u << e;
+  p2 = (int64_t)bit;
+  g = gcd_s64((int64_t)q, p2);
+  if (large == &n) {
+    out->num = (int64_t)q / g;
+    out->den = p2 / g;
+  } else {
+    out->num = p2 / g;
+    out->den = (int64_t)q / g;
+  }
+  if (negative != 0) {
+    out->num = -out->num;
+  }
+  *rounded = 1u;
   return DRDC_OK;
 }

@@ -28,46 +28,34 @@ static int64_t pow2(unsigned n)
  * the factor as fit and the rest into the input (an exact left shift);
  * DRDC_E_RANGE when neither can take them.
  */
-drdc_status_t drdc__units_prepare(unsigned from_frac, const drdc_unit_t *from,
-                                  unsigned to_frac, const drdc_unit_t *to,
+drdc_status_t drdc__units_prepare(unsigned from_frac,
+                                  const units_scale_t *scale, unsigned to_frac,
                                   int64_t *a, units_rat_t *factor)
 {
   const int64_t raw = *a;
-  units_rat_t to_inv; /* 1 / factor_to */
-  units_rat_t ratio;  /* F = factor_from / factor_to */
-  units_rat_t f;      /* the input's factor: F, or F / Hd when affine */
-  int64_t in = raw;   /* the input: raw, or raw x Hd + Hn when affine */
+  units_rat_t f = scale->ratio; /* the input's factor: F, or F / Hd */
+  int64_t in = raw; /* the input: raw, or raw x Hd + Hn when affine */
   drdc_status_t st = DRDC_OK;
 
-  to_inv.num = drdc__units_number(to->factor_den);
-  to_inv.den = drdc__units_number(to->factor_num);
-  if (drdc__units_rat_scale(&to_inv, drdc__units_number(from->factor_num),
-                            drdc__units_number(from->factor_den),
-                            &ratio) != DRDC_OK) {
-    return DRDC_E_RANGE;
-  }
-  f = ratio;
-  if ((units_offset_row(from) != 0u) || (units_offset_row(to) != 0u)) {
+  if ((scale->from_offset.num != 0) || (scale->to_offset.num != 0)) {
     units_rat_t inv_ratio; /* 1 / F */
     units_rat_t to_off;    /* o_to / F */
     units_rat_t diff;      /* o_from - o_to / F */
     units_rat_t h;         /* H = Hn / Hd */
     int64_t scaled;        /* raw x Hd */
 
-    if ((drdc__units_rat_inv(&ratio, &inv_ratio) != DRDC_OK) ||
-        (drdc__units_rat_scale(&inv_ratio, drdc__units_offset_part(to, 0u),
-                               drdc__units_offset_part(to, 1u),
-                               &to_off) != DRDC_OK)) {
+    if ((drdc__units_rat_inv(&scale->ratio, &inv_ratio) != DRDC_OK) ||
+        (drdc__units_rat_scale(&inv_ratio, scale->to_offset.num,
+                               scale->to_offset.den, &to_off) != DRDC_OK)) {
       return DRDC_E_RANGE;
     }
-    if ((drdc__units_rat_sub(drdc__units_offset_part(from, 0u),
-                             drdc__units_offset_part(from, 1u), &to_off,
-                             &diff) != DRDC_OK) ||
+    if ((drdc__units_rat_sub(scale->from_offset.num, scale->from_offset.den,
+                             &to_off, &diff) != DRDC_OK) ||
         (drdc__units_rat_scale(&diff, pow2(from_frac), 1, &h) != DRDC_OK)) {
       return DRDC_E_RANGE;
     }
     if ((drdc__units_mul_s64(raw, h.den, &scaled) != DRDC_OK) ||
-        (drdc__units_rat_scale(&ratio, 1, h.den, &f) != DRDC_OK)) {
+        (drdc__units_rat_scale(&scale->ratio, 1, h.den, &f) != DRDC_OK)) {
       return DRDC_E_RANGE;
     }
     if (((h.num > 0) && (scaled > (INT64_MAX - h.num))) ||

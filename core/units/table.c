@@ -14,414 +14,495 @@
  * table and below what GNU units prints. Every other factor is exact.
  *
  * Compact storage: every name once in units_names (row order), each
- * distinct dimension, factor number and offset once, and three bytes
- * per unit (182 units, 546 bytes of rows).
+ * distinct dimension, factor number and offset once, and four bytes
+ * per unit (222 units, 888 bytes of rows).
  */
 
 /* Number of factor numbers below 2^32 (units_small). */
 #define UNITS_SMALL_COUNT 85u
 
-/* { factor num, factor den, (dimension, offset) }: indices into the
- * tables of the readers below; the name is the row's string in
- * units_names. */
+/* { factor num, factor den, dimension, UNITS_FLAGS(offset, prefix) }:
+ * indices into the tables of the readers below and whether SI
+ * prefixes apply; the name is the row's string in units_names. */
 static const drdc_unit_t units_table[] = {
   /* length */
   /* SI base unit (metre) */
-  { 0u, 0u, UNITS_DIM_OFFSET(0u, 0u) }, /* m: 1 / 1 */
+  { 0u, 0u, 0u, UNITS_FLAGS(0u, 1u) }, /* m: 1 / 1 */
   /* 10^3 m */
-  { 17u, 0u, UNITS_DIM_OFFSET(0u, 0u) }, /* km: 1000 / 1 */
+  { 17u, 0u, 0u, UNITS_FLAGS(0u, 0u) }, /* km: 1000 / 1 */
   /* 10^-2 m */
-  { 0u, 7u, UNITS_DIM_OFFSET(0u, 0u) }, /* cm: 1 / 100 */
+  { 0u, 7u, 0u, UNITS_FLAGS(0u, 0u) }, /* cm: 1 / 100 */
   /* 10^-3 m */
-  { 0u, 17u, UNITS_DIM_OFFSET(0u, 0u) }, /* mm: 1 / 1000 */
+  { 0u, 17u, 0u, UNITS_FLAGS(0u, 0u) }, /* mm: 1 / 1000 */
   /* 10^-6 m */
-  { 0u, 51u, UNITS_DIM_OFFSET(0u, 0u) }, /* um: 1 / 1000000 */
+  { 0u, 51u, 0u, UNITS_FLAGS(0u, 0u) }, /* um: 1 / 1000000 */
   /* 10^-9 m */
-  { 0u, 79u, UNITS_DIM_OFFSET(0u, 0u) }, /* nm: 1 / 1000000000 */
+  { 0u, 79u, 0u, UNITS_FLAGS(0u, 0u) }, /* nm: 1 / 1000000000 */
   /* 10^-6 m */
-  { 0u, 51u, UNITS_DIM_OFFSET(0u, 0u) }, /* micron: 1 / 1000000 */
+  { 0u, 51u, 0u, UNITS_FLAGS(0u, 0u) }, /* micron: 1 / 1000000 */
   /* 10^-10 m */
-  { 0u, 88u, UNITS_DIM_OFFSET(0u, 0u) }, /* angstrom: 1 / 10000000000 */
+  { 0u, 88u, 0u, UNITS_FLAGS(0u, 0u) }, /* angstrom: 1 / 10000000000 */
   /* 2.54 cm exactly (international inch, 1959) */
-  { 9u, 28u, UNITS_DIM_OFFSET(0u, 0u) }, /* inch: 127 / 5000 */
+  { 9u, 28u, 0u, UNITS_FLAGS(0u, 0u) }, /* inch: 127 / 5000 */
   /* inch */
-  { 9u, 28u, UNITS_DIM_OFFSET(0u, 0u) }, /* in: 127 / 5000 */
+  { 9u, 28u, 0u, UNITS_FLAGS(0u, 0u) }, /* in: 127 / 5000 */
   /* 12 inch = 0.3048 m exactly (international foot, 1959) */
-  { 11u, 20u, UNITS_DIM_OFFSET(0u, 0u) }, /* ft: 381 / 1250 */
+  { 11u, 20u, 0u, UNITS_FLAGS(0u, 0u) }, /* ft: 381 / 1250 */
   /* ft */
-  { 11u, 20u, UNITS_DIM_OFFSET(0u, 0u) }, /* foot: 381 / 1250 */
+  { 11u, 20u, 0u, UNITS_FLAGS(0u, 0u) }, /* foot: 381 / 1250 */
   /* 3 ft = 0.9144 m */
-  { 18u, 20u, UNITS_DIM_OFFSET(0u, 0u) }, /* yd: 1143 / 1250 */
+  { 18u, 20u, 0u, UNITS_FLAGS(0u, 0u) }, /* yd: 1143 / 1250 */
   /* yd */
-  { 18u, 20u, UNITS_DIM_OFFSET(0u, 0u) }, /* yard: 1143 / 1250 */
+  { 18u, 20u, 0u, UNITS_FLAGS(0u, 0u) }, /* yard: 1143 / 1250 */
   /* 5280 ft = 1609.344 m */
-  { 46u, 8u, UNITS_DIM_OFFSET(0u, 0u) }, /* mile: 201168 / 125 */
+  { 46u, 8u, 0u, UNITS_FLAGS(0u, 0u) }, /* mile: 201168 / 125 */
   /* international nautical mile, 1852 m exactly */
-  { 22u, 0u, UNITS_DIM_OFFSET(0u, 0u) }, /* nmi: 1852 / 1 */
+  { 22u, 0u, 0u, UNITS_FLAGS(0u, 0u) }, /* nmi: 1852 / 1 */
   /* nmi */
-  { 22u, 0u, UNITS_DIM_OFFSET(0u, 0u) }, /* nauticalmile: 1852 / 1 */
+  { 22u, 0u, 0u, UNITS_FLAGS(0u, 0u) }, /* nauticalmile: 1852 / 1 */
   /* 6 ft */
-  { 18u, 14u, UNITS_DIM_OFFSET(0u, 0u) }, /* fathom: 1143 / 625 */
+  { 18u, 14u, 0u, UNITS_FLAGS(0u, 0u) }, /* fathom: 1143 / 625 */
   /* 40 rod = 660 ft */
-  { 38u, 8u, UNITS_DIM_OFFSET(0u, 0u) }, /* furlong: 25146 / 125 */
+  { 38u, 8u, 0u, UNITS_FLAGS(0u, 0u) }, /* furlong: 25146 / 125 */
   /* 66 ft */
-  { 32u, 14u, UNITS_DIM_OFFSET(0u, 0u) }, /* chain: 12573 / 625 */
+  { 32u, 14u, 0u, UNITS_FLAGS(0u, 0u) }, /* chain: 12573 / 625 */
   /* 0.001 inch */
-  { 9u, 58u, UNITS_DIM_OFFSET(0u, 0u) }, /* mil: 127 / 5000000 */
+  { 9u, 58u, 0u, UNITS_FLAGS(0u, 0u) }, /* mil: 127 / 5000000 */
   /* astronomical unit, 149 597 870 700 m exactly (IAU 2012) */
-  { 96u, 0u, UNITS_DIM_OFFSET(0u, 0u) }, /* au: 149597870700 / 1 */
+  { 96u, 0u, 0u, UNITS_FLAGS(0u, 0u) }, /* au: 149597870700 / 1 */
   /* c x 1 s */
-  { 73u, 0u, UNITS_DIM_OFFSET(0u, 0u) }, /* lightsecond: 299792458 / 1 */
+  { 73u, 0u, 0u, UNITS_FLAGS(0u, 0u) }, /* lightsecond: 299792458 / 1 */
   /* c x julianyear (365.25 d) */
-  { 110u, 0u, UNITS_DIM_OFFSET(0u, 0u) }, /* lightyear: 9460730472580800 / 1 */
+  { 110u, 0u, 0u, UNITS_FLAGS(0u, 0u) }, /* lightyear: 9460730472580800 / 1 */
   /* US survey foot, 1200/3937 m exactly */
-  { 19u, 26u, UNITS_DIM_OFFSET(0u, 0u) }, /* surveyfoot: 1200 / 3937 */
+  { 19u, 26u, 0u, UNITS_FLAGS(0u, 0u) }, /* surveyfoot: 1200 / 3937 */
+  /* m (GNU units spelling) */
+  { 0u, 0u, 0u, UNITS_FLAGS(0u, 1u) }, /* meter: 1 / 1 */
+  /* m */
+  { 0u, 0u, 0u, UNITS_FLAGS(0u, 1u) }, /* metre: 1 / 1 */
+  /* au / tan(arcsec), as GNU units and pint define it, to the metre (the */
+  /* IAU 2015 parsec, 648000/pi au, is 7.8e-12 smaller) */
+  { 111u, 0u, 0u, UNITS_FLAGS(0u, 0u) }, /* parsec: 30856775814671916 / 1 */
+  /* parsec */
+  { 111u, 0u, 0u, UNITS_FLAGS(0u, 0u) }, /* pc: 30856775814671916 / 1 */
   /* area */
   /* SI */
-  { 0u, 0u, UNITS_DIM_OFFSET(1u, 0u) }, /* m^2: 1 / 1 */
+  { 0u, 0u, 1u, UNITS_FLAGS(0u, 0u) }, /* m^2: 1 / 1 */
   /* (10^3 m)^2 */
-  { 51u, 0u, UNITS_DIM_OFFSET(1u, 0u) }, /* km^2: 1000000 / 1 */
+  { 51u, 0u, 1u, UNITS_FLAGS(0u, 0u) }, /* km^2: 1000000 / 1 */
   /* (10^-2 m)^2 */
-  { 0u, 30u, UNITS_DIM_OFFSET(1u, 0u) }, /* cm^2: 1 / 10000 */
+  { 0u, 30u, 1u, UNITS_FLAGS(0u, 0u) }, /* cm^2: 1 / 10000 */
   /* (10^-3 m)^2 */
-  { 0u, 51u, UNITS_DIM_OFFSET(1u, 0u) }, /* mm^2: 1 / 1000000 */
+  { 0u, 51u, 1u, UNITS_FLAGS(0u, 0u) }, /* mm^2: 1 / 1000000 */
   /* inch^2 */
-  { 34u, 62u, UNITS_DIM_OFFSET(1u, 0u) }, /* in^2: 16129 / 25000000 */
+  { 34u, 62u, 1u, UNITS_FLAGS(0u, 0u) }, /* in^2: 16129 / 25000000 */
   /* ft^2 */
-  { 44u, 55u, UNITS_DIM_OFFSET(1u, 0u) }, /* ft^2: 145161 / 1562500 */
+  { 44u, 55u, 1u, UNITS_FLAGS(0u, 0u) }, /* ft^2: 145161 / 1562500 */
   /* yd^2 */
-  { 54u, 55u, UNITS_DIM_OFFSET(1u, 0u) }, /* yd^2: 1306449 / 1562500 */
+  { 54u, 55u, 1u, UNITS_FLAGS(0u, 0u) }, /* yd^2: 1306449 / 1562500 */
   /* mile^2 */
-  { 91u, 33u, UNITS_DIM_OFFSET(1u, 0u) }, /* mile^2: 40468564224 / 15625 */
+  { 91u, 33u, 1u, UNITS_FLAGS(0u, 0u) }, /* mile^2: 40468564224 / 15625 */
   /* 100 are = 10^4 m^2 */
-  { 30u, 0u, UNITS_DIM_OFFSET(1u, 0u) }, /* hectare: 10000 / 1 */
+  { 30u, 0u, 1u, UNITS_FLAGS(0u, 0u) }, /* hectare: 10000 / 1 */
   /* 100 m^2 */
-  { 7u, 0u, UNITS_DIM_OFFSET(1u, 0u) }, /* are: 100 / 1 */
+  { 7u, 0u, 1u, UNITS_FLAGS(0u, 0u) }, /* are: 100 / 1 */
   /* international acre, 43560 ft^2 (GNU units intacre) */
-  { 74u, 40u, UNITS_DIM_OFFSET(1u, 0u) }, /* acre: 316160658 / 78125 */
+  { 74u, 40u, 1u, UNITS_FLAGS(0u, 0u) }, /* acre: 316160658 / 78125 */
+  /* hectare */
+  { 30u, 0u, 1u, UNITS_FLAGS(0u, 0u) }, /* ha: 10000 / 1 */
   /* volume */
   /* SI */
-  { 0u, 0u, UNITS_DIM_OFFSET(2u, 0u) }, /* m^3: 1 / 1 */
+  { 0u, 0u, 2u, UNITS_FLAGS(0u, 0u) }, /* m^3: 1 / 1 */
   /* (10^-2 m)^3 */
-  { 0u, 51u, UNITS_DIM_OFFSET(2u, 0u) }, /* cm^3: 1 / 1000000 */
+  { 0u, 51u, 2u, UNITS_FLAGS(0u, 0u) }, /* cm^3: 1 / 1000000 */
   /* inch^3 */
-  { 56u, 95u, UNITS_DIM_OFFSET(2u, 0u) }, /* in^3: 2048383 / 125000000000 */
+  { 56u, 95u, 2u, UNITS_FLAGS(0u, 0u) }, /* in^3: 2048383 / 125000000000 */
   /* ft^3 */
-  { 66u, 83u, UNITS_DIM_OFFSET(2u, 0u) }, /* ft^3: 55306341 / 1953125000 */
+  { 66u, 83u, 2u, UNITS_FLAGS(0u, 0u) }, /* ft^3: 55306341 / 1953125000 */
   /* 10^-3 m^3 (1964 definition) */
-  { 0u, 17u, UNITS_DIM_OFFSET(2u, 0u) }, /* liter: 1 / 1000 */
+  { 0u, 17u, 2u, UNITS_FLAGS(0u, 1u) }, /* liter: 1 / 1000 */
   /* liter */
-  { 0u, 17u, UNITS_DIM_OFFSET(2u, 0u) }, /* L: 1 / 1000 */
+  { 0u, 17u, 2u, UNITS_FLAGS(0u, 1u) }, /* L: 1 / 1000 */
+  /* liter (SI spelling) */
+  { 0u, 17u, 2u, UNITS_FLAGS(0u, 1u) }, /* litre: 1 / 1000 */
   /* liter */
-  { 0u, 17u, UNITS_DIM_OFFSET(2u, 0u) }, /* l: 1 / 1000 */
+  { 0u, 17u, 2u, UNITS_FLAGS(0u, 1u) }, /* l: 1 / 1000 */
   /* 10^-3 liter */
-  { 0u, 51u, UNITS_DIM_OFFSET(2u, 0u) }, /* ml: 1 / 1000000 */
+  { 0u, 51u, 2u, UNITS_FLAGS(0u, 0u) }, /* ml: 1 / 1000000 */
   /* US gallon, 231 in^3 (GNU units' default, UNITS_ENGLISH=US) */
-  { 76u, 95u, UNITS_DIM_OFFSET(2u, 0u) }, /* gallon: 473176473 / 125000000000 */
+  { 76u, 95u, 2u, UNITS_FLAGS(0u, 0u) }, /* gallon: 473176473 / 125000000000 */
   /* gallon */
-  { 76u, 95u, UNITS_DIM_OFFSET(2u, 0u) }, /* gal: 473176473 / 125000000000 */
+  { 76u, 95u, 2u, UNITS_FLAGS(0u, 0u) }, /* gal: 473176473 / 125000000000 */
   /* 1/4 gallon */
-  { 76u, 99u, UNITS_DIM_OFFSET(2u, 0u) }, /* quart: 473176473 / 500000000000 */
+  { 76u, 99u, 2u, UNITS_FLAGS(0u, 0u) }, /* quart: 473176473 / 500000000000 */
   /* 1/2 quart */
-  { 76u, 101u, UNITS_DIM_OFFSET(2u, 0u) }, /* pint: 473176473 / 1000000000000 */
+  { 76u, 101u, 2u, UNITS_FLAGS(0u, 0u) }, /* pint: 473176473 / 1000000000000 */
   /* US cup, 1/2 pint */
-  { 76u, 102u, UNITS_DIM_OFFSET(2u, 0u) }, /* cup: 473176473 / 2000000000000 */
+  { 76u, 102u, 2u, UNITS_FLAGS(0u, 0u) }, /* cup: 473176473 / 2000000000000 */
   /* US fluid ounce, 1/128 gallon */
-  /* floz: 473176473 / 16000000000000 */
-  { 76u, 106u, UNITS_DIM_OFFSET(2u, 0u) },
+  { 76u, 106u, 2u, UNITS_FLAGS(0u, 0u) }, /* floz: 473176473 / 16000000000000 */
   /* US tablespoon, 1/2 floz */
   /* tablespoon: 473176473 / 32000000000000 */
-  { 76u, 108u, UNITS_DIM_OFFSET(2u, 0u) },
+  { 76u, 108u, 2u, UNITS_FLAGS(0u, 0u) },
   /* US teaspoon, 1/3 tablespoon */
   /* teaspoon: 157725491 / 32000000000000 */
-  { 71u, 108u, UNITS_DIM_OFFSET(2u, 0u) },
+  { 71u, 108u, 2u, UNITS_FLAGS(0u, 0u) },
   /* British gallon, 4.54609 liter exactly */
-  { 48u, 68u, UNITS_DIM_OFFSET(2u, 0u) }, /* brgallon: 454609 / 100000000 */
+  { 48u, 68u, 2u, UNITS_FLAGS(0u, 0u) }, /* brgallon: 454609 / 100000000 */
   /* petroleum barrel, 42 gallon */
-  { 87u, 93u, UNITS_DIM_OFFSET(2u, 0u) }, /* barrel: 9936705933 / 62500000000 */
+  { 87u, 93u, 2u, UNITS_FLAGS(0u, 0u) }, /* barrel: 9936705933 / 62500000000 */
   /* barrel */
-  { 87u, 93u, UNITS_DIM_OFFSET(2u, 0u) }, /* bbl: 9936705933 / 62500000000 */
+  { 87u, 93u, 2u, UNITS_FLAGS(0u, 0u) }, /* bbl: 9936705933 / 62500000000 */
   /* mass */
   /* SI base unit (kilogram) */
-  { 0u, 0u, UNITS_DIM_OFFSET(3u, 0u) }, /* kg: 1 / 1 */
+  { 0u, 0u, 3u, UNITS_FLAGS(0u, 0u) }, /* kg: 1 / 1 */
   /* 10^-3 kg */
-  { 0u, 17u, UNITS_DIM_OFFSET(3u, 0u) }, /* g: 1 / 1000 */
+  { 0u, 17u, 3u, UNITS_FLAGS(0u, 1u) }, /* g: 1 / 1000 */
+  /* g */
+  { 0u, 17u, 3u, UNITS_FLAGS(0u, 1u) }, /* gram: 1 / 1000 */
   /* 10^-6 kg */
-  { 0u, 51u, UNITS_DIM_OFFSET(3u, 0u) }, /* mg: 1 / 1000000 */
+  { 0u, 51u, 3u, UNITS_FLAGS(0u, 0u) }, /* mg: 1 / 1000000 */
   /* 10^3 kg */
-  { 17u, 0u, UNITS_DIM_OFFSET(3u, 0u) }, /* tonne: 1000 / 1 */
+  { 17u, 0u, 3u, UNITS_FLAGS(0u, 1u) }, /* tonne: 1000 / 1 */
   /* tonne */
-  { 17u, 0u, UNITS_DIM_OFFSET(3u, 0u) }, /* t: 1000 / 1 */
+  { 17u, 0u, 3u, UNITS_FLAGS(0u, 1u) }, /* t: 1000 / 1 */
   /* avoirdupois pound, 0.45359237 kg exactly (1959) */
-  { 64u, 68u, UNITS_DIM_OFFSET(3u, 0u) }, /* lb: 45359237 / 100000000 */
+  { 64u, 68u, 3u, UNITS_FLAGS(0u, 0u) }, /* lb: 45359237 / 100000000 */
   /* lb */
-  { 64u, 68u, UNITS_DIM_OFFSET(3u, 0u) }, /* pound: 45359237 / 100000000 */
+  { 64u, 68u, 3u, UNITS_FLAGS(0u, 0u) }, /* pound: 45359237 / 100000000 */
   /* 1/16 lb */
-  { 64u, 82u, UNITS_DIM_OFFSET(3u, 0u) }, /* oz: 45359237 / 1600000000 */
+  { 64u, 82u, 3u, UNITS_FLAGS(0u, 0u) }, /* oz: 45359237 / 1600000000 */
   /* 1/7000 lb */
-  { 59u, 94u, UNITS_DIM_OFFSET(3u, 0u) }, /* grain: 6479891 / 100000000000 */
+  { 59u, 94u, 3u, UNITS_FLAGS(0u, 0u) }, /* grain: 6479891 / 100000000000 */
   /* 14 lb */
-  { 75u, 65u, UNITS_DIM_OFFSET(3u, 0u) }, /* stone: 317514659 / 50000000 */
+  { 75u, 65u, 3u, UNITS_FLAGS(0u, 0u) }, /* stone: 317514659 / 50000000 */
   /* US short ton, 2000 lb (GNU units' default) */
-  { 64u, 39u, UNITS_DIM_OFFSET(3u, 0u) }, /* ton: 45359237 / 50000 */
+  { 64u, 39u, 3u, UNITS_FLAGS(0u, 0u) }, /* ton: 45359237 / 50000 */
   /* 2000 lb */
-  { 64u, 39u, UNITS_DIM_OFFSET(3u, 0u) }, /* shortton: 45359237 / 50000 */
+  { 64u, 39u, 3u, UNITS_FLAGS(0u, 0u) }, /* shortton: 45359237 / 50000 */
   /* 2240 lb */
-  { 75u, 47u, UNITS_DIM_OFFSET(3u, 0u) }, /* longton: 317514659 / 312500 */
+  { 75u, 47u, 3u, UNITS_FLAGS(0u, 0u) }, /* longton: 317514659 / 312500 */
   /* 480 grain */
-  { 61u, 78u, UNITS_DIM_OFFSET(3u, 0u) }, /* troyounce: 19439673 / 625000000 */
+  { 61u, 78u, 3u, UNITS_FLAGS(0u, 0u) }, /* troyounce: 19439673 / 625000000 */
   /* metric carat, 200 mg */
-  { 0u, 28u, UNITS_DIM_OFFSET(3u, 0u) }, /* carat: 1 / 5000 */
+  { 0u, 28u, 3u, UNITS_FLAGS(0u, 0u) }, /* carat: 1 / 5000 */
   /* lbf s^2 / ft */
   /* slug: 8896443230521 / 609600000000 */
-  { 104u, 100u, UNITS_DIM_OFFSET(3u, 0u) },
+  { 104u, 100u, 3u, UNITS_FLAGS(0u, 0u) },
   /* time */
   /* SI base unit (second) */
-  { 0u, 0u, UNITS_DIM_OFFSET(4u, 0u) }, /* s: 1 / 1 */
+  { 0u, 0u, 4u, UNITS_FLAGS(0u, 1u) }, /* s: 1 / 1 */
   /* s */
-  { 0u, 0u, UNITS_DIM_OFFSET(4u, 0u) }, /* sec: 1 / 1 */
+  { 0u, 0u, 4u, UNITS_FLAGS(0u, 0u) }, /* sec: 1 / 1 */
   /* s */
-  { 0u, 0u, UNITS_DIM_OFFSET(4u, 0u) }, /* second: 1 / 1 */
+  { 0u, 0u, 4u, UNITS_FLAGS(0u, 1u) }, /* second: 1 / 1 */
   /* 10^-3 s */
-  { 0u, 17u, UNITS_DIM_OFFSET(4u, 0u) }, /* ms: 1 / 1000 */
+  { 0u, 17u, 4u, UNITS_FLAGS(0u, 0u) }, /* ms: 1 / 1000 */
   /* 10^-6 s */
-  { 0u, 51u, UNITS_DIM_OFFSET(4u, 0u) }, /* us: 1 / 1000000 */
+  { 0u, 51u, 4u, UNITS_FLAGS(0u, 0u) }, /* us: 1 / 1000000 */
   /* 10^-9 s */
-  { 0u, 79u, UNITS_DIM_OFFSET(4u, 0u) }, /* ns: 1 / 1000000000 */
+  { 0u, 79u, 4u, UNITS_FLAGS(0u, 0u) }, /* ns: 1 / 1000000000 */
   /* 60 s */
-  { 6u, 0u, UNITS_DIM_OFFSET(4u, 0u) }, /* min: 60 / 1 */
+  { 6u, 0u, 4u, UNITS_FLAGS(0u, 0u) }, /* min: 60 / 1 */
   /* 60 s */
-  { 6u, 0u, UNITS_DIM_OFFSET(4u, 0u) }, /* minute: 60 / 1 */
+  { 6u, 0u, 4u, UNITS_FLAGS(0u, 0u) }, /* minute: 60 / 1 */
   /* 3600 s */
-  { 25u, 0u, UNITS_DIM_OFFSET(4u, 0u) }, /* hr: 3600 / 1 */
+  { 25u, 0u, 4u, UNITS_FLAGS(0u, 0u) }, /* hr: 3600 / 1 */
   /* 3600 s */
-  { 25u, 0u, UNITS_DIM_OFFSET(4u, 0u) }, /* hour: 3600 / 1 */
+  { 25u, 0u, 4u, UNITS_FLAGS(0u, 0u) }, /* hour: 3600 / 1 */
+  /* hour, the SI-accepted symbol (GNU units' h is Planck's constant) */
+  { 25u, 0u, 4u, UNITS_FLAGS(0u, 0u) }, /* h: 3600 / 1 */
   /* 86400 s */
-  { 41u, 0u, UNITS_DIM_OFFSET(4u, 0u) }, /* day: 86400 / 1 */
+  { 41u, 0u, 4u, UNITS_FLAGS(0u, 0u) }, /* day: 86400 / 1 */
   /* 7 day */
-  { 50u, 0u, UNITS_DIM_OFFSET(4u, 0u) }, /* week: 604800 / 1 */
+  { 50u, 0u, 4u, UNITS_FLAGS(0u, 0u) }, /* week: 604800 / 1 */
   /* 14 day */
-  { 52u, 0u, UNITS_DIM_OFFSET(4u, 0u) }, /* fortnight: 1209600 / 1 */
+  { 52u, 0u, 4u, UNITS_FLAGS(0u, 0u) }, /* fortnight: 1209600 / 1 */
   /* 365.25 day */
-  { 63u, 0u, UNITS_DIM_OFFSET(4u, 0u) }, /* julianyear: 31557600 / 1 */
+  { 63u, 0u, 4u, UNITS_FLAGS(0u, 0u) }, /* julianyear: 31557600 / 1 */
   /* GNU units' year: tropicalyear, 365.242198781 day */
-  { 105u, 47u, UNITS_DIM_OFFSET(4u, 0u) }, /* year: 9861539367087 / 312500 */
+  { 105u, 47u, 4u, UNITS_FLAGS(0u, 0u) }, /* year: 9861539367087 / 312500 */
   /* speed */
   /* SI */
-  { 0u, 0u, UNITS_DIM_OFFSET(5u, 0u) }, /* m/s: 1 / 1 */
+  { 0u, 0u, 5u, UNITS_FLAGS(0u, 0u) }, /* m/s: 1 / 1 */
   /* km / 3600 s */
-  { 2u, 5u, UNITS_DIM_OFFSET(5u, 0u) }, /* km/hr: 5 / 18 */
+  { 2u, 5u, 5u, UNITS_FLAGS(0u, 0u) }, /* km/hr: 5 / 18 */
   /* km/hr */
-  { 2u, 5u, UNITS_DIM_OFFSET(5u, 0u) }, /* kph: 5 / 18 */
+  { 2u, 5u, 5u, UNITS_FLAGS(0u, 0u) }, /* kph: 5 / 18 */
   /* mile/hr */
-  { 21u, 24u, UNITS_DIM_OFFSET(5u, 0u) }, /* mph: 1397 / 3125 */
+  { 21u, 24u, 5u, UNITS_FLAGS(0u, 0u) }, /* mph: 1397 / 3125 */
   /* nmi/hr */
-  { 12u, 16u, UNITS_DIM_OFFSET(5u, 0u) }, /* knot: 463 / 900 */
+  { 12u, 16u, 5u, UNITS_FLAGS(0u, 0u) }, /* knot: 463 / 900 */
   /* knot */
-  { 12u, 16u, UNITS_DIM_OFFSET(5u, 0u) }, /* knots: 463 / 900 */
+  { 12u, 16u, 5u, UNITS_FLAGS(0u, 0u) }, /* knots: 463 / 900 */
+  /* knot (GNU units' kt is the kilotonne) */
+  { 12u, 16u, 5u, UNITS_FLAGS(0u, 0u) }, /* kt: 463 / 900 */
   /* ft / s */
-  { 11u, 20u, UNITS_DIM_OFFSET(5u, 0u) }, /* ft/s: 381 / 1250 */
+  { 11u, 20u, 5u, UNITS_FLAGS(0u, 0u) }, /* ft/s: 381 / 1250 */
   /* ft/s */
-  { 11u, 20u, UNITS_DIM_OFFSET(5u, 0u) }, /* fps: 381 / 1250 */
+  { 11u, 20u, 5u, UNITS_FLAGS(0u, 0u) }, /* fps: 381 / 1250 */
   /* ft / 60 s */
-  { 9u, 37u, UNITS_DIM_OFFSET(5u, 0u) }, /* ft/min: 127 / 25000 */
+  { 9u, 37u, 5u, UNITS_FLAGS(0u, 0u) }, /* ft/min: 127 / 25000 */
   /* ft/min */
-  { 9u, 37u, UNITS_DIM_OFFSET(5u, 0u) }, /* fpm: 127 / 25000 */
+  { 9u, 37u, 5u, UNITS_FLAGS(0u, 0u) }, /* fpm: 127 / 25000 */
   /* speed of light, 299 792 458 m/s exactly */
-  { 73u, 0u, UNITS_DIM_OFFSET(5u, 0u) }, /* c: 299792458 / 1 */
+  { 73u, 0u, 5u, UNITS_FLAGS(0u, 0u) }, /* c: 299792458 / 1 */
   /* acceleration */
   /* SI */
-  { 0u, 0u, UNITS_DIM_OFFSET(6u, 0u) }, /* m/s^2: 1 / 1 */
+  { 0u, 0u, 6u, UNITS_FLAGS(0u, 0u) }, /* m/s^2: 1 / 1 */
   /* standard gravity, 9.80665 m/s^2 exactly (CGPM 1901) */
-  { 45u, 35u, UNITS_DIM_OFFSET(6u, 0u) }, /* gravity: 196133 / 20000 */
+  { 45u, 35u, 6u, UNITS_FLAGS(0u, 0u) }, /* gravity: 196133 / 20000 */
   /* galileo, cm/s^2 */
-  { 0u, 7u, UNITS_DIM_OFFSET(6u, 0u) }, /* Gal: 1 / 100 */
+  { 0u, 7u, 6u, UNITS_FLAGS(0u, 0u) }, /* Gal: 1 / 100 */
   /* Gal */
-  { 0u, 7u, UNITS_DIM_OFFSET(6u, 0u) }, /* galileo: 1 / 100 */
+  { 0u, 7u, 6u, UNITS_FLAGS(0u, 0u) }, /* galileo: 1 / 100 */
   /* ft / s^2 */
-  { 11u, 20u, UNITS_DIM_OFFSET(6u, 0u) }, /* ft/s^2: 381 / 1250 */
+  { 11u, 20u, 6u, UNITS_FLAGS(0u, 0u) }, /* ft/s^2: 381 / 1250 */
   /* angle */
   /* SI (dimensionless, as in GNU units) */
-  { 0u, 0u, UNITS_DIM_OFFSET(7u, 0u) }, /* radian: 1 / 1 */
+  { 0u, 0u, 7u, UNITS_FLAGS(0u, 1u) }, /* radian: 1 / 1 */
+  /* radian, the SI symbol (GNU units' rad is the dose 0.01 Gy) */
+  { 0u, 0u, 7u, UNITS_FLAGS(0u, 1u) }, /* rad: 1 / 1 */
+  /* steradian, dimensionless as the radian */
+  { 0u, 0u, 7u, UNITS_FLAGS(0u, 1u) }, /* sr: 1 / 1 */
+  /* sr */
+  { 0u, 0u, 7u, UNITS_FLAGS(0u, 1u) }, /* steradian: 1 / 1 */
   /* pi/180 radian (pi convergent) */
-  { 70u, 85u, UNITS_DIM_OFFSET(7u, 0u) }, /* degree: 122925461 / 7043110110 */
+  { 70u, 85u, 7u, UNITS_FLAGS(0u, 0u) }, /* degree: 122925461 / 7043110110 */
   /* degree */
-  { 70u, 85u, UNITS_DIM_OFFSET(7u, 0u) }, /* deg: 122925461 / 7043110110 */
+  { 70u, 85u, 7u, UNITS_FLAGS(0u, 0u) }, /* deg: 122925461 / 7043110110 */
   /* degree/60 */
-  { 70u, 98u, UNITS_DIM_OFFSET(7u, 0u) }, /* arcmin: 122925461 / 422586606600 */
+  { 70u, 98u, 7u, UNITS_FLAGS(0u, 0u) }, /* arcmin: 122925461 / 422586606600 */
   /* arcmin */
   /* arcminute: 122925461 / 422586606600 */
-  { 70u, 98u, UNITS_DIM_OFFSET(7u, 0u) },
+  { 70u, 98u, 7u, UNITS_FLAGS(0u, 0u) },
   /* arcmin/60 */
   /* arcsec: 122925461 / 25355196396000 */
-  { 70u, 107u, UNITS_DIM_OFFSET(7u, 0u) },
+  { 70u, 107u, 7u, UNITS_FLAGS(0u, 0u) },
   /* arcsec */
   /* arcsecond: 122925461 / 25355196396000 */
-  { 70u, 107u, UNITS_DIM_OFFSET(7u, 0u) },
+  { 70u, 107u, 7u, UNITS_FLAGS(0u, 0u) },
   /* 1/400 circle */
-  { 70u, 86u, UNITS_DIM_OFFSET(7u, 0u) }, /* gon: 122925461 / 7825677900 */
+  { 70u, 86u, 7u, UNITS_FLAGS(0u, 0u) }, /* gon: 122925461 / 7825677900 */
   /* gon */
-  { 70u, 86u, UNITS_DIM_OFFSET(7u, 0u) }, /* grade: 122925461 / 7825677900 */
+  { 70u, 86u, 7u, UNITS_FLAGS(0u, 0u) }, /* grade: 122925461 / 7825677900 */
   /* circle, 2 pi radian */
-  { 77u, 67u, UNITS_DIM_OFFSET(7u, 0u) }, /* turn: 491701844 / 78256779 */
+  { 77u, 67u, 7u, UNITS_FLAGS(0u, 0u) }, /* turn: 491701844 / 78256779 */
   /* turn */
-  { 77u, 67u, UNITS_DIM_OFFSET(7u, 0u) }, /* revolution: 491701844 / 78256779 */
+  { 77u, 67u, 7u, UNITS_FLAGS(0u, 0u) }, /* revolution: 491701844 / 78256779 */
   /* 2 pi radian */
-  { 77u, 67u, UNITS_DIM_OFFSET(7u, 0u) }, /* circle: 491701844 / 78256779 */
+  { 77u, 67u, 7u, UNITS_FLAGS(0u, 0u) }, /* circle: 491701844 / 78256779 */
   /* 10^-3 radian */
-  { 0u, 17u, UNITS_DIM_OFFSET(7u, 0u) }, /* milliradian: 1 / 1000 */
+  { 0u, 17u, 7u, UNITS_FLAGS(0u, 0u) }, /* milliradian: 1 / 1000 */
   /* angular rate */
   /* SI */
-  { 0u, 0u, UNITS_DIM_OFFSET(8u, 0u) }, /* radian/s: 1 / 1 */
+  { 0u, 0u, 8u, UNITS_FLAGS(0u, 0u) }, /* radian/s: 1 / 1 */
   /* degree / s */
-  { 70u, 85u, UNITS_DIM_OFFSET(8u, 0u) }, /* deg/s: 122925461 / 7043110110 */
+  { 70u, 85u, 8u, UNITS_FLAGS(0u, 0u) }, /* deg/s: 122925461 / 7043110110 */
   /* degree / s */
-  { 70u, 85u, UNITS_DIM_OFFSET(8u, 0u) }, /* degree/s: 122925461 / 7043110110 */
+  { 70u, 85u, 8u, UNITS_FLAGS(0u, 0u) }, /* degree/s: 122925461 / 7043110110 */
   /* degree / 3600 s */
   /* deg/hr: 122925461 / 25355196396000 */
-  { 70u, 107u, UNITS_DIM_OFFSET(8u, 0u) },
+  { 70u, 107u, 8u, UNITS_FLAGS(0u, 0u) },
   /* rev/min */
-  { 70u, 80u, UNITS_DIM_OFFSET(8u, 0u) }, /* rpm: 122925461 / 1173851685 */
+  { 70u, 80u, 8u, UNITS_FLAGS(0u, 0u) }, /* rpm: 122925461 / 1173851685 */
   /* rev/sec */
-  { 77u, 67u, UNITS_DIM_OFFSET(8u, 0u) }, /* rps: 491701844 / 78256779 */
+  { 77u, 67u, 8u, UNITS_FLAGS(0u, 0u) }, /* rps: 491701844 / 78256779 */
   /* frequency */
   /* 1/s */
-  { 0u, 0u, UNITS_DIM_OFFSET(8u, 0u) }, /* Hz: 1 / 1 */
+  { 0u, 0u, 8u, UNITS_FLAGS(0u, 1u) }, /* Hz: 1 / 1 */
+  /* Hz */
+  { 0u, 0u, 8u, UNITS_FLAGS(0u, 1u) }, /* hertz: 1 / 1 */
   /* 10^3 Hz */
-  { 17u, 0u, UNITS_DIM_OFFSET(8u, 0u) }, /* kHz: 1000 / 1 */
+  { 17u, 0u, 8u, UNITS_FLAGS(0u, 0u) }, /* kHz: 1000 / 1 */
   /* 10^6 Hz */
-  { 51u, 0u, UNITS_DIM_OFFSET(8u, 0u) }, /* MHz: 1000000 / 1 */
+  { 51u, 0u, 8u, UNITS_FLAGS(0u, 0u) }, /* MHz: 1000000 / 1 */
   /* 10^9 Hz */
-  { 79u, 0u, UNITS_DIM_OFFSET(8u, 0u) }, /* GHz: 1000000000 / 1 */
+  { 79u, 0u, 8u, UNITS_FLAGS(0u, 0u) }, /* GHz: 1000000000 / 1 */
   /* force */
   /* SI (kg m/s^2) */
-  { 0u, 0u, UNITS_DIM_OFFSET(9u, 0u) }, /* N: 1 / 1 */
+  { 0u, 0u, 9u, UNITS_FLAGS(0u, 1u) }, /* N: 1 / 1 */
+  /* N */
+  { 0u, 0u, 9u, UNITS_FLAGS(0u, 1u) }, /* newton: 1 / 1 */
   /* 10^3 N */
-  { 17u, 0u, UNITS_DIM_OFFSET(9u, 0u) }, /* kN: 1000 / 1 */
+  { 17u, 0u, 9u, UNITS_FLAGS(0u, 0u) }, /* kN: 1000 / 1 */
   /* g cm/s^2 */
-  { 0u, 42u, UNITS_DIM_OFFSET(9u, 0u) }, /* dyne: 1 / 100000 */
+  { 0u, 42u, 9u, UNITS_FLAGS(0u, 0u) }, /* dyne: 1 / 100000 */
   /* lb x gravity = 4.4482216152605 N exactly */
   /* lbf: 8896443230521 / 2000000000000 */
-  { 104u, 102u, UNITS_DIM_OFFSET(9u, 0u) },
+  { 104u, 102u, 9u, UNITS_FLAGS(0u, 0u) },
   /* 1000 lbf */
-  { 104u, 84u, UNITS_DIM_OFFSET(9u, 0u) }, /* kip: 8896443230521 / 2000000000 */
+  { 104u, 84u, 9u, UNITS_FLAGS(0u, 0u) }, /* kip: 8896443230521 / 2000000000 */
   /* ton force, 2000 lbf */
-  /* tonf: 8896443230521 / 1000000000 */
-  { 104u, 79u, UNITS_DIM_OFFSET(9u, 0u) },
+  { 104u, 79u, 9u, UNITS_FLAGS(0u, 0u) }, /* tonf: 8896443230521 / 1000000000 */
   /* kg x gravity = 9.80665 N */
-  { 45u, 35u, UNITS_DIM_OFFSET(9u, 0u) }, /* kgf: 196133 / 20000 */
+  { 45u, 35u, 9u, UNITS_FLAGS(0u, 0u) }, /* kgf: 196133 / 20000 */
   /* lb ft/s^2 */
   /* poundal: 17281869297 / 125000000000 */
-  { 89u, 95u, UNITS_DIM_OFFSET(9u, 0u) },
+  { 89u, 95u, 9u, UNITS_FLAGS(0u, 0u) },
   /* pressure */
   /* SI (N/m^2) */
-  { 0u, 0u, UNITS_DIM_OFFSET(10u, 0u) }, /* Pa: 1 / 1 */
+  { 0u, 0u, 10u, UNITS_FLAGS(0u, 1u) }, /* Pa: 1 / 1 */
+  /* Pa */
+  { 0u, 0u, 10u, UNITS_FLAGS(0u, 1u) }, /* pascal: 1 / 1 */
   /* 10^2 Pa */
-  { 7u, 0u, UNITS_DIM_OFFSET(10u, 0u) }, /* hPa: 100 / 1 */
+  { 7u, 0u, 10u, UNITS_FLAGS(0u, 0u) }, /* hPa: 100 / 1 */
   /* 10^3 Pa */
-  { 17u, 0u, UNITS_DIM_OFFSET(10u, 0u) }, /* kPa: 1000 / 1 */
+  { 17u, 0u, 10u, UNITS_FLAGS(0u, 0u) }, /* kPa: 1000 / 1 */
   /* 10^6 Pa */
-  { 51u, 0u, UNITS_DIM_OFFSET(10u, 0u) }, /* MPa: 1000000 / 1 */
+  { 51u, 0u, 10u, UNITS_FLAGS(0u, 0u) }, /* MPa: 1000000 / 1 */
   /* 10^5 Pa */
-  { 42u, 0u, UNITS_DIM_OFFSET(10u, 0u) }, /* bar: 100000 / 1 */
+  { 42u, 0u, 10u, UNITS_FLAGS(0u, 1u) }, /* bar: 100000 / 1 */
   /* 10^-3 bar */
-  { 7u, 0u, UNITS_DIM_OFFSET(10u, 0u) }, /* mbar: 100 / 1 */
+  { 7u, 0u, 10u, UNITS_FLAGS(0u, 0u) }, /* mbar: 100 / 1 */
   /* mbar */
-  { 7u, 0u, UNITS_DIM_OFFSET(10u, 0u) }, /* millibar: 100 / 1 */
+  { 7u, 0u, 10u, UNITS_FLAGS(0u, 0u) }, /* millibar: 100 / 1 */
   /* standard atmosphere, 101325 Pa exactly */
-  { 43u, 0u, UNITS_DIM_OFFSET(10u, 0u) }, /* atm: 101325 / 1 */
+  { 43u, 0u, 10u, UNITS_FLAGS(0u, 0u) }, /* atm: 101325 / 1 */
   /* technical atmosphere, kgf/cm^2 */
-  { 45u, 1u, UNITS_DIM_OFFSET(10u, 0u) }, /* at: 196133 / 2 */
+  { 45u, 1u, 10u, UNITS_FLAGS(0u, 0u) }, /* at: 196133 / 2 */
   /* lbf/in^2 */
-  /* psi: 8896443230521 / 1290320000 */
-  { 104u, 81u, UNITS_DIM_OFFSET(10u, 0u) },
+  { 104u, 81u, 10u, UNITS_FLAGS(0u, 0u) }, /* psi: 8896443230521 / 1290320000 */
   /* 1000 psi */
-  { 104u, 53u, UNITS_DIM_OFFSET(10u, 0u) }, /* ksi: 8896443230521 / 1290320 */
+  { 104u, 53u, 10u, UNITS_FLAGS(0u, 0u) }, /* ksi: 8896443230521 / 1290320 */
   /* atm/760 */
-  { 36u, 10u, UNITS_DIM_OFFSET(10u, 0u) }, /* torr: 20265 / 152 */
+  { 36u, 10u, 10u, UNITS_FLAGS(0u, 0u) }, /* torr: 20265 / 152 */
   /* mm x 13.5951 g/cm^3 x gravity (GNU units' Hg) */
-  { 90u, 72u, UNITS_DIM_OFFSET(10u, 0u) }, /* mmHg: 26664477483 / 200000000 */
+  { 90u, 72u, 10u, UNITS_FLAGS(0u, 0u) }, /* mmHg: 26664477483 / 200000000 */
   /* inch x 13.5951 g/cm^3 x gravity */
   /* inHg: 3386388640341 / 1000000000 */
-  { 103u, 79u, UNITS_DIM_OFFSET(10u, 0u) },
+  { 103u, 79u, 10u, UNITS_FLAGS(0u, 0u) },
   /* energy */
   /* SI (N m) */
-  { 0u, 0u, UNITS_DIM_OFFSET(11u, 0u) }, /* J: 1 / 1 */
+  { 0u, 0u, 11u, UNITS_FLAGS(0u, 1u) }, /* J: 1 / 1 */
+  /* J */
+  { 0u, 0u, 11u, UNITS_FLAGS(0u, 1u) }, /* joule: 1 / 1 */
+  /* electronvolt, e x 1 V = 1.602176634e-19 J exactly (SI 2019); stored */
+  /* as the nearest 1/n, relative error 4e-20 (the exact 1602176634/10^28 */
+  /* has no 63-bit form) */
+  { 0u, 113u, 11u, UNITS_FLAGS(0u, 1u) }, /* eV: 1 / 6241509074460762608 */
   /* 10^3 J */
-  { 17u, 0u, UNITS_DIM_OFFSET(11u, 0u) }, /* kJ: 1000 / 1 */
+  { 17u, 0u, 11u, UNITS_FLAGS(0u, 0u) }, /* kJ: 1000 / 1 */
   /* 10^6 J */
-  { 51u, 0u, UNITS_DIM_OFFSET(11u, 0u) }, /* MJ: 1000000 / 1 */
+  { 51u, 0u, 11u, UNITS_FLAGS(0u, 0u) }, /* MJ: 1000000 / 1 */
   /* dyne cm */
-  { 0u, 60u, UNITS_DIM_OFFSET(11u, 0u) }, /* erg: 1 / 10000000 */
+  { 0u, 60u, 11u, UNITS_FLAGS(0u, 0u) }, /* erg: 1 / 10000000 */
   /* thermochemical calorie, 4.184 J (GNU units' cal) */
-  { 13u, 8u, UNITS_DIM_OFFSET(11u, 0u) }, /* cal: 523 / 125 */
+  { 13u, 8u, 11u, UNITS_FLAGS(0u, 0u) }, /* cal: 523 / 125 */
   /* cal */
-  { 13u, 8u, UNITS_DIM_OFFSET(11u, 0u) }, /* calorie: 523 / 125 */
+  { 13u, 8u, 11u, UNITS_FLAGS(0u, 0u) }, /* calorie: 523 / 125 */
   /* 10^3 cal */
-  { 27u, 0u, UNITS_DIM_OFFSET(11u, 0u) }, /* kcal: 4184 / 1 */
+  { 27u, 0u, 11u, UNITS_FLAGS(0u, 0u) }, /* kcal: 4184 / 1 */
   /* International Table calorie, 4.1868 J */
-  { 31u, 23u, UNITS_DIM_OFFSET(11u, 0u) }, /* cal_IT: 10467 / 2500 */
+  { 31u, 23u, 11u, UNITS_FLAGS(0u, 0u) }, /* cal_IT: 10467 / 2500 */
   /* btu_IT: cal_IT x lb x degF / (g K) = 1055.05585262 J */
-  { 92u, 65u, UNITS_DIM_OFFSET(11u, 0u) }, /* btu: 52752792631 / 50000000 */
+  { 92u, 65u, 11u, UNITS_FLAGS(0u, 0u) }, /* btu: 52752792631 / 50000000 */
+  /* btu (GNU units spells it btu only; pint's BTU is the ISO 1055.056 J) */
+  { 92u, 65u, 11u, UNITS_FLAGS(0u, 0u) }, /* BTU: 52752792631 / 50000000 */
   /* US therm, 105 480 400 J */
-  { 69u, 0u, UNITS_DIM_OFFSET(11u, 0u) }, /* therm: 105480400 / 1 */
+  { 69u, 0u, 11u, UNITS_FLAGS(0u, 0u) }, /* therm: 105480400 / 1 */
   /* W x hr */
-  { 25u, 0u, UNITS_DIM_OFFSET(11u, 0u) }, /* Wh: 3600 / 1 */
+  { 25u, 0u, 11u, UNITS_FLAGS(0u, 1u) }, /* Wh: 3600 / 1 */
   /* kW x hr */
-  { 57u, 0u, UNITS_DIM_OFFSET(11u, 0u) }, /* kWh: 3600000 / 1 */
+  { 57u, 0u, 11u, UNITS_FLAGS(0u, 0u) }, /* kWh: 3600000 / 1 */
   /* power */
   /* SI (J/s) */
-  { 0u, 0u, UNITS_DIM_OFFSET(12u, 0u) }, /* W: 1 / 1 */
+  { 0u, 0u, 12u, UNITS_FLAGS(0u, 1u) }, /* W: 1 / 1 */
+  /* W */
+  { 0u, 0u, 12u, UNITS_FLAGS(0u, 1u) }, /* watt: 1 / 1 */
   /* 10^3 W */
-  { 17u, 0u, UNITS_DIM_OFFSET(12u, 0u) }, /* kW: 1000 / 1 */
+  { 17u, 0u, 12u, UNITS_FLAGS(0u, 0u) }, /* kW: 1000 / 1 */
   /* 10^6 W */
-  { 51u, 0u, UNITS_DIM_OFFSET(12u, 0u) }, /* MW: 1000000 / 1 */
+  { 51u, 0u, 12u, UNITS_FLAGS(0u, 0u) }, /* MW: 1000000 / 1 */
   /* horsepower, 550 ft lbf / s */
   /* hp: 37284993579113511 / 50000000000000 */
-  { 111u, 109u, UNITS_DIM_OFFSET(12u, 0u) },
+  { 112u, 109u, 12u, UNITS_FLAGS(0u, 0u) },
   /* hp */
   /* horsepower: 37284993579113511 / 50000000000000 */
-  { 111u, 109u, UNITS_DIM_OFFSET(12u, 0u) },
+  { 112u, 109u, 12u, UNITS_FLAGS(0u, 0u) },
   /* 75 kgf m / s */
-  { 49u, 15u, UNITS_DIM_OFFSET(12u, 0u) }, /* metrichorsepower: 588399 / 800 */
+  { 49u, 15u, 12u, UNITS_FLAGS(0u, 0u) }, /* metrichorsepower: 588399 / 800 */
   /* btu / 3600 s */
   /* btu/hr: 52752792631 / 180000000000 */
-  { 92u, 97u, UNITS_DIM_OFFSET(12u, 0u) },
+  { 92u, 97u, 12u, UNITS_FLAGS(0u, 0u) },
   /* temperature */
   /* SI base unit (kelvin), absolute temperature */
-  { 0u, 0u, UNITS_DIM_OFFSET(13u, 0u) }, /* K: 1 / 1 */
+  { 0u, 0u, 13u, UNITS_FLAGS(0u, 1u) }, /* K: 1 / 1 */
   /* K */
-  { 0u, 0u, UNITS_DIM_OFFSET(13u, 0u) }, /* tempK: 1 / 1 */
+  { 0u, 0u, 13u, UNITS_FLAGS(0u, 0u) }, /* tempK: 1 / 1 */
   /* temperature: K = degC + 273.15 */
-  { 0u, 0u, UNITS_DIM_OFFSET(13u, 1u) }, /* degC: 1 / 1, offset 5463 / 20 */
+  { 0u, 0u, 13u, UNITS_FLAGS(1u, 0u) }, /* degC: 1 / 1, offset 5463 / 20 */
   /* degC */
-  { 0u, 0u, UNITS_DIM_OFFSET(13u, 1u) }, /* tempC: 1 / 1, offset 5463 / 20 */
+  { 0u, 0u, 13u, UNITS_FLAGS(1u, 0u) }, /* tempC: 1 / 1, offset 5463 / 20 */
   /* temperature: K = (degF + 459.67) x 5/9 */
-  { 2u, 4u, UNITS_DIM_OFFSET(13u, 2u) }, /* degF: 5 / 9, offset 45967 / 100 */
+  { 2u, 4u, 13u, UNITS_FLAGS(2u, 0u) }, /* degF: 5 / 9, offset 45967 / 100 */
   /* degF */
-  { 2u, 4u, UNITS_DIM_OFFSET(13u, 2u) }, /* tempF: 5 / 9, offset 45967 / 100 */
+  { 2u, 4u, 13u, UNITS_FLAGS(2u, 0u) }, /* tempF: 5 / 9, offset 45967 / 100 */
   /* Rankine: K = degR x 5/9 */
-  { 2u, 4u, UNITS_DIM_OFFSET(13u, 0u) }, /* degR: 5 / 9 */
+  { 2u, 4u, 13u, UNITS_FLAGS(0u, 0u) }, /* degR: 5 / 9 */
   /* degR */
-  { 2u, 4u, UNITS_DIM_OFFSET(13u, 0u) }, /* tempR: 5 / 9 */
+  { 2u, 4u, 13u, UNITS_FLAGS(0u, 0u) }, /* tempR: 5 / 9 */
   /* data */
   /* base unit (GNU units) */
-  { 0u, 0u, UNITS_DIM_OFFSET(14u, 0u) }, /* bit: 1 / 1 */
+  { 0u, 0u, 14u, UNITS_FLAGS(0u, 1u) }, /* bit: 1 / 1 */
   /* 8 bit */
-  { 3u, 0u, UNITS_DIM_OFFSET(14u, 0u) }, /* byte: 8 / 1 */
+  { 3u, 0u, 14u, UNITS_FLAGS(0u, 1u) }, /* byte: 8 / 1 */
   /* data rate */
   /* bit/s */
-  { 0u, 0u, UNITS_DIM_OFFSET(15u, 0u) }, /* bps: 1 / 1 */
+  { 0u, 0u, 15u, UNITS_FLAGS(0u, 0u) }, /* bps: 1 / 1 */
   /* 10^3 bit/s */
-  { 17u, 0u, UNITS_DIM_OFFSET(15u, 0u) }, /* kbps: 1000 / 1 */
+  { 17u, 0u, 15u, UNITS_FLAGS(0u, 0u) }, /* kbps: 1000 / 1 */
   /* 10^6 bit/s */
-  { 51u, 0u, UNITS_DIM_OFFSET(15u, 0u) }, /* Mbps: 1000000 / 1 */
+  { 51u, 0u, 15u, UNITS_FLAGS(0u, 0u) }, /* Mbps: 1000000 / 1 */
   /* 10^9 bit/s */
-  { 79u, 0u, UNITS_DIM_OFFSET(15u, 0u) }, /* Gbps: 1000000000 / 1 */
+  { 79u, 0u, 15u, UNITS_FLAGS(0u, 0u) }, /* Gbps: 1000000000 / 1 */
   /* 8 bit/s */
-  { 3u, 0u, UNITS_DIM_OFFSET(15u, 0u) }, /* byte/s: 8 / 1 */
+  { 3u, 0u, 15u, UNITS_FLAGS(0u, 0u) }, /* byte/s: 8 / 1 */
   /* 10^3 byte/s */
-  { 29u, 0u, UNITS_DIM_OFFSET(15u, 0u) }, /* kbyte/s: 8000 / 1 */
+  { 29u, 0u, 15u, UNITS_FLAGS(0u, 0u) }, /* kbyte/s: 8000 / 1 */
+  /* electricity and magnetism */
+  /* SI base unit (ampere) */
+  { 0u, 0u, 16u, UNITS_FLAGS(0u, 1u) }, /* A: 1 / 1 */
+  /* A */
+  { 0u, 0u, 16u, UNITS_FLAGS(0u, 1u) }, /* ampere: 1 / 1 */
+  /* A */
+  { 0u, 0u, 16u, UNITS_FLAGS(0u, 1u) }, /* amp: 1 / 1 */
+  /* coulomb, A s */
+  { 0u, 0u, 17u, UNITS_FLAGS(0u, 1u) }, /* C: 1 / 1 */
+  /* C */
+  { 0u, 0u, 17u, UNITS_FLAGS(0u, 1u) }, /* coulomb: 1 / 1 */
+  /* ampere hour, 3600 C */
+  { 25u, 0u, 17u, UNITS_FLAGS(0u, 1u) }, /* Ah: 3600 / 1 */
+  /* 10^-3 Ah */
+  { 5u, 2u, 17u, UNITS_FLAGS(0u, 0u) }, /* mAh: 18 / 5 */
+  /* volt, W/A */
+  { 0u, 0u, 18u, UNITS_FLAGS(0u, 1u) }, /* V: 1 / 1 */
+  /* V */
+  { 0u, 0u, 18u, UNITS_FLAGS(0u, 1u) }, /* volt: 1 / 1 */
+  /* ohm, V/A */
+  { 0u, 0u, 19u, UNITS_FLAGS(0u, 1u) }, /* ohm: 1 / 1 */
+  /* siemens, 1/ohm */
+  { 0u, 0u, 20u, UNITS_FLAGS(0u, 1u) }, /* S: 1 / 1 */
+  /* S */
+  { 0u, 0u, 20u, UNITS_FLAGS(0u, 1u) }, /* siemens: 1 / 1 */
+  /* farad, C/V */
+  { 0u, 0u, 21u, UNITS_FLAGS(0u, 1u) }, /* F: 1 / 1 */
+  /* F */
+  { 0u, 0u, 21u, UNITS_FLAGS(0u, 1u) }, /* farad: 1 / 1 */
+  /* weber, V s */
+  { 0u, 0u, 22u, UNITS_FLAGS(0u, 1u) }, /* Wb: 1 / 1 */
+  /* Wb */
+  { 0u, 0u, 22u, UNITS_FLAGS(0u, 1u) }, /* weber: 1 / 1 */
+  /* henry, Wb/A */
+  { 0u, 0u, 23u, UNITS_FLAGS(0u, 1u) }, /* H: 1 / 1 */
+  /* H */
+  { 0u, 0u, 23u, UNITS_FLAGS(0u, 1u) }, /* henry: 1 / 1 */
+  /* tesla, Wb/m^2 */
+  { 0u, 0u, 24u, UNITS_FLAGS(0u, 1u) }, /* T: 1 / 1 */
+  /* T */
+  { 0u, 0u, 24u, UNITS_FLAGS(0u, 1u) }, /* tesla: 1 / 1 */
+  /* gauss, 10^-4 T (the SI equivalent of the CGS-EMU unit, as in GNU units) */
+  { 0u, 30u, 24u, UNITS_FLAGS(0u, 1u) }, /* gauss: 1 / 10000 */
 };
 
 size_t drdc_units_count(void)
@@ -446,27 +527,32 @@ const char *drdc__units_names_first(void)
     "m\0" "km\0" "cm\0" "mm\0" "um\0" "nm\0" "micron\0" "angstrom\0" "inch\0"
     "in\0" "ft\0" "foot\0" "yd\0" "yard\0" "mile\0" "nmi\0" "nauticalmile\0"
     "fathom\0" "furlong\0" "chain\0" "mil\0" "au\0" "lightsecond\0"
-    "lightyear\0" "surveyfoot\0" "m^2\0" "km^2\0" "cm^2\0" "mm^2\0" "in^2\0"
-    "ft^2\0" "yd^2\0" "mile^2\0" "hectare\0" "are\0" "acre\0" "m^3\0" "cm^3\0"
-    "in^3\0" "ft^3\0" "liter\0" "L\0" "l\0" "ml\0" "gallon\0" "gal\0"
-    "quart\0" "pint\0" "cup\0" "floz\0" "tablespoon\0" "teaspoon\0"
-    "brgallon\0" "barrel\0" "bbl\0" "kg\0" "g\0" "mg\0" "tonne\0" "t\0" "lb\0"
+    "lightyear\0" "surveyfoot\0" "meter\0" "metre\0" "parsec\0" "pc\0" "m^2\0"
+    "km^2\0" "cm^2\0" "mm^2\0" "in^2\0" "ft^2\0" "yd^2\0" "mile^2\0"
+    "hectare\0" "are\0" "acre\0" "ha\0" "m^3\0" "cm^3\0" "in^3\0" "ft^3\0"
+    "liter\0" "L\0" "litre\0" "l\0" "ml\0" "gallon\0" "gal\0" "quart\0"
+    "pint\0" "cup\0" "floz\0" "tablespoon\0" "teaspoon\0" "brgallon\0"
+    "barrel\0" "bbl\0" "kg\0" "g\0" "gram\0" "mg\0" "tonne\0" "t\0" "lb\0"
     "pound\0" "oz\0" "grain\0" "stone\0" "ton\0" "shortton\0" "longton\0"
     "troyounce\0" "carat\0" "slug\0" "s\0" "sec\0" "second\0" "ms\0" "us\0"
-    "ns\0" "min\0" "minute\0" "hr\0" "hour\0" "day\0" "week\0" "fortnight\0"
-    "julianyear\0" "year\0" "m/s\0" "km/hr\0" "kph\0" "mph\0" "knot\0"
-    "knots\0" "ft/s\0" "fps\0" "ft/min\0" "fpm\0" "c\0" "m/s^2\0" "gravity\0"
-    "Gal\0" "galileo\0" "ft/s^2\0" "radian\0" "degree\0" "deg\0" "arcmin\0"
-    "arcminute\0" "arcsec\0" "arcsecond\0" "gon\0" "grade\0" "turn\0"
-    "revolution\0" "circle\0" "milliradian\0" "radian/s\0" "deg/s\0"
-    "degree/s\0" "deg/hr\0" "rpm\0" "rps\0" "Hz\0" "kHz\0" "MHz\0" "GHz\0"
-    "N\0" "kN\0" "dyne\0" "lbf\0" "kip\0" "tonf\0" "kgf\0" "poundal\0" "Pa\0"
-    "hPa\0" "kPa\0" "MPa\0" "bar\0" "mbar\0" "millibar\0" "atm\0" "at\0"
-    "psi\0" "ksi\0" "torr\0" "mmHg\0" "inHg\0" "J\0" "kJ\0" "MJ\0" "erg\0"
-    "cal\0" "calorie\0" "kcal\0" "cal_IT\0" "btu\0" "therm\0" "Wh\0" "kWh\0"
-    "W\0" "kW\0" "MW\0" "hp\0" "horsepower\0" "metrichorsepower\0" "btu/hr\0"
-    "K\0" "tempK\0" "degC\0" "tempC\0" "degF\0" "tempF\0" "degR\0" "tempR\0"
-    "bit\0" "byte\0" "bps\0" "kbps\0" "Mbps\0" "Gbps\0" "byte/s\0" "kbyte/s\0";
+    "ns\0" "min\0" "minute\0" "hr\0" "hour\0" "h\0" "day\0" "week\0"
+    "fortnight\0" "julianyear\0" "year\0" "m/s\0" "km/hr\0" "kph\0" "mph\0"
+    "knot\0" "knots\0" "kt\0" "ft/s\0" "fps\0" "ft/min\0" "fpm\0" "c\0"
+    "m/s^2\0" "gravity\0" "Gal\0" "galileo\0" "ft/s^2\0" "radian\0" "rad\0"
+    "sr\0" "steradian\0" "degree\0" "deg\0" "arcmin\0" "arcminute\0"
+    "arcsec\0" "arcsecond\0" "gon\0" "grade\0" "turn\0" "revolution\0"
+    "circle\0" "milliradian\0" "radian/s\0" "deg/s\0" "degree/s\0" "deg/hr\0"
+    "rpm\0" "rps\0" "Hz\0" "hertz\0" "kHz\0" "MHz\0" "GHz\0" "N\0" "newton\0"
+    "kN\0" "dyne\0" "lbf\0" "kip\0" "tonf\0" "kgf\0" "poundal\0" "Pa\0"
+    "pascal\0" "hPa\0" "kPa\0" "MPa\0" "bar\0" "mbar\0" "millibar\0" "atm\0"
+    "at\0" "psi\0" "ksi\0" "torr\0" "mmHg\0" "inHg\0" "J\0" "joule\0" "eV\0"
+    "kJ\0" "MJ\0" "erg\0" "cal\0" "calorie\0" "kcal\0" "cal_IT\0" "btu\0"
+    "BTU\0" "therm\0" "Wh\0" "kWh\0" "W\0" "watt\0" "kW\0" "MW\0" "hp\0"
+    "horsepower\0" "metrichorsepower\0" "btu/hr\0" "K\0" "tempK\0" "degC\0"
+    "tempC\0" "degF\0" "tempF\0" "degR\0" "tempR\0" "bit\0" "byte\0" "bps\0"
+    "kbps\0" "Mbps\0" "Gbps\0" "byte/s\0" "kbyte/s\0" "A\0" "ampere\0" "amp\0"
+    "C\0" "coulomb\0" "Ah\0" "mAh\0" "V\0" "volt\0" "ohm\0" "S\0" "siemens\0"
+    "F\0" "farad\0" "Wb\0" "weber\0" "H\0" "henry\0" "T\0" "tesla\0" "gauss\0";
 
   return units_names;
 }
@@ -483,27 +569,36 @@ size_t drdc__units_index(const drdc_unit_t *unit)
 
 int8_t drdc__units_dimension(const drdc_unit_t *unit, size_t i)
 {
-  /* Exponents of m, kg, s, K, bit. */
+  /* Exponents of m, kg, s, K, bit, A. */
   static const int8_t units_dimensions[][DRDC_UNITS_DIMENSIONS] = {
-    { 1, 0, 0, 0, 0 },
-    { 2, 0, 0, 0, 0 },
-    { 3, 0, 0, 0, 0 },
-    { 0, 1, 0, 0, 0 },
-    { 0, 0, 1, 0, 0 },
-    { 1, 0, -1, 0, 0 },
-    { 1, 0, -2, 0, 0 },
-    { 0, 0, 0, 0, 0 },
-    { 0, 0, -1, 0, 0 },
-    { 1, 1, -2, 0, 0 },
-    { -1, 1, -2, 0, 0 },
-    { 2, 1, -2, 0, 0 },
-    { 2, 1, -3, 0, 0 },
-    { 0, 0, 0, 1, 0 },
-    { 0, 0, 0, 0, 1 },
-    { 0, 0, -1, 0, 1 },
+    { 1, 0, 0, 0, 0, 0 },
+    { 2, 0, 0, 0, 0, 0 },
+    { 3, 0, 0, 0, 0, 0 },
+    { 0, 1, 0, 0, 0, 0 },
+    { 0, 0, 1, 0, 0, 0 },
+    { 1, 0, -1, 0, 0, 0 },
+    { 1, 0, -2, 0, 0, 0 },
+    { 0, 0, 0, 0, 0, 0 },
+    { 0, 0, -1, 0, 0, 0 },
+    { 1, 1, -2, 0, 0, 0 },
+    { -1, 1, -2, 0, 0, 0 },
+    { 2, 1, -2, 0, 0, 0 },
+    { 2, 1, -3, 0, 0, 0 },
+    { 0, 0, 0, 1, 0, 0 },
+    { 0, 0, 0, 0, 1, 0 },
+    { 0, 0, -1, 0, 1, 0 },
+    { 0, 0, 0, 0, 0, 1 },
+    { 0, 0, 1, 0, 0, 1 },
+    { 2, 1, -3, 0, 0, -1 },
+    { 2, 1, -3, 0, 0, -2 },
+    { -2, -1, 3, 0, 0, 2 },
+    { -2, -1, 4, 0, 0, 2 },
+    { 2, 1, -2, 0, 0, -1 },
+    { 2, 1, -2, 0, 0, -2 },
+    { 0, 1, -2, 0, 0, -1 },
   };
 
-  return units_dimensions[units_dimension_row(unit)][i];
+  return units_dimensions[unit->dimension][i];
 }
 
 int64_t drdc__units_number(uint8_t index)
@@ -522,7 +617,7 @@ int64_t drdc__units_number(uint8_t index)
     491701844u, 625000000u, 1000000000u, 1173851685u, 1290320000u,
     1600000000u, 1953125000u, 2000000000u,
   };
-  /* Factor numbers from 2^32 up, ascending (all below 2^56). */
+  /* Factor numbers from 2^32 up, ascending (all below 2^63). */
   static const int64_t units_large[] = {
     INT64_C(7043110110),
     INT64_C(7825677900),
@@ -550,7 +645,9 @@ int64_t drdc__units_number(uint8_t index)
     INT64_C(32000000000000),
     INT64_C(50000000000000),
     INT64_C(9460730472580800),
+    INT64_C(30856775814671916),
     INT64_C(37284993579113511),
+    INT64_C(6241509074460762608),
   };
 
   return (index < UNITS_SMALL_COUNT)

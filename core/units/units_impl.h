@@ -44,38 +44,58 @@ drdc_status_t drdc__units_rat_sub(int64_t a_num, int64_t a_den,
 /** x * y when it fits int64_t; DRDC_E_RANGE otherwise. */
 drdc_status_t drdc__units_mul_s64(int64_t x, int64_t y, int64_t *out);
 
-/** Everything of drdc_units_convert() before its one rounding, for
- *  validated arguments: from the raw input in `*a`, the exact input `*a`
- *  and factor A / B such that the result is round(a x A / B)
- *  (core/units/scale.c). DRDC_E_RANGE when they do not fit 63-bit
- *  integers; `*a` and `*factor` are then undefined. */
-drdc_status_t drdc__units_prepare(unsigned from_frac, const drdc_unit_t *from,
-                                  unsigned to_frac, const drdc_unit_t *to,
+/** a x num / den (den > 0, parts nonzero) as drdc__units_rat_scale()
+ *  when the exact result fits; otherwise rounded: the exact 128-bit
+ *  quotient as Q / 2^e (or 2^e / Q below 1) with Q of 61 to 62 bits, a
+ *  relative error below 2^-61, and `*rounded` set to 1 (never cleared).
+ *  DRDC_E_OVERFLOW when the value is beyond about 2^+-61 and its exact
+ *  fraction does not fit (outputs unchanged). */
+drdc_status_t drdc__units_rat_mul(const units_rat_t *a, int64_t num,
+                                  int64_t den, units_rat_t *out,
+                                  uint8_t *rounded);
+
+/** The scale of a conversion: the ratio F = factor_from / factor_to and
+ *  the two offsets (zero of each scale in its own unit). */
+typedef struct units_scale {
+  units_rat_t ratio;
+  units_rat_t from_offset;
+  units_rat_t to_offset;
+} units_scale_t;
+
+/** Everything of a conversion before its one rounding, for validated
+ *  arguments: from the raw input in `*a`, the exact input `*a` and factor
+ *  A / B such that the result is round(a x A / B) (core/units/scale.c).
+ *  DRDC_E_RANGE when they do not fit 63-bit integers; `*a` and `*factor`
+ *  are then undefined. */
+drdc_status_t drdc__units_prepare(unsigned from_frac,
+                                  const units_scale_t *scale, unsigned to_frac,
                                   int64_t *a, units_rat_t *factor);
 
 /** One unit: indices into the tables of core/units/table.c (generated
  *  by core/units/gen_table.py); its name is the row's string in the
- *  names, in row order. Three bytes a unit instead of a pointer and four
- *  int64_t: the dimension (16 rows) and offset (3 rows) share a byte. */
+ *  names, in row order. Four bytes a unit instead of a pointer and four
+ *  int64_t. */
 struct drdc_unit {
   uint8_t factor_num; /**< factor numerator: drdc__units_number() index */
   uint8_t factor_den; /**< factor denominator: drdc__units_number() index */
-  uint8_t dim_offset; /**< UNITS_DIM_OFFSET(dimension row, offset row) */
+  uint8_t dimension;  /**< row of the dimension table */
+  uint8_t flags;      /**< UNITS_FLAGS(offset row, takes SI prefixes) */
 };
 
-/** The byte of a dimension row and an offset row (each below 16). */
-#define UNITS_DIM_OFFSET(dim, offset) ((dim) | ((offset) << 4u))
-
-/** Row of the unit's dimension in the dimension table. */
-static inline unsigned units_dimension_row(const drdc_unit_t *unit)
-{
-  return (unsigned)unit->dim_offset & 0x0Fu;
-}
+/** The flags byte of an offset row (below 16) and a prefix flag (0, 1). */
+#define UNITS_FLAGS(offset, prefix) ((offset) | ((prefix) << 4u))
 
 /** Row of the unit's offset in the offset table, 0: linear. */
 static inline unsigned units_offset_row(const drdc_unit_t *unit)
 {
-  return (unsigned)unit->dim_offset >> 4u;
+  return (unsigned)unit->flags & 0x0Fu;
+}
+
+/** Whether the unit takes SI prefixes in an expression (SI and
+ *  SI-accepted units). */
+static inline int units_takes_prefix(const drdc_unit_t *unit)
+{
+  return (((unsigned)unit->flags >> 4u) & 1u) != 0u;
 }
 
 /** The first name; the names follow each other, NUL-terminated, in the
@@ -89,7 +109,7 @@ size_t drdc__units_index(const drdc_unit_t *unit);
 /** Exponent `i` (DRDC_UNITS_DIM_*) of the unit's dimension. */
 int8_t drdc__units_dimension(const drdc_unit_t *unit, size_t i);
 
-/** Factor number `index` (a drdc_unit field), 1..2^56. */
+/** Factor number `index` (a drdc_unit field), 1..2^63 - 1. */
 int64_t drdc__units_number(uint8_t index);
 
 /** The unit's offset num / den (0 / 1 for linear units). */

@@ -3,7 +3,9 @@
  * @file
  * @brief Differential fuzzer of unit conversion: two table units and any
  *        raw value and formats, against a long double model of the exact
- *        rational result; and unit names of any bytes for the lookup.
+ *        rational result; unit names of any bytes for the lookup; and the
+ *        same bytes as a unit expression, whose result must keep the
+ *        documented invariants and convert to itself exactly.
  *        Host only; long double is fine here.
  */
 #include <math.h>
@@ -14,6 +16,61 @@
 #include <drdc/units.h>
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+/* The `n` bytes at `text` (a block of exactly that size, so ASan sees any
+ * read past it) as a unit expression: on success a positive factor in
+ * lowest terms, an offset only for a lone temperature, and a conversion
+ * of any value to the expression itself that gives the value back; on
+ * error the output unchanged. Then the same text in parentheses, which
+ * must give the same factor whenever the depth allows it. */
+static void check_expression(const char *text, size_t n, int64_t raw)
+{
+  drdc_units_expr_t e = {{0}, 7, 7, 7, 7, 7u};
+  drdc_status_t st = drdc_units_parse(text, n, &e);
+  int64_t out = 0;
+  long double ratio;
+
+  if (st != DRDC_OK) {
+    if (e.factor_num != 7 || e.factor_den != 7 || e.rounded != 7u) {
+      abort();
+    }
+    return;
+  }
+  if (n > DRDC_UNITS_EXPR_LENGTH_MAX || e.factor_num <= 0 ||
+      e.factor_den <= 0 || e.offset_den <= 0 || e.rounded > 1u) {
+    abort();
+  }
+  ratio = (long double)e.factor_num / (long double)e.factor_den;
+  if (!(ratio > 0.0L) || !isfinite(ratio)) {
+    abort();
+  }
+  if (e.offset_num == 0 &&
+      drdc_units_convert_expr(raw, 16u, &e, 16u, &e, &out) != DRDC_OK) {
+    abort();
+  }
+  if (e.offset_num == 0 && out != raw) {
+    abort();
+  }
+  if (n + 2u <= DRDC_UNITS_EXPR_LENGTH_MAX && e.offset_num == 0) {
+    char *wrapped = malloc(n + 2u);
+    drdc_units_expr_t w = e;
+
+    if (wrapped != NULL) {
+      wrapped[0] = '(';
+      memcpy(&wrapped[1], text, n);
+      wrapped[n + 1u] = ')';
+      st = drdc_units_parse(wrapped, n + 2u, &w);
+      if (st == DRDC_OK &&
+          (w.factor_num != e.factor_num || w.factor_den != e.factor_den)) {
+        abort();
+      }
+      if (st != DRDC_OK && st != DRDC_E_RANGE) {
+        abort();
+      }
+      free(wrapped);
+    }
+  }
+}
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -76,6 +133,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
            strlen(ifound.name) != n || memcmp(ifound.name, name, n) != 0)) {
         abort();
       }
+      check_expression(name, n, raw);
       free(name);
     }
   }

@@ -16,8 +16,101 @@
 static const char seed[] = "$GNGGA,170001.00,5016.20050,N,11110.20080,W,4,12,0."
                            "7,754.4,M,-16.2,M,1.0,0001*6D\r\n";
 
+/* unit expressions: pairs of them converted (different dimensions give
+ * their status), one with a byte changed parsed */
+static const char *const expressions[] = {
+    "km/h",
+    "m/s",
+    "kt",
+    "N*m",
+    "ft*lbf",
+    "kg m/s^2",
+    "lbf",
+    "mAh",
+    "C",
+    "kWh",
+    "J",
+    "MeV",
+    "psi",
+    "kPa",
+    "inHg",
+    "rad/s",
+    "rpm",
+    "uT",
+    "gauss",
+    "(m/s)2",
+    "m^2 s^-2",
+    "degF",
+    "K",
+    "mph",
+    "BTU/hr",
+    "W",
+    "kg/m^3",
+    "g/cm3",
+    "lightyear^2/ns",
+    "h",
+    "deg/s",
+    "ft^3/min",
+};
+
 /* every field zero: what the digest reads after a failed parse */
 static const drdc_nmea_t blank;
+
+static size_t length_of(const char *s)
+{
+  size_t n = 0u;
+
+  while (s[n] != '\0') {
+    n++;
+  }
+  return n;
+}
+
+static void golden_expression(golden_t *g, const drdc_units_expr_t *e)
+{
+  size_t d;
+
+  for (d = 0u; d < (size_t)DRDC_UNITS_DIMENSIONS; d++) {
+    golden_i32(g, (int32_t)e->dimension[d]);
+  }
+  golden_i64(g, e->factor_num);
+  golden_i64(g, e->factor_den);
+  golden_i64(g, e->offset_num);
+  golden_i32(g, (int32_t)e->rounded);
+}
+
+static void golden_expressions(golden_t *g)
+{
+  const size_t count = sizeof expressions / sizeof expressions[0];
+  int i;
+
+  for (i = 0; i < 512; i++) {
+    const char *a = expressions[golden_next(g) % count];
+    const char *b = expressions[golden_next(g) % count];
+    int64_t raw = (int64_t)(int32_t)golden_next(g);
+    drdc_units_expr_t from = {{0}, 1, 1, 0, 1, 0u};
+    drdc_units_expr_t to = from;
+    int64_t out = 0;
+    char text[16];
+    size_t n = length_of(a);
+    size_t at;
+    size_t k;
+
+    golden_i32(g, (int32_t)drdc_units_parse(a, n, &from));
+    golden_i32(g, (int32_t)drdc_units_parse(b, length_of(b), &to));
+    golden_expression(g, &from);
+    golden_i32(
+        g, (int32_t)drdc_units_convert_expr(raw, 16u, &from, 16u, &to, &out));
+    golden_i64(g, out);
+    for (k = 0u; (k < n) && (k < sizeof text); k++) {
+      text[k] = a[k];
+    }
+    at = golden_next(g) % k; /* one draw per statement, as above */
+    text[at] = (char)(golden_next(g) & 0xFFu);
+    golden_i32(g, (int32_t)drdc_units_parse(text, k, &to));
+    golden_expression(g, &to);
+  }
+}
 
 void golden_interop(golden_t *g)
 {
@@ -57,4 +150,5 @@ void golden_interop(golden_t *g)
     golden_i64(g, n.latitude);
     golden_i64(g, n.altitude);
   }
+  golden_expressions(g);
 }

@@ -36,6 +36,7 @@ GENERATORS = [
     "gen_orient_bounds",
     "gen_units",
     "gen_units_table",
+    "gen_units_expr",
     "gen_jaus",
     "gen_jaus_pose",
     "gen_nmea",
