@@ -531,6 +531,7 @@ def build(bld):
         for src in _glob(bld, "tests/fuzz/fuzz_*.c"):
             # fuzz_tool drives the host tool's own command code
             tool = (_glob(bld, "tools/drdc/cmd_*.c")
+                    + _glob(bld, "tools/drdc/lines.c")
                     if src.name == "fuzz_tool.c" else [])
             bld.program(source=[src] + tool,
                         target="tests/fuzz/" + src.name[:-2],

@@ -50,6 +50,59 @@ class Tool(unittest.TestCase):
         self.assertIn("unknown command", r.stderr)
 
 
+class OneLineOutPerLineIn(unittest.TestCase):
+    """Every subcommand writes exactly one line per input line, whatever
+    the line: 100 000 characters, over the 1 MiB limit, NUL bytes, CR LF,
+    invalid UTF-8, blanks only, no final newline."""
+
+    COMMANDS = (["time", "--from", "utc", "--to", "tai"],
+                ["time", "--from", "gps", "--to", "utc"],
+                ["attitude", "--from", "euler", "--to", "quat"],
+                ["units"], ["geo"], ["geo", "-u"], ["geo", "-m"])
+
+    def hostile(self):
+        return [b"1" * 100000, b"1 " * 50000, b"7" * (1 << 20) + b"8",
+                b"a\x00b", b"\xff\xfe\xc3(", b"", b"   \t ",
+                b"10 20\r", b"2024-01-01T00:00:00Z\r", b"1 ft m\r",
+                b"0 0 0\r", b"\r\r", b"x" * 511 + b"\n" + b"y" * 513]
+
+    def test_every_subcommand_every_line(self):
+        lines = self.hostile()
+        data = b"\n".join(lines) + b"\n" + b"10 20"  # no final newline
+        count = data.count(b"\n") + 1
+        for args in self.COMMANDS:
+            r = subprocess.run([DRDC] + args, input=data, capture_output=True)
+            out = r.stdout.split(b"\n")
+            self.assertEqual(b"", out[-1], args)
+            self.assertEqual(count, len(out) - 1, args)
+            self.assertIn(r.returncode, (0, 1), args)
+            # the over-long line is one record of its own
+            self.assertEqual(b"ERROR: line longer than 1048576 bytes", out[2],
+                             args)
+            self.assertEqual(b"ERROR: NUL byte in the line", out[3], args)
+
+    def test_a_100000_character_line_is_one_record(self):
+        for args in self.COMMANDS:
+            for line in (b"9" * 100000, b"1.5 " * 25000):
+                r = subprocess.run([DRDC] + args, input=line + b"\n",
+                                   capture_output=True)
+                self.assertEqual(1, r.stdout.count(b"\n"), args)
+                self.assertTrue(r.stdout.startswith(b"ERROR: "), args)
+
+    def test_crlf_is_the_same_as_lf(self):
+        cases = [(["time", "--from", "utc", "--to", "gps"],
+                  b"2019-04-06T23:59:42Z"),
+                 (["attitude", "--from", "euler", "--to", "euler"], b"1 2 3"),
+                 (["units"], b"3.5 ft m"), (["geo", "-u"], b"10 20")]
+        for args, line in cases:
+            lf = subprocess.run([DRDC] + args, input=line + b"\n",
+                                capture_output=True)
+            crlf = subprocess.run([DRDC] + args, input=line + b"\r\n",
+                                  capture_output=True)
+            self.assertEqual(0, lf.returncode, args)
+            self.assertEqual(lf.stdout, crlf.stdout, args)
+
+
 class TimeCommand(unittest.TestCase):
     """drdc time --from F --to T (issue 4). Expected values: calendar.timegm
     for Unix/RTEMS, and TAI-UTC / GPS = TAI - 19 s as in ERFA."""
@@ -114,6 +167,17 @@ class TimeCommand(unittest.TestCase):
         self.assertEqual(["DRDC_E_TIME_OF_WEEK", "DRDC_E_WEEK", "DRDC_E_TRAILING",
                           "DRDC_E_SYNTAX", "DRDC_E_SYNTAX"],
                          [l.split("(")[-1].rstrip(")") for l in out])
+
+    def test_blanks_around_a_time_in_every_format(self):
+        """Leading and trailing blanks are accepted alike by every input
+        format (the ISO 8601 parser itself takes bare text)."""
+        utc = "2019-04-06T23:59:42.000000000Z"
+        for src in ("utc", "gps", "unix", "rtems", "tai"):
+            code, (text,), _ = convert("utc", src, utc)
+            self.assertEqual(0, code)
+            for padded in (text + " ", " \t" + text + " \t", text + "\t"):
+                self.assertEqual((0, [utc]), convert(src, "utc", padded)[:2],
+                                 repr(padded))
 
     def test_past_expiry_converts_with_a_warning(self):
         code, out, err = convert("utc", "tai", "2030-01-01T00:00:00Z")

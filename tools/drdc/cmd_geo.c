@@ -17,6 +17,7 @@
 #include <drdc/geo_mgrs.h>
 
 #include "commands.h"
+#include "lines.h"
 
 static const char usage[] =
     "usage: drdc geo [-g | -u | -m | -c] [-p PREC]\n"
@@ -314,7 +315,10 @@ int drdc_cmd_geo(int argc, char **argv)
   enum mode mode = MODE_GEO;
   int prec = 0;
   int i;
-  char line[512];
+  char *line = NULL;
+  size_t cap = 0;
+  size_t len = 0;
+  int got;
   int failed = 0;
 
   for (i = 1; i < argc; i++) {
@@ -344,14 +348,24 @@ int drdc_cmd_geo(int argc, char **argv)
       return 2;
     }
   }
-  while (fgets(line, (int)sizeof line, stdin) != NULL) {
-    size_t n = strcspn(line, "\r\n");
+  while ((got = drdc_tool_read_line(stdin, &line, &cap, &len)) !=
+         DRDC_TOOL_LINE_EOF) {
+    const char *problem;
 
-    line[n] = '\0';
-    if (!convert_line(line, mode, prec)) {
+    if (got == DRDC_TOOL_LINE_ERROR) {
+      fputs("drdc geo: cannot read standard input\n", stderr);
+      failed = 1;
+      break;
+    }
+    problem = drdc_tool_line_problem(got, line, len);
+    if (problem != NULL) {
+      printf("ERROR: %s\n", problem);
+      failed = 1;
+    } else if (!convert_line(line, mode, prec)) {
       failed = 1;
     }
     fflush(stdout);
   }
+  free(line);
   return failed;
 }
