@@ -58,7 +58,8 @@ class OneLineOutPerLineIn(unittest.TestCase):
     COMMANDS = (["time", "--from", "utc", "--to", "tai"],
                 ["time", "--from", "gps", "--to", "utc"],
                 ["attitude", "--from", "euler", "--to", "quat"],
-                ["units"], ["geo"], ["geo", "-u"], ["geo", "-m"])
+                ["units"], ["geo"], ["geo", "-u"], ["geo", "-m"],
+                ["geo", "-d"], ["geo", "-c", "-z", "31"])
 
     def hostile(self):
         return [b"1" * 100000, b"1 " * 50000, b"7" * (1 << 20) + b"8",
@@ -557,9 +558,12 @@ class GeoCommand(unittest.TestCase):
         code, out = geo(["-u"], lines)
         self.assertEqual(1, code)
         self.assertEqual(len(lines), len(out))
+        self.assertEqual(geoconvert(["-u"], lines)[2], out[2])
         for i, line in enumerate(out):
             if i == 1:
                 self.assertEqual("34n 390399 1105579", line)
+            elif i == 2:  # GeoConvert takes any longitude
+                self.assertEqual("60n 722595 0", line)
             else:
                 self.assertTrue(line.startswith("ERROR: "), line)
 
@@ -567,6 +571,69 @@ class GeoCommand(unittest.TestCase):
         self.assertEqual(0, run("geo", "--help").returncode)
         self.assertEqual(2, run("geo", "-x").returncode)
         self.assertEqual(2, run("geo", "-p", "x").returncode)
+
+
+class GeoParity(unittest.TestCase):
+    """drdc geo against GeoConvert 2.1.2 byte for byte on random inputs
+    (geographic decimal and DMS text, UTM/UPS, MGRS) for each of -g -u -m
+    -c -d -: -z -s -t -w -n with -p from -5 to 10. Every line that is not
+    byte-identical must be explained by one of the documented rules of
+    tools/geo_parity.py (both ERROR; the precision cap; one unit of the
+    last digit where GeoConvert's value lies within the library's accuracy
+    of the rounding boundary; the exact input, where GeoConvert's double
+    is off; latitude -0 in MGRS)."""
+
+    def setUp(self):
+        import shutil
+        if shutil.which("GeoConvert") is None:
+            self.skipTest("GeoConvert not installed")
+
+    def test_every_option_and_precision(self):
+        import sys
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        import geo_parity
+        for n, (args, kind) in enumerate(geo_parity.OPTIONS):
+            lines = geo_parity.inputs(24 + n, kind)
+            counts, bad = geo_parity.check(args, lines)
+            self.assertEqual([], bad[:5], " ".join(args))
+            # most lines are byte-identical; the rest are named exceptions
+            self.assertGreater(counts.get("identical", 0), 0, args)
+
+    def test_halfway_values_round_to_even(self):
+        for args, line, want in (
+                (["-p", "-5"], "5.5 6.5", "6 6"),
+                (["-p", "-5"], "-2.5 -3.5", "-2 -4"),
+                (["-u", "-p", "0"], "32n 500000.5 6000000.5",
+                 "32n 500000 6000000"),
+                (["-u", "-p", "-5"], "32n 550000 6050000", "32n 600000 6000000"),
+                (["-u", "-p", "1"], "32n 500000.25 6000000.75",
+                 "32n 500000.2 6000000.8")):
+            self.assertEqual(geoconvert(args, [line]), [want])
+            self.assertEqual((0, [want]), geo(args, [line]), line)
+
+    def test_no_digits_below_the_resolution(self):
+        # GeoConvert -u -p 9 prints 9 decimals; the library resolves
+        # 1/65536 m, so drdc stops at 4 unless the value is the input
+        code, out = geo(["-u", "-p", "9"], ["33.3 44.4",
+                                            "38n 444140.5 3684706.25"])
+        self.assertEqual(["38n 444140.5449 3684706.3555",
+                          "38n 444140.500000000 3684706.250000000"], out)
+        self.assertEqual(geoconvert(["-u", "-p", "4"], ["33.3 44.4"])[0],
+                         out[0])
+
+    def test_dms_input_and_output(self):
+        lines = ["33d20'N 44d24E", "44:24 33:20:00N", "33.3 44.4",
+                 "E44.4 N33.3", "39N 70W+0:0:15E", "7.0E+1 3",
+                 "33\u00b020\u2032N 44\u00b024\u2032E", "-0:30 0",
+                 "33:60 0", "0:-30 0", "10d20'' 0"]
+        for args in (["-d", "-p", "1"], ["-:", "-p", "-3"], ["-p", "3"]):
+            code, out = geo(args, lines)
+            want = geoconvert(args, lines)
+            for line, a, b in zip(lines, out, want):
+                if b.startswith("ERROR: "):
+                    self.assertTrue(a.startswith("ERROR: "), (line, a))
+                else:
+                    self.assertEqual(b, a, line)
 
 
 if __name__ == "__main__":
