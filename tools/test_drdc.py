@@ -621,6 +621,20 @@ class GeoParity(unittest.TestCase):
         self.assertEqual(geoconvert(["-u", "-p", "4"], ["33.3 44.4"])[0],
                          out[0])
 
+    def test_options_and_bad_arguments(self):
+        for args in (["-z", "61"], ["-z", "x"], ["-z"], ["-p", "1.5"],
+                     ["-S"]):
+            self.assertEqual(2, run("geo", *args).returncode, args)
+        # angles are bounded so that every printed digit fits 64 bits
+        code, out = geo(["-p", "9"], ["0 100001", "0 99999+99999",
+                                      "0 -99999.5", "N 0"])
+        self.assertEqual(1, code)
+        self.assertEqual(4, len(out))
+        self.assertTrue(out[0].startswith("ERROR: "), out)
+        self.assertTrue(out[1].startswith("ERROR: "), out)
+        self.assertEqual("0.00000000000000 -99999.50000000000000", out[2])
+        self.assertTrue(out[3].startswith("ERROR: "), out)
+
     def test_dms_input_and_output(self):
         lines = ["33d20'N 44d24E", "44:24 33:20:00N", "33.3 44.4",
                  "E44.4 N33.3", "39N 70W+0:0:15E", "7.0E+1 3",

@@ -319,11 +319,13 @@ const char *geo_text_read_angle(const char *text, geo_text_angle_t *out)
     if (why != NULL) {
       return why;
     }
+    /* each piece and the sum stay within GEO_TEXT_DEGREES_MAX: no
+     * overflow here nor when the sum is printed */
+    sum.nas += piece.nas;
     if ((sum.nas > (GEO_TEXT_DEGREES_MAX * GEO_TEXT_NAS_PER_DEGREE)) ||
         (sum.nas < -(GEO_TEXT_DEGREES_MAX * GEO_TEXT_NAS_PER_DEGREE))) {
       return "angle too large";
     }
-    sum.nas += piece.nas;
     /* GeoConvert sums from -0.0: the sum is a negative zero only when
      * every piece is one */
     sum.negative = sum.negative && piece.negative;
