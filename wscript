@@ -582,7 +582,8 @@ def build(bld):
         # libFuzzer targets (tools/fuzz.py), one program per file
         for src in _glob(bld, "tests/fuzz/fuzz_*.c"):
             # fuzz_tool drives the host tool's own command code
-            tool = (_glob(bld, "tools/drdc/cmd_*.c")
+            tool = ([n for n in _glob(bld, "tools/drdc/*.c")
+                     if n.name != "main.c"]
                     if src.name == "fuzz_tool.c" else [])
             bld.program(source=[src] + tool,
                         target="tests/fuzz/" + src.name[:-2],

@@ -50,6 +50,62 @@ class Tool(unittest.TestCase):
         self.assertIn("unknown command", r.stderr)
 
 
+class OneLineOutPerLineIn(unittest.TestCase):
+    """Every subcommand writes exactly one line per input line, whatever
+    the line: 100 000 characters, over the 1 MiB limit, NUL bytes, CR LF,
+    invalid UTF-8, blanks only, no final newline."""
+
+    COMMANDS = (["time", "--from", "utc", "--to", "tai"],
+                ["time", "--from", "gps", "--to", "utc"],
+                ["attitude", "--from", "euler", "--to", "quat"],
+                ["units"], ["geo"], ["geo", "-u"], ["geo", "-m"],
+                ["geo", "-d"], ["geo", "-c", "-z", "31"], ["nmea"],
+                ["nmea", "--strict"])
+
+    def hostile(self):
+        return [b"1" * 100000, b"1 " * 50000, b"7" * (1 << 20) + b"8",
+                b"a\x00b", b"\xff\xfe\xc3(", b"", b"   \t ",
+                b"10 20\r", b"2024-01-01T00:00:00Z\r", b"1 ft m\r",
+                b"0 0 0\r", b"\r\r", b"x" * 511 + b"\n" + b"y" * 513]
+
+    def test_every_subcommand_every_line(self):
+        lines = self.hostile()
+        data = b"\n".join(lines) + b"\n" + b"10 20"  # no final newline
+        count = data.count(b"\n") + 1
+        for args in self.COMMANDS:
+            r = subprocess.run([DRDC] + args, input=data, capture_output=True)
+            out = r.stdout.split(b"\n")
+            self.assertEqual(b"", out[-1], args)
+            self.assertEqual(count, len(out) - 1, args)
+            self.assertIn(r.returncode, (0, 1), args)
+            # the over-long line is one record of its own
+            self.assertEqual(b"ERROR: line longer than 1048576 bytes", out[2],
+                             args)
+            self.assertEqual(b"ERROR: NUL byte in the line", out[3], args)
+
+    def test_a_100000_character_line_is_one_record(self):
+        for args in self.COMMANDS:
+            for line in (b"9" * 100000, b"1.5 " * 25000):
+                r = subprocess.run([DRDC] + args, input=line + b"\n",
+                                   capture_output=True)
+                self.assertEqual(1, r.stdout.count(b"\n"), args)
+                self.assertTrue(r.stdout.startswith(b"ERROR: "), args)
+
+    def test_crlf_is_the_same_as_lf(self):
+        cases = [(["time", "--from", "utc", "--to", "gps"],
+                  b"2019-04-06T23:59:42Z"),
+                 (["attitude", "--from", "euler", "--to", "euler"], b"1 2 3"),
+                 (["units"], b"3.5 ft m"), (["geo", "-u"], b"10 20"),
+                 (["nmea"], b"$HEHDT,274.07,T*19")]
+        for args, line in cases:
+            lf = subprocess.run([DRDC] + args, input=line + b"\n",
+                                capture_output=True)
+            crlf = subprocess.run([DRDC] + args, input=line + b"\r\n",
+                                  capture_output=True)
+            self.assertEqual(0, lf.returncode, args)
+            self.assertEqual(lf.stdout, crlf.stdout, args)
+
+
 class TimeCommand(unittest.TestCase):
     """drdc time --from F --to T (issue 4). Expected values: calendar.timegm
     for Unix/RTEMS, and TAI-UTC / GPS = TAI - 19 s as in ERFA."""
@@ -114,6 +170,17 @@ class TimeCommand(unittest.TestCase):
         self.assertEqual(["DRDC_E_TIME_OF_WEEK", "DRDC_E_WEEK", "DRDC_E_TRAILING",
                           "DRDC_E_SYNTAX", "DRDC_E_SYNTAX"],
                          [l.split("(")[-1].rstrip(")") for l in out])
+
+    def test_blanks_around_a_time_in_every_format(self):
+        """Leading and trailing blanks are accepted alike by every input
+        format (the ISO 8601 parser itself takes bare text)."""
+        utc = "2019-04-06T23:59:42.000000000Z"
+        for src in ("utc", "gps", "unix", "rtems", "tai"):
+            code, (text,), _ = convert("utc", src, utc)
+            self.assertEqual(0, code)
+            for padded in (text + " ", " \t" + text + " \t", text + "\t"):
+                self.assertEqual((0, [utc]), convert(src, "utc", padded)[:2],
+                                 repr(padded))
 
     def test_past_expiry_converts_with_a_warning(self):
         code, out, err = convert("utc", "tai", "2030-01-01T00:00:00Z")
@@ -546,9 +613,12 @@ class GeoCommand(unittest.TestCase):
         code, out = geo(["-u"], lines)
         self.assertEqual(1, code)
         self.assertEqual(len(lines), len(out))
+        self.assertEqual(geoconvert(["-u"], lines)[2], out[2])
         for i, line in enumerate(out):
             if i == 1:
                 self.assertEqual("34n 390399 1105579", line)
+            elif i == 2:  # GeoConvert takes any longitude
+                self.assertEqual("60n 722595 0", line)
             else:
                 self.assertTrue(line.startswith("ERROR: "), line)
 
@@ -556,6 +626,83 @@ class GeoCommand(unittest.TestCase):
         self.assertEqual(0, run("geo", "--help").returncode)
         self.assertEqual(2, run("geo", "-x").returncode)
         self.assertEqual(2, run("geo", "-p", "x").returncode)
+
+
+class GeoParity(unittest.TestCase):
+    """drdc geo against GeoConvert 2.1.2 byte for byte on random inputs
+    (geographic decimal and DMS text, UTM/UPS, MGRS) for each of -g -u -m
+    -c -d -: -z -s -t -w -n with -p from -5 to 10. Every line that is not
+    byte-identical must be explained by one of the documented rules of
+    tools/geo_parity.py (both ERROR; the precision cap; one unit of the
+    last digit where GeoConvert's value lies within the library's accuracy
+    of the rounding boundary; the exact input, where GeoConvert's double
+    is off; latitude -0 in MGRS)."""
+
+    def setUp(self):
+        import shutil
+        if shutil.which("GeoConvert") is None:
+            self.skipTest("GeoConvert not installed")
+
+    def test_every_option_and_precision(self):
+        import sys
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        import geo_parity
+        for n, (args, kind) in enumerate(geo_parity.OPTIONS):
+            lines = geo_parity.inputs(24 + n, kind)
+            counts, bad = geo_parity.check(args, lines)
+            self.assertEqual([], bad[:5], " ".join(args))
+            # most lines are byte-identical; the rest are named exceptions
+            self.assertGreater(counts.get("identical", 0), 0, args)
+
+    def test_halfway_values_round_to_even(self):
+        for args, line, want in (
+                (["-p", "-5"], "5.5 6.5", "6 6"),
+                (["-p", "-5"], "-2.5 -3.5", "-2 -4"),
+                (["-u", "-p", "0"], "32n 500000.5 6000000.5",
+                 "32n 500000 6000000"),
+                (["-u", "-p", "-5"], "32n 550000 6050000", "32n 600000 6000000"),
+                (["-u", "-p", "1"], "32n 500000.25 6000000.75",
+                 "32n 500000.2 6000000.8")):
+            self.assertEqual(geoconvert(args, [line]), [want])
+            self.assertEqual((0, [want]), geo(args, [line]), line)
+
+    def test_no_digits_below_the_resolution(self):
+        # GeoConvert -u -p 9 prints 9 decimals; the library resolves
+        # 1/65536 m, so drdc stops at 4 unless the value is the input
+        code, out = geo(["-u", "-p", "9"], ["33.3 44.4",
+                                            "38n 444140.5 3684706.25"])
+        self.assertEqual(["38n 444140.5449 3684706.3555",
+                          "38n 444140.500000000 3684706.250000000"], out)
+        self.assertEqual(geoconvert(["-u", "-p", "4"], ["33.3 44.4"])[0],
+                         out[0])
+
+    def test_options_and_bad_arguments(self):
+        for args in (["-z", "61"], ["-z", "x"], ["-z"], ["-p", "1.5"],
+                     ["-S"]):
+            self.assertEqual(2, run("geo", *args).returncode, args)
+        # angles are bounded so that every printed digit fits 64 bits
+        code, out = geo(["-p", "9"], ["0 100001", "0 99999+99999",
+                                      "0 -99999.5", "N 0"])
+        self.assertEqual(1, code)
+        self.assertEqual(4, len(out))
+        self.assertTrue(out[0].startswith("ERROR: "), out)
+        self.assertTrue(out[1].startswith("ERROR: "), out)
+        self.assertEqual("0.00000000000000 -99999.50000000000000", out[2])
+        self.assertTrue(out[3].startswith("ERROR: "), out)
+
+    def test_dms_input_and_output(self):
+        lines = ["33d20'N 44d24E", "44:24 33:20:00N", "33.3 44.4",
+                 "E44.4 N33.3", "39N 70W+0:0:15E", "7.0E+1 3",
+                 "33\u00b020\u2032N 44\u00b024\u2032E", "-0:30 0",
+                 "33:60 0", "0:-30 0", "10d20'' 0"]
+        for args in (["-d", "-p", "1"], ["-:", "-p", "-3"], ["-p", "3"]):
+            code, out = geo(args, lines)
+            want = geoconvert(args, lines)
+            for line, a, b in zip(lines, out, want):
+                if b.startswith("ERROR: "):
+                    self.assertTrue(a.startswith("ERROR: "), (line, a))
+                else:
+                    self.assertEqual(b, a, line)
 
 
 if __name__ == "__main__":

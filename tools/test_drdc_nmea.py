@@ -178,6 +178,9 @@ class NmeaCommand(unittest.TestCase):
         got = r.stdout.decode().splitlines()
         self.assertEqual(len(rows), len(got))
         for (text, status), line in zip(rows, got):
+            if "\x00" in text:  # the tool's own wording, for every command
+                self.assertEqual("ERROR: NUL byte in the line", line)
+                continue
             self.assertTrue(line.startswith("ERROR: ") and line.endswith("(%s)" % status),
                             (text, line))
 

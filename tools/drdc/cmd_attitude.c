@@ -19,6 +19,7 @@
 #include <drdc/orient.h>
 
 #include "commands.h"
+#include "lines.h"
 
 /* Largest |angle| accepted, degrees: keeps the turn count exact. */
 #define DEGREES_MAX 1e9
@@ -39,8 +40,6 @@ enum repr { REPR_EULER, REPR_QUAT, REPR_DCM, REPR_NONE };
 static const char *const repr_names[3] = {"euler", "quat", "dcm"};
 static const int repr_fields[3] = {3, 4, 9};
 
-/* Longest accepted line; longer ones are an error of their own. */
-#define LINE_MAX_CHARS 4096
 /* Largest deviation of a matrix from orthonormality (R R^T - I, per
  * element) and of its determinant from 1 that is accepted as a rotation. */
 #define DCM_TOLERANCE 1e-4
@@ -308,7 +307,10 @@ int drdc_cmd_attitude(int argc, char **argv)
 {
   enum repr from = REPR_NONE;
   enum repr to = REPR_NONE;
-  char line[LINE_MAX_CHARS + 2];
+  char *line = NULL;
+  size_t cap = 0;
+  size_t len = 0;
+  int got;
   int status = 0;
   int i;
 
@@ -344,17 +346,20 @@ int drdc_cmd_attitude(int argc, char **argv)
     fprintf(stderr, "drdc attitude: --from and --to are required\n%s", usage);
     return 2;
   }
-  while (fgets(line, (int)sizeof(line), stdin) != NULL) {
+  while ((got = drdc_tool_read_line(stdin, &line, &cap, &len)) !=
+         DRDC_TOOL_LINE_EOF) {
     char out[512];
     char err[128];
-    size_t len = strlen(line);
+    const char *problem;
 
-    if ((len > LINE_MAX_CHARS) && (line[len - 1] != '\n')) {
-      int c;
-
-      while (((c = getchar()) != EOF) && (c != '\n')) {
-      }
-      printf("ERROR: line longer than %d characters\n", LINE_MAX_CHARS);
+    if (got == DRDC_TOOL_LINE_ERROR) {
+      fputs("drdc attitude: cannot read standard input\n", stderr);
+      status = 1;
+      break;
+    }
+    problem = drdc_tool_line_problem(got, line, len);
+    if (problem != NULL) {
+      printf("ERROR: %s\n", problem);
       status = 1;
       continue;
     }
@@ -365,5 +370,6 @@ int drdc_cmd_attitude(int argc, char **argv)
       status = 1;
     }
   }
+  free(line);
   return status;
 }

@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /**
  * @file
- * @brief `drdc geo`: GeoConvert's -g, -u, -c and -p with the library's
- *        integer geodesy (text in and out exact: decimal digits <-> nas
- *        and Q47.16 metres through the library's rounding).
+ * @brief `drdc geo`: GeoConvert's conversions and options with the
+ *        library's integer geodesy; text in and out exact (decimal digits
+ *        <-> nas and Q47.16 metres, printed decimals rounded half to even
+ *        from the exact fixed-point value).
  */
 #include <ctype.h>
 #include <stdbool.h>
@@ -12,150 +13,94 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include <drdc/fixed_arith.h>
 #include <drdc/geo.h>
 #include <drdc/geo_mgrs.h>
 
 #include "commands.h"
+#include "geo_text.h"
+#include "lines.h"
 
 static const char usage[] =
-    "usage: drdc geo [-g | -u | -m | -c] [-p PREC]\n"
+    "usage: drdc geo [-g | -d | -: | -u | -m | -c] [-z ZONE | -s | -t]\n"
+    "                [-n] [-w] [-p PREC] [-l | -a]\n"
     "\n"
-    "Reads one position per line on standard input and writes it like\n"
-    "GeographicLib's GeoConvert:\n"
-    "  input   'LAT LON' in decimal degrees, or 'ZONE{n|s} EASTING NORTHING'\n"
-    "          (UTM, metres; UPS with the hemisphere alone, 'n E N'), or\n"
-    "          MGRS (the centre of its cell)\n"
-    "  -g      output 'LAT LON' in decimal degrees (PREC + 5 decimals;\n"
-    "          the default)\n"
-    "  -u      output UTM/UPS 'ZONE{n|s} EASTING NORTHING' (PREC decimals\n"
-    "          of a metre; the standard zone)\n"
-    "  -m      output MGRS with PREC + 5 digits per coordinate (truncated)\n"
-    "  -c      output the meridian convergence in degrees (PREC + 5\n"
-    "          decimals) and the point scale (PREC + 7 decimals)\n"
-    "  -p PREC precision, -6..9 (default 0)\n"
+    "Reads one position per line on standard input and writes it as\n"
+    "GeographicLib's GeoConvert does, from the library's integer geodesy:\n"
+    "  input   'LAT LON' in decimal degrees or degrees, minutes, seconds\n"
+    "          (33.3, 33d18'N, 33:18:00N, N33d18; a hemisphere letter\n"
+    "          may swap the order); 'ZONE{n|s} EASTING NORTHING' or\n"
+    "          'EASTING NORTHING ZONE{n|s}' (UTM, metres; UPS with the\n"
+    "          hemisphere alone); or MGRS (the centre of its cell)\n"
+    "  -g      output 'LAT LON' in decimal degrees, PREC + 5 decimals\n"
+    "          (the default)\n"
+    "  -d, -:  output degrees, minutes and seconds, PREC + 1 decimals of\n"
+    "          a second (minutes at PREC -2, -3; degrees below); -: uses\n"
+    "          ':' between the parts\n"
+    "  -u      output UTM/UPS 'ZONE{n|s} EASTING NORTHING', PREC decimals\n"
+    "          of a metre\n"
+    "  -m      output MGRS, PREC + 5 digits per coordinate (truncated)\n"
+    "  -c      output the meridian convergence (PREC + 5 decimals of a\n"
+    "          degree) and the point scale (PREC + 7 decimals)\n"
+    "  -z ZONE output in UTM zone ZONE (1..60, 0 for UPS, or with its\n"
+    "          hemisphere, 38n); -s the standard zone; -t the standard UTM\n"
+    "          zone also in the polar caps. Default: geographic input in\n"
+    "          its standard zone, UTM/UPS and MGRS input in its own\n"
+    "  -n      MGRS input means the south-west corner of its cell\n"
+    "  -w      longitude first, on input and output\n"
+    "  -l, -a  hemisphere written north/south, or n/s (the default)\n"
+    "  -p PREC precision, -5..10 (-6 for MGRS), default 0\n"
+    "Printed decimals are the library's fixed-point values rounded half to\n"
+    "even, never more digits than those values resolve: a value that is\n"
+    "not exactly the input is written with at most 12 decimals of a degree\n"
+    "(-g, -c: PREC 7; the library's unit is 1 nas, 2.8e-13 degree), 9 of\n"
+    "a second (-d: PREC 8) and 4 of a metre (-u: PREC 4; 1/65536 m), and\n"
+    "MGRS computed from such metres with at most 9 digits (PREC 4).\n"
+    "UTM/UPS input is read to the nearest 1/65536 m.\n"
     "A line that cannot be converted gives 'ERROR: <reason>'; the others go\n"
     "on and the exit status is 1 at the end.\n";
 
-#define NAS_PER_DEG INT64_C(3600000000000)
 #define Q16_PER_M   INT64_C(65536)
 #define Q58_ONE     INT64_C(288230376151711744)
+#define NAS_PER_DEG GEO_TEXT_NAS_PER_DEGREE
+/* False northing of the southern UTM hemisphere, Q47.16 metres. */
+#define SOUTH_SHIFT (INT64_C(10000000) * Q16_PER_M)
 
-static int64_t pow10_i64(int n)
-{
-  int64_t p = 1;
-  int i;
+/* Most decimals the library's values resolve (see the usage text). */
+#define DEGREE_DECIMALS_MAX         12
+#define SECOND_DECIMALS_MAX         9
+#define METRE_DECIMALS_MAX          4
+#define MGRS_DIGITS_FROM_METRES_MAX 9
 
-  for (i = 0; i < n; i++) {
-    p *= 10;
-  }
-  return p;
-}
+/* -z/-s/-t, beside DRDC_GEO_ZONE_STANDARD (-s), UPS (0) and 1..60 */
+#define ZONE_MATCH (-3) /* none given: the input's own zone */
+#define ZONE_UTM   (-2) /* -t */
 
-/* Decimal text -> value * unit, rounded (ties away from zero). Accepts
- * [+-]digits[.digits]; at most 18 significant fraction digits used. */
-static bool parse_decimal(const char *s, int64_t unit, int64_t *out)
-{
-  bool neg = false;
-  int64_t ip = 0;
-  int64_t fp = 0;
-  int fd = 0;
-  bool digits = false;
-  int64_t v = 0;
+enum mode { MODE_GEO, MODE_DMS, MODE_UTM, MODE_MGRS, MODE_CONV };
 
-  if ((*s == '+') || (*s == '-')) {
-    neg = (*s == '-');
-    s++;
-  }
-  while (isdigit((unsigned char)*s)) {
-    if (ip > INT64_C(100000000000)) {
-      return false;
-    }
-    ip = (ip * 10) + (*s - '0');
-    s++;
-    digits = true;
-  }
-  if (*s == '.') {
-    s++;
-    while (isdigit((unsigned char)*s)) {
-      if (fd < 17) {
-        fp = (fp * 10) + (*s - '0');
-        fd++;
-      }
-      s++;
-      digits = true;
-    }
-  }
-  if ((*s != '\0') || !digits) {
-    return false;
-  }
-  if (drdc_fx_muldiv_s64(fp, unit, pow10_i64(fd), &v) != DRDC_OK) {
-    return false;
-  }
-  if (ip > (INT64_MAX / unit)) {
-    return false;
-  }
-  v += ip * unit;
-  *out = neg ? -v : v;
-  return true;
-}
+struct options {
+  enum mode mode;
+  int prec;
+  int zone;            /* ZONE_MATCH, ZONE_UTM, standard, UPS or 1..60 */
+  bool set_hemisphere; /* -z with a hemisphere: -u writes in it */
+  bool north;          /* that hemisphere */
+  bool corner;         /* -n */
+  bool lon_first;      /* -w */
+  bool long_names;     /* -l */
+  char sep;            /* -: */
+};
 
-/* Print value / unit with `decimals` decimals (negative: rounded to
- * 10^-decimals, printed without a point), as C++'s fixed does (a negative
- * value that rounds to zero keeps its sign). */
-static void print_fixed_signed(int64_t value, int64_t unit, int decimals,
-                               bool negative_zero)
-{
-  int64_t q = 0;
-  uint64_t mag;
-  int64_t p;
-
-  if (decimals >= 0) {
-    (void)drdc_fx_muldiv_s64(value, pow10_i64(decimals), unit, &q);
-  } else {
-    p = pow10_i64(-decimals);
-    (void)drdc_fx_muldiv_s64(value, 1, unit * p, &q);
-    q *= p;
-  }
-  mag = (q < 0) ? (0u - (uint64_t)q) : (uint64_t)q;
-  if ((value < 0) || ((value == 0) && negative_zero)) {
-    putchar('-');
-  }
-  if (decimals > 0) {
-    p = pow10_i64(decimals);
-    printf("%llu.%0*llu", (unsigned long long)(mag / (uint64_t)p), decimals,
-           (unsigned long long)(mag % (uint64_t)p));
-  } else {
-    printf("%llu", (unsigned long long)mag);
-  }
-}
-
-static void print_fixed(int64_t value, int64_t unit, int decimals)
-{
-  print_fixed_signed(value, unit, decimals, false);
-}
-
-enum mode { MODE_GEO, MODE_UTM, MODE_CONV, MODE_MGRS };
-
-static char *next_word(char **s)
-{
-  char *p = *s;
-  char *start;
-
-  while ((*p == ' ') || (*p == '\t') || (*p == ',')) {
-    p++;
-  }
-  start = p;
-  while ((*p != '\0') && (*p != ' ') && (*p != '\t') && (*p != ',')) {
-    p++;
-  }
-  if (*p != '\0') {
-    *p = '\0';
-    p++;
-  }
-  *s = p;
-  return start;
-}
+/* One converted line. */
+struct position {
+  geo_text_angle_t lat;
+  geo_text_angle_t lon; /* as read or computed, not reduced */
+  drdc_nas_t lon_calc;  /* lon within the library's [-540, 540) */
+  bool geographic;      /* the input was 'LAT LON' */
+  drdc_geo_utm_t u;     /* the output zone's coordinates */
+  bool u_exact;         /* u is the input exactly */
+  bool rezoned;         /* u was computed again for -z, -s or -t */
+  drdc_nas_t conv;
+  drdc_q5_58_t k;
+};
 
 static const char *status_reason(drdc_status_t st)
 {
@@ -181,177 +126,595 @@ static const char *status_reason(drdc_status_t st)
   }
 }
 
-/* One line; returns false after printing an ERROR line. */
-static bool convert_line(char *line, enum mode mode, int prec)
+static int imin(int a, int b)
 {
-  char *rest = line;
-  char *w1 = next_word(&rest);
-  char *w2 = next_word(&rest);
-  char *w3 = next_word(&rest);
-  char *w4 = next_word(&rest);
+  return (a < b) ? a : b;
+}
+
+static int imax(int a, int b)
+{
+  return (a > b) ? a : b;
+}
+
+static int64_t floor_div(int64_t a, int64_t b)
+{
+  int64_t q = a / b;
+
+  return (((a % b) != 0) && ((a < 0) != (b < 0))) ? (q - 1) : q;
+}
+
+/* Longitude into [-180, 180) degrees, exact. */
+static drdc_nas_t reduce_longitude(drdc_nas_t lon)
+{
+  int64_t turn = 360 * NAS_PER_DEG;
+
+  return lon - (floor_div(lon + (180 * NAS_PER_DEG), turn) * turn);
+}
+
+/* GeoConvert's zone for -t: the standard UTM zone, the Norway and
+ * Svalbard exceptions by the latitude band, in the polar caps too. */
+static int utm_only_zone(drdc_nas_t lat, drdc_nas_t lon)
+{
+  int64_t ilon = floor_div(reduce_longitude(lon), NAS_PER_DEG);
+  int64_t ilat = floor_div(lat, NAS_PER_DEG);
+  int64_t band = ((ilat + 80) / 8) - 10;
+  int zone = (int)((ilon + 186) / 6);
+
+  band = (band < -10) ? -10 : ((band > 9) ? 9 : band);
+  if ((band == 7) && (zone == 31) && (ilon >= 3)) {
+    zone = 32; /* Norway */
+  } else if ((band == 9) && (ilon >= 0) && (ilon < 42)) {
+    zone = (int)((2 * ((ilon + 183) / 12)) + 1); /* Svalbard */
+  }
+  return zone;
+}
+
+/* GeoConvert's zone+hemisphere text: 1..60 (at most 2 digits, no sign)
+ * or nothing for UPS, then n, s, north or south in any case. */
+static const char *decode_zone(const char *s, int *zone, bool *north)
+{
+  size_t digits = 0;
+  int z = 0;
+  const char *h;
+  char lower[8];
+  size_t i;
+
+  if (strlen(s) > 7u) {
+    return "zone text longer than 7 characters";
+  }
+  while (isdigit((unsigned char)s[digits])) {
+    z = (z * 10) + (s[digits] - '0');
+    digits++;
+    if (digits > 2u) {
+      return "zone with more than 2 digits";
+    }
+  }
+  if ((digits > 0u) && ((z < 1) || (z > 60))) {
+    return "zone not in [1, 60] (UPS: the hemisphere alone)";
+  }
+  h = s + digits;
+  for (i = 0; (h[i] != '\0') && (i < (sizeof lower - 1u)); i++) {
+    lower[i] = (char)tolower((unsigned char)h[i]);
+  }
+  lower[i] = '\0';
+  if ((strcmp(lower, "n") == 0) || (strcmp(lower, "north") == 0)) {
+    *north = true;
+  } else if ((strcmp(lower, "s") == 0) || (strcmp(lower, "south") == 0)) {
+    *north = false;
+  } else {
+    return "illegal zone or hemisphere";
+  }
+  *zone = z;
+  return NULL;
+}
+
+/* Split on GeoConvert's separators: blanks and commas. */
+static int split(char *line, char **words, int max)
+{
+  int n = 0;
+  char *p = line;
+
+  for (;;) {
+    while ((*p != '\0') && (strchr(" \t\n\v\f\r,", *p) != NULL)) {
+      p++;
+    }
+    if (*p == '\0') {
+      return n;
+    }
+    if (n == max) {
+      return max + 1;
+    }
+    words[n++] = p;
+    while ((*p != '\0') && (strchr(" \t\n\v\f\r,", *p) == NULL)) {
+      p++;
+    }
+    if (*p != '\0') {
+      *p++ = '\0';
+    }
+  }
+}
+
+static void set_computed_angle(geo_text_angle_t *a, drdc_nas_t nas)
+{
+  a->nas = nas;
+  a->negative = (nas < 0);
+  a->exact = false;
+  a->hemisphere = GEO_TEXT_NONE;
+}
+
+/* UTM/UPS -> geographic, then GeoConvert's FixHemisphere: a UTM northing
+ * given in the other hemisphere is moved to the latitude's own. */
+static const char *from_grid(struct position *pos)
+{
   drdc_nas_t lat = 0;
   drdc_nas_t lon = 0;
-  drdc_status_t st = DRDC_OK;
-  drdc_geo_utm_t u;
-  drdc_nas_t conv = 0;
-  drdc_q5_58_t k = 0;
-  bool west = false;       /* the point is west of its central meridian */
-  bool grid_input = false; /* UTM/UPS or MGRS input: -m keeps its zone */
+  drdc_status_t st;
 
-  if (*w4 != '\0') {
-    printf("ERROR: extra text on the line\n");
-    return false;
+  st = drdc_geo_from_utm(&pos->u, &lat, &lon, &pos->conv, &pos->k);
+  if (st != DRDC_OK) {
+    return status_reason(st);
   }
-  if ((*w2 == '\0') && (*w1 != '\0')) {
-    /* MGRS: the centre of its cell, as GeoConvert reads it */
-    drdc_geo_utm_t corner;
+  set_computed_angle(&pos->lat, lat);
+  set_computed_angle(&pos->lon, lon);
+  pos->lon_calc = lon;
+  if ((lat != 0) && (pos->u.north != (lat > 0))) {
+    if (pos->u.zone == DRDC_GEO_ZONE_UPS) {
+      return "hemisphere mixup";
+    }
+    pos->u.northing += pos->u.north ? SOUTH_SHIFT : -SOUTH_SHIFT;
+    pos->u.north = !pos->u.north;
+  }
+  return NULL;
+}
 
-    st = drdc_geo_mgrs_decode(w1, &corner, &u, NULL);
-    grid_input = true;
-    if (st == DRDC_OK) {
-      st = drdc_geo_from_utm(&u, &lat, &lon, &conv, &k);
-      west = (u.zone != 0) ? (u.easting < (INT64_C(500000) * Q16_PER_M))
-                           : (lon < 0);
-    }
-  } else if (*w3 != '\0') {
-    size_t n = strlen(w1);
-    char h = (n > 0u) ? (char)tolower((unsigned char)w1[n - 1u]) : '\0';
-    char *end = NULL;
-    long z;
+static const char *read_geographic(char *a, char *b, const struct options *o,
+                                   struct position *pos)
+{
+  geo_text_angle_t x;
+  geo_text_angle_t y;
+  enum geo_text_hemisphere hx;
+  enum geo_text_hemisphere hy;
+  const char *why;
+  drdc_status_t st;
 
-    if ((h != 'n') && (h != 's')) {
-      printf("ERROR: illegal hemisphere in zone %s\n", w1);
-      return false;
-    }
-    w1[n - 1u] = '\0';
-    if (*w1 == '\0') {
-      z = 0; /* UPS: the hemisphere alone */
-    } else {
-      z = strtol(w1, &end, 10);
-      if (*end != '\0') {
-        printf("ERROR: illegal zone %s\n", w1);
-        return false;
-      }
-      if ((z < 1) || (z > 60)) {
-        printf("ERROR: zone %ld not in range [1, 60]\n", z);
-        return false;
-      }
-    }
-    u.zone = (int32_t)z;
-    u.north = (h == 'n');
-    if (!parse_decimal(w2, Q16_PER_M, &u.easting) ||
-        !parse_decimal(w3, Q16_PER_M, &u.northing)) {
-      printf("ERROR: bad easting or northing\n");
-      return false;
-    }
-    st = drdc_geo_from_utm(&u, &lat, &lon, &conv, &k);
-    grid_input = true;
-    west = (u.easting < (INT64_C(500000) * Q16_PER_M));
+  if (((why = geo_text_read_angle(a, &x)) != NULL) ||
+      ((why = geo_text_read_angle(b, &y)) != NULL)) {
+    return why;
+  }
+  hx = x.hemisphere;
+  hy = y.hemisphere;
+  if ((hx == GEO_TEXT_NONE) && (hy == GEO_TEXT_NONE)) {
+    hx = o->lon_first ? GEO_TEXT_LONGITUDE : GEO_TEXT_LATITUDE;
+    hy = o->lon_first ? GEO_TEXT_LATITUDE : GEO_TEXT_LONGITUDE;
+  } else if (hx == GEO_TEXT_NONE) {
+    hx = (hy == GEO_TEXT_LATITUDE) ? GEO_TEXT_LONGITUDE : GEO_TEXT_LATITUDE;
+  } else if (hy == GEO_TEXT_NONE) {
+    hy = (hx == GEO_TEXT_LATITUDE) ? GEO_TEXT_LONGITUDE : GEO_TEXT_LATITUDE;
+  }
+  if (hx == hy) {
+    return "both coordinates are latitudes or both longitudes";
+  }
+  pos->lat = (hx == GEO_TEXT_LATITUDE) ? x : y;
+  pos->lon = (hx == GEO_TEXT_LATITUDE) ? y : x;
+  if ((pos->lat.nas > (90 * NAS_PER_DEG)) ||
+      (pos->lat.nas < -(90 * NAS_PER_DEG))) {
+    return status_reason(DRDC_E_LATITUDE);
+  }
+  /* GeoConvert takes any longitude; the library [-540, 540) */
+  pos->lon_calc = pos->lon.nas;
+  if ((pos->lon_calc < -(540 * NAS_PER_DEG)) ||
+      (pos->lon_calc >= (540 * NAS_PER_DEG))) {
+    pos->lon_calc = reduce_longitude(pos->lon_calc);
+  }
+  pos->geographic = true;
+  st = drdc_geo_to_utm(pos->lat.nas, pos->lon_calc, DRDC_GEO_ZONE_STANDARD,
+                       &pos->u, &pos->conv, &pos->k);
+  if (st != DRDC_OK) {
+    return status_reason(st);
+  }
+  if ((pos->lat.nas == 0) && pos->lat.negative &&
+      (pos->u.zone != DRDC_GEO_ZONE_UPS)) {
+    /* GeoConvert's hemisphere is the sign bit: -0 is south */
+    pos->u.north = false;
+    pos->u.northing += SOUTH_SHIFT;
+  }
+  return NULL;
+}
+
+static const char *read_utm(char **w, const struct options *o,
+                            struct position *pos)
+{
+  char *zone_text;
+  char *e;
+  char *n;
+  bool e_exact;
+  bool n_exact;
+  int zone = 0;
+  bool north = true;
+  const char *why;
+
+  (void)o;
+  if ((*w[0] != '\0') && isalpha((unsigned char)w[0][strlen(w[0]) - 1u])) {
+    zone_text = w[0];
+    e = w[1];
+    n = w[2];
+  } else if ((*w[2] != '\0') &&
+             isalpha((unsigned char)w[2][strlen(w[2]) - 1u])) {
+    zone_text = w[2];
+    e = w[0];
+    n = w[1];
   } else {
-    if ((*w2 == '\0') || !parse_decimal(w1, NAS_PER_DEG, &lat) ||
-        !parse_decimal(w2, NAS_PER_DEG, &lon)) {
-      printf("ERROR: expected 'LAT LON' or 'ZONE{n|s} EASTING NORTHING'\n");
-      return false;
-    }
-    if (mode == MODE_GEO) {
+    return "neither the first nor the last word is a zone+hemisphere";
+  }
+  if ((why = decode_zone(zone_text, &zone, &north)) != NULL) {
+    return why;
+  }
+  pos->u.zone = zone;
+  pos->u.north = north;
+  if (!geo_text_read_metres(e, &pos->u.easting, &e_exact) ||
+      !geo_text_read_metres(n, &pos->u.northing, &n_exact)) {
+    return "bad easting or northing";
+  }
+  pos->u_exact = e_exact && n_exact;
+  return from_grid(pos);
+}
+
+static const char *read_mgrs(const char *text, const struct options *o,
+                             struct position *pos)
+{
+  drdc_geo_utm_t corner;
+  drdc_geo_utm_t centre;
+  int32_t prec = 0;
+  drdc_status_t st;
+
+  st = drdc_geo_mgrs_decode(text, &corner, &centre, &prec);
+  if (st != DRDC_OK) {
+    return status_reason(st);
+  }
+  pos->u = o->corner ? corner : centre;
+  /* corners are multiples of 10^(5 - prec) m, centres half a cell more:
+   * exact in Q47.16 down to 1 m cells (0.5 m) */
+  pos->u_exact = (prec <= 5);
+  return from_grid(pos);
+}
+
+/* The output zone: GeoConvert's SetAltZone and, for -u with a
+ * hemisphere, its Transfer. */
+static const char *output_zone(const struct options *o, struct position *pos)
+{
+  int zone;
+  drdc_status_t st;
+
+  if (o->zone != ZONE_MATCH) {
+    if (o->zone >= DRDC_GEO_ZONE_UPS) {
+      zone = o->zone;
+    } else if (o->zone == ZONE_UTM) {
+      zone = utm_only_zone(pos->lat.nas, pos->lon_calc);
+    } else {
       int32_t z = 0;
 
-      st = drdc_geo_utm_zone(lat, lon, &z); /* range checks only */
-    } else {
-      st = drdc_geo_to_utm(lat, lon, DRDC_GEO_ZONE_STANDARD, &u, &conv, &k);
-      west = (u.zone != 0) ? (u.easting < (INT64_C(500000) * Q16_PER_M))
-                           : (lon < 0);
+      st = drdc_geo_utm_zone(pos->lat.nas, pos->lon_calc, &z);
+      if (st != DRDC_OK) {
+        return status_reason(st);
+      }
+      zone = (int)z;
+    }
+    if (zone != pos->u.zone) {
+      /* GeoConvert computes the new zone's coordinates in the hemisphere
+       * of the latitude's sign bit and labels them with the input's */
+      bool label = pos->u.north;
+
+      st = drdc_geo_to_utm(pos->lat.nas, pos->lon_calc, zone, &pos->u,
+                           &pos->conv, &pos->k);
+      if (st != DRDC_OK) {
+        return status_reason(st);
+      }
+      if ((pos->lat.nas == 0) && pos->lat.negative &&
+          (pos->u.zone != DRDC_GEO_ZONE_UPS)) {
+        pos->u.northing += SOUTH_SHIFT;
+      }
+      pos->u.north = label;
+      pos->u_exact = false;
+      pos->rezoned = true;
     }
   }
-  if (st != DRDC_OK) {
-    printf("ERROR: %s\n", status_reason(st));
+  if ((o->mode == MODE_UTM) && o->set_hemisphere &&
+      (o->north != pos->u.north)) {
+    if (pos->u.zone == DRDC_GEO_ZONE_UPS) {
+      return "UPS coordinates cannot change hemisphere";
+    }
+    pos->u.northing += o->north ? -SOUTH_SHIFT : SOUTH_SHIFT;
+    pos->u.north = o->north;
+  }
+  return NULL;
+}
+
+/* A UTM coordinate as GeoConvert's UTMUPSString: PREC decimals, or for a
+ * negative PREC the value in units of 10^-PREC m with -PREC zeros
+ * appended when it is above half a unit. */
+static void put_metres(char *out, size_t size, int64_t v, int prec)
+{
+  if (prec >= 0) {
+    geo_text_put_fixed(out, size, v, Q16_PER_M, prec, false);
+  } else {
+    int64_t unit = Q16_PER_M;
+    int64_t mag = (v < 0) ? -v : v;
+    size_t n;
+    int i;
+
+    for (i = 0; i < -prec; i++) {
+      unit *= 10;
+    }
+    geo_text_put_fixed(out, size, v, unit, 0, false);
+    if ((2 * mag) > unit) {
+      n = strlen(out);
+      for (i = 0; (i < -prec) && ((n + 1u) < size); i++) {
+        out[n++] = '0';
+      }
+      out[n] = '\0';
+    }
+  }
+}
+
+static void put_degrees(char *out, size_t size, const geo_text_angle_t *a,
+                        int decimals)
+{
+  geo_text_put_fixed(out, size, a->nas, NAS_PER_DEG,
+                     a->exact ? decimals : imin(decimals, DEGREE_DECIMALS_MAX),
+                     a->negative);
+}
+
+static void put_dms(char *out, size_t size, const geo_text_angle_t *a, int prec,
+                    enum geo_text_hemisphere which, char sep)
+{
+  /* prec - 4 decimals of a second at most SECOND_DECIMALS_MAX */
+  int most = 4 + SECOND_DECIMALS_MAX;
+
+  geo_text_put_dms(out, size, a->nas, a->negative,
+                   a->exact ? prec : imin(prec, most), which, sep);
+}
+
+/* The output line of a converted position; false for an ERROR line. */
+static const char *write_output(const struct options *o,
+                                const struct position *pos, char *out,
+                                size_t size)
+{
+  char a[64];
+  char b[64];
+  const geo_text_angle_t *first = o->lon_first ? &pos->lon : &pos->lat;
+  const geo_text_angle_t *second = o->lon_first ? &pos->lat : &pos->lon;
+  const drdc_geo_utm_t *u = &pos->u;
+  int p = o->prec;
+
+  switch (o->mode) {
+  case MODE_GEO: {
+    int decimals = imax(0, imin(9, p) + 5);
+
+    put_degrees(a, sizeof a, first, decimals);
+    put_degrees(b, sizeof b, second, decimals);
+    break;
+  }
+  case MODE_DMS: {
+    int prec = imax(0, imin(10, p) + 5);
+
+    put_dms(a, sizeof a, first, prec,
+            o->lon_first ? GEO_TEXT_LONGITUDE : GEO_TEXT_LATITUDE, o->sep);
+    put_dms(b, sizeof b, second, prec,
+            o->lon_first ? GEO_TEXT_LATITUDE : GEO_TEXT_LONGITUDE, o->sep);
+    break;
+  }
+  case MODE_UTM: {
+    int prec = imax(-5, imin(9, p));
+    char zone[8];
+    const char *h = u->north ? (o->long_names ? "north" : "n")
+                             : (o->long_names ? "south" : "s");
+
+    if (!pos->u_exact) {
+      prec = imin(prec, METRE_DECIMALS_MAX);
+    }
+    if (u->zone == DRDC_GEO_ZONE_UPS) {
+      snprintf(zone, sizeof zone, "%s", h);
+    } else {
+      snprintf(zone, sizeof zone, "%02d%s", (int)u->zone, h);
+    }
+    put_metres(a, sizeof a, u->easting, prec);
+    put_metres(b, sizeof b, u->northing, prec);
+    snprintf(out, size, "%.8s %.60s %.60s", zone, a, b);
+    return NULL;
+  }
+  case MODE_MGRS: {
+    int32_t prec = imax(-1, imin(6, p) + 5);
+    drdc_status_t st;
+
+    if (pos->geographic && !pos->rezoned) {
+      /* the library's own MGRS of a geographic point: its digits come
+       * from 2^-36 m, not from the Q47.16 metres (latitude -0 is the
+       * equator, band N; GeoConvert writes the southern band's
+       * 9 999 999 m) */
+      st = drdc_geo_mgrs_encode(pos->lat.nas, pos->lon_calc, prec, out, size);
+    } else {
+      if (!pos->u_exact) {
+        prec = imin(prec, MGRS_DIGITS_FROM_METRES_MAX);
+      }
+      st = drdc_geo_mgrs_from_utm(u, prec, out, size);
+    }
+    return (st == DRDC_OK) ? NULL : status_reason(st);
+  }
+  default: {
+    int prec = imax(-5, imin(8, p));
+    bool west = (u->zone != DRDC_GEO_ZONE_UPS)
+                    ? (u->easting < (INT64_C(500000) * Q16_PER_M))
+                    : (pos->lon.nas < 0);
+    geo_text_angle_t conv;
+
+    /* GeoConvert's double convergence is a signed zero on the central
+     * meridian and the equator: negative when exactly one of latitude and
+     * longitude offset is negative */
+    conv.nas = pos->conv;
+    conv.negative = (pos->conv < 0) || (pos->lat.negative != west);
+    conv.exact = false;
+    conv.hemisphere = GEO_TEXT_NONE;
+    put_degrees(a, sizeof a, &conv, prec + 5);
+    geo_text_put_fixed(b, sizeof b, pos->k, Q58_ONE, prec + 7, false);
+    break;
+  }
+  }
+  snprintf(out, size, "%.60s %.60s", a, b);
+  return NULL;
+}
+
+/* One line -> its output text; returns false for an ERROR line. */
+static bool convert_line(char *line, const struct options *o, char *out,
+                         size_t size)
+{
+  char *w[4];
+  int n = split(line, w, 3);
+  struct position pos;
+  const char *why;
+
+  memset(&pos, 0, sizeof pos);
+  if (n == 1) {
+    why = read_mgrs(w[0], o, &pos);
+  } else if (n == 2) {
+    why = read_geographic(w[0], w[1], o, &pos);
+  } else if (n == 3) {
+    why = read_utm(w, o, &pos);
+  } else {
+    why = "a position has 1, 2 or 3 words";
+  }
+  if (why == NULL) {
+    why = output_zone(o, &pos);
+  }
+  if (why == NULL) {
+    why = write_output(o, &pos, out, size);
+  }
+  if (why != NULL) {
+    snprintf(out, size, "ERROR: %s", why);
     return false;
   }
-  if (mode == MODE_GEO) {
-    print_fixed(lat, NAS_PER_DEG, prec + 5);
-    putchar(' ');
-    print_fixed(lon, NAS_PER_DEG, prec + 5);
-  } else if (mode == MODE_UTM) {
-    /* UTM input comes back in its own zone (as GeoConvert keeps it) */
-    if (u.zone == DRDC_GEO_ZONE_UPS) {
-      printf("%c ", u.north ? 'n' : 's');
-    } else {
-      printf("%02d%c ", (int)u.zone, u.north ? 'n' : 's');
-    }
-    print_fixed(u.easting, Q16_PER_M, prec);
-    putchar(' ');
-    print_fixed(u.northing, Q16_PER_M, prec);
-  } else if (mode == MODE_MGRS) {
-    char text[DRDC_GEO_MGRS_SIZE];
-    int32_t mp = ((prec + 5) > DRDC_GEO_MGRS_PREC_MAX) ? DRDC_GEO_MGRS_PREC_MAX
-                                                       : (prec + 5);
-
-    if (grid_input) {
-      st = drdc_geo_mgrs_from_utm(&u, (mp < -1) ? -1 : mp, text, sizeof text);
-    } else {
-      st = drdc_geo_mgrs_encode(lat, lon, (mp < -1) ? -1 : mp, text,
-                                sizeof text);
-    }
-    if (st != DRDC_OK) {
-      printf("ERROR: %s\n", status_reason(st));
-      return false;
-    }
-    fputs(text, stdout);
-  } else {
-    /* GeoConvert's double convergence is a signed zero on the central
-     * meridian and the equator: negative when exactly one of latitude
-     * and longitude offset is negative */
-    print_fixed_signed(conv, NAS_PER_DEG, prec + 5, (lat < 0) != west);
-    putchar(' ');
-    print_fixed(k, Q58_ONE, prec + 7);
-  }
-  putchar('\n');
   return true;
+}
+
+/* -p's integer, as GeoConvert reads it. */
+static bool read_int(const char *s, int *out)
+{
+  char *end = NULL;
+  long v = strtol(s, &end, 10);
+
+  if ((*s == '\0') || (*end != '\0')) {
+    return false;
+  }
+  *out = (v < -100) ? -100 : ((v > 100) ? 100 : (int)v);
+  return true;
+}
+
+static int parse_options(int argc, char **argv, struct options *o)
+{
+  int i;
+
+  for (i = 1; i < argc; i++) {
+    const char *a = argv[i];
+    bool has_value = (i + 1) < argc;
+
+    if ((strcmp(a, "--help") == 0) || (strcmp(a, "-h") == 0)) {
+      fputs(usage, stdout);
+      return 0;
+    } else if (strcmp(a, "-g") == 0) {
+      o->mode = MODE_GEO;
+    } else if (strcmp(a, "-d") == 0) {
+      o->mode = MODE_DMS;
+      o->sep = '\0';
+    } else if (strcmp(a, "-:") == 0) {
+      o->mode = MODE_DMS;
+      o->sep = ':';
+    } else if (strcmp(a, "-u") == 0) {
+      o->mode = MODE_UTM;
+    } else if (strcmp(a, "-m") == 0) {
+      o->mode = MODE_MGRS;
+    } else if (strcmp(a, "-c") == 0) {
+      o->mode = MODE_CONV;
+    } else if (strcmp(a, "-n") == 0) {
+      o->corner = true;
+    } else if (strcmp(a, "-w") == 0) {
+      o->lon_first = !o->lon_first;
+    } else if (strcmp(a, "-l") == 0) {
+      o->long_names = true;
+    } else if (strcmp(a, "-a") == 0) {
+      o->long_names = false;
+    } else if (strcmp(a, "-s") == 0) {
+      o->zone = DRDC_GEO_ZONE_STANDARD;
+      o->set_hemisphere = false;
+    } else if (strcmp(a, "-t") == 0) {
+      o->zone = ZONE_UTM;
+      o->set_hemisphere = false;
+    } else if ((strcmp(a, "-z") == 0) && has_value) {
+      int z = 0;
+      bool north = true;
+
+      i++;
+      if (decode_zone(argv[i], &z, &north) == NULL) {
+        o->set_hemisphere = true;
+        o->north = north;
+      } else if (read_int(argv[i], &z) && (z >= 0) && (z <= 60)) {
+        o->set_hemisphere = false;
+      } else {
+        fprintf(stderr, "drdc geo: zone '%s' is not 0..60 or zone+hemisphere\n",
+                argv[i]);
+        return 2;
+      }
+      o->zone = z;
+    } else if ((strcmp(a, "-p") == 0) && has_value) {
+      i++;
+      if (!read_int(argv[i], &o->prec)) {
+        fprintf(stderr, "drdc geo: -p needs an integer\n");
+        return 2;
+      }
+    } else {
+      fprintf(stderr, "drdc geo: unknown option '%s'\n%s", a, usage);
+      return 2;
+    }
+  }
+  return -1;
 }
 
 int drdc_cmd_geo(int argc, char **argv)
 {
-  enum mode mode = MODE_GEO;
-  int prec = 0;
-  int i;
-  char line[512];
+  struct options o = {MODE_GEO, 0,     ZONE_MATCH, false, true,
+                      false,    false, false,      '\0'};
+  int status;
+  char *line = NULL;
+  size_t cap = 0;
+  size_t len = 0;
+  int got;
   int failed = 0;
 
-  for (i = 1; i < argc; i++) {
-    if (strcmp(argv[i], "--help") == 0) {
-      fputs(usage, stdout);
-      return 0;
-    } else if (strcmp(argv[i], "-g") == 0) {
-      mode = MODE_GEO;
-    } else if (strcmp(argv[i], "-u") == 0) {
-      mode = MODE_UTM;
-    } else if (strcmp(argv[i], "-m") == 0) {
-      mode = MODE_MGRS;
-    } else if (strcmp(argv[i], "-c") == 0) {
-      mode = MODE_CONV;
-    } else if ((strcmp(argv[i], "-p") == 0) && ((i + 1) < argc)) {
-      char *end = NULL;
-      long p = strtol(argv[i + 1], &end, 10);
-
-      if ((*argv[i + 1] == '\0') || (*end != '\0')) {
-        fprintf(stderr, "drdc geo: -p needs an integer\n");
-        return 2;
-      }
-      prec = (p < -6) ? -6 : ((p > 9) ? 9 : (int)p);
-      i++;
-    } else {
-      fprintf(stderr, "drdc geo: unknown option '%s'\n%s", argv[i], usage);
-      return 2;
-    }
+  status = parse_options(argc, argv, &o);
+  if (status >= 0) {
+    return status;
   }
-  while (fgets(line, (int)sizeof line, stdin) != NULL) {
-    size_t n = strcspn(line, "\r\n");
+  while ((got = drdc_tool_read_line(stdin, &line, &cap, &len)) !=
+         DRDC_TOOL_LINE_EOF) {
+    const char *problem;
 
-    line[n] = '\0';
-    if (!convert_line(line, mode, prec)) {
+    if (got == DRDC_TOOL_LINE_ERROR) {
+      fputs("drdc geo: cannot read standard input\n", stderr);
       failed = 1;
+      break;
+    }
+    problem = drdc_tool_line_problem(got, line, len);
+    if (problem != NULL) {
+      printf("ERROR: %s\n", problem);
+      failed = 1;
+    } else {
+      char out[160];
+
+      if (!convert_line(line, &o, out, sizeof out)) {
+        failed = 1;
+      }
+      printf("%s\n", out);
     }
     fflush(stdout);
   }
+  free(line);
   return failed;
 }

@@ -12,6 +12,7 @@
 #include <drdc/nmea.h>
 
 #include "commands.h"
+#include "lines.h"
 
 static const char usage[] =
     "usage: drdc nmea [--strict] [--raw]\n"
@@ -244,7 +245,8 @@ int drdc_cmd_nmea(int argc, char **argv)
   nmea_options_t o = {0u, 0};
   char *line = NULL;
   size_t cap = 0;
-  ssize_t len;
+  size_t len = 0;
+  int got;
   int failed = 0;
   int i;
 
@@ -262,16 +264,26 @@ int drdc_cmd_nmea(int argc, char **argv)
       return 2;
     }
   }
-  while ((len = getline(&line, &cap, stdin)) >= 0) {
+  while ((got = drdc_tool_read_line(stdin, &line, &cap, &len)) !=
+         DRDC_TOOL_LINE_EOF) {
     drdc_nmea_t n;
     drdc_status_t st;
 
-    /* the line end is the parser's to check (CR LF, LF or CR), but the
-     * line reader's LF is not part of the sentence text */
-    if ((len > 0) && (line[len - 1] == '\n')) {
-      len--;
+    if (got == DRDC_TOOL_LINE_ERROR) {
+      fputs("drdc nmea: cannot read standard input\n", stderr);
+      failed = 1;
+      break;
     }
-    st = drdc_nmea_parse_with(line, (size_t)len, o.flags, &n);
+    /* too long or a NUL inside: the tool's one wording for every
+     * command */
+    if (drdc_tool_line_problem(got, line, len) != NULL) {
+      printf("ERROR: %s\n", drdc_tool_line_problem(got, line, len));
+      failed = 1;
+      continue;
+    }
+    /* the reader took the line end off (LF or CR LF); any other byte
+     * inside the line is the parser's to judge */
+    st = drdc_nmea_parse_with(line, len, o.flags, &n);
     if (st != DRDC_OK) {
       printf("ERROR: %s (%s)\n", reason(st), drdc_status_name(st));
       failed = 1;

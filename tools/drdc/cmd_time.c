@@ -13,6 +13,7 @@
 #include <drdc/time_scales.h>
 
 #include "commands.h"
+#include "lines.h"
 
 enum scale { SCALE_UTC, SCALE_GPS, SCALE_UNIX, SCALE_RTEMS, SCALE_TAI };
 
@@ -260,7 +261,8 @@ int drdc_cmd_time(int argc, char **argv)
   long line_no = 0;
   char *line = NULL;
   size_t cap = 0;
-  ssize_t len;
+  size_t len = 0;
+  int got;
 
   for (i = 1; i < argc; i++) {
     if ((strcmp(argv[i], "--help") == 0) || (strcmp(argv[i], "-h") == 0)) {
@@ -296,20 +298,32 @@ int drdc_cmd_time(int argc, char **argv)
     return 2;
   }
 
-  while ((len = getline(&line, &cap, stdin)) >= 0) {
+  while ((got = drdc_tool_read_line(stdin, &line, &cap, &len)) !=
+         DRDC_TOOL_LINE_EOF) {
     char out[64];
     drdc_time_t utc;
     drdc_status_t st;
+    const char *problem;
 
+    if (got == DRDC_TOOL_LINE_ERROR) {
+      fputs("drdc time: cannot read standard input\n", stderr);
+      failed = 1;
+      break;
+    }
     line_no++;
-    while ((len > 0) && ((line[len - 1] == '\n') || (line[len - 1] == '\r'))) {
+    problem = drdc_tool_line_problem(got, line, len);
+    if (problem != NULL) {
+      printf("ERROR: %s\n", problem);
+      failed = 1;
+      continue;
+    }
+    /* blanks around a time are no part of it in any format: the UTC
+     * parser reads the bare ISO 8601 text, so they go here */
+    while ((len > 0u) &&
+           ((line[len - 1u] == ' ') || (line[len - 1u] == '\t'))) {
       line[--len] = '\0';
     }
-    if (strlen(line) != (size_t)len) {
-      st = DRDC_E_SYNTAX; /* a NUL inside the line */
-    } else {
-      st = read_time(from, line, &utc);
-    }
+    st = read_time(from, line, &utc);
     if (!drdc_status_is_error(st)) {
       drdc_status_t st2 = write_time(to, &utc, out, sizeof out);
 

@@ -15,6 +15,7 @@
 #include <drdc/units.h>
 
 #include "commands.h"
+#include "lines.h"
 
 static const char usage[] =
     "usage: drdc units [--list]\n"
@@ -191,7 +192,8 @@ int drdc_cmd_units(int argc, char **argv)
 {
   char *line = NULL;
   size_t cap = 0;
-  ssize_t len;
+  size_t len = 0;
+  int got;
   int failed = 0;
 
   if ((argc == 2) &&
@@ -207,14 +209,19 @@ int drdc_cmd_units(int argc, char **argv)
     fputs(usage, stderr);
     return 2;
   }
-  while ((len = getline(&line, &cap, stdin)) >= 0) {
+  while ((got = drdc_tool_read_line(stdin, &line, &cap, &len)) !=
+         DRDC_TOOL_LINE_EOF) {
     char out[160];
+    const char *problem;
 
-    while ((len > 0) && ((line[len - 1] == '\n') || (line[len - 1] == '\r'))) {
-      line[--len] = '\0';
+    if (got == DRDC_TOOL_LINE_ERROR) {
+      fputs("drdc units: cannot read standard input\n", stderr);
+      failed = 1;
+      break;
     }
-    if (strlen(line) != (size_t)len) {
-      snprintf(out, sizeof out, "ERROR: NUL character in the line");
+    problem = drdc_tool_line_problem(got, line, len);
+    if (problem != NULL) {
+      snprintf(out, sizeof out, "ERROR: %s", problem);
       failed = 1;
     } else if (convert_line(line, out, sizeof out) != 0) {
       failed = 1;

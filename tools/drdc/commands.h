@@ -19,7 +19,8 @@ int drdc_cmd_attitude(int argc, char **argv);
  *  converted, 1 a line failed, 2 usage error. */
 int drdc_cmd_units(int argc, char **argv);
 
-/** `drdc geo [-g|-u|-c] [-p PREC]`: GeoConvert-compatible conversion
+/** `drdc geo [-g|-d|-:|-u|-m|-c] [-z ZONE|-s|-t] [-n] [-w] [-p PREC]`:
+ *  GeoConvert-compatible conversion
  *  (tools/drdc/cmd_geo.c). argv[0] is "geo". Returns the exit status: 0
  *  all lines converted, 1 some line failed, 2 usage error. */
 int drdc_cmd_geo(int argc, char **argv);

@@ -1,0 +1,511 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @brief Angles and decimals of drdc geo, read and written exactly with
+ *        128-bit integers (no floating point between text and the
+ *        library's fixed-point values).
+ */
+#include <ctype.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "geo_text.h"
+
+__extension__ typedef unsigned __int128 u128;
+
+/* Fraction digits kept when reading; later ones only tell whether the
+ * value is exact and break a tie. */
+#define FRACTION_DIGITS_MAX 18
+/* Longest token read: GeoConvert has no limit, a coordinate needs far
+ * less. */
+#define TOKEN_MAX 256
+
+static u128 pow10_u128(int n)
+{
+  u128 p = 1;
+  int i;
+
+  for (i = 0; i < n; i++) {
+    p *= 10u;
+  }
+  return p;
+}
+
+/* num / den rounded to nearest, ties to even; `above` says the true
+ * numerator is a little more than num (digits that were dropped). */
+static u128 divide_round_even(u128 num, u128 den, bool above, bool *exact)
+{
+  u128 q = num / den;
+  u128 r = num % den;
+
+  *exact = (r == 0u) && !above;
+  if (((2u * r) > den) || (((2u * r) == den) && (above || ((q & 1u) != 0u)))) {
+    q++;
+  }
+  return q;
+}
+
+/* UTF-8 and Latin-1 spellings GeoConvert reads as d ' " + - or drops
+ * ('\0'), in its order (longest sequences first where they overlap). */
+static const struct {
+  const char *text;
+  char as;
+} aliases[] = {
+    {"\xc2\xb0", 'd'},
+    {"\xc2\xba", 'd'},
+    {"\xe2\x81\xb0", 'd'},
+    {"\xcb\x9a", 'd'},
+    {"\xe2\x88\x98", 'd'},
+    {"\xe2\x80\xb2", '\''},
+    {"\xe2\x80\xb5", '\''},
+    {"\xc2\xb4", '\''},
+    {"\xe2\x80\x98", '\''},
+    {"\xe2\x80\x99", '\''},
+    {"\xe2\x80\x9b", '\''},
+    {"\xca\xb9", '\''},
+    {"\xcb\x8a", '\''},
+    {"\xcb\x8b", '\''},
+    {"\xe2\x80\xb3", '"'},
+    {"\xe2\x80\xb6", '"'},
+    {"\xcb\x9d", '"'},
+    {"\xe2\x80\x9c", '"'},
+    {"\xe2\x80\x9d", '"'},
+    {"\xe2\x80\x9f", '"'},
+    {"\xca\xba", '"'},
+    {"\xe2\x9e\x95", '+'},
+    {"\xe2\x81\xa4", '+'},
+    {"\xe2\x80\x90", '-'},
+    {"\xe2\x80\x91", '-'},
+    {"\xe2\x80\x93", '-'},
+    {"\xe2\x80\x94", '-'},
+    {"\xe2\x88\x92", '-'},
+    {"\xe2\x9e\x96", '-'},
+    {"\xc2\xa0", '\0'},
+    {"\xe2\x80\x87", '\0'},
+    {"\xe2\x80\x89", '\0'},
+    {"\xe2\x80\x8a", '\0'},
+    {"\xe2\x80\x8b", '\0'},
+    {"\xe2\x80\xaf", '\0'},
+    {"\xe2\x81\xa3", '\0'},
+    {"\xb0", 'd'},
+    {"\xba", 'd'},
+    {"*", 'd'},
+    {"`", '\''},
+    {"\xb4", '\''},
+    {"\xa0", '\0'},
+    {"''", '"'},
+};
+
+/* Replace every occurrence of pat in s (NUL-terminated, edited in place:
+ * the replacement is never longer). */
+static void replace_all(char *s, const char *pat, char as)
+{
+  size_t n = strlen(pat);
+  char *p;
+
+  while ((p = strstr(s, pat)) != NULL) {
+    if (as != '\0') {
+      *p = as;
+      memmove(p + 1, p + n, strlen(p + n) + 1u);
+    } else {
+      memmove(p, p + n, strlen(p + n) + 1u);
+    }
+  }
+}
+
+static int hemisphere_of(char c)
+{
+  switch (toupper((unsigned char)c)) {
+  case 'S':
+    return -1 * GEO_TEXT_LATITUDE;
+  case 'N':
+    return GEO_TEXT_LATITUDE;
+  case 'W':
+    return -1 * GEO_TEXT_LONGITUDE;
+  case 'E':
+    return GEO_TEXT_LONGITUDE;
+  default:
+    return 0;
+  }
+}
+
+static bool is_sign(char c)
+{
+  return (c == '+') || (c == '-');
+}
+
+/* One piece of an angle (no interior sign), GeoConvert's InternalDecode:
+ * [hemisphere][sign]components[hemisphere]. */
+static const char *read_piece(const char *s, size_t beg, size_t end,
+                              geo_text_angle_t *out)
+{
+  int sign = 1;
+  int h;
+  int64_t whole[3] = {0, 0, 0};
+  int64_t current = 0;
+  u128 frac = 0;
+  int frac_digits = 0;
+  bool frac_above = false; /* nonzero digits beyond FRACTION_DIGITS_MAX */
+  int frac_piece = -1;     /* the component holding the fraction */
+  int npiece = 0;
+  int ncurrent = 0;
+  bool point = false;
+  int digcount = 0; /* 0: no point in this component; else 1 + decimals */
+  size_t p;
+  int64_t units[3] = {GEO_TEXT_NAS_PER_DEGREE, GEO_TEXT_NAS_PER_MINUTE,
+                      GEO_TEXT_NAS_PER_SECOND};
+  int64_t nas;
+  bool exact = true;
+
+  out->hemisphere = GEO_TEXT_NONE;
+  if ((end > beg) && ((h = hemisphere_of(s[beg])) != 0)) {
+    out->hemisphere = (enum geo_text_hemisphere)((h < 0) ? -h : h);
+    sign = (h < 0) ? -1 : 1;
+    beg++;
+  }
+  if ((end > beg) && ((h = hemisphere_of(s[end - 1u])) != 0)) {
+    if (out->hemisphere != GEO_TEXT_NONE) {
+      return "repeated or contradictory hemisphere letters";
+    }
+    out->hemisphere = (enum geo_text_hemisphere)((h < 0) ? -h : h);
+    sign = (h < 0) ? -1 : 1;
+    end--;
+  }
+  if ((end > beg) && is_sign(s[beg])) {
+    sign *= (s[beg] == '-') ? -1 : 1;
+    beg++;
+  }
+  if (end == beg) {
+    return "empty or incomplete angle";
+  }
+  for (p = beg; p < end; p++) {
+    char x = s[p];
+    int k;
+
+    if (isdigit((unsigned char)x)) {
+      ncurrent++;
+      if (digcount > 0) {
+        digcount++;
+        if (frac_digits < FRACTION_DIGITS_MAX) {
+          frac = (frac * 10u) + (u128)(unsigned)(x - '0');
+          frac_digits++;
+        } else if (x != '0') {
+          frac_above = true;
+        }
+      } else {
+        if (current > GEO_TEXT_DEGREES_MAX) {
+          return "angle too large";
+        }
+        current = (current * 10) + (x - '0');
+      }
+      continue;
+    }
+    if (x == '.') {
+      if (point) {
+        return "several decimal points";
+      }
+      point = true;
+      digcount = 1;
+      continue;
+    }
+    switch (toupper((unsigned char)x)) {
+    case 'D':
+      k = 0;
+      break;
+    case '\'':
+      k = 1;
+      break;
+    case '"':
+      k = 2;
+      break;
+    case ':':
+      if ((p + 1u) == end) {
+        return "':' at the end of an angle";
+      }
+      k = npiece;
+      break;
+    default:
+      return is_sign(x) ? "sign inside an angle" : "illegal character";
+    }
+    if (k < npiece) {
+      return "degrees, minutes and seconds out of order";
+    }
+    if ((k > 2) || (ncurrent == 0)) {
+      return "missing number in an angle";
+    }
+    whole[k] = current;
+    if (digcount > 0) {
+      frac_piece = k;
+    }
+    if ((p + 1u) < end) {
+      npiece = k + 1;
+      current = 0;
+      ncurrent = 0;
+      digcount = 0;
+    }
+  }
+  if (strchr("Dd'\":", s[end - 1u]) == NULL) {
+    if (npiece >= 3) {
+      return "extra text after the seconds";
+    }
+    if (ncurrent == 0) {
+      return "missing number in an angle";
+    }
+    whole[npiece] = current;
+    if (digcount > 0) {
+      frac_piece = npiece;
+    }
+  }
+  if (point && (digcount == 0)) {
+    return "decimal point before the last component";
+  }
+  if ((whole[1] >= 60) || (whole[2] >= 60)) {
+    return "minutes or seconds not in [0, 60)";
+  }
+  if (whole[0] > GEO_TEXT_DEGREES_MAX) {
+    return "angle too large";
+  }
+  nas = (whole[0] * units[0]) + (whole[1] * units[1]) + (whole[2] * units[2]);
+  if (frac_piece >= 0) {
+    nas +=
+        (int64_t)divide_round_even(frac * (u128)(uint64_t)units[frac_piece],
+                                   pow10_u128(frac_digits), frac_above, &exact);
+  }
+  out->nas = sign * nas;
+  out->negative = (sign < 0);
+  out->exact = exact;
+  return NULL;
+}
+
+const char *geo_text_read_angle(const char *text, geo_text_angle_t *out)
+{
+  char s[TOKEN_MAX + 1];
+  size_t i;
+  size_t beg = 0;
+  size_t end;
+  size_t p;
+  size_t pb;
+  int pieces = 0;
+  geo_text_angle_t sum = {0, true, true, GEO_TEXT_NONE};
+
+  if (strlen(text) > TOKEN_MAX) {
+    return "angle text too long";
+  }
+  strcpy(s, text);
+  for (i = 0; i < (sizeof aliases / sizeof aliases[0]); i++) {
+    replace_all(s, aliases[i].text, aliases[i].as);
+  }
+  end = strlen(s);
+  while ((beg < end) && isspace((unsigned char)s[beg])) {
+    beg++;
+  }
+  while ((beg < end) && isspace((unsigned char)s[end - 1u])) {
+    end--;
+  }
+  for (p = beg; p < end; p = pb, pieces++) {
+    size_t pa = p;
+    geo_text_angle_t piece;
+    const char *why;
+
+    if ((pieces == 0) && (hemisphere_of(s[pa]) != 0)) {
+      pa++;
+    }
+    if ((pieces > 0) || ((pa < end) && is_sign(s[pa]))) {
+      pa++;
+    }
+    for (pb = pa; (pb < end) && !is_sign(s[pb]); pb++) {
+    }
+    why = read_piece(s, p, pb, &piece);
+    if (why != NULL) {
+      return why;
+    }
+    /* each piece and the sum stay within GEO_TEXT_DEGREES_MAX: no
+     * overflow here nor when the sum is printed */
+    sum.nas += piece.nas;
+    if ((sum.nas > (GEO_TEXT_DEGREES_MAX * GEO_TEXT_NAS_PER_DEGREE)) ||
+        (sum.nas < -(GEO_TEXT_DEGREES_MAX * GEO_TEXT_NAS_PER_DEGREE))) {
+      return "angle too large";
+    }
+    /* GeoConvert sums from -0.0: the sum is a negative zero only when
+     * every piece is one */
+    sum.negative = sum.negative && piece.negative;
+    sum.exact = sum.exact && piece.exact;
+    if (sum.hemisphere == GEO_TEXT_NONE) {
+      sum.hemisphere = piece.hemisphere;
+    } else if ((piece.hemisphere != GEO_TEXT_NONE) &&
+               (piece.hemisphere != sum.hemisphere)) {
+      return "incompatible hemisphere letters";
+    }
+  }
+  if (pieces == 0) {
+    return "empty or incomplete angle";
+  }
+  if (sum.nas != 0) {
+    sum.negative = (sum.nas < 0);
+  }
+  *out = sum;
+  return NULL;
+}
+
+bool geo_text_read_metres(const char *s, int64_t *q16, bool *exact)
+{
+  bool neg = false;
+  int64_t ip = 0;
+  int ipd = 0;
+  u128 fp = 0;
+  int fd = 0;
+  bool above = false;
+  bool digits = false;
+  u128 v;
+
+  if ((*s == '+') || (*s == '-')) {
+    neg = (*s == '-');
+    s++;
+  }
+  while (isdigit((unsigned char)*s)) {
+    if (++ipd > 12) {
+      return false;
+    }
+    ip = (ip * 10) + (*s - '0');
+    s++;
+    digits = true;
+  }
+  if (*s == '.') {
+    s++;
+    while (isdigit((unsigned char)*s)) {
+      if (fd < FRACTION_DIGITS_MAX) {
+        fp = (fp * 10u) + (u128)(unsigned)(*s - '0');
+        fd++;
+      } else if (*s != '0') {
+        above = true;
+      }
+      s++;
+      digits = true;
+    }
+  }
+  if ((*s != '\0') || !digits) {
+    return false;
+  }
+  v = divide_round_even(fp * 65536u, pow10_u128(fd), above, exact);
+  v += (u128)ip * 65536u;
+  *q16 = neg ? -(int64_t)v : (int64_t)v;
+  return true;
+}
+
+/* A string built piece by piece, cut (never overrun) at its size. */
+struct text {
+  char *out;
+  size_t size;
+  size_t n;
+};
+
+static void put_char(struct text *t, char c)
+{
+  if ((t->n + 1u) < t->size) {
+    t->out[t->n++] = c;
+    t->out[t->n] = '\0';
+  }
+}
+
+static void put_string(struct text *t, const char *s)
+{
+  while (*s != '\0') {
+    put_char(t, *s++);
+  }
+}
+
+/* v in decimal with at least `digits` digits (zero-filled). */
+static void put_uint(struct text *t, uint64_t v, int digits)
+{
+  char d[24];
+  int n = 0;
+
+  do {
+    d[n++] = (char)('0' + (int)(v % 10u));
+    v /= 10u;
+  } while ((v != 0u) || (n < digits));
+  while (n > 0) {
+    put_char(t, d[--n]);
+  }
+}
+
+static void start(struct text *t, char *out, size_t size)
+{
+  t->out = out;
+  t->size = size;
+  t->n = 0;
+  if (size > 0u) {
+    out[0] = '\0';
+  }
+}
+
+/* |value| * 10^decimals / unit rounded half to even. */
+static uint64_t scaled_magnitude(int64_t value, int64_t unit, int decimals)
+{
+  u128 mag = (value < 0) ? (u128)(-(value + 1)) + 1u : (u128)value;
+  bool exact;
+
+  return (uint64_t)divide_round_even(mag * pow10_u128(decimals), (u128)unit,
+                                     false, &exact);
+}
+
+void geo_text_put_fixed(char *out, size_t size, int64_t value, int64_t unit,
+                        int decimals, bool negative)
+{
+  uint64_t q = scaled_magnitude(value, unit, decimals);
+  uint64_t p = (uint64_t)pow10_u128(decimals);
+  struct text t;
+
+  start(&t, out, size);
+  if ((value < 0) || ((value == 0) && negative)) {
+    put_char(&t, '-');
+  }
+  put_uint(&t, q / p, 1);
+  if (decimals > 0) {
+    put_char(&t, '.');
+    put_uint(&t, q % p, decimals);
+  }
+}
+
+void geo_text_put_dms(char *out, size_t size, int64_t nas, bool negative,
+                      int prec, enum geo_text_hemisphere which, char sep)
+{
+  /* the last component and its decimals, as DMS::Encode picks them */
+  int last = (prec < 2) ? 0 : ((prec < 4) ? 1 : 2);
+  int decimals = prec - (2 * last);
+  const int64_t units[3] = {GEO_TEXT_NAS_PER_DEGREE, GEO_TEXT_NAS_PER_MINUTE,
+                            GEO_TEXT_NAS_PER_SECOND};
+  uint64_t total = scaled_magnitude(nas, units[last], decimals);
+  uint64_t p = (uint64_t)pow10_u128(decimals);
+  uint64_t whole = total / p;
+  int width = (int)which + 1; /* degree digits: 2 latitude, 3 longitude */
+  bool south_or_west = (nas < 0) || ((nas == 0) && negative);
+  struct text t;
+
+  start(&t, out, size);
+  if (last == 0) {
+    put_uint(&t, whole, width);
+  } else if (last == 1) {
+    put_uint(&t, whole / 60u, width);
+    put_char(&t, (sep != '\0') ? sep : 'd');
+    put_uint(&t, whole % 60u, 2);
+  } else {
+    put_uint(&t, whole / 3600u, width);
+    put_char(&t, (sep != '\0') ? sep : 'd');
+    put_uint(&t, (whole / 60u) % 60u, 2);
+    put_char(&t, (sep != '\0') ? sep : '\'');
+    put_uint(&t, whole % 60u, 2);
+  }
+  if (decimals > 0) {
+    put_char(&t, '.');
+    put_uint(&t, total % p, decimals);
+  }
+  if ((sep == '\0') && (last > 0)) {
+    put_string(&t, (last == 1) ? "'" : "\"");
+  }
+  if (which == GEO_TEXT_LATITUDE) {
+    put_char(&t, south_or_west ? 'S' : 'N');
+  } else {
+    put_char(&t, south_or_west ? 'W' : 'E');
+  }
+}

@@ -1,0 +1,80 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
+/**
+ * @file
+ * @brief Text of drdc geo: angles in decimal degrees or degrees, minutes
+ *        and seconds read to nas exactly, and fixed-point values written
+ *        as decimals rounded half to even from their exact value.
+ */
+#ifndef DRDC_TOOL_GEO_TEXT_H
+#define DRDC_TOOL_GEO_TEXT_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+/** nas per degree, minute and second of arc. */
+#define GEO_TEXT_NAS_PER_DEGREE INT64_C(3600000000000)
+#define GEO_TEXT_NAS_PER_MINUTE INT64_C(60000000000)
+#define GEO_TEXT_NAS_PER_SECOND INT64_C(1000000000)
+/** Largest |angle| read, degrees: its decimals at -p 9 fit 64 bits. */
+#define GEO_TEXT_DEGREES_MAX 100000
+
+/** Which coordinate a hemisphere letter made of an angle. */
+enum geo_text_hemisphere {
+  GEO_TEXT_NONE = 0,
+  GEO_TEXT_LATITUDE = 1,
+  GEO_TEXT_LONGITUDE = 2
+};
+
+/** An angle read from text. */
+typedef struct geo_text_angle {
+  int64_t nas;   /**< the angle, nas, rounded to nearest (ties to even) */
+  bool negative; /**< the text's value is below zero or a negative zero
+                      ("-0", "0S"), as the sign bit of GeoConvert's double */
+  bool exact;    /**< nas is the text's value exactly, no rounding */
+  enum geo_text_hemisphere hemisphere; /**< from N, S, E or W, or NONE */
+} geo_text_angle_t;
+
+/**
+ * Read one angle as GeoConvert's DMS::Decode does: decimal degrees, or
+ * components with d ' " (and the UTF-8 degree, prime and double prime
+ * signs GeoConvert knows) or ':' separators, only the last with a
+ * fraction, minutes and seconds below 60; an optional sign; a hemisphere
+ * letter N S E W before or after; interior signs add pieces
+ * ("39N+0:0:15"). No exponent, nan or inf.
+ *
+ * @return NULL and *out written, or the reason the text is not an angle.
+ */
+const char *geo_text_read_angle(const char *text, geo_text_angle_t *out);
+
+/**
+ * Read a decimal number of metres, [+-]digits[.digits] (at most 12
+ * integer digits), to Q47.16, rounded to nearest (ties to even).
+ *
+ * @param[out] exact true when no rounding happened.
+ * @return true when the text is such a number.
+ */
+bool geo_text_read_metres(const char *text, int64_t *q16, bool *exact);
+
+/**
+ * Write value / unit with `decimals` (>= 0) decimals, rounded to nearest
+ * with ties to even from the exact quotient, as printf("%.*f") rounds the
+ * exact value of a double. A '-' leads when value < 0, or when value is
+ * 0 and `negative` is set (printf's "-0.00"). unit > 0; |value| *
+ * 10^decimals / unit < 2^64.
+ */
+void geo_text_put_fixed(char *out, size_t size, int64_t value, int64_t unit,
+                        int decimals, bool negative);
+
+/**
+ * Write an angle as GeoConvert's DMS::Encode with `prec` digits (0..15):
+ * degrees with prec decimals (prec < 2), degrees and minutes with
+ * prec - 2 decimals (prec < 4), or degrees, minutes and seconds with
+ * prec - 4 decimals, rounded half to even from the exact nas value; the
+ * degrees zero-filled to 2 (latitude) or 3 (longitude) digits, 'd' ' "
+ * or `sep` between, and N S E W for the sign.
+ */
+void geo_text_put_dms(char *out, size_t size, int64_t nas, bool negative,
+                      int prec, enum geo_text_hemisphere which, char sep);
+
+#endif /* DRDC_TOOL_GEO_TEXT_H */
