@@ -23,6 +23,7 @@
  * is the rounding of the arithmetic, a few LSB on xi and eta (15 um at
  * most on the ground: see docs/accuracy.md).
  */
+#include <drdc/compiler.h>
 #include <drdc/geo.h>
 
 #include "geo_projection.h"
@@ -50,28 +51,53 @@ typedef struct tm_zeta {
  *    d zeta / d zeta' = 1 + sum d_j cos(2 j zeta) = 1 + cos(2 zeta) b_1 -
  *    b_2 = p - i q, returned as p + i q.
  * |A| <= 2 cosh 0.68 < 2.5 and |b_j| < 2e-3: every product stays far
- * inside Q5.58, and the roundings add up to a few LSB. */
+ * inside Q5.58, and the roundings add up to a few LSB.
+ *
+ * The terms b_3 .. b_6 are small: with the largest coefficients (alpha's
+ * derivative, 2 j alpha_j raw 52, 16 462, 5.6e6 and 2.07e9 for j = 6 ..
+ * 3; beta's and the sums' are smaller), |b_6| <= 52, |b_5| <= 16 462 +
+ * 2.5 52 < 16 600, |b_4| <= 5.61e6 + 2.5 16 600 + 52 < 5.66e6 and |b_3|
+ * <= 2.071e9 + 2.5 5.66e6 + 16 600 < 2.09e9, each part below 2^32 raw:
+ * their products with A are short products (drdc__geo_mul_short()), the
+ * same bits as the full ones: the steps to b_5 .. b_2 take them, the
+ * step to b_1 full ones (a loop per kind of product: one loop choosing
+ * between them deepens krueger()'s frame past the 512-byte stack limit
+ * of the grid poses). b_7 = b_8 = 0: the recurrence starts at b_6 = c_6
+ * (the full recurrence's products by 0 are 0). */
 static tm_complex_t krueger(const int64_t *coef, bool deriv, const tm_zeta_t *z)
 {
   tm_complex_t a; /* cos 2 zeta = cos 2xi cosh 2eta - i sin 2xi sinh 2eta */
-  tm_complex_t b1 = {0, 0};
-  tm_complex_t b2 = {0, 0};
+  tm_complex_t b0;
+  tm_complex_t b1;
+  tm_complex_t b2;
   tm_complex_t r;
   unsigned j;
 
   a.re = drdc__geo_mul(z->c2xi, z->ch2eta);
   a.im = -drdc__geo_mul(z->s2xi, z->sh2eta);
-  for (j = GEO_KRUEGER_TERMS; j > 0u; j--) {
+  /* b_7 = 0, b_6 = c_6 */
+  b2.re = 0;
+  b2.im = 0;
+  b1.re = deriv ? (coef[5] * 12) : coef[5];
+  b1.im = 0;
+  for (j = GEO_KRUEGER_TERMS - 1u; j > 1u; j--) {
     int64_t c = deriv ? (coef[j - 1u] * (2 * (int64_t)j)) : coef[j - 1u];
-    tm_complex_t b0;
 
-    b0.re = ((c - b2.re) + drdc__geo_mul(2 * a.re, b1.re)) -
-            drdc__geo_mul(2 * a.im, b1.im);
-    b0.im = (drdc__geo_mul(2 * a.re, b1.im) - b2.im) +
-            drdc__geo_mul(2 * a.im, b1.re);
+    b0.re = ((c - b2.re) + drdc__geo_mul_short(2 * a.re, b1.re)) -
+            drdc__geo_mul_short(2 * a.im, b1.im);
+    b0.im = (drdc__geo_mul_short(2 * a.re, b1.im) - b2.im) +
+            drdc__geo_mul_short(2 * a.im, b1.re);
     b2 = b1;
     b1 = b0;
   }
+  /* b_1, from the full b_2 */
+  b0.re = (((deriv ? (coef[0] * 2) : coef[0]) - b2.re) +
+           drdc__geo_mul(2 * a.re, b1.re)) -
+          drdc__geo_mul(2 * a.im, b1.im);
+  b0.im =
+      (drdc__geo_mul(2 * a.re, b1.im) - b2.im) + drdc__geo_mul(2 * a.im, b1.re);
+  b2 = b1;
+  b1 = b0;
   if (deriv) {
     r.re =
         (GEO_ONE + (drdc__geo_mul(a.re, b1.re) - drdc__geo_mul(a.im, b1.im))) -
@@ -122,6 +148,19 @@ static void rotate_small(int64_t s, int64_t c, int64_t d, int64_t *s_out,
 
   *s_out = drdc__geo_mul(s, cd) + drdc__geo_mul(c, sd);
   *c_out = drdc__geo_mul(c, cd) - drdc__geo_mul(s, sd);
+}
+
+/* atan2(y, x) for a direction near the positive x axis: where |y| <= x
+ * / 4 (the test comes before the division, which then cannot overflow)
+ * the atan series of the quotient, else the general atan2. Always
+ * inline: a frame of its own between the projections and the general
+ * atan2 passes the 512-byte stack limit of the grid poses. */
+static inline DRDC_ALWAYS_INLINE int64_t atan2_near_axis(int64_t y, int64_t x)
+{
+  if ((x > 0) && (y <= (x / 4)) && (y >= -(x / 4))) {
+    return drdc__geo_atan_small(geo_div(y, x));
+  }
+  return geo_atan2(y, x);
 }
 
 /* The forward projection on the conformal sphere: what the series, the
@@ -195,10 +234,7 @@ static int64_t tm_convergence(const tm_sphere_t *s, const tm_complex_t *pq)
   int64_t y = drdc__geo_mul(s->clam, pq->im) + drdc__geo_mul(t, pq->re);
   int64_t x = drdc__geo_mul(s->clam, pq->re) - drdc__geo_mul(t, pq->im);
 
-  if ((x > 0) && (y <= (x / 4)) && (y >= -(x / 4))) {
-    return drdc__geo_atan_small(geo_div(y, x));
-  }
-  return geo_atan2(y, x);
+  return atan2_near_axis(y, x);
 }
 
 /* Point scale: k0 (A/a) sqrt(1 - e^2 sin^2 phi) (cos chi / cos phi) cosh
