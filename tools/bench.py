@@ -73,8 +73,9 @@ BASELINE_NOTES = {
                    "the convergence, one root for the scale; Krueger's beta "
                    "series and its derivative by one complex Clenshaw "
                    "recurrence, phi by the 7-term series and a small "
-                   "rotation. The library instead runs a forward projection "
-                   "for the convergence and scale.",
+                   "rotation. The library takes the same series with one "
+                   "sin/cos (of xi), sin and cos chi by quotients, and the "
+                   "atan series near the axis (core/geo/tm.c).",
     "ecef_forward": "sin and cos of latitude and longitude and one square "
                     "root for the prime vertical radius.",
     "ecef_reverse": "Bowring's iteration with the library's two steps: one "

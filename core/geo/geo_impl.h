@@ -46,6 +46,11 @@
  *  innermost loops of the series inline it. */
 int64_t drdc__geo_mul(int64_t a, int64_t b);
 
+/** drdc__geo_mul(a, b) when the raw |b| is below 2^32, bit for bit, from
+ *  two 32 x 32 -> 64 products instead of four:
+ *  drdc_fx_mul_q5_58_short(), one copy out of line. */
+int64_t drdc__geo_mul_short(int64_t a, int64_t b);
+
 /** a 2^58 / b, rounded; b != 0 and the quotient within int64_t (the
  *  callers keep it so): drdc_fx_div_q5_58_unchecked(). */
 static inline int64_t geo_div(int64_t a, int64_t b)

@@ -15,6 +15,11 @@ int64_t drdc__geo_mul(int64_t a, int64_t b)
   return drdc_fx_mul_q5_58_unchecked(a, b);
 }
 
+int64_t drdc__geo_mul_short(int64_t a, int64_t b)
+{
+  return drdc_fx_mul_q5_58_short(a, b);
+}
+
 int64_t drdc__geo_muldiv(int64_t a, int64_t b, int64_t c)
 {
   int64_t r = 0;

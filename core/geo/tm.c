@@ -23,6 +23,8 @@
  * is the rounding of the arithmetic, a few LSB on xi and eta (15 um at
  * most on the ground: see docs/accuracy.md).
  */
+#include <drdc/compiler.h>
+#include <drdc/fixed_sqrt.h>
 #include <drdc/geo.h>
 
 #include "geo_projection.h"
@@ -50,28 +52,53 @@ typedef struct tm_zeta {
  *    d zeta / d zeta' = 1 + sum d_j cos(2 j zeta) = 1 + cos(2 zeta) b_1 -
  *    b_2 = p - i q, returned as p + i q.
  * |A| <= 2 cosh 0.68 < 2.5 and |b_j| < 2e-3: every product stays far
- * inside Q5.58, and the roundings add up to a few LSB. */
+ * inside Q5.58, and the roundings add up to a few LSB.
+ *
+ * The terms b_3 .. b_6 are small: with the largest coefficients (alpha's
+ * derivative, 2 j alpha_j raw 52, 16 462, 5.6e6 and 2.07e9 for j = 6 ..
+ * 3; beta's and the sums' are smaller), |b_6| <= 52, |b_5| <= 16 462 +
+ * 2.5 52 < 16 600, |b_4| <= 5.61e6 + 2.5 16 600 + 52 < 5.66e6 and |b_3|
+ * <= 2.071e9 + 2.5 5.66e6 + 16 600 < 2.09e9, each part below 2^32 raw:
+ * their products with A are short products (drdc__geo_mul_short()), the
+ * same bits as the full ones: the steps to b_5 .. b_2 take them, the
+ * step to b_1 full ones (a loop per kind of product: one loop choosing
+ * between them deepens krueger()'s frame past the 512-byte stack limit
+ * of the grid poses). b_7 = b_8 = 0: the recurrence starts at b_6 = c_6
+ * (the full recurrence's products by 0 are 0). */
 static tm_complex_t krueger(const int64_t *coef, bool deriv, const tm_zeta_t *z)
 {
   tm_complex_t a; /* cos 2 zeta = cos 2xi cosh 2eta - i sin 2xi sinh 2eta */
-  tm_complex_t b1 = {0, 0};
-  tm_complex_t b2 = {0, 0};
+  tm_complex_t b0;
+  tm_complex_t b1;
+  tm_complex_t b2;
   tm_complex_t r;
   unsigned j;
 
   a.re = drdc__geo_mul(z->c2xi, z->ch2eta);
   a.im = -drdc__geo_mul(z->s2xi, z->sh2eta);
-  for (j = GEO_KRUEGER_TERMS; j > 0u; j--) {
+  /* b_7 = 0, b_6 = c_6 */
+  b2.re = 0;
+  b2.im = 0;
+  b1.re = deriv ? (coef[5] * 12) : coef[5];
+  b1.im = 0;
+  for (j = GEO_KRUEGER_TERMS - 1u; j > 1u; j--) {
     int64_t c = deriv ? (coef[j - 1u] * (2 * (int64_t)j)) : coef[j - 1u];
-    tm_complex_t b0;
 
-    b0.re = ((c - b2.re) + drdc__geo_mul(2 * a.re, b1.re)) -
-            drdc__geo_mul(2 * a.im, b1.im);
-    b0.im = (drdc__geo_mul(2 * a.re, b1.im) - b2.im) +
-            drdc__geo_mul(2 * a.im, b1.re);
+    b0.re = ((c - b2.re) + drdc__geo_mul_short(2 * a.re, b1.re)) -
+            drdc__geo_mul_short(2 * a.im, b1.im);
+    b0.im = (drdc__geo_mul_short(2 * a.re, b1.im) - b2.im) +
+            drdc__geo_mul_short(2 * a.im, b1.re);
     b2 = b1;
     b1 = b0;
   }
+  /* b_1, from the full b_2 */
+  b0.re = (((deriv ? (coef[0] * 2) : coef[0]) - b2.re) +
+           drdc__geo_mul(2 * a.re, b1.re)) -
+          drdc__geo_mul(2 * a.im, b1.im);
+  b0.im =
+      (drdc__geo_mul(2 * a.re, b1.im) - b2.im) + drdc__geo_mul(2 * a.im, b1.re);
+  b2 = b1;
+  b1 = b0;
   if (deriv) {
     r.re =
         (GEO_ONE + (drdc__geo_mul(a.re, b1.re) - drdc__geo_mul(a.im, b1.im))) -
@@ -122,6 +149,19 @@ static void rotate_small(int64_t s, int64_t c, int64_t d, int64_t *s_out,
 
   *s_out = drdc__geo_mul(s, cd) + drdc__geo_mul(c, sd);
   *c_out = drdc__geo_mul(c, cd) - drdc__geo_mul(s, sd);
+}
+
+/* atan2(y, x) for a direction near the positive x axis: where |y| <= x
+ * / 4 (the test comes before the division, which then cannot overflow)
+ * the atan series of the quotient, else the general atan2. Always
+ * inline: a frame of its own between the projections and the general
+ * atan2 passes the 512-byte stack limit of the grid poses. */
+static inline DRDC_ALWAYS_INLINE int64_t atan2_near_axis(int64_t y, int64_t x)
+{
+  if ((x > 0) && (y <= (x / 4)) && (y >= -(x / 4))) {
+    return drdc__geo_atan_small(geo_div(y, x));
+  }
+  return geo_atan2(y, x);
 }
 
 /* The forward projection on the conformal sphere: what the series, the
@@ -195,10 +235,7 @@ static int64_t tm_convergence(const tm_sphere_t *s, const tm_complex_t *pq)
   int64_t y = drdc__geo_mul(s->clam, pq->im) + drdc__geo_mul(t, pq->re);
   int64_t x = drdc__geo_mul(s->clam, pq->re) - drdc__geo_mul(t, pq->im);
 
-  if ((x > 0) && (y <= (x / 4)) && (y >= -(x / 4))) {
-    return drdc__geo_atan_small(geo_div(y, x));
-  }
-  return geo_atan2(y, x);
+  return atan2_near_axis(y, x);
 }
 
 /* Point scale: k0 (A/a) sqrt(1 - e^2 sin^2 phi) (cos chi / cos phi) cosh
@@ -330,8 +367,8 @@ static void tm_reverse_conv_scale(const tm_reverse_point_t *r,
   int64_t root;
   int64_t ratio;
 
-  cs->gamma = geo_atan2(drdc__geo_mul(a, dim) + drdc__geo_mul(b, dre),
-                        drdc__geo_mul(a, dre) - drdc__geo_mul(b, dim));
+  cs->gamma = atan2_near_axis(drdc__geo_mul(a, dim) + drdc__geo_mul(b, dre),
+                              drdc__geo_mul(a, dre) - drdc__geo_mul(b, dim));
   rotate_small(r->schi, r->cchi, r->dphi, &sphi, &cphi);
   kfac = GEO_ONE - drdc__geo_mul(GEO_E2, drdc__geo_mul(sphi, sphi));
   u = geo_div(kfac, drdc__geo_mul(dre, dre) + drdc__geo_mul(dim, dim)) -
@@ -346,43 +383,122 @@ static void tm_reverse_conv_scale(const tm_reverse_point_t *r,
                         drdc__geo_mul(drdc__geo_mul(root, ratio), r->ch_eta));
 }
 
+/* sqrt(x) for 0 <= x < 4 (Q5.58): x' = x 4^k in [1, 4), the seed
+ * 2^16 / sqrt(x') from the rounded integer root of x' 2^30 (16 bits,
+ * drdc_fx_sqrt_u32()) and a 32-bit quotient, within 2^-14.5 relative;
+ * three Newton steps y (3 - x' y^2) / 2 of the reciprocal root, each
+ * squaring the relative error (1.5 e^2: 2^-28.4, 2^-56, then the
+ * roundings), and sqrt(x') = x' y, shifted back by k: at most 3.3 LSB
+ * for x <= 2 and 5.7 LSB below 4 (2 million random arguments against
+ * the exact root). No 128-bit quotient, where drdc_fx_sqrt_q5_58()
+ * takes two. Not inline: its locals in the reverse's frame pass the
+ * 512-byte stack limit of the grid poses. */
+static DRDC_NOINLINE int64_t tm_sqrt(int64_t x)
+{
+  unsigned k;
+  int64_t xs;
+  uint64_t top;
+  uint32_t seed;
+  int64_t y;
+  unsigned i;
+
+  if (x <= 0) {
+    return 0;
+  }
+  k = ((unsigned)__builtin_clzll((uint64_t)x) - 4u) >> 1;
+  xs = x * (INT64_C(1) << (2u * k));
+  /* xs in [2^58, 2^60): xs / 2^28 is x' 2^30, in [2^30, 2^32), and its
+   * rounded root sqrt(x') 2^15 in [2^15, 2^16]; 2^32 - 1 over it is
+   * 2^17 / sqrt(x'), in [2^16, 2^17): Q17 -> Q58 */
+  top = (uint64_t)xs >> 28u;
+  seed = 0xFFFFFFFFu / drdc_fx_sqrt_u32((uint32_t)top);
+  y = (int64_t)seed * (INT64_C(1) << 41);
+  for (i = 0u; i < 3u; i++) {
+    y = drdc_fx_rshift_round_s64_inline(
+        drdc__geo_mul(y,
+                      (3 * GEO_ONE) - drdc__geo_mul(xs, drdc__geo_mul(y, y))),
+        1u);
+  }
+  y = drdc__geo_mul(xs, y);
+  return (k == 0u) ? y : drdc_fx_rshift_round_s64_inline(y, k);
+}
+
+/* q = tan(xi' - chi) at a point r of the reverse (sin xi', cos xi' and
+ * sinh eta' set, cos chi holding r = sqrt(sinh^2 eta' + cos^2 xi')),
+ * or 1 where the atan series does not serve. tan chi = sin xi' / r, so
+ * tan(chi - xi') = sin xi' (cos xi' - r) / (r cos xi' + sin^2 xi'), and
+ * cos xi' - r = -sinh^2 eta' / (cos xi' + r): q = sin xi' sinh^2 eta' /
+ * ((cos xi' + r)(r cos xi' + sin^2 xi')), free of cancellation; |q| <=
+ * |sinh eta'| (0.08 in the UTM zones), and where cos xi' >= 1/16 (every
+ * UTM northing: xi' <= 1.47) the quotient's rounding is amplified at
+ * most 16 times. Not inline: its locals in the reverse's frame pass the
+ * 512-byte stack limit of the grid poses. */
+static DRDC_NOINLINE int64_t tm_reverse_tan(const tm_reverse_point_t *r)
+{
+  int64_t q = GEO_ONE;
+
+  if (r->cxi >= (GEO_ONE / 16)) {
+    int64_t num = drdc__geo_mul(r->sxi, drdc__geo_mul(r->sh_eta, r->sh_eta));
+    int64_t den =
+        drdc__geo_mul(r->cxi + r->cchi, drdc__geo_mul(r->cchi, r->cxi) +
+                                            drdc__geo_mul(r->sxi, r->sxi));
+
+    if ((num <= (den / 4)) && (num >= -(den / 4))) {
+      q = geo_div(num, den);
+    }
+  }
+  return q;
+}
+
 void drdc__geo_tm_reverse(int64_t xi, int64_t eta, geo_phi_lam_t *out,
                           geo_conv_scale_t *cs)
 {
   tm_zeta_t z;
   tm_complex_t sum;
-  tm_reverse_point_t r;
-  int64_t sh;
-  int64_t ch;
-  int64_t xi1;
-  int64_t eta1;
-  int64_t chi;
+  tm_reverse_point_t r = {0, 0, 0, 0, 0, 0, 0};
+  int64_t q;
+  int64_t sech;
 
-  /* sinh and cosh of 2 eta from the series of sinh and cosh of eta
-   * (|eta| <= 0.08 for eastings 0 .. 1 000 km): no exponential */
-  geo_sincos(2 * xi, &z.s2xi, &z.c2xi);
-  sh = drdc__geo_sinh_small(eta);
-  ch = drdc__geo_cosh_small(eta);
-  z.sh2eta = 2 * drdc__geo_mul(sh, ch);
-  z.ch2eta = drdc__geo_mul(ch, ch) + drdc__geo_mul(sh, sh);
+  /* sin and cos of 2 xi from those of xi, sinh and cosh of 2 eta from
+   * the series of sinh and cosh of eta (|eta| <= 0.08 for eastings
+   * 0 .. 1 000 km): one sin/cos and no exponential (sinh and cosh of eta
+   * held in r until then) */
+  geo_sincos(xi, &r.sxi, &r.cxi);
+  z.s2xi = 2 * drdc__geo_mul(r.sxi, r.cxi);
+  z.c2xi = drdc__geo_mul(r.cxi, r.cxi) - drdc__geo_mul(r.sxi, r.sxi);
+  r.sh_eta = drdc__geo_sinh_small(eta);
+  r.ch_eta = drdc__geo_cosh_small(eta);
+  z.sh2eta = 2 * drdc__geo_mul(r.sh_eta, r.ch_eta);
+  z.ch2eta =
+      drdc__geo_mul(r.ch_eta, r.ch_eta) + drdc__geo_mul(r.sh_eta, r.sh_eta);
   sum = krueger(drdc__geo_beta, false, &z);
-  /* zeta' = xi' + i eta' on the sphere */
-  xi1 = xi - sum.re;
-  eta1 = eta - sum.im;
-  /* lam = atan2(sinh eta', cos xi'), chi = atan2(sin xi', sqrt(sinh^2
-   * eta' + cos^2 xi')) */
-  geo_sincos(xi1, &r.sxi, &r.cxi);
-  r.sh_eta = drdc__geo_sinh_small(eta1);
-  out->lam = geo_atan2(r.sh_eta, r.cxi);
-  chi = geo_atan2(r.sxi, geo_sqrt(drdc__geo_mul(r.sh_eta, r.sh_eta) +
-                                  drdc__geo_mul(r.cxi, r.cxi)));
-  geo_sincos(chi, &r.schi, &r.cchi);
+  /* zeta' = xi' + i eta' on the sphere; sin and cos of xi' by rotating
+   * those of xi through -sum.re (|sum| <= beta_1 cosh 0.68 < 0.0011) */
+  rotate_small(r.sxi, r.cxi, -sum.re, &r.sxi, &r.cxi);
+  r.sh_eta = drdc__geo_sinh_small(eta - sum.im);
+  r.ch_eta = drdc__geo_cosh_small(eta - sum.im);
+  /* lam = atan2(sinh eta', cos xi'); with r = sqrt(sinh^2 eta' + cos^2
+   * xi') = sqrt(cosh^2 eta' - sin^2 xi'), tan chi = sin xi' / r, so sin
+   * chi = sin xi' / cosh eta' and cos chi = r / cosh eta' (no sin/cos of
+   * chi); r held in cchi until then */
+  out->lam = atan2_near_axis(r.sh_eta, r.cxi);
+  r.cchi =
+      tm_sqrt(drdc__geo_mul(r.sh_eta, r.sh_eta) + drdc__geo_mul(r.cxi, r.cxi));
+  /* chi = xi' - atan q, or the general atan2 where q does not serve */
+  q = tm_reverse_tan(&r);
+  if (q < GEO_ONE) {
+    out->phi = (xi - sum.re) - drdc__geo_atan_small(q);
+  } else {
+    out->phi = geo_atan2(r.sxi, r.cchi);
+  }
+  sech = geo_div(GEO_ONE, r.ch_eta);
+  r.schi = drdc__geo_mul(r.sxi, sech);
+  r.cchi = drdc__geo_mul(r.cchi, sech);
   r.dphi = geo_phi_series(r.schi, r.cchi);
-  out->phi = chi + r.dphi;
+  out->phi = out->phi + r.dphi;
   if (cs != NULL) {
     tm_complex_t pq = krueger(drdc__geo_beta, true, &z);
 
-    r.ch_eta = drdc__geo_cosh_small(eta1);
     tm_reverse_conv_scale(&r, &pq, cs);
   }
 }

@@ -203,6 +203,51 @@ static void test_mul_unchecked_exact(void)
       0, drdc_fx_mul_q5_58_unchecked(1, (INT64_C(1) << 57) - 1));
 }
 
+/* the short product (one factor below 2^32 raw): the stored products
+ * whose second factor is that small, against mpmath; then bit for bit
+ * against the full product for pseudo-random a of every sign and b of
+ * every bit length up to 32, and the ties */
+static void test_mul_short_exact(void)
+{
+  uint64_t x = UINT64_C(0x9E3779B97F4A7C15);
+  size_t i;
+  unsigned bits;
+
+  for (i = 0; i < COUNT(q5_58_mul_vectors); i++) {
+    const struct q5_58_pair_vector *v = &q5_58_mul_vectors[i];
+
+    if ((v->fits != 0) && (v->b < (INT64_C(1) << 32)) &&
+        (v->b > -(INT64_C(1) << 32))) {
+      TEST_ASSERT_EQUAL_INT64(v->want, drdc_fx_mul_q5_58_short(v->a, v->b));
+    }
+  }
+  for (bits = 0u; bits <= 32u; bits++) {
+    for (i = 0; i < 64u; i++) {
+      int64_t a;
+      int64_t b;
+
+      x ^= x << 13;
+      x ^= x >> 7;
+      x ^= x << 17;
+      a = (int64_t)x / (int64_t)((i % 4u) + 1u);
+      b = (bits == 0u) ? 0 : (int64_t)((x >> 7) & ((UINT64_C(1) << bits) - 1u));
+      if (bits == 32u) {
+        b = (i < 2u) ? (int64_t)UINT32_MAX : b;
+      }
+      if ((i & 1u) != 0u) {
+        b = -b;
+      }
+      a = a >> (i % 8u);
+      TEST_ASSERT_EQUAL_INT64(drdc_fx_mul_q5_58_unchecked(a, b),
+                              drdc_fx_mul_q5_58_short(a, b));
+    }
+  }
+  TEST_ASSERT_EQUAL_INT64(1, drdc_fx_mul_q5_58_short(INT64_C(1) << 57, 1));
+  TEST_ASSERT_EQUAL_INT64(-1, drdc_fx_mul_q5_58_short(INT64_C(1) << 57, -1));
+  TEST_ASSERT_EQUAL_INT64(0,
+                          drdc_fx_mul_q5_58_short((INT64_C(1) << 57) - 1, 1));
+}
+
 static void test_drdc_fx_sincos_q5_58_errors(void)
 {
   int64_t s = 77;
@@ -256,6 +301,7 @@ void suite_fixed_q5_58(void)
   RUN_TEST(test_mul_and_div_exact);
   RUN_TEST(test_mul_and_div_ties);
   RUN_TEST(test_mul_unchecked_exact);
+  RUN_TEST(test_mul_short_exact);
   RUN_TEST(test_div_unchecked_exact);
   RUN_TEST(test_drdc_fx_sincos_q5_58_errors);
   RUN_TEST(test_drdc_fx_atan2_q5_58_errors);

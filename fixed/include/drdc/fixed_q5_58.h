@@ -181,6 +181,39 @@ static inline drdc_q5_58_t drdc_fx_mul_q5_58_unchecked(drdc_q5_58_t a,
                               : (drdc_q5_58_t)m;
 }
 
+/**
+ * drdc_fx_mul_q5_58_unchecked(a, b) when the raw |b| is below 2^32 (a
+ * Q5.58 value under 1.5e-8, such as the high-order terms of a series):
+ * the same bits, from two 32 x 32 -> 64 products instead of four.
+ *
+ * @param a Q5.58 factor, any value.
+ * @param b Q5.58 factor; the caller guarantees |b| < 2^32 raw (its
+ *        bound proven where it is called). Beyond that the result is
+ *        wrong but defined.
+ * @return the rounded product, Q5.58.
+ *
+ * Method: with |b| one word, |a b| = (|a|_hi |b|) 2^32 + |a|_lo |b|, and
+ * t = floor(|a b| / 2^32) = |a|_hi |b| + floor(|a|_lo |b| / 2^32) <
+ * 2^64. Adding the half 2^57 = 2^25 2^32 carries nothing out of the low
+ * word, so floor((|a b| + 2^57) / 2^58) = floor((t + 2^25) / 2^26): the
+ * magnitude drdc_fx_mul_q5_58_unchecked() rounds, bit for bit; then the
+ * sign as there. Accuracy: correctly rounded, error <= 0.5 LSB; checked
+ * bit for bit against drdc_fx_mul_q5_58_unchecked() (tests/fixed/
+ * test_q5_58.c).
+ */
+static inline drdc_q5_58_t drdc_fx_mul_q5_58_short(drdc_q5_58_t a,
+                                                   drdc_q5_58_t b)
+{
+  uint64_t ma = (a < 0) ? (UINT64_C(0) - (uint64_t)a) : (uint64_t)a;
+  uint32_t mb = (uint32_t)((b < 0) ? (UINT64_C(0) - (uint64_t)b) : (uint64_t)b);
+  uint64_t lo = (uint64_t)(uint32_t)ma * mb;
+  uint64_t t = ((ma >> 32) * mb) + (lo >> 32);
+  uint64_t m = (t + (UINT64_C(1) << 25)) >> 26;
+
+  return ((a < 0) != (b < 0)) ? (drdc_q5_58_t)(UINT64_C(0) - m)
+                              : (drdc_q5_58_t)m;
+}
+
 /** @} */
 
 #endif /* DRDC_FIXED_Q5_58_H */
