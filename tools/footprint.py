@@ -49,8 +49,10 @@ STACK_LIMIT = 512
 # What the demo pose node (fw/demo: NMEA, time scales, the paper's poses,
 # MGRS, JAUS Report Global Pose) links of libdrdc.a, flash bytes (.text +
 # .rodata + .data) per target: guarded by tools/bench.py. The whole
-# library's size is reported in docs/performance.md, not budgeted.
-LINKED_BUDGET = {"arm-cm3": 36 * 1024, "ppc-e500": 64 * 1024}
+# library's size is reported in docs/performance.md, not budgeted. The
+# node reads NMEA through drdc_nmea_parse(), which links every sentence's
+# decoder (ten of them, about 5.4 KiB on Cortex-M3).
+LINKED_BUDGET = {"arm-cm3": 38 * 1024, "ppc-e500": 64 * 1024}
 
 
 def optimise_kind(path):

@@ -58,12 +58,14 @@ class Guard(unittest.TestCase):
 
     def test_demo_at_its_budget_passes(self):
         new = copy.deepcopy(REPORT)
-        new["footprint"]["arm-cm3"]["linked"]["sections"]["text"] = 36 * 1024 - 1000
+        budget = footprint.LINKED_BUDGET["arm-cm3"]
+        new["footprint"]["arm-cm3"]["linked"]["sections"]["text"] = budget - 1000
         self.assertTrue(self.check(new))
 
     def test_demo_over_its_budget_fails(self):
         new = copy.deepcopy(REPORT)
-        new["footprint"]["arm-cm3"]["linked"]["sections"]["text"] = 36 * 1024 - 999
+        budget = footprint.LINKED_BUDGET["arm-cm3"]
+        new["footprint"]["arm-cm3"]["linked"]["sections"]["text"] = budget - 999
         self.assertFalse(self.check(new))
 
     def test_unbounded_stack_fails(self):
