@@ -30,14 +30,16 @@
  * **Symbols that differ from GNU units**: where GNU units 2.22 reads a
  * symbol otherwise than the SI (and pint and udunits), the SI wins:
  *
- * | name | here | GNU units 2.22 |
- * |---|---|---|
- * | `h` | hour, 3600 s (SI-accepted symbol) | Planck's constant (use `hr`
- * there) | | `rad` | radian | rad, the absorbed dose 0.01 Gy | | `kt` | knot,
- * 1852 m / hr (as pint) | kilotonne (`kilo t`) | | `BTU` | btu, 1055.05585262 J
- * (GNU's `btu`) | unknown (pint's `BTU` is the ISO 1055.056 J) | | `degC`,
- * `degF` | temperatures (points), see below | temperature differences | | `B`,
- * `G`, `dB` | not units here | byte, the gravitational constant, a function |
+ * - `h`: the hour, 3600 s (an SI-accepted symbol); GNU units: Planck's
+ *   constant (use `hr` there).
+ * - `rad`: the radian; GNU units: rad, the absorbed dose 0.01 Gy.
+ * - `kt`: the knot, 1852 m / hr (as pint); GNU units: the kilotonne.
+ * - `BTU`: GNU's `btu`, 1055.05585262 J; GNU units: unknown (pint's
+ *   `BTU` is the ISO 1055.056 J).
+ * - `degC`, `degF`: temperatures (points), see below; GNU units:
+ *   temperature differences.
+ * - `B`, `G`, `dB`: not units here; GNU units: the byte, the
+ *   gravitational constant, a function.
  *
  * The decibel (`dB`, `dBm`) is deliberately absent: it is a logarithmic
  * ratio, 10 log10(p1 / p2), not a factor times a unit, so it fits no row
