@@ -2,11 +2,9 @@
 /**
  * @file
  * @brief The example on a bare-metal PowerPC e500 (QEMU mpc8544ds): the
- *        console on the 16550 UART, the end through the reset register,
- *        and the four memory functions a freestanding program must give
- *        GCC (there is no C library).
+ *        console on the 16550 UART, the end through the reset register; the
+ *        memory functions are in ../common/freestanding_mem.c.
  */
-#include <stddef.h>
 #include <stdint.h>
 
 #include "example.h"
@@ -19,10 +17,6 @@
 #define RSTCR_HRESET_REQ 0x2u /* QEMU: reset; with -no-reboot, exit */
 
 void example_stop(int status);
-void *memcpy(void *dst, const void *src, size_t n);
-void *memmove(void *dst, const void *src, size_t n);
-void *memset(void *dst, int c, size_t n);
-int memcmp(const void *a, const void *b, size_t n);
 
 static void put(char c)
 {
@@ -48,52 +42,4 @@ void example_stop(int status)
   *(volatile uint32_t *)GUTS_RSTCR = RSTCR_HRESET_REQ;
   for (;;) {
   }
-}
-
-void *memcpy(void *dst, const void *src, size_t n)
-{
-  return memmove(dst, src, n);
-}
-
-void *memmove(void *dst, const void *src, size_t n)
-{
-  unsigned char *d = dst;
-  const unsigned char *s = src;
-  size_t i;
-
-  if (d < s) {
-    for (i = 0; i < n; i++) {
-      d[i] = s[i];
-    }
-  } else {
-    for (i = n; i > 0; i--) {
-      d[i - 1] = s[i - 1];
-    }
-  }
-  return dst;
-}
-
-void *memset(void *dst, int c, size_t n)
-{
-  unsigned char *d = dst;
-  size_t i;
-
-  for (i = 0; i < n; i++) {
-    d[i] = (unsigned char)c;
-  }
-  return dst;
-}
-
-int memcmp(const void *a, const void *b, size_t n)
-{
-  const unsigned char *x = a;
-  const unsigned char *y = b;
-  size_t i;
-
-  for (i = 0; i < n; i++) {
-    if (x[i] != y[i]) {
-      return (x[i] < y[i]) ? -1 : 1;
-    }
-  }
-  return 0;
 }

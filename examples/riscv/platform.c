@@ -3,11 +3,9 @@
  * @file
  * @brief The example on a bare-metal RISC-V rv32imac (QEMU virt): the
  *        console on the 16550 UART, the end through the SiFive test
- *        finisher (QEMU exits with the status), and the four memory
- *        functions a freestanding program must give GCC (there is no C
- *        library).
+ *        finisher (QEMU exits with the status); the memory functions
+ *        are in ../common/freestanding_mem.c.
  */
-#include <stddef.h>
 #include <stdint.h>
 
 #include "example.h"
@@ -18,10 +16,6 @@
 #define TEST_FINISHER 0x00100000u /* 0x5555: pass; status << 16 | 0x3333 */
 
 void example_stop(int status);
-void *memcpy(void *dst, const void *src, size_t n);
-void *memmove(void *dst, const void *src, size_t n);
-void *memset(void *dst, int c, size_t n);
-int memcmp(const void *a, const void *b, size_t n);
 
 static void put(char c)
 {
@@ -47,52 +41,4 @@ void example_stop(int status)
                     : ((((uint32_t)status & 0xFFFFu) << 16) | 0x3333u);
   for (;;) {
   }
-}
-
-void *memcpy(void *dst, const void *src, size_t n)
-{
-  return memmove(dst, src, n);
-}
-
-void *memmove(void *dst, const void *src, size_t n)
-{
-  unsigned char *d = dst;
-  const unsigned char *s = src;
-  size_t i;
-
-  if (d < s) {
-    for (i = 0; i < n; i++) {
-      d[i] = s[i];
-    }
-  } else {
-    for (i = n; i > 0; i--) {
-      d[i - 1] = s[i - 1];
-    }
-  }
-  return dst;
-}
-
-void *memset(void *dst, int c, size_t n)
-{
-  unsigned char *d = dst;
-  size_t i;
-
-  for (i = 0; i < n; i++) {
-    d[i] = (unsigned char)c;
-  }
-  return dst;
-}
-
-int memcmp(const void *a, const void *b, size_t n)
-{
-  const unsigned char *x = a;
-  const unsigned char *y = b;
-  size_t i;
-
-  for (i = 0; i < n; i++) {
-    if (x[i] != y[i]) {
-      return (x[i] < y[i]) ? -1 : 1;
-    }
-  }
-  return 0;
 }
