@@ -26,6 +26,12 @@ void golden_i64(golden_t *g, int64_t value);
 /** Next golden input: xorshift32, the same sequence on every target. */
 uint32_t golden_next(golden_t *g);
 
+/** The digest of one module's part (golden_time, ...), run from the
+ *  fresh state every part starts from: the same on every target, so a
+ *  port that differs sees which module, and a part can run alone where
+ *  the others do not fit (the AVR images, fw/golden-part). */
+uint32_t golden_part_digest(void (*part)(golden_t *));
+
 /** One per module: feed its functions golden inputs, fold their outputs
  *  and statuses into the digest. */
 void golden_time(golden_t *g);

@@ -105,7 +105,7 @@ static void golden_expressions(golden_t *g)
     for (k = 0u; (k < n) && (k < sizeof text); k++) {
       text[k] = a[k];
     }
-    at = golden_next(g) % k; /* one draw per statement, as above */
+    at = (size_t)(golden_next(g) % k); /* one draw per statement, as above */
     text[at] = (char)(golden_next(g) & 0xFFu);
     golden_i32(g, (int32_t)drdc_units_parse(text, k, &to));
     golden_expression(g, &to);
@@ -118,8 +118,8 @@ void golden_interop(golden_t *g)
   int i;
 
   for (i = 0; i < 2048; i++) {
-    const drdc_unit_t *from = drdc_units_at(golden_next(g) % count);
-    const drdc_unit_t *to = drdc_units_at(golden_next(g) % count);
+    const drdc_unit_t *from = drdc_units_at((size_t)(golden_next(g) % count));
+    const drdc_unit_t *to = drdc_units_at((size_t)(golden_next(g) % count));
     int64_t raw = (int64_t)(int32_t)golden_next(g);
     int64_t out = 0;
     int64_t integer = 0;
@@ -144,7 +144,7 @@ void golden_interop(golden_t *g)
       text[k] = seed[k];
     }
     /* one byte replaced by any value, at any place */
-    at = golden_next(g) % (sizeof seed - 1u);
+    at = (size_t)(golden_next(g) % (sizeof seed - 1u));
     text[at] = (char)(golden_next(g) & 0xFFu);
     golden_i32(g, (int32_t)drdc_nmea_parse(text, sizeof seed - 1u, &n));
     golden_i64(g, n.latitude);

@@ -170,7 +170,7 @@ static void golden_jaus_bodies(golden_t *g)
     buf[k] = (uint8_t)golden_next(g);
   }
   buf[1] &= 0x01u; /* a valid presence vector more often than not */
-  length = golden_next(g) % (sizeof buf + 1u);
+  length = (size_t)(golden_next(g) % (sizeof buf + 1u));
   if ((golden_next(g) & 1u) == 0u) {
     /* half of them as long as their presence vector says */
     (void)drdc_jaus_pose_size((uint16_t)(buf[0] | ((uint16_t)buf[1] << 8)),
