@@ -215,14 +215,15 @@ TARGETS = {
     # AVR ATmega2560 (8-bit core, 16-bit int), avr-gcc 5.4 and avr-libc:
     # where integer code hides its width assumptions (1 << 20, builtins
     # that take an unsigned int). The library only, warning-free with
-    # -Werror; no image runs on it yet (README, "Targets").
+    # -Werror; each part of the conformance digest runs alone under
+    # simavr (fw/golden-part, tools/test_avr.py).
     "avr": {
-        "cross": "avr-", "bsp": None, "qemu": None, "ext": ".elf",
-        "images": False,
+        "cross": "avr-", "bsp": "avr", "qemu": None, "ext": ".elf",
+        "images": False, "golden_parts": True,
         # avr-gcc 5 predates `#pragma GCC unroll` (GCC 8): it leaves
         # those loops rolled, same results
         "arch": ["-mmcu=atmega2560", "-Wno-unknown-pragmas"],
-        "link": [], "libs": [], "hard_float": None, "intcheck": "avr",
+        "link": ["-Wl,--gc-sections"], "libs": [], "hard_float": None, "intcheck": "avr",
         "soft_float_libm": False, "apt": ["avr"],
         "headers": ["gcc:include", "gcc:include-fixed", "/usr/lib/avr/include"],
         "hosted_bait": ["features.h", "argp.h"],
@@ -431,6 +432,36 @@ def _glob(bld, pattern):
     return bld.path.ant_glob(pattern)
 
 
+# The parts of the conformance digest (tests/golden): function, its file,
+# the name the test runner prints for it.
+GOLDEN_PARTS = [
+    ("golden_time", "golden_time.c", "time"),
+    ("golden_time_scales", "golden_time.c", "time scales"),
+    ("golden_fixed", "golden_fixed.c", "fixed"),
+    ("golden_orient", "golden_orient.c", "orient"),
+    ("golden_interop", "golden_interop.c", "interop"),
+    ("golden_geo", "golden_geo.c", "geo"),
+    ("golden_poses", "golden_poses.c", "poses and JAUS bodies"),
+]
+
+
+def build_golden_parts(bld, t, ours):
+    """fw/golden-part/<part>.elf: one image per part of the conformance
+    digest, for a board whose memory holds one module's tables at a time
+    (AVR: avr-gcc copies const tables into RAM)."""
+    bld.objects(source=["bsp/console.c"] + _glob(bld, "bsp/%s/*.c" % t["bsp"]),
+                target="bsp", cflags=ours, includes=["bsp"],
+                export_includes=["bsp"])
+    for k, (part, source, name) in enumerate(GOLDEN_PARTS):
+        bld.program(source=["fw/golden-part/main.c", "tests/golden/golden.c",
+                            "tests/golden/" + source],
+                    target="fw/golden-part/%s%s" % (part, t["ext"]),
+                    use="libdrdc bsp", cflags=ours, idx=200 + k,
+                    includes=["tests/golden"], install_path=None,
+                    defines=["GOLDEN_PART=" + part,
+                             'GOLDEN_NAME="%s"' % name])
+
+
 def build_library(bld, cflags):
     """libdrdc.a, its headers and drdc.pc, installed under the variant's
     LIBDIR and INCLUDEDIR. Each object gets a call graph with stack usage
@@ -599,6 +630,8 @@ def build(bld):
                       cflags=[f for f in arch if "float" not in f]
                       + t["hard_float"] + CODEGEN + ["-w"])
 
+    if t.get("golden_parts"):
+        build_golden_parts(bld, t, ours)
     if not t.get("images", True):
         return
 
@@ -863,6 +896,8 @@ class RunChecks(Build.BuildContext):
             ("host tool drdc, the demo against it, the benchmark guard",
              ["-m", "unittest", "-q", "tools.test_drdc",
               "tools.test_drdc_nmea", "tools.test_demo", "tools.test_bench"]),
+            ("16-bit int: every digest part on an AVR under simavr",
+             ["-m", "unittest", "-q", "tools.test_avr"]),
             ("installed tree: every target side by side, a client of it",
              ["-m", "unittest", "-q", "tools.test_install"]),
             ("RTEMS build path through a stand-in prefix",

@@ -49,8 +49,10 @@ APT_GROUPS = {
     "riscv32": {"gcc-riscv64-unknown-elf": "12.2.0-14+deb12u1+11+b2",
                 "picolibc-riscv64-unknown-elf": "1.8-1",
                 "qemu-system-misc": "1:7.2+dfsg-7+deb12u18+b3"},
-    # avr: the 16-bit-int compile of the library (ATmega2560)
-    "avr": {"gcc-avr": "1:5.4.0+Atmel3.6.2-3", "avr-libc": "1:2.0.0+Atmel3.6.2-3"},
+    # avr: the 16-bit-int build of the library (ATmega2560) and simavr,
+    # which runs each part of the conformance digest
+    "avr": {"gcc-avr": "1:5.4.0+Atmel3.6.2-3",
+            "avr-libc": "1:2.0.0+Atmel3.6.2-3", "simavr": "1.6+dfsg-3"},
     # ./waf check beyond the targets' own tools
     "check": {
         # pkg-config: reads RTEMS BSP flags, checks the installed drdc.pc

@@ -1,0 +1,51 @@
+# SPDX-License-Identifier: BSD-2-Clause
+"""The conformance digest where int has 16 bits (./waf check): each part
+of it (tests/golden), built alone for an AVR ATmega2560
+(build/avr/fw/golden-part/<part>.elf: avr-gcc copies const tables into
+the part's 8 KiB of RAM, so one module's tables at a time), runs under
+simavr and must print the very line the host's test runner prints for
+that part. A width assumption in the library (a 32-bit value through an
+unsigned int) changes the part's digest: before the clz fix of
+fixed/sqrt.c, fixed/trig_impl.h and core/orient, the fixed, orient and
+geo parts differed here."""
+import os
+import re
+import subprocess
+import unittest
+
+BUILD = os.environ.get("DRDC_BUILD", "build")
+PARTS = ["golden_time", "golden_time_scales", "golden_fixed", "golden_orient",
+         "golden_interop", "golden_geo", "golden_poses"]
+LINE = re.compile(r"golden digest of ([A-Za-z ]+): (0x[0-9a-f]{8})")
+
+
+def host_lines():
+    runner = os.path.join(BUILD, "host", "fw", "test-runner", "test-runner")
+    out = subprocess.run([runner], capture_output=True, text=True).stdout
+    return dict(LINE.findall(out))
+
+
+def avr_line(part):
+    image = os.path.join(BUILD, "avr", "fw", "golden-part", part + ".elf")
+    # simavr prints what USART0 sends (with colour codes), and ends when
+    # the image sleeps with interrupts off
+    r = subprocess.run(["simavr", "-m", "atmega2560", image],
+                       capture_output=True, timeout=600)
+    text = (r.stdout + r.stderr).decode("ascii", "replace")
+    return LINE.findall(text)
+
+
+class GoldenPartsOnAvr(unittest.TestCase):
+    def test_every_part_prints_the_hosts_digest(self):
+        want = host_lines()
+        self.assertEqual(len(PARTS), len(want))
+        for part in PARTS:
+            got = avr_line(part)
+            self.assertEqual(1, len(got), part)
+            name, digest = got[0]
+            self.assertEqual(want[name], digest, part)
+            print("avr %-22s %s (host %s)" % (name, digest, want[name]))
+
+
+if __name__ == "__main__":
+    unittest.main()
