@@ -58,7 +58,7 @@ def table_text():
 #include "trig_impl.h"
 
 /* sin(i pi / 512) in Q0.31 (2^31 = 1.0), i = 0..256: a quarter wave. */
-const uint32_t drdc__fx_sin_q31[FX_SIN_STEPS + 1] = {
+const uint32_t drdc__fx_sin_q31[FX_SIN_STEPS + 1] DRDC_FLASH_TABLE = {
 %s
 };
 
@@ -71,7 +71,7 @@ const uint32_t drdc__fx_sin_q31[FX_SIN_STEPS + 1] = {
  *   c3  B (t^2 - 1/3) / (1 + t^2)^3: the third Taylor coefficient
  * 129 nodes (2 064 B): |h| <= 2^-8 from the nearest keeps the cubic's
  * truncation at 0.031 units (fx_atan_ratio_bam() in trig_impl.h). */
-const fx_atan_node_t drdc__fx_atan_nodes[FX_ATAN_STEPS + 1] = {
+const fx_atan_node_t drdc__fx_atan_nodes[FX_ATAN_STEPS + 1] DRDC_FLASH_TABLE = {
 %s
 };
 """ % (rows(["%du" % v for v in sin_q31]),
@@ -103,7 +103,7 @@ def sqrt_table_text():
 
 /* floor(sqrt(((j + 1) 2^18) - 1)) for j = 64..255: the root of the
  * largest 26-bit H whose top 8 bits are j. */
-const uint16_t drdc__fx_sqrt_seed[FX_SQRT_SEED_COUNT] = {
+const uint16_t drdc__fx_sqrt_seed[FX_SQRT_SEED_COUNT] DRDC_FLASH_TABLE = {
 %s
 };
 """ % rows(["%du" % v for v in seeds], per_line=10)

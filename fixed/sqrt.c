@@ -108,7 +108,7 @@ drdc_status_t drdc_fx_sqrt_q15_16(drdc_q15_16_t x, drdc_q15_16_t *out)
   h = m >> 6;
   /* floor(sqrt(H)): one Newton step from the table's upper bound of the
    * root over H's bin lands on it or one above (checked for every H) */
-  s1 = drdc__fx_sqrt_seed[(m >> 24) - FX_SQRT_SEED_FIRST];
+  s1 = drdc__flash_u16(&drdc__fx_sqrt_seed[(m >> 24) - FX_SQRT_SEED_FIRST]);
   s1 = (s1 + (h / s1)) >> 1;
   if ((s1 * s1) > h) {
     s1--;

@@ -10,10 +10,12 @@
 
 #include <stdint.h>
 
+#include <drdc/compiler.h>
+
 /** Seeds for H in [2^24, 2^26), indexed by (H >> 18) - FX_SQRT_SEED_FIRST. */
 #define FX_SQRT_SEED_FIRST 64u
 #define FX_SQRT_SEED_COUNT 192u
 
-extern const uint16_t drdc__fx_sqrt_seed[FX_SQRT_SEED_COUNT];
+extern const uint16_t drdc__fx_sqrt_seed[FX_SQRT_SEED_COUNT] DRDC_FLASH_TABLE;
 
 #endif /* DRDC_SQRT_IMPL_H */

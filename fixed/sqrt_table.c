@@ -9,7 +9,7 @@
 
 /* floor(sqrt(((j + 1) 2^18) - 1)) for j = 64..255: the root of the
  * largest 26-bit H whose top 8 bits are j. */
-const uint16_t drdc__fx_sqrt_seed[FX_SQRT_SEED_COUNT] = {
+const uint16_t drdc__fx_sqrt_seed[FX_SQRT_SEED_COUNT] DRDC_FLASH_TABLE = {
   4127u, 4159u, 4190u, 4222u, 4252u, 4283u, 4314u, 4344u, 4374u, 4404u,
   4434u, 4463u, 4492u, 4521u, 4550u, 4579u, 4607u, 4636u, 4664u, 4692u,
   4720u, 4748u, 4775u, 4802u, 4830u, 4857u, 4884u, 4910u, 4937u, 4964u,

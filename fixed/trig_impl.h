@@ -31,7 +31,7 @@
 #define FX_BAM_QUARTER (UINT32_C(1) << 30)
 #define FX_BAM_EIGHTH  (UINT32_C(1) << 29)
 
-extern const uint32_t drdc__fx_sin_q31[FX_SIN_STEPS + 1];
+extern const uint32_t drdc__fx_sin_q31[FX_SIN_STEPS + 1] DRDC_FLASH_TABLE;
 
 /** A node of the atan table: B atan(t), its first derivative and its second
  *  and third Taylor coefficients at t = i / 128, in binary-angle units
@@ -43,7 +43,8 @@ typedef struct fx_atan_node {
   int32_t c3;  /**< B (t^2 - 1/3) / (1 + t^2)^3 */
 } fx_atan_node_t;
 
-extern const fx_atan_node_t drdc__fx_atan_nodes[FX_ATAN_STEPS + 1];
+extern const fx_atan_node_t
+    drdc__fx_atan_nodes[FX_ATAN_STEPS + 1] DRDC_FLASH_TABLE;
 
 /*
  * The kernels below are static inline so that sin, cos, tan and atan2 pay
@@ -86,8 +87,8 @@ static inline int64_t fx_sin_quadrant_q62(uint32_t r)
   uint32_t node = i << 22;
   bool neg = r < node;                         /* delta < 0 */
   uint32_t ad = neg ? (node - r) : (r - node); /* |d| <= 2^21 units */
-  uint32_t s0 = drdc__fx_sin_q31[i];
-  uint32_t c0 = drdc__fx_sin_q31[(uint32_t)FX_SIN_STEPS - i];
+  uint32_t s0 = drdc__flash_u32(&drdc__fx_sin_q31[i]);
+  uint32_t c0 = drdc__flash_u32(&drdc__fx_sin_q31[(uint32_t)FX_SIN_STEPS - i]);
   /* |delta| Q39: |d| 2 pi 2^31 / 2^24, the low product (< 2^51) shifted,
    * the 3 2^32 part exact as 768 |d| */
   uint32_t adl = (uint32_t)((((uint64_t)ad * FX_TWO_PI_Q31_LOW) +
@@ -198,10 +199,14 @@ static inline uint32_t fx_atan_ratio_bam(uint32_t num, uint32_t den)
   uint64_t acc;
   uint64_t p3;
   const fx_atan_node_t *node;
+  uint32_t node_a;
+  uint32_t node_d1;
+  uint32_t node_c2;
+  int32_t node_c3;
 
   if (num == den) {
     /* t = 1: A = 2^31 is pi/4 exactly, units times 4 */
-    return (drdc__fx_atan_nodes[FX_ATAN_STEPS].a + 2u) >> 2;
+    return (drdc__flash_u32(&drdc__fx_atan_nodes[FX_ATAN_STEPS].a) + 2u) >> 2;
   }
   /* t = round(num 2^32 / den) < 2^32: the floor of (num 2^32 + den / 2)
    * over den */
@@ -216,16 +221,20 @@ static inline uint32_t fx_atan_ratio_bam(uint32_t num, uint32_t den)
                     (neg ? ((UINT64_C(1) << 32) - 1u) : 0u)) >>
                    32);
   node = &drdc__fx_atan_nodes[i];
-  acc = (uint64_t)node->a << 31; /* units 2^33 */
-  acc -= ((uint64_t)node->c2 * h2) >> 11;
+  node_a = drdc__flash_u32(&node->a);
+  node_d1 = drdc__flash_u32(&node->d1);
+  node_c2 = drdc__flash_u32(&node->c2);
+  node_c3 = drdc__flash_s32(&node->c3);
+  acc = (uint64_t)node_a << 31; /* units 2^33 */
+  acc -= ((uint64_t)node_c2 * h2) >> 11;
   if (neg) {
-    acc -= (((uint64_t)node->d1 * ah) + 1u) >> 1;
+    acc -= (((uint64_t)node_d1 * ah) + 1u) >> 1;
   } else {
-    acc += ((uint64_t)node->d1 * ah) >> 1;
+    acc += ((uint64_t)node_d1 * ah) >> 1;
   }
   /* C3 h^3: the sign of C3 (negative below t = 1/sqrt(3)) times that of h */
-  p3 = (uint64_t)fx_abs32(node->c3) * ah3; /* <= 2^47.8 */
-  c3_neg = node->c3 < 0;
+  p3 = (uint64_t)fx_abs32(node_c3) * ah3; /* <= 2^47.8 */
+  c3_neg = node_c3 < 0;
   if (neg == c3_neg) {
     acc += p3 >> 11;
   } else {

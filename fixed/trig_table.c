@@ -9,7 +9,7 @@
 #include "trig_impl.h"
 
 /* sin(i pi / 512) in Q0.31 (2^31 = 1.0), i = 0..256: a quarter wave. */
-const uint32_t drdc__fx_sin_q31[FX_SIN_STEPS + 1] = {
+const uint32_t drdc__fx_sin_q31[FX_SIN_STEPS + 1] DRDC_FLASH_TABLE = {
   0u, 13176712u, 26352928u, 39528151u, 52701887u, 65873638u,
   79042909u, 92209205u, 105372028u, 118530885u, 131685278u, 144834714u,
   157978697u, 171116733u, 184248325u, 197372981u, 210490206u, 223599506u,
@@ -64,7 +64,7 @@ const uint32_t drdc__fx_sin_q31[FX_SIN_STEPS + 1] = {
  *   c3  B (t^2 - 1/3) / (1 + t^2)^3: the third Taylor coefficient
  * 129 nodes (2 064 B): |h| <= 2^-8 from the nearest keeps the cubic's
  * truncation at 0.031 units (fx_atan_ratio_bam() in trig_impl.h). */
-const fx_atan_node_t drdc__fx_atan_nodes[FX_ATAN_STEPS + 1] = {
+const fx_atan_node_t drdc__fx_atan_nodes[FX_ATAN_STEPS + 1] DRDC_FLASH_TABLE = {
   { 0u, 2734261102u, 0u, -911420367 },
   { 21360980u, 2734094226u, 21358808u, -911086646 },
   { 42719353u, 2733593721u, 42701977u, -910086094 },

@@ -33,4 +33,54 @@ static inline unsigned drdc__clz32(uint32_t x)
   return (unsigned)__builtin_clzll((unsigned long long)x) - 32u;
 }
 
+/*
+ * Constant tables in program memory. On the AVR (Harvard: flash and RAM
+ * are separate address spaces) a plain `const` table is copied into RAM
+ * by the start-up code, and the ATmega2560 has 8 KiB of it. A table
+ * marked DRDC_FLASH_TABLE stays in flash there (avr-libc's PROGMEM, a
+ * section attribute, so the build keeps -std=c99; GCC's __flash would
+ * need -std=gnu99), and every read of it goes through drdc__flash_*(),
+ * an LPM load. The section is placed at the start of flash, below the
+ * 64 KiB that LPM reaches. Elsewhere, where flash is in the one address
+ * space, the mark is empty and the reads are plain loads: the same code
+ * as an indexed array.
+ */
+#if defined(__AVR__)
+#include <avr/pgmspace.h>
+
+#define DRDC_FLASH_TABLE PROGMEM
+
+static inline uint32_t drdc__flash_u32(const uint32_t *at)
+{
+  return (uint32_t)pgm_read_dword(at);
+}
+
+static inline int32_t drdc__flash_s32(const int32_t *at)
+{
+  return (int32_t)pgm_read_dword(at);
+}
+
+static inline uint16_t drdc__flash_u16(const uint16_t *at)
+{
+  return (uint16_t)pgm_read_word(at);
+}
+#else
+#define DRDC_FLASH_TABLE
+
+static inline uint32_t drdc__flash_u32(const uint32_t *at)
+{
+  return *at;
+}
+
+static inline int32_t drdc__flash_s32(const int32_t *at)
+{
+  return *at;
+}
+
+static inline uint16_t drdc__flash_u16(const uint16_t *at)
+{
+  return *at;
+}
+#endif
+
 #endif /* DRDC_COMPILER_H */
