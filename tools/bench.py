@@ -36,7 +36,7 @@ sys.path.insert(0, TOP)
 from qemu import harness  # noqa: E402
 from tools import footprint  # noqa: E402
 
-TARGETS = ("ppc-e500", "arm-cm3")
+TARGETS = ("ppc-e500", "arm-cm3", "riscv32")
 GROWTH_LIMIT = 1.05
 
 CASE_RE = re.compile(r"^BENCH (\S+) (\S+) symbol=(\S+) calls=(\d+) ticks=(\d+)$")

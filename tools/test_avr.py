@@ -1,8 +1,9 @@
 # SPDX-License-Identifier: BSD-2-Clause
 """The conformance digest where int has 16 bits (./waf check): each part
 of it (tests/golden), built alone for an AVR ATmega2560
-(build/avr/fw/golden-part/<part>.elf: avr-gcc copies const tables into
-the part's 8 KiB of RAM, so one module's tables at a time), runs under
+(build/avr/fw/golden-part/<part>.elf: avr-gcc copies the const tables
+not marked DRDC_FLASH_TABLE into the part's 8 KiB of RAM, so one
+module's tables at a time), runs under
 simavr and must print the very line the host's test runner prints for
 that part. A width assumption in the library (a 32-bit value through an
 unsigned int) changes the part's digest: before the clz fix of
