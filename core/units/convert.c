@@ -82,9 +82,9 @@ static drdc_status_t convert_wide(int64_t raw, unsigned from_frac,
   p2 = (uint64_t)1u << ((to_frac >= from_frac) ? (to_frac - from_frac)
                                                : (from_frac - to_frac));
   if ((drdc__units_rat_mul(&f, (to_frac >= from_frac) ? (int64_t)p2 : 1,
-                           (to_frac >= from_frac) ? 1 : (int64_t)p2, &f,
+                           (to_frac >= from_frac) ? 1 : (int64_t)p2, &f, NULL,
                            &rounded) != DRDC_OK) ||
-      (drdc__units_rat_mul(&f, to_inv->num, to_inv->den, &f, &rounded) !=
+      (drdc__units_rat_mul(&f, to_inv->num, to_inv->den, &f, NULL, &rounded) !=
        DRDC_OK)) {
     return DRDC_E_RANGE;
   }
@@ -121,7 +121,7 @@ drdc_status_t drdc_units_convert_expr(int64_t raw, unsigned from_frac,
   to_inv.num = to->factor_den;
   to_inv.den = to->factor_num;
   if (drdc__units_rat_mul(&to_inv, from->factor_num, from->factor_den,
-                          &scale.ratio, &rounded) != DRDC_OK) {
+                          &scale.ratio, NULL, &rounded) != DRDC_OK) {
     /* F beyond about 2^+-61: a linear map may still have a factor F x
      * 2^(to_frac - from_frac) in range, formed with the change of format
      * first and applied in one rounding */

@@ -17,6 +17,18 @@
  * applied in two steps. */
 #define EXPR_POW10_STEP 18
 
+/*
+ * A running product may leave the 2^+-61 that a rational of int64_t
+ * holds (`parsec^2/lightyear^2` passes 9.5e32 on its way to 10.6), so a
+ * level and a factor carry a binary scale beside their rational: the
+ * value is rational x 2^(UNITS_SCALE_BITS x scale), the scale in steps
+ * of 32 bits in an int8_t, which fills the structs' padding (the levels
+ * live on the stack of drdc_units_parse(), within its 512-byte budget).
+ * drdc__units_rat_mul() moves steps into the scale only where the
+ * product has no rational form, so an expression whose running products
+ * fit keeps the factor it had without the scale.
+ */
+
 /* An SI prefix: its spelling (NUL-terminated) and power of ten. */
 typedef struct expr_prefix {
   const char *text;
@@ -26,16 +38,18 @@ typedef struct expr_prefix {
 /* One level of the expression: the product so far, and whether the
  * current term (after a `/`) divides. */
 typedef struct expr_level {
-  units_rat_t factor;
+  units_rat_t factor; /* times 2^(UNITS_SCALE_BITS x scale) */
   int8_t dimension[DRDC_UNITS_DIMENSIONS];
   uint8_t divide;
+  int8_t scale;
 } expr_level_t;
 
 /* A factor before its power: the SI value num / den (> 0) and the
  * dimension. */
 typedef struct expr_factor {
-  units_rat_t value;
+  units_rat_t value; /* times 2^(UNITS_SCALE_BITS x scale) */
   int8_t dimension[DRDC_UNITS_DIMENSIONS];
+  int8_t scale;
 } expr_factor_t;
 
 static int is_blank(char c)
@@ -68,11 +82,43 @@ static void level_start(expr_level_t *level)
     level->dimension[i] = 0;
   }
   level->divide = 0u;
+  level->scale = 0;
+}
+
+/* *scale + add, DRDC_E_OVERFLOW beyond +-UNITS_SCALE_MAX. */
+static drdc_status_t scale_add(int8_t *scale, int add)
+{
+  int sum = (int)*scale + add;
+
+  if ((sum > UNITS_SCALE_MAX) || (sum < -UNITS_SCALE_MAX)) {
+    return DRDC_E_OVERFLOW;
+  }
+  *scale = (int8_t)sum;
+  return DRDC_OK;
+}
+
+/* value x 2^(UNITS_SCALE_BITS x steps), one exact step at a time;
+ * DRDC_E_OVERFLOW when a step leaves what a rational holds. */
+static drdc_status_t rat_shift(units_rat_t *value, int steps, uint8_t *rounded)
+{
+  const int64_t step = (int64_t)(UINT64_C(1) << UNITS_SCALE_BITS);
+  int left = (steps < 0) ? -steps : steps;
+
+  while (left > 0) {
+    int64_t num = (steps > 0) ? step : 1;
+    int64_t den = (steps > 0) ? 1 : step;
+
+    if (drdc__units_rat_mul(value, num, den, value, NULL, rounded) != DRDC_OK) {
+      return DRDC_E_OVERFLOW;
+    }
+    left--;
+  }
+  return DRDC_OK;
 }
 
 /* level x factor^power, the power negated when the level's current term
  * divides. DRDC_E_RANGE for a dimension exponent beyond +-127,
- * DRDC_E_OVERFLOW for a factor that does not fit even rounded. */
+ * DRDC_E_OVERFLOW for a scale beyond +-UNITS_SCALE_MAX steps. */
 static drdc_status_t level_apply(expr_level_t *level,
                                  const expr_factor_t *factor, int power,
                                  uint8_t *rounded)
@@ -90,9 +136,14 @@ static drdc_status_t level_apply(expr_level_t *level,
       return DRDC_E_RANGE;
     }
   }
+  /* the factor's own scale, n times (at most 9 x 127 steps) */
+  if (scale_add(&level->scale, n * ((p < 0) ? -(int)factor->scale
+                                            : (int)factor->scale)) != DRDC_OK) {
+    return DRDC_E_OVERFLOW;
+  }
   while (n > 0) {
     if (drdc__units_rat_mul(&level->factor, num, den, &level->factor,
-                            rounded) != DRDC_OK) {
+                            &level->scale, rounded) != DRDC_OK) {
       return DRDC_E_OVERFLOW;
     }
     n--;
@@ -224,6 +275,7 @@ static drdc_status_t unit_factor(const drdc_unit_t *unit, int exponent,
 
   factor->value.num = drdc__units_number(unit->factor_num);
   factor->value.den = drdc__units_number(unit->factor_den);
+  factor->scale = 0;
   while (rest != 0) {
     int step = (rest > EXPR_POW10_STEP)    ? EXPR_POW10_STEP
                : (rest < -EXPR_POW10_STEP) ? -EXPR_POW10_STEP
@@ -231,7 +283,7 @@ static drdc_status_t unit_factor(const drdc_unit_t *unit, int exponent,
     int64_t p = expr_pow10((step < 0) ? -step : step);
 
     if (drdc__units_rat_mul(&factor->value, (step < 0) ? 1 : p,
-                            (step < 0) ? p : 1, &factor->value,
+                            (step < 0) ? p : 1, &factor->value, &factor->scale,
                             rounded) != DRDC_OK) {
       return DRDC_E_OVERFLOW;
     }
@@ -262,6 +314,7 @@ static drdc_status_t read_number(const char *text, size_t length, size_t *at,
   }
   factor->value.num = value;
   factor->value.den = 1;
+  factor->scale = 0;
   for (d = 0u; d < (size_t)DRDC_UNITS_DIMENSIONS; d++) {
     factor->dimension[d] = 0;
   }
@@ -347,6 +400,7 @@ static drdc_status_t parse_close(const char *text, size_t length, size_t *at,
   st = read_power(text, length, at, &power);
   if (st == DRDC_OK) {
     factor.value = inner->factor;
+    factor.scale = inner->scale;
     for (i = 0u; i < (size_t)DRDC_UNITS_DIMENSIONS; i++) {
       factor.dimension[i] = inner->dimension[i];
     }
@@ -446,6 +500,10 @@ drdc_status_t drdc_units_parse(const char *text, size_t length,
       return DRDC_E_DOMAIN;
     }
     offset = drdc__units_offset(use.unit);
+  }
+  /* the whole value back into one rational: beyond 2^+-61 it has none */
+  if (rat_shift(&levels[0].factor, (int)levels[0].scale, &rounded) != DRDC_OK) {
+    return DRDC_E_OVERFLOW;
   }
   for (i = 0u; i < (size_t)DRDC_UNITS_DIMENSIONS; i++) {
     expr->dimension[i] = levels[0].dimension[i];

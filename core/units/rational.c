@@ -270,15 +270,16 @@ static uint64_t div_round_u128(const rat_u128_t *l, const rat_u128_t *s,
 }
 
 drdc_status_t drdc__units_rat_mul(const units_rat_t *a, int64_t num,
-                                  int64_t den, units_rat_t *out,
+                                  int64_t den, units_rat_t *out, int8_t *scale,
                                   uint8_t *rounded)
 {
   rat_u128_t n;
   rat_u128_t d;
-  const rat_u128_t *large;
-  const rat_u128_t *small;
+  rat_u128_t *large;
+  rat_u128_t *small;
   unsigned k;
   unsigned e;
+  unsigned fraction_bits;
   uint64_t q;
   int64_t g1;
   int64_t g2;
@@ -319,8 +320,10 @@ drdc_status_t drdc__units_rat_mul(const units_rat_t *a, int64_t num,
   }
   /* v = n / d as Q / 2^e (v >= 1) or 2^e / Q (v < 1), Q = round(large x
    * 2^e / small) in [2^60, 2^62], e = 61 - k >= 0: relative error below
-   * 2^-61. Values from about 2^61 up (or 2^-61 down) whose exact
-   * fraction does not fit are refused. */
+   * 2^-61. From about 2^61 up (or 2^-61 down), k > 61: Q = round(large /
+   * (small 2^(k - 61))), the divisor below 2^126 as large is, and v =
+   * Q 2^(k - 61) = (Q / 2^e) 2^(32 steps) (or its inverse) with
+   * e = 32 steps - (k - 61) in 0..31. */
   if (ge_u128(&n, &d) != 0) {
     large = &n;
     small = &d;
@@ -330,10 +333,22 @@ drdc_status_t drdc__units_rat_mul(const units_rat_t *a, int64_t num,
   }
   k = bits_u128(large) - bits_u128(small);
   if (k > 61u) {
-    return DRDC_E_OVERFLOW;
+    unsigned steps = ((k - 61u) + (UNITS_SCALE_BITS - 1u)) / UNITS_SCALE_BITS;
+    int add = (large == &n) ? (int)steps : -(int)steps;
+
+    if ((scale == NULL) || (((int)*scale + add) > UNITS_SCALE_MAX) ||
+        (((int)*scale + add) < -UNITS_SCALE_MAX)) {
+      return DRDC_E_OVERFLOW;
+    }
+    *scale = (int8_t)((int)*scale + add);
+    *small = shl_u128(small, k - 61u); /* the divisor, in place */
+    e = (steps * UNITS_SCALE_BITS) - (k - 61u);
+    fraction_bits = 0u;
+  } else {
+    e = 61u - k;
+    fraction_bits = e;
   }
-  e = 61u - k;
-  q = div_round_u128(large, small, e);
+  q = div_round_u128(large, small, fraction_bits);
   bit = (uint64_t)1u << e;
   p2 = (int64_t)bit;
   g = gcd_s64((int64_t)q, p2);

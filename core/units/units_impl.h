@@ -44,14 +44,24 @@ drdc_status_t drdc__units_rat_sub(int64_t a_num, int64_t a_den,
 /** x * y when it fits int64_t; DRDC_E_RANGE otherwise. */
 drdc_status_t drdc__units_mul_s64(int64_t x, int64_t y, int64_t *out);
 
+/** Steps of UNITS_SCALE_BITS bits in which a product's binary scale is
+ *  counted: 2^32 fits int64_t, so a step is one exact product. */
+#define UNITS_SCALE_BITS 32u
+
+/** Largest |scale| in steps (an int8_t): 2^+-4064. */
+#define UNITS_SCALE_MAX 127
+
 /** a x num / den (den > 0, parts nonzero) as drdc__units_rat_scale()
  *  when the exact result fits; otherwise rounded: the exact 128-bit
  *  quotient as Q / 2^e (or 2^e / Q below 1) with Q of 61 to 62 bits, a
  *  relative error below 2^-61, and `*rounded` set to 1 (never cleared).
- *  DRDC_E_OVERFLOW when the value is beyond about 2^+-61 and its exact
- *  fraction does not fit (outputs unchanged). */
+ *  A value beyond about 2^+-61 has no such form: with `scale` NULL it is
+ *  refused (DRDC_E_OVERFLOW, outputs unchanged); otherwise `*out` is
+ *  that value divided by 2^(UNITS_SCALE_BITS s), rounded the same way,
+ *  and s is added to `*scale` (DRDC_E_OVERFLOW beyond
+ *  +-UNITS_SCALE_MAX). */
 drdc_status_t drdc__units_rat_mul(const units_rat_t *a, int64_t num,
-                                  int64_t den, units_rat_t *out,
+                                  int64_t den, units_rat_t *out, int8_t *scale,
                                   uint8_t *rounded);
 
 /** The scale of a conversion: the ratio F = factor_from / factor_to and

@@ -221,6 +221,33 @@ static void test_factor_overflow(void)
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, parse_status("ym"));
 }
 
+/* A running product beyond 2^+-61 whose final factor fits: the parse
+ * carries the magnitude in a binary scale, so only the result's range
+ * matters. */
+static void test_running_product_beyond_range(void)
+{
+  drdc_units_expr_t ratio = parse("parsec^2/lightyear^2");
+  drdc_units_expr_t giga = parse("Ym/Gm");
+
+  /* (au / (tan(pi / 648000) ly))^2, the parsec of GNU units and pint,
+   * with au = 149597870700 m and ly = 9460730472580800 m exactly:
+   * 10.637798272364005951289 (mpmath, 40 digits), times 2^40 rounded */
+  TEST_ASSERT_EQUAL_INT(1, ratio.rounded);
+  TEST_ASSERT_INT64_WITHIN(
+      1, INT64_C(11696382894400),
+      convert(INT64_C(1) << 40, 0, "parsec^2/lightyear^2", 0, "1"));
+  /* 10^24 / 10^9, exact after its one rounding */
+  TEST_ASSERT_EQUAL_INT64(INT64_C(1000000000000000),
+                          convert(1, 0, "Ym/Gm", 0, "1"));
+  TEST_ASSERT_EQUAL_INT64(INT64_C(1000000000000000),
+                          giga.factor_num / giga.factor_den);
+  /* the scale's own limit, 2^+-4064, far beyond any unit: Ym^9/ym^9
+   * is 10^432 = 2^1435.1, its square fits, its cube does not */
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, parse_status("(Ym^9/ym^9)^2/(Ym^9/ym^9)^2"));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        parse_status("(Ym^9/ym^9)^3/(Ym^9/ym^9)^3"));
+}
+
 static void test_drdc_units_parse_bad_input(void)
 {
   static char longest[DRDC_UNITS_EXPR_LENGTH_MAX + 2u];
@@ -318,6 +345,7 @@ void suite_units_expr(void)
   RUN_TEST(test_names_and_prefixes);
   RUN_TEST(test_temperatures);
   RUN_TEST(test_factor_overflow);
+  RUN_TEST(test_running_product_beyond_range);
   RUN_TEST(test_drdc_units_parse_bad_input);
   RUN_TEST(test_drdc_units_convert_expr_bad_input);
 }

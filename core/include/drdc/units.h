@@ -324,7 +324,11 @@ typedef struct drdc_units_expr {
  * whenever every intermediate fits int64_t (`expr->rounded` 0). When a
  * product does not fit, its exact 128-bit quotient is rounded to Q / 2^e
  * (or 2^e / Q) with Q of 61 to 62 bits: a relative error below 2^-61
- * (4.4e-19) per product, and `rounded` is 1. An expression of at most
+ * (4.4e-19) per product, and `rounded` is 1. A running product may go
+ * beyond 2^+-61 on the way (`parsec^2/lightyear^2` passes 9.5e32): its
+ * magnitude is then carried as a power of 2^32 beside the fraction, up
+ * to 2^+-4064, and only the final factor must fit (folding the power
+ * back is at most 3 more exact-or-rounded products). An expression of at most
  * DRDC_UNITS_EXPR_LENGTH_MAX characters makes fewer than 1200 products
  * (rounding: below 6e-16 in all) and uses fewer than 600 units whose
  * factor holds the pi convergent (2.5e-17 each: below 1.5e-14), so the
@@ -352,9 +356,10 @@ typedef struct drdc_units_expr {
  * @retval DRDC_E_DOMAIN a temperature with an offset (degC, degF, tempC,
  *         tempF) in a product, quotient, power or parentheses
  * @retval DRDC_E_OVERFLOW the factor does not fit 63-bit integers even
- *         rounded: a product, left to right, beyond about 2^61 (2.3e18)
- *         or below 2^-61 with no exact 63-bit fraction, e.g.
- *         `lightyear^3/nm^3` (8.5e74), `Ym` (10^24), `uN^3 gon^2`
+ *         rounded: beyond about 2^61 (2.3e18) or below 2^-61 with no
+ *         exact 63-bit fraction, e.g. `lightyear^3/nm^3` (8.5e74), `Ym`
+ *         (10^24), `uN^3 gon^2`; or a running product beyond 2^+-4064
+ *         (`(Ym^9/ym^9)^3`)
  *
  * Cost: one table walk (about 2 KiB of names) for each name, and one for
  * each prefix that matches the name's start when the whole name is not

@@ -15,6 +15,10 @@
 
 #include <stdint.h>
 
+#if defined(__AVR__)
+#include <avr/pgmspace.h> /* PROGMEM, pgm_read_*: DRDC_FLASH_TABLE below */
+#endif
+
 /** Keep the function out of line: its frame is not added to the
  *  caller's, so the deepest chain stays that of its deepest callee. */
 #define DRDC_NOINLINE __attribute__((noinline))
@@ -46,8 +50,6 @@ static inline unsigned drdc__clz32(uint32_t x)
  * as an indexed array.
  */
 #if defined(__AVR__)
-#include <avr/pgmspace.h>
-
 #define DRDC_FLASH_TABLE PROGMEM
 
 static inline uint32_t drdc__flash_u32(const uint32_t *at)
