@@ -141,6 +141,10 @@ def build_wheel(wheel_directory, config_settings=None, metadata_directory=None):
     for path in sorted(glob.glob(os.path.join(HERE, NAME, "*.py"))):
         with open(path, "rb") as f:
             files["%s/%s" % (NAME, os.path.basename(path))] = f.read()
+    # the version of core/include/drdc/version.h, for drdc.__version__
+    files[NAME + "/_version.py"] = (
+        "# Written by python/build_backend.py from core/include/drdc/"
+        "version.h.\nVERSION = %r\n" % version).encode()
     with tempfile.TemporaryDirectory() as work:
         lib = os.path.join(work, "libdrdc.so")
         build_library(lib, work)

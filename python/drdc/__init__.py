@@ -63,8 +63,8 @@ from ._orient import (quat_from_euler, euler_from_quat,  # noqa: F401
                       quat_from_euler_array, euler_from_quat_array)
 from ._units import (units_convert, units_convert_expr,  # noqa: F401
                      units_convert_array, units_convert_expr_array)
+from ._version import VERSION as __version__
 
-__version__ = "0.1.0"
 
 NAS_PER_DEGREE = 3600000000000  # DRDC_NAS_PER_DEGREE
 Q47_16_ONE = 1 << 16            # 1 m in Q47.16 (and Q15.16)
