@@ -52,7 +52,7 @@ from ._geo import (ZONE_STANDARD, ZONE_UPS, MGRS_PREC_MIN,  # noqa: F401
                    MGRS_PREC_MAX, geo_utm_zone, geo_tm_forward, geo_to_utm,
                    geo_from_utm, geo_mgrs_encode, geo_mgrs_from_utm,
                    geo_mgrs_decode, geo_to_utm_array, geo_from_utm_array,
-                   geo_mgrs_encode_array)
+                   geo_mgrs_encode_array, geo_mgrs_decode_array)
 from ._time import (time_from_civil, time_to_civil,  # noqa: F401
                     time_utc_to_gps, time_gps_to_utc, time_utc_to_tai,
                     time_tai_to_utc, time_utc_to_unix, time_unix_to_utc,

@@ -10,7 +10,7 @@ import numpy as np
 
 from . import _check
 from ._lib import GeoUtm, lib
-from ._status import check
+from ._status import Status, check
 
 ZONE_STANDARD = -1  # DRDC_GEO_ZONE_STANDARD: the point's standard zone
 ZONE_UPS = 0        # DRDC_GEO_ZONE_UPS: the polar caps
@@ -32,6 +32,8 @@ UtmArrays = namedtuple("UtmArrays", Utm._fields + ("status",))
 GeographicArrays = namedtuple("GeographicArrays",
                               Geographic._fields + ("status",))
 MgrsArrays = namedtuple("MgrsArrays", "text status")
+MgrsDecodeArrays = namedtuple("MgrsDecodeArrays", UtmPosition._fields
+                              + ("prec", "status"))
 
 _I64 = ctypes.c_int64
 
@@ -222,3 +224,38 @@ def geo_mgrs_encode_array(lat_nas, lon_nas, prec=5):
         if st == 0:
             text[i] = buf.value.decode("ascii")
     return MgrsArrays(text.reshape(shape), status.reshape(shape))
+
+
+def geo_mgrs_decode_array(text):
+    """drdc_geo_mgrs_decode over an array of str (any shape): MgrsDecodeArrays
+    of the cell's centre (zone int32, north bool, easting_q47_16,
+    northing_q47_16 int64), prec (int32) and status (int32; a text that is
+    not ASCII, or holds a NUL, is DRDC_E_MGRS)."""
+    texts = np.asarray(text)
+    if texts.dtype.kind != "U":
+        raise TypeError("text: an array of str, not dtype %s" % texts.dtype)
+    shape = texts.shape
+    flat = texts.ravel().tolist()
+    n = len(flat)
+    zone = np.zeros(n, np.int32)
+    north = np.zeros(n, np.bool_)
+    e = np.zeros(n, np.int64)
+    nn = np.zeros(n, np.int64)
+    prec = np.zeros(n, np.int32)
+    status = np.zeros(n, np.int32)
+    corner, centre, p = GeoUtm(), GeoUtm(), ctypes.c_int32()
+    refs = [ctypes.byref(x) for x in (corner, centre, p)]
+    f = lib.drdc_geo_mgrs_decode
+    for i, t in enumerate(flat):
+        if not t.isascii() or "\0" in t:
+            # C could not read it as the text it is: malformed MGRS
+            status[i] = Status.DRDC_E_MGRS
+            continue
+        st = f(t.encode("ascii"), *refs)
+        status[i] = st
+        if st == 0:
+            zone[i], north[i], e[i], nn[i] = (centre.zone, centre.north,
+                                              centre.easting, centre.northing)
+            prec[i] = p.value
+    return MgrsDecodeArrays(*(a.reshape(shape) for a in
+                              (zone, north, e, nn, prec, status)))

@@ -132,6 +132,22 @@ def test_mgrs_decode_statuses_and_centres():
                             r["northing"]), r["text"]
 
 
+def test_mgrs_decode_array_gives_the_vectors():
+    rows = load(MGRS)["mgrs_dec_vectors"]
+    d = drdc.geo_mgrs_decode_array(np.array([r["text"] for r in rows]))
+    assert list(d.status) == [r["status"] for r in rows]
+    ok = d.status == 0
+    for name, field in (("zone", "zone"), ("easting_q47_16", "easting"),
+                        ("northing_q47_16", "northing")):
+        assert (getattr(d, name)[ok] == column(rows, field)[ok]).all()
+    assert (d.north[ok] == (column(rows, "north")[ok] != 0)).all()
+    bad = drdc.geo_mgrs_decode_array(["38SMB4414084706", "38SMB\x0044",
+                                      "38SMB44140847\u00e9"])
+    assert list(bad.status) == [0, drdc.Status.DRDC_E_MGRS,
+                                drdc.Status.DRDC_E_MGRS]
+    assert bad.prec[0] == 5
+
+
 def test_header_examples():
     # geo.h and geo_mgrs.h: lat 10, lon 20 -> 34n 390 399.2275 1 105 578.5892
     u = drdc.geo_to_utm(drdc.degrees_to_nas(10), drdc.degrees_to_nas(20))
