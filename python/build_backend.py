@@ -2,8 +2,8 @@
 """PEP 517 build backend of the drdc Python package (pip calls it).
 
 It compiles the library's C sources, core/ and fixed/ of this checkout,
-with the host C compiler into drdc/libdrdc.so, and packs that beside the
-Python modules into a wheel. The sources, include directories and flags
+and the array loops of python/src/ with the host C compiler into
+drdc/libdrdc.so, and packs that beside the Python modules into a wheel. The sources, include directories and flags
 are those of wscript's host variant (the same glob, the footprint
 policy's -O2/-Os per module from tools/footprint.py, -fPIC added for a
 shared library), so the package computes what build/host/drdc computes.
@@ -65,8 +65,10 @@ def _footprint():
 
 
 def _sources():
+    """The library's sources (wscript's glob), then the array loops of
+    python/src/."""
     paths = []
-    for folder in ("fixed", "core"):
+    for folder in ("fixed", "core", "python/src"):
         paths += sorted(glob.glob(os.path.join(TOP, folder, "**", "*.c"),
                                   recursive=True))
     return [os.path.relpath(p, TOP) for p in paths]
@@ -100,7 +102,10 @@ def build_library(out_path, work_dir):
     jobs = []
     for k, src in enumerate(_sources()):
         obj = os.path.join(work_dir, "%03d_%s.o" % (k, os.path.basename(src)[:-2]))
-        flags = CFLAGS + policy.OPTIMISE_FLAGS[policy.optimise_kind(src)]
+        # the footprint policy's flags for the library; the loops for speed
+        kind = ("speed" if src.startswith("python" + os.sep)
+                else policy.optimise_kind(src))
+        flags = CFLAGS + policy.OPTIMISE_FLAGS[kind]
         jobs.append((cc + flags + includes + ["-c", src, "-o", obj], obj))
     with concurrent.futures.ThreadPoolExecutor(os.cpu_count() or 1) as pool:
         list(pool.map(_run, [cmd for cmd, _ in jobs]))

@@ -152,25 +152,14 @@ def geo_to_utm_array(lat_nas, lon_nas, zone=ZONE_STANDARD):
         _check.integer_array(zone, "zone", _check.INT32, np.int32))
     n = lat.size
     z = np.zeros(n, np.int32)
-    north = np.zeros(n, np.bool_)
-    e = np.zeros(n, np.int64)
-    nn = np.zeros(n, np.int64)
-    conv = np.zeros(n, np.int64)
-    scale = np.zeros(n, np.int64)
+    north = np.zeros(n, np.uint8)
+    e, nn, conv, scale = (np.zeros(n, np.int64) for _ in range(4))
     status = np.zeros(n, np.int32)
-    out, c, k = GeoUtm(), _I64(), _I64()
-    f = lib.drdc_geo_to_utm
-    po, pc, pk = ctypes.byref(out), ctypes.byref(c), ctypes.byref(k)
-    for i, (la, lo, zo) in enumerate(zip(lat.tolist(), lon.tolist(),
-                                         zones.tolist())):
-        st = f(la, lo, zo, po, pc, pk)
-        status[i] = st
-        if st == 0:
-            z[i], north[i], e[i], nn[i] = (out.zone, out.north, out.easting,
-                                           out.northing)
-            conv[i], scale[i] = c.value, k.value
+    lib.drdc_batch_geo_to_utm(n, *(a.ctypes.data for a in (
+        lat, lon, zones, z, north, e, nn, conv, scale, status)))
     return UtmArrays(*(a.reshape(shape) for a in
-                       (z, north, e, nn, conv, scale, status)))
+                       (z, north.astype(np.bool_), e, nn, conv, scale,
+                        status)))
 
 
 def geo_from_utm_array(zone, north, easting_q47_16, northing_q47_16):
@@ -190,18 +179,8 @@ def geo_from_utm_array(zone, north, easting_q47_16, northing_q47_16):
     n = zones.size
     outs = [np.zeros(n, np.int64) for _ in range(4)]
     status = np.zeros(n, np.int32)
-    u = GeoUtm()
-    la, lo, c, k = _I64(), _I64(), _I64(), _I64()
-    refs = [ctypes.byref(x) for x in (u, la, lo, c, k)]
-    f = lib.drdc_geo_from_utm
-    for i, (zo, no, e, nn) in enumerate(zip(zones.tolist(), norths.tolist(),
-                                            es.tolist(), ns.tolist())):
-        u.zone, u.north, u.easting, u.northing = zo, bool(no), e, nn
-        st = f(*refs)
-        status[i] = st
-        if st == 0:
-            for out, v in zip(outs, (la, lo, c, k)):
-                out[i] = v.value
+    lib.drdc_batch_geo_from_utm(n, *(a.ctypes.data for a in (
+        [zones, norths, es, ns] + outs + [status])))
     return GeographicArrays(*(a.reshape(shape) for a in outs + [status]))
 
 

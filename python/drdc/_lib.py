@@ -113,6 +113,28 @@ PROTOTYPES = {
                                            P(UnitsExpr), P(ctypes.c_int64)]),
 }
 
+# python/src/batch.c: n, then contiguous arrays (c_void_p: their data
+# addresses) and, for units, the formats and the unit or expression
+_a = ctypes.c_void_p
+_n = ctypes.c_size_t
+PROTOTYPES.update({
+    "drdc_batch_geo_to_utm": (None, [_n] + [_a] * 10),
+    "drdc_batch_geo_from_utm": (None, [_n] + [_a] * 9),
+    "drdc_batch_time_utc_to_gps": (None, [_n] + [_a] * 6),
+    "drdc_batch_time_gps_to_utc": (None, [_n] + [_a] * 6),
+    "drdc_batch_time_count": (None, [ctypes.c_int32, _n] + [_a] * 5),
+    "drdc_batch_quat_from_euler": (None, [_n] + [_a] * 8),
+    "drdc_batch_euler_from_quat": (None, [_n] + [_a] * 8),
+    "drdc_batch_units_convert": (None, [_n, _a, ctypes.c_uint, _a,
+                                        ctypes.c_uint, _a, _a, _a]),
+    "drdc_batch_units_convert_expr": (None, [_n, _a, ctypes.c_uint,
+                                             P(UnitsExpr), ctypes.c_uint,
+                                             P(UnitsExpr), _a, _a]),
+})
+# drdc_batch_time_count's conversions, in batch.c's order
+COUNT_CONVERSIONS = ("utc_to_tai", "tai_to_utc", "utc_to_unix",
+                     "unix_to_utc")
+
 for _name, (_restype, _argtypes) in PROTOTYPES.items():
     _f = getattr(lib, _name)
     _f.restype = _restype

@@ -50,20 +50,10 @@ def quat_from_euler_array(yaw_bam32, pitch_bam32, roll_bam32):
         _check.integer_array(v, n, _check.BAM32, np.int64).astype(np.uint32)
         for v, n in ((yaw_bam32, "yaw_bam32"), (pitch_bam32, "pitch_bam32"),
                      (roll_bam32, "roll_bam32"))))
-    n = angles[0].size
-    parts = [np.zeros(n, np.int32) for _ in range(4)]
-    status = np.zeros(n, np.int32)
-    e, q = Euler(), Quat()
-    pe, pq = ctypes.byref(e), ctypes.byref(q)
-    f = lib.drdc_quat_from_euler
-    for i, (y, p, r) in enumerate(zip(*(a.tolist() for a in angles))):
-        e.yaw, e.pitch, e.roll = y, p, r
-        st = f(pe, pq)
-        status[i] = st
-        if st == 0:
-            parts[0][i], parts[1][i], parts[2][i], parts[3][i] = (
-                q.s, q.x, q.y, q.z)
-    return QuatArrays(*(a.reshape(shape) for a in parts + [status]))
+    outs = [np.zeros(angles[0].size, np.int32) for _ in range(5)]
+    lib.drdc_batch_quat_from_euler(angles[0].size, *(a.ctypes.data for a in
+                                                     angles + outs))
+    return QuatArrays(*(a.reshape(shape) for a in outs))
 
 
 def euler_from_quat_array(s_q1_30, x_q1_30, y_q1_30, z_q1_30):
@@ -77,13 +67,6 @@ def euler_from_quat_array(s_q1_30, x_q1_30, y_q1_30, z_q1_30):
     n = parts[0].size
     angles = [np.zeros(n, np.uint32) for _ in range(3)]
     status = np.zeros(n, np.int32)
-    q, e = Quat(), Euler()
-    pq, pe = ctypes.byref(q), ctypes.byref(e)
-    f = lib.drdc_euler_from_quat
-    for i, (s, x, y, z) in enumerate(zip(*(a.tolist() for a in parts))):
-        q.s, q.x, q.y, q.z = s, x, y, z
-        st = f(pq, pe)
-        status[i] = st
-        if st == 0:
-            angles[0][i], angles[1][i], angles[2][i] = e.yaw, e.pitch, e.roll
+    lib.drdc_batch_euler_from_quat(n, *(a.ctypes.data for a in
+                                        parts + angles + [status]))
     return EulerArrays(*(a.reshape(shape) for a in angles + [status]))

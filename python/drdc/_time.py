@@ -10,8 +10,9 @@ from collections import namedtuple
 import numpy as np
 
 from . import _check
-from ._lib import Time, TimeCivil, TimeCount, TimeGps, lib
-from ._status import check, is_error
+from ._lib import (COUNT_CONVERSIONS, Time, TimeCivil, TimeCount, TimeGps,
+                   lib)
+from ._status import check
 
 Utc = namedtuple("Utc", "sec nsec")
 Count = namedtuple("Count", "sec nsec")
@@ -20,9 +21,6 @@ Civil = namedtuple("Civil", "year month day hour minute second nsec")
 UtcArrays = namedtuple("UtcArrays", "sec nsec status")
 CountArrays = namedtuple("CountArrays", "sec nsec status")
 GpsArrays = namedtuple("GpsArrays", "week tow nsec status")
-# the output structures' fields and their dtypes in the arrays
-GPS_FIELDS = (("week", np.int32), ("tow", np.int32), ("nsec", np.int32))
-COUNT_FIELDS = (("sec", np.int64), ("nsec", np.int32))
 
 
 def _utc(sec, nsec):
@@ -110,63 +108,30 @@ def time_unix_to_utc(sec, nsec=0):
 
 # ---- arrays: one status per element, outputs 0 where it is an error ----
 
-def _pairs(sec, nsec):
+def _count_array(which, sec, nsec, result):
+    """One of batch.c's (seconds, nanoseconds) conversions over arrays."""
     (s, n), shape = _check.broadcast(
         _check.integer_array(sec, "sec", _check.INT64, np.int64),
         _check.integer_array(nsec, "nsec", _check.INT32, np.int32))
-    return s, n, shape
-
-
-def _two_to_two(function, with_leap, in_type, sec, nsec, out_type, fields,
-                result):
-    """A conversion of (sec, nsec) pairs into a two- or three-field
-    structure, element by element."""
-    s, n, shape = _pairs(sec, nsec)
-    outs = [np.zeros(s.size, dtype) for _, dtype in fields]
+    out_sec = np.zeros(s.size, np.int64)
+    out_nsec = np.zeros(s.size, np.int32)
     status = np.zeros(s.size, np.int32)
-    a, out = in_type(), out_type()
-    f = getattr(lib, function)
-    args = ([None] if with_leap else []) + [ctypes.byref(a),
-                                            ctypes.byref(out)]
-    for i, (sv, nv) in enumerate(zip(s.tolist(), n.tolist())):
-        a.sec, a.nsec = sv, nv
-        st = f(*args)
-        status[i] = st
-        if not is_error(st):  # DRDC_OK or a warning: written
-            for arr, (name, _) in zip(outs, fields):
-                arr[i] = getattr(out, name)
-    return result(*(x.reshape(shape) for x in outs + [status]))
+    lib.drdc_batch_time_count(COUNT_CONVERSIONS.index(which), s.size,
+                              *(a.ctypes.data for a in
+                                (s, n, out_sec, out_nsec, status)))
+    return result(*(a.reshape(shape) for a in (out_sec, out_nsec, status)))
 
 
 def time_utc_to_gps_array(sec, nsec=0):
-    """drdc_time_utc_to_gps over arrays: GpsArrays of week, tow, nsec and
-    status (int32)."""
-    return _two_to_two("drdc_time_utc_to_gps", True, Time, sec, nsec,
-                       TimeGps, GPS_FIELDS, GpsArrays)
-
-
-def time_utc_to_tai_array(sec, nsec=0):
-    """drdc_time_utc_to_tai over arrays: CountArrays (sec int64)."""
-    return _two_to_two("drdc_time_utc_to_tai", True, Time, sec, nsec,
-                       TimeCount, COUNT_FIELDS, CountArrays)
-
-
-def time_tai_to_utc_array(sec, nsec=0):
-    """drdc_time_tai_to_utc over arrays: UtcArrays (sec int64)."""
-    return _two_to_two("drdc_time_tai_to_utc", True, TimeCount, sec, nsec,
-                       Time, COUNT_FIELDS, UtcArrays)
-
-
-def time_utc_to_unix_array(sec, nsec=0):
-    """drdc_time_utc_to_unix over arrays: CountArrays (sec int64)."""
-    return _two_to_two("drdc_time_utc_to_unix", True, Time, sec, nsec,
-                       TimeCount, COUNT_FIELDS, CountArrays)
-
-
-def time_unix_to_utc_array(sec, nsec=0):
-    """drdc_time_unix_to_utc over arrays: UtcArrays (sec int64)."""
-    return _two_to_two("drdc_time_unix_to_utc", False, TimeCount, sec, nsec,
-                       Time, COUNT_FIELDS, UtcArrays)
+    """drdc_time_utc_to_gps over arrays (broadcast together): GpsArrays of
+    week, tow, nsec and status (int32)."""
+    (s, n), shape = _check.broadcast(
+        _check.integer_array(sec, "sec", _check.INT64, np.int64),
+        _check.integer_array(nsec, "nsec", _check.INT32, np.int32))
+    outs = [np.zeros(s.size, np.int32) for _ in range(4)]
+    lib.drdc_batch_time_utc_to_gps(s.size, *(a.ctypes.data for a in
+                                             [s, n] + outs))
+    return GpsArrays(*(a.reshape(shape) for a in outs))
 
 
 def time_gps_to_utc_array(week, tow, nsec=0):
@@ -178,15 +143,27 @@ def time_gps_to_utc_array(week, tow, nsec=0):
     sec = np.zeros(w.size, np.int64)
     ns = np.zeros(w.size, np.int32)
     status = np.zeros(w.size, np.int32)
-    g, out = TimeGps(), Time()
-    f = lib.drdc_time_gps_to_utc
-    pg, po = ctypes.byref(g), ctypes.byref(out)
-    for i, (wv, tv, nv) in enumerate(zip(w.tolist(), t.tolist(),
-                                         n.tolist())):
-        g.week, g.tow, g.nsec = wv, tv, nv
-        st = f(None, pg, po)
-        status[i] = st
-        if not is_error(st):
-            sec[i], ns[i] = out.sec, out.nsec
+    lib.drdc_batch_time_gps_to_utc(w.size, *(a.ctypes.data for a in
+                                             (w, t, n, sec, ns, status)))
     return UtcArrays(sec.reshape(shape), ns.reshape(shape),
                      status.reshape(shape))
+
+
+def time_utc_to_tai_array(sec, nsec=0):
+    """drdc_time_utc_to_tai over arrays: CountArrays (sec int64)."""
+    return _count_array("utc_to_tai", sec, nsec, CountArrays)
+
+
+def time_tai_to_utc_array(sec, nsec=0):
+    """drdc_time_tai_to_utc over arrays: UtcArrays (sec int64)."""
+    return _count_array("tai_to_utc", sec, nsec, UtcArrays)
+
+
+def time_utc_to_unix_array(sec, nsec=0):
+    """drdc_time_utc_to_unix over arrays: CountArrays (sec int64)."""
+    return _count_array("utc_to_unix", sec, nsec, CountArrays)
+
+
+def time_unix_to_utc_array(sec, nsec=0):
+    """drdc_time_unix_to_utc over arrays: UtcArrays (sec int64)."""
+    return _count_array("unix_to_utc", sec, nsec, UtcArrays)

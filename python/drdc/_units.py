@@ -75,21 +75,11 @@ def units_convert_expr(raw, from_frac, from_expr, to_frac, to_expr):
     return out.value
 
 
-def _convert_array(raw, from_frac, to_frac, call):
-    values = _check.integer_array(raw, "raw", _check.INT64,
-                                  np.int64).ravel()
-    shape = np.shape(raw)
-    ff, tf = _frac(from_frac, "from_frac"), _frac(to_frac, "to_frac")
-    out = np.zeros(values.size, np.int64)
-    status = np.zeros(values.size, np.int32)
-    v = ctypes.c_int64()
-    pv = ctypes.byref(v)
-    for i, r in enumerate(values.tolist()):
-        st = call(r, ff, tf, pv)
-        status[i] = st
-        if st == 0:
-            out[i] = v.value
-    return ValueArrays(out.reshape(shape), status.reshape(shape))
+def _raw_array(raw):
+    values = _check.integer_array(raw, "raw", _check.INT64, np.int64)
+    flat = np.ascontiguousarray(values).ravel()
+    return flat, values.shape, np.zeros(flat.size, np.int64), \
+        np.zeros(flat.size, np.int32)
 
 
 def units_convert_array(raw, from_frac, from_unit, to_frac, to_unit):
@@ -97,16 +87,20 @@ def units_convert_array(raw, from_frac, from_unit, to_frac, to_unit):
     formats are scalars; an unknown unit raises DrdcError): ValueArrays of
     value (int64) and status (int32)."""
     a, b = _unit(from_unit, "from_unit"), _unit(to_unit, "to_unit")
-    f = lib.drdc_units_convert
-    return _convert_array(raw, from_frac, to_frac,
-                          lambda r, ff, tf, pv: f(r, ff, a, tf, b, pv))
+    ff, tf = _frac(from_frac, "from_frac"), _frac(to_frac, "to_frac")
+    values, shape, out, status = _raw_array(raw)
+    lib.drdc_batch_units_convert(values.size, values.ctypes.data, ff, a, tf,
+                                 b, out.ctypes.data, status.ctypes.data)
+    return ValueArrays(out.reshape(shape), status.reshape(shape))
 
 
 def units_convert_expr_array(raw, from_frac, from_expr, to_frac, to_expr):
     """drdc_units_convert_expr over an int64 array of raw values:
     ValueArrays of value (int64) and status (int32)."""
     a, b = _expr(from_expr, "from_expr"), _expr(to_expr, "to_expr")
-    pa, pb = ctypes.byref(a), ctypes.byref(b)
-    f = lib.drdc_units_convert_expr
-    return _convert_array(raw, from_frac, to_frac,
-                          lambda r, ff, tf, pv: f(r, ff, pa, tf, pb, pv))
+    ff, tf = _frac(from_frac, "from_frac"), _frac(to_frac, "to_frac")
+    values, shape, out, status = _raw_array(raw)
+    lib.drdc_batch_units_convert_expr(values.size, values.ctypes.data, ff,
+                                      ctypes.byref(a), tf, ctypes.byref(b),
+                                      out.ctypes.data, status.ctypes.data)
+    return ValueArrays(out.reshape(shape), status.reshape(shape))
