@@ -4,7 +4,8 @@
 The package calls the library itself, compiled from this checkout's
 core/ and fixed/ into drdc/libdrdc.so when pip builds it
 (python/build_backend.py), so every result has the bits that the host
-tool build/host/drdc and the MCU firmware compute.
+tool build/host/drdc and the MCU firmware compute. The array functions
+loop in C (python/src/batch.c) over the same public functions.
 
 **Binding: ctypes.** It is in the standard library, needs no C compiler
 when the package is imported and nothing to pin; cffi's ABI mode would
