@@ -3,10 +3,11 @@
 
 It compiles the library's C sources, core/ and fixed/ of this checkout,
 and the array loops of python/src/ with the host C compiler into
-drdc/libdrdc.so, and packs that beside the Python modules into a wheel. The sources, include directories and flags
-are those of wscript's host variant (the same glob, the footprint
-policy's -O2/-Os per module from tools/footprint.py, -fPIC added for a
-shared library), so the package computes what build/host/drdc computes.
+drdc/libdrdc.so, and packs that beside the Python modules into a wheel.
+The library's sources, include directories and flags are those of
+wscript's host variant (the same glob, the footprint policy's -O2/-Os
+per module from tools/footprint.py, -fPIC added for a shared library),
+so the package computes what build/host/drdc computes.
 
 Why a backend of our own instead of setuptools: it needs no package, so
 pip downloads nothing to build and there is no build backend to pin; and
@@ -101,7 +102,8 @@ def build_library(out_path, work_dir):
     includes = ["-I" + os.path.join(TOP, d) for d in INCLUDES]
     jobs = []
     for k, src in enumerate(_sources()):
-        obj = os.path.join(work_dir, "%03d_%s.o" % (k, os.path.basename(src)[:-2]))
+        stem = os.path.basename(src)[:-2]
+        obj = os.path.join(work_dir, "%03d_%s.o" % (k, stem))
         # the footprint policy's flags for the library; the loops for speed
         kind = ("speed" if src.startswith("python" + os.sep)
                 else policy.optimise_kind(src))
@@ -138,7 +140,8 @@ def get_requires_for_build_wheel(config_settings=None):
     return []
 
 
-def build_wheel(wheel_directory, config_settings=None, metadata_directory=None):
+def build_wheel(wheel_directory, config_settings=None,
+                metadata_directory=None):
     version = _version()
     tag = _tag()
     dist_info = "%s-%s.dist-info" % (NAME, version)

@@ -22,7 +22,8 @@ def _names():
 
 
 Status = enum.IntEnum("Status", _names())
-Status.__doc__ = "drdc_status_t: the status codes of fixed/include/drdc/status.h"
+Status.__doc__ = ("drdc_status_t: the status codes of "
+                  "fixed/include/drdc/status.h")
 
 # status.h: the warnings keep their numbers among the errors' (values are
 # stable), so they are listed, never a range
