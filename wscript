@@ -897,6 +897,9 @@ class RunChecks(Build.BuildContext):
             ("host tool drdc, the demo against it, the benchmark guard",
              ["-m", "unittest", "-q", "tools.test_drdc",
               "tools.test_drdc_nmea", "tools.test_demo", "tools.test_bench"]),
+            ("Python package: pip install ./python and pytest against "
+             "the vectors",
+             ["python/check.py", "--build", out]),
             ("16-bit int: every digest part on an AVR under simavr",
              ["-m", "unittest", "-q", "tools.test_avr"]),
             ("installed tree: every target side by side, a client of it",

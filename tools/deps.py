@@ -162,6 +162,16 @@ PYTHON_PACKAGES = {
         "ff7059bb7eb1179e2685604f4aaf157cfd9535242bd23742eadc3c13542139b4",
     "typing_extensions==4.14.1":
         "d1e1e3b58374dc93031d6eda2420a48ea44a36c2b4766a4fdeb3710755731d76",
+    # the Python package's tests (python/check.py): pytest and what it
+    # needs on CPython 3.11 (packaging is pinned above); pure-Python wheels
+    "pytest==9.2.0":
+        "07acdcf88ec174f907dc01af70bf52d49b014bbab03faeeade31c96b18c2e588",
+    "pluggy==1.7.0":
+        "7dd7b0d8832ba3cb632c306926ded123429211b83641b35dc5c41ad2d34f9bec",
+    "iniconfig==2.3.1":
+        "9121e2c1fdb355232495be3194c8dfe87ccc2d5dee45947b78e68f499790d7a7",
+    "pygments==2.21.0":
+        "2363c69b61c4a97c838da3b130dcd6468f4848992b21a82f2a63ec34377137d9",
 }
 
 DEB_SRC_LIST = "/etc/apt/sources.list.d/drdc-deb-src.sources"

@@ -1,0 +1,103 @@
+# SPDX-License-Identifier: BSD-2-Clause
+"""libdrdc-fx from Python: the firmware's exact integers on a PC.
+
+The package calls the library itself, compiled from this checkout's
+core/ and fixed/ into drdc/libdrdc.so when pip builds it
+(python/build_backend.py), so every result has the bits that the host
+tool build/host/drdc and the MCU firmware compute. The array functions
+loop in C (python/src/batch.c) over the same public functions.
+
+**Binding: ctypes.** It is in the standard library, needs no C compiler
+when the package is imported and nothing to pin; cffi's ABI mode would
+do the same with one more package, and its API mode would need a
+compiler at install time for a C extension that adds nothing here (the
+library's API is plain structures and integers).
+
+**Names and formats** are the C library's, without the drdc_ prefix
+(drdc_geo_to_utm -> geo_to_utm), and every fixed-point argument and
+result field says its format: ``lat_nas`` (int64 nano-arcseconds,
+3.6e12 per degree), ``easting_q47_16`` (int64 metres x 2^16),
+``scale_q5_58``, ``s_q1_30`` (int32 x 2^30), ``yaw_bam32`` (binary angle,
+2^32 per turn), UTC ``sec``/``nsec`` (POSIX seconds and nanoseconds).
+The headers in core/include/drdc/ document each function's domain and
+accuracy.
+
+**Statuses.**
+
+- Scalar functions return a namedtuple (or an int or str) and raise
+  ``DrdcError`` (``.code``, ``.name``, ``.function``) for a DRDC_E_*
+  status; for a DRDC_W_* status (a leap-second table past its expiry) they
+  return the result and issue a ``DrdcWarning`` (warnings module).
+- Array functions (``*_array``) take numpy integer arrays (broadcast
+  together) and return a namedtuple of arrays of the broadcast shape with
+  a ``status`` array (int32, ``Status`` values): where an element's
+  status is an error its outputs are 0; DRDC_OK and warnings have them
+  written. They never raise for a value the library refuses.
+- Arguments are checked before any call: a non-integer (float, bool,
+  object arrays) raises TypeError, a value that does not fit the C
+  parameter's type (int64, int32, ...) raises ValueError, so nothing
+  wraps on its way into C.
+
+Example (the same numbers as ``echo 50.27 -111.17 | drdc geo -u -p 4``)::
+
+    import drdc
+    u = drdc.geo_to_utm(drdc.degrees_to_nas("50.27"),
+                        drdc.degrees_to_nas("-111.17"))
+    # Utm(zone=12, north=True, easting_q47_16=..., northing_q47_16=..., ...)
+"""
+from fractions import Fraction
+
+from ._status import (DrdcError, DrdcWarning, Status, is_error,  # noqa: F401
+                      status_name)
+from ._geo import (ZONE_STANDARD, ZONE_UPS, MGRS_PREC_MIN,  # noqa: F401
+                   MGRS_PREC_MAX, geo_utm_zone, geo_tm_forward, geo_to_utm,
+                   geo_from_utm, geo_mgrs_encode, geo_mgrs_from_utm,
+                   geo_mgrs_decode, geo_to_utm_array, geo_from_utm_array,
+                   geo_mgrs_encode_array, geo_mgrs_decode_array)
+from ._time import (time_from_civil, time_to_civil,  # noqa: F401
+                    time_utc_to_gps, time_gps_to_utc, time_utc_to_tai,
+                    time_tai_to_utc, time_utc_to_unix, time_unix_to_utc,
+                    time_utc_to_gps_array, time_gps_to_utc_array,
+                    time_utc_to_tai_array, time_tai_to_utc_array,
+                    time_utc_to_unix_array, time_unix_to_utc_array)
+from ._orient import (quat_from_euler, euler_from_quat,  # noqa: F401
+                      quat_from_euler_array, euler_from_quat_array)
+from ._units import (units_convert, units_convert_expr,  # noqa: F401
+                     units_convert_array, units_convert_expr_array)
+from ._version import VERSION as __version__
+
+
+NAS_PER_DEGREE = 3600000000000  # DRDC_NAS_PER_DEGREE
+Q47_16_ONE = 1 << 16            # 1 m in Q47.16 (and Q15.16)
+Q1_30_ONE = 1 << 30             # DRDC_Q1_30_ONE
+Q5_58_ONE = 1 << 58             # DRDC_Q5_58_ONE
+BAM32_PER_TURN = 1 << 32        # DRDC_BAM32_PER_TURN
+
+
+def _round_half_away(x):
+    """A Fraction rounded to the nearest integer, ties away from zero (the
+    library's rounding rule)."""
+    n = abs(x.numerator) * 2 + x.denominator
+    q = n // (2 * x.denominator)
+    return q if x >= 0 else -q
+
+
+def degrees_to_nas(degrees):
+    """Degrees -> nano-arcseconds (int), exactly: a decimal str ("50.27",
+    up to 12 decimals exact, as drdc geo reads it), int, Decimal or
+    Fraction, or a float (its exact binary value), rounded to the nearest
+    nas, ties away from zero."""
+    if isinstance(degrees, bool):
+        raise TypeError("degrees: a number or decimal text, not a bool")
+    try:
+        exact = Fraction(degrees.strip() if isinstance(degrees, str)
+                         else degrees)
+    except (ValueError, TypeError, OverflowError) as e:
+        raise type(e)("degrees: %s" % e) from None
+    return _round_half_away(exact * NAS_PER_DEGREE)
+
+
+def nas_to_degrees(nas):
+    """Nano-arcseconds -> degrees as an exact Fraction (float(...) of it
+    for plotting)."""
+    return Fraction(int(nas), NAS_PER_DEGREE)
