@@ -80,6 +80,9 @@ SANITIZE = ["-fsanitize=address,undefined", "-fno-sanitize-recover=all",
 #              -print-file-name gives it), so no host header can leak in
 #   hosted_bait  headers of the host's C library (glibc) that the target
 #              must not see: configure proves that each is missing
+#   tool       also build the drdc tool (tools/drdc/) for this target
+#   bench      build the benchmark image (default: every target QEMU
+#              runs, whose counters repeat exactly)
 # What the bare-metal targets of one family share; each row of TARGETS
 # adds its core's flags.
 PPC_BARE_METAL = {
@@ -121,7 +124,7 @@ TARGETS = {
         "cross": "", "bsp": "host", "qemu": "host", "ext": "",
         "arch": ["-D_POSIX_C_SOURCE=200809L"],
         "link": [], "libs": [], "hard_float": [], "intcheck": "x86-64",
-        "soft_float_libm": False, "apt": ["host"], "abi": [],
+        "soft_float_libm": False, "apt": ["host"], "abi": [], "tool": True,
     },
     "host-asan": {
         "cross": "", "bsp": "host", "qemu": "host", "ext": "",
@@ -230,6 +233,22 @@ TARGETS = {
         "abi": None,
     },
 }
+
+# --- Windows (win64) ---------------------------------------------------
+# Windows x86-64 (LLP64: 32-bit long), Debian's mingw-w64 GCC in its
+# win32 thread flavour (no thread library DLL to ship) and Windows's own
+# msvcrt. The library, the drdc tool (drdc.exe) and the Unity runner,
+# which Wine runs (qemu/wine.py, harness profile "wine64"). C99 printf
+# and scanf (%lld, %zu) from mingw's own stdio, not msvcrt's.
+TARGETS["win64"] = {
+    "cross": "x86_64-w64-mingw32-", "compiler": "gcc-win32", "bsp": "win64",
+    "qemu": "wine64", "ext": ".exe", "tool": True, "bench": False,
+    "arch": ["-D__USE_MINGW_ANSI_STDIO=1"],
+    # one self-contained .exe: libgcc linked in, no libgcc_s DLL
+    "link": ["-static"], "libs": [], "hard_float": [], "intcheck": "x86-64",
+    "soft_float_libm": False, "apt": ["win64"], "abi": [],
+}
+# --- end of Windows (win64) --------------------------------------------
 
 # RTEMS BSPs that QEMU runs. Their test-runner is linked a second time,
 # as test-runner-qemu.exe, with the BSP's linker command file changed
@@ -373,6 +392,9 @@ def configure(conf):
             conf.find_program(t["cross"] + tool, var=var)
         conf.env.AS = conf.env.CC
         conf.load(("clang" if compiler.startswith("clang") else "gcc") + " gas")
+        # the table's "ext" names the programs (waf would add .exe for
+        # Windows by itself)
+        conf.env.cprogram_PATTERN = "%s"
         if t["cross"]:
             # static images only: no -Bstatic/-Bdynamic switching
             conf.env.STLIB_MARKER = []
@@ -683,7 +705,7 @@ def build(bld):
     demo_map = bld.path.find_or_declare("fw/demo/demo.map").abspath()
     image("fw/demo/demo", _glob(bld, "fw/demo/*.c"), "libdrdc bsp",
           linkflags=[] if t["qemu"] == "host" else ["-Wl,-Map=" + demo_map])
-    if t["qemu"] != "host":
+    if t.get("bench", t["qemu"] != "host"):
         # soft-float double baselines where the toolchain has soft-float
         image("fw/bench/bench", _glob(bld, "fw/bench/*.c"),
               "libdrdc bsp fixmath",
@@ -696,9 +718,10 @@ def build(bld):
               defines=["SELFTEST_KIND=%d" % number],
               idx=number)
 
+    if t.get("tool"):
+        bld.program(source=_glob(bld, "tools/drdc/*.c"),
+                    target="drdc" + t["ext"], use="libdrdc", cflags=ours)
     if t["qemu"] == "host" and not bld.variant.endswith("asan"):
-        bld.program(source=_glob(bld, "tools/drdc/*.c"), target="drdc",
-                    use="libdrdc", cflags=ours)
         # the library's own results for the plots of docs/accuracy.md
         bld.program(source=["tools/accuracy/sample.c"],
                     target="accuracy-sample", use="libdrdc", cflags=ours,
