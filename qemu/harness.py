@@ -48,6 +48,11 @@ PROFILES = {
     # QEMU virt, RV32, no firmware: the ELF image runs in machine mode
     "riscv32": ["qemu-system-riscv32", "-M", "virt", "-bios", "none",
                 "-nographic", "-net", "none", "-kernel", "{image}"],
+    # A Windows program (the win64 target) under Wine, in a prefix of its
+    # own (qemu/wine.py)
+    "wine64": [sys.executable,
+               os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                            "wine.py"), "{image}"],
     # An RTEMS 6 qoriq_e500 application linked for QEMU (wscript's
     # RTEMS_QEMU): its work area reaches 512 MiB and QEMU puts the device
     # tree after RAM, so 1 GiB; the device tree beside the image is QEMU's
@@ -61,7 +66,7 @@ PROFILES = {
 # the reset request always ends QEMU with 0: the console is the verdict.
 EXIT_STATUS_MEANINGFUL = {"host": True, "ppc-e500": False, "arm-cm3": True,
                           "arm-cm4f": True, "riscv32": True,
-                          "rtems-qoriq_e500": False}
+                          "rtems-qoriq_e500": False, "wine64": True}
 
 BEGIN_RE = re.compile(r"^\*\*\* BEGIN OF TEST (.+) \*\*\*$")
 END_RE = re.compile(r"^\*\*\* END OF TEST (.+) \*\*\*$")

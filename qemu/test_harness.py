@@ -13,7 +13,8 @@ from qemu import harness
 
 BUILD = os.environ.get("DRDC_BUILD", "build")
 TARGETS = {"host": ("host", ""), "ppc-e500": ("ppc-e500", ".elf"),
-           "arm-cm3": ("arm-cm3", ".elf"), "riscv32": ("riscv32", ".elf")}
+           "arm-cm3": ("arm-cm3", ".elf"), "riscv32": ("riscv32", ".elf"),
+           "win64": ("wine64", ".exe")}
 # Short limits so the hang tests take seconds; each verdict must come
 # within the limit plus a small margin.
 INACTIVITY = 2.0
