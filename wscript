@@ -795,9 +795,10 @@ def _ensure_for(ctx, groups):
         ctx.fatal(str(e))
 
 
-def _python(ctx, args, **kw):
+def _python(ctx, args, extra_env=None, **kw):
     env = dict(os.environ)
     env["PYTHONPATH"] = ctx.env.PYTHONPATH or ""
+    env.update(extra_env or {})
     return subprocess.call([sys.executable] + args, cwd=ctx.path.abspath(),
                            env=env, **kw)
 
@@ -895,8 +896,8 @@ class RunChecks(Build.BuildContext):
              ["tests/ref/generate.py", "--check"]),
             ("integer-only check of core/ and fixed/",
              ["tools/intcheck.py", "--build", out, "--all"]
-             + ["%s:%s" % (n, t["intcheck"]) for n, t in TARGETS.items()
-                if t["intcheck"]]),
+             + ["%s:%s:%s" % (n, t["intcheck"], t["cross"])
+                for n, t in TARGETS.items() if t["intcheck"]]),
             ("C sources laid out as .clang-format says",
              ["tools/formatcheck.py"]),
             ("every external name of libdrdc.a starts with drdc_",
@@ -919,6 +920,11 @@ class RunChecks(Build.BuildContext):
             ("host tool drdc, the demo against it, the benchmark guard",
              ["-m", "unittest", "-q", "tools.test_drdc",
               "tools.test_drdc_nmea", "tools.test_demo", "tools.test_bench"]),
+            # --- Windows (win64) ---
+            ("drdc.exe (win64) under Wine: the tool's tests",
+             ["-m", "unittest", "-q", "tools.test_drdc",
+              "tools.test_drdc_nmea"], {"DRDC_TARGET": "win64"}),
+            # --- end of Windows (win64) ---
             ("16-bit int: every digest part on an AVR under simavr",
              ["-m", "unittest", "-q", "tools.test_avr"]),
             ("installed tree: every target side by side, a client of it",
@@ -930,9 +936,10 @@ class RunChecks(Build.BuildContext):
              + (["--prefix", top_env.RTEMS_PREFIX, "--tools",
                  top_env.RTEMS_TOOLS] if top_env.RTEMS_PREFIX else [])),
         ]
-        for title, args in steps:
+        # each step: title, arguments of Python, and maybe its environment
+        for title, args, *env in steps:
             Logs.pprint("CYAN", "== " + title)
-            if _python(self, args) != 0:
+            if _python(self, args, *env) != 0:
                 self.fatal("check failed: " + title)
         Logs.pprint("CYAN", "== Unity suites on every target")
         images = ["%s=%s:%s" % (n, t["qemu"], os.path.join(
