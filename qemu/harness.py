@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-2-Clause
-"""Boot firmware images under QEMU (or natively on the host), watch the
-console and turn it into a verdict, like RTEMS's tester does.
+"""Boot firmware images under QEMU (or natively on the host, or Windows
+programs under Wine), watch the console and turn it into a verdict, like
+RTEMS's tester does.
 
   harness.py run [--junit-dir D] [LABEL=]PROFILE:IMAGE ...
                                                      judge Unity test images
