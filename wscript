@@ -80,6 +80,9 @@ SANITIZE = ["-fsanitize=address,undefined", "-fno-sanitize-recover=all",
 #              -print-file-name gives it), so no host header can leak in
 #   hosted_bait  headers of the host's C library (glibc) that the target
 #              must not see: configure proves that each is missing
+#   tool       also build the drdc tool (tools/drdc/) for this target
+#   bench      build the benchmark image (default: every target QEMU
+#              runs, whose counters repeat exactly)
 # What the bare-metal targets of one family share; each row of TARGETS
 # adds its core's flags.
 PPC_BARE_METAL = {
@@ -121,7 +124,7 @@ TARGETS = {
         "cross": "", "bsp": "host", "qemu": "host", "ext": "",
         "arch": ["-D_POSIX_C_SOURCE=200809L"],
         "link": [], "libs": [], "hard_float": [], "intcheck": "x86-64",
-        "soft_float_libm": False, "apt": ["host"], "abi": [],
+        "soft_float_libm": False, "apt": ["host"], "abi": [], "tool": True,
     },
     "host-asan": {
         "cross": "", "bsp": "host", "qemu": "host", "ext": "",
@@ -230,6 +233,22 @@ TARGETS = {
         "abi": None,
     },
 }
+
+# --- Windows (win64) ---------------------------------------------------
+# Windows x86-64 (LLP64: 32-bit long), Debian's mingw-w64 GCC in its
+# win32 thread flavour (no thread library DLL to ship) and Windows's own
+# msvcrt. The library, the drdc tool (drdc.exe) and the Unity runner,
+# which Wine runs (qemu/wine.py, harness profile "wine64"). C99 printf
+# and scanf (%lld, %zu) from mingw's own stdio, not msvcrt's.
+TARGETS["win64"] = {
+    "cross": "x86_64-w64-mingw32-", "compiler": "gcc-win32", "bsp": "win64",
+    "qemu": "wine64", "ext": ".exe", "tool": True, "bench": False,
+    "arch": ["-D__USE_MINGW_ANSI_STDIO=1"],
+    # one self-contained .exe: libgcc linked in, no libgcc_s DLL
+    "link": ["-static"], "libs": [], "hard_float": [], "intcheck": "x86-64",
+    "soft_float_libm": False, "apt": ["win64"], "abi": [],
+}
+# --- end of Windows (win64) --------------------------------------------
 
 # RTEMS BSPs that QEMU runs. Their test-runner is linked a second time,
 # as test-runner-qemu.exe, with the BSP's linker command file changed
@@ -373,6 +392,9 @@ def configure(conf):
             conf.find_program(t["cross"] + tool, var=var)
         conf.env.AS = conf.env.CC
         conf.load(("clang" if compiler.startswith("clang") else "gcc") + " gas")
+        # the table's "ext" names the programs (waf would add .exe for
+        # Windows by itself)
+        conf.env.cprogram_PATTERN = "%s"
         if t["cross"]:
             # static images only: no -Bstatic/-Bdynamic switching
             conf.env.STLIB_MARKER = []
@@ -684,7 +706,7 @@ def build(bld):
     demo_map = bld.path.find_or_declare("fw/demo/demo.map").abspath()
     image("fw/demo/demo", _glob(bld, "fw/demo/*.c"), "libdrdc bsp",
           linkflags=[] if t["qemu"] == "host" else ["-Wl,-Map=" + demo_map])
-    if t["qemu"] != "host":
+    if t.get("bench", t["qemu"] != "host"):
         # soft-float double baselines where the toolchain has soft-float
         image("fw/bench/bench", _glob(bld, "fw/bench/*.c"),
               "libdrdc bsp fixmath",
@@ -697,9 +719,10 @@ def build(bld):
               defines=["SELFTEST_KIND=%d" % number],
               idx=number)
 
+    if t.get("tool"):
+        bld.program(source=_glob(bld, "tools/drdc/*.c"),
+                    target="drdc" + t["ext"], use="libdrdc", cflags=ours)
     if t["qemu"] == "host" and not bld.variant.endswith("asan"):
-        bld.program(source=_glob(bld, "tools/drdc/*.c"), target="drdc",
-                    use="libdrdc", cflags=ours)
         # the library's own results for the plots of docs/accuracy.md
         bld.program(source=["tools/accuracy/sample.c"],
                     target="accuracy-sample", use="libdrdc", cflags=ours,
@@ -773,9 +796,10 @@ def _ensure_for(ctx, groups):
         ctx.fatal(str(e))
 
 
-def _python(ctx, args, **kw):
+def _python(ctx, args, extra_env=None, **kw):
     env = dict(os.environ)
     env["PYTHONPATH"] = ctx.env.PYTHONPATH or ""
+    env.update(extra_env or {})
     return subprocess.call([sys.executable] + args, cwd=ctx.path.abspath(),
                            env=env, **kw)
 
@@ -873,8 +897,8 @@ class RunChecks(Build.BuildContext):
              ["tests/ref/generate.py", "--check"]),
             ("integer-only check of core/ and fixed/",
              ["tools/intcheck.py", "--build", out, "--all"]
-             + ["%s:%s" % (n, t["intcheck"]) for n, t in TARGETS.items()
-                if t["intcheck"]]),
+             + ["%s:%s:%s" % (n, t["intcheck"], t["cross"])
+                for n, t in TARGETS.items() if t["intcheck"]]),
             ("C sources laid out as .clang-format says",
              ["tools/formatcheck.py"]),
             ("every external name of libdrdc.a starts with drdc_",
@@ -900,6 +924,11 @@ class RunChecks(Build.BuildContext):
             ("Python package: pip install ./python and pytest against "
              "the vectors",
              ["python/check.py", "--build", out]),
+            # --- Windows (win64) ---
+            ("drdc.exe (win64) under Wine: the tool's tests",
+             ["-m", "unittest", "-q", "tools.test_drdc",
+              "tools.test_drdc_nmea"], {"DRDC_TARGET": "win64"}),
+            # --- end of Windows (win64) ---
             ("16-bit int: every digest part on an AVR under simavr",
              ["-m", "unittest", "-q", "tools.test_avr"]),
             ("installed tree: every target side by side, a client of it",
@@ -911,9 +940,10 @@ class RunChecks(Build.BuildContext):
              + (["--prefix", top_env.RTEMS_PREFIX, "--tools",
                  top_env.RTEMS_TOOLS] if top_env.RTEMS_PREFIX else [])),
         ]
-        for title, args in steps:
+        # each step: title, arguments of Python, and maybe its environment
+        for title, args, *env in steps:
             Logs.pprint("CYAN", "== " + title)
-            if _python(self, args) != 0:
+            if _python(self, args, *env) != 0:
                 self.fatal("check failed: " + title)
         Logs.pprint("CYAN", "== Unity suites on every target")
         images = ["%s=%s:%s" % (n, t["qemu"], os.path.join(

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-2-Clause
-"""Boot firmware images under QEMU (or natively on the host), watch the
-console and turn it into a verdict, like RTEMS's tester does.
+"""Boot firmware images under QEMU (or natively on the host, or Windows
+programs under Wine), watch the console and turn it into a verdict, like
+RTEMS's tester does.
 
   harness.py run [--junit-dir D] [LABEL=]PROFILE:IMAGE ...
                                                      judge Unity test images
@@ -48,6 +49,11 @@ PROFILES = {
     # QEMU virt, RV32, no firmware: the ELF image runs in machine mode
     "riscv32": ["qemu-system-riscv32", "-M", "virt", "-bios", "none",
                 "-nographic", "-net", "none", "-kernel", "{image}"],
+    # A Windows program (the win64 target) under Wine, in a prefix of its
+    # own (qemu/wine.py)
+    "wine64": [sys.executable,
+               os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                            "wine.py"), "{image}"],
     # An RTEMS 6 qoriq_e500 application linked for QEMU (wscript's
     # RTEMS_QEMU): its work area reaches 512 MiB and QEMU puts the device
     # tree after RAM, so 1 GiB; the device tree beside the image is QEMU's
@@ -57,11 +63,20 @@ PROFILES = {
                          "-nographic", "-nic", "none", "-no-reboot",
                          "-dtb", "{image}.dtb", "-kernel", "{image}"],
 }
+# What a profile needs done once before its first image is timed: Wine
+# makes its prefix (8 s and more on first use), which the inactivity limit
+# must not count.
+PREPARE = {
+    "wine64": [sys.executable,
+               os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                            "wine.py"), "--init"],
+}
+_prepared = set()
 # Boards whose exit status carries the number of failed tests. On ppc-e500
 # the reset request always ends QEMU with 0: the console is the verdict.
 EXIT_STATUS_MEANINGFUL = {"host": True, "ppc-e500": False, "arm-cm3": True,
                           "arm-cm4f": True, "riscv32": True,
-                          "rtems-qoriq_e500": False}
+                          "rtems-qoriq_e500": False, "wine64": True}
 
 BEGIN_RE = re.compile(r"^\*\*\* BEGIN OF TEST (.+) \*\*\*$")
 END_RE = re.compile(r"^\*\*\* END OF TEST (.+) \*\*\*$")
@@ -128,6 +143,10 @@ def boot(profile, image, inactivity, timeout, max_bytes, echo=None, extra=()):
                          % (profile, ", ".join(PROFILES)))
     if not os.path.exists(image):
         return b"", None, "image not found: %s" % image
+    if profile in PREPARE and profile not in _prepared:
+        subprocess.run(PREPARE[profile], stdin=subprocess.DEVNULL,
+                       stdout=subprocess.DEVNULL, check=True)
+        _prepared.add(profile)
     cmd = command(profile, image, extra)
     proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, start_new_session=True)

@@ -6,6 +6,8 @@ failure, hang, crash, flood, fake summary and never-started.
 Run by ./waf check after the images are built (build/<target>/qemu/).
 """
 import os
+import subprocess
+import sys
 import time
 import unittest
 
@@ -13,7 +15,8 @@ from qemu import harness
 
 BUILD = os.environ.get("DRDC_BUILD", "build")
 TARGETS = {"host": ("host", ""), "ppc-e500": ("ppc-e500", ".elf"),
-           "arm-cm3": ("arm-cm3", ".elf"), "riscv32": ("riscv32", ".elf")}
+           "arm-cm3": ("arm-cm3", ".elf"), "riscv32": ("riscv32", ".elf"),
+           "win64": ("wine64", ".exe")}
 # Short limits so the hang tests take seconds; each verdict must come
 # within the limit plus a small margin.
 INACTIVITY = 2.0
@@ -69,6 +72,26 @@ class JudgeRules(unittest.TestCase):
                        status=1)
         self.assertFalse(v.passed)
         self.assertEqual(1, v.test_failures)
+
+
+class WineRelay(unittest.TestCase):
+    """qemu/wine.py hands on a program's output until the program ends,
+    even while a process it started (as Wine's services do) holds the
+    pipe open: the harness must not wait for that process."""
+
+    def test_output_ends_with_the_program(self):
+        here = os.path.dirname(os.path.abspath(__file__))
+        script = ("import os, sys; sys.path.insert(0, %r); import wine; "
+                  "sys.exit(wine.run_relayed(['sh', '-c', 'echo out; "
+                  "echo err >&2; (sleep 20) & exit 3'], dict(os.environ)))"
+                  % here)
+        t0 = time.monotonic()
+        r = subprocess.run([sys.executable, "-c", script],
+                           capture_output=True, timeout=60)
+        self.assertLess(time.monotonic() - t0, 10.0)
+        self.assertEqual(3, r.returncode)
+        self.assertEqual(b"out\n", r.stdout)
+        self.assertEqual(b"err\n", r.stderr)
 
 
 class SelfTestImages(unittest.TestCase):

@@ -53,6 +53,13 @@ APT_GROUPS = {
     # which runs each part of the conformance digest
     "avr": {"gcc-avr": "1:5.4.0+Atmel3.6.2-3",
             "avr-libc": "1:2.0.0+Atmel3.6.2-3", "simavr": "1.6+dfsg-3"},
+    # win64: mingw-w64's GCC for Windows x86-64 in its win32 thread
+    # flavour (Win32 threads, no libwinpthread DLL: the programs need
+    # nothing but Windows's own msvcrt.dll and kernel32.dll), and Wine,
+    # which runs the .exe files (qemu/wine.py; no X display, so none of
+    # wine's Recommends)
+    "win64": {"gcc-mingw-w64-x86-64-win32": "12.2.0-14+deb12u1+25.2+b1",
+              "wine64": "8.0~repack-4"},
     # ./waf check beyond the targets' own tools
     "check": {
         # pkg-config: reads RTEMS BSP flags, checks the installed drdc.pc

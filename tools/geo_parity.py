@@ -34,11 +34,13 @@ import os
 import random
 import re
 import subprocess
+import sys
 from fractions import Fraction
 
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-DRDC = os.path.join(os.environ.get("DRDC_BUILD", os.path.join(TOP, "build")),
-                    "host", "drdc")
+sys.path.insert(0, os.path.join(TOP, "tools"))
+import drdc_tool  # noqa: E402  (which drdc: host, or win64 under Wine)
+DRDC = drdc_tool.COMMAND
 
 # GeoConvert's finest PREC per output, and drdc's cap for computed values
 FINEST = {"-g": 9, "-d": 10, "-:": 10, "-u": 9, "-m": 6, "-c": 8}
@@ -51,12 +53,13 @@ def run(prog, args, lines):
     r = subprocess.run(prog + args, input="".join(l + "\n" for l in lines),
                        capture_output=True, text=True)
     out = r.stdout.split("\n")[:-1]
-    assert len(out) == len(lines), (prog, args, r.stdout[-300:])
+    assert len(out) == len(lines), (prog, args, r.returncode, r.stdout[-300:],
+                                    r.stderr[-300:])
     return out
 
 
 def drdc(args, lines):
-    return run([DRDC, "geo"], args, lines)
+    return run(DRDC + ["geo"], args, lines)
 
 
 def geoconvert(args, lines):

@@ -18,9 +18,12 @@ What is checked, per object file or static library:
      __aeabi_dmul, ...), no libm (sin, sqrt, ...), no other libc, no heap.
 
   intcheck.py ARCH FILE...            check files; exit 1 on any finding
-  intcheck.py --build DIR --all T:ARCH...
+  intcheck.py --build DIR --all T:ARCH[:TOOL_PREFIX]...
         for each target T: libdrdc.a must pass, and the bait libraries
         (tests/intcheck/float_bait.c) must be caught, proving the check bites.
+        TOOL_PREFIX names the target's objdump and nm where they are not
+        the instruction set's usual ones (PREFIX): Windows x86-64 objects
+        (win64) are COFF, read by x86_64-w64-mingw32-objdump.
 """
 import argparse
 import os
@@ -141,8 +144,10 @@ def check_build(build, specs):
     ok = True
     for spec in specs:
         target, _, arch = spec.partition(":")
+        arch, _, tools = arch.partition(":")
+        tools = tools or PREFIX[arch]
         lib = os.path.join(build, target, "libdrdc.a")
-        findings = check(arch, [lib], PREFIX[arch])
+        findings = check(arch, [lib], tools)
         print("%-10s libdrdc.a: %s" % (target, "integer-only" if not findings
                                          else "%d finding(s)" % len(findings)))
         for f in findings:
@@ -158,7 +163,7 @@ def check_build(build, specs):
             path = os.path.join(build, target, bait)
             if not os.path.exists(path):
                 continue
-            caught = check(arch, [path], PREFIX[arch])
+            caught = check(arch, [path], tools)
             missing = [" or ".join(w) for w in wants
                        if not any(k in c for k in w for c in caught)]
             print("%-10s %s: %s" % (target, bait, "caught (%d findings)" % len(caught)

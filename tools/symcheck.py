@@ -9,16 +9,19 @@ clash with it.
         for each target: build/TARGET/libdrdc.a must pass, and the bait
         library (tests/symcheck/symbol_bait.c) must be caught.
 
-Compiler instrumentation may add its own external names for the library's
-objects (AddressSanitizer's ODR indicators, __odr_asan.<object>): they are
-judged by the object's name.
+The compiler may add its own external names for the library's objects,
+which are judged by the name of the object they stand for:
+AddressSanitizer's ODR indicators (__odr_asan.<object>), and on Windows
+x86-64 mingw-w64 GCC's pointers to data of other objects
+(.refptr.<object>: a COMDAT pointer each object that reads the data
+shares, which the linker's pseudo-relocations fill in).
 """
 import os
 import subprocess
 import sys
 
 PREFIX = "drdc_"
-INSTRUMENTATION = ("__odr_asan.",)
+INSTRUMENTATION = ("__odr_asan.", ".refptr.")
 
 
 def defined_externals(nm, path):

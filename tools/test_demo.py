@@ -37,11 +37,15 @@ DRDC = os.path.join(BUILD, "host", "drdc")
 IMAGES = {"host": os.path.join(BUILD, "host", "fw", "demo", "demo"),
           "ppc-e500": os.path.join(BUILD, "ppc-e500", "fw", "demo", "demo.elf"),
           "arm-cm3": os.path.join(BUILD, "arm-cm3", "fw", "demo", "demo.elf"),
-          "riscv32": os.path.join(BUILD, "riscv32", "fw", "demo", "demo.elf")}
+          "riscv32": os.path.join(BUILD, "riscv32", "fw", "demo", "demo.elf"),
+          "win64": os.path.join(BUILD, "win64", "fw", "demo", "demo.exe")}
+# the harness profile of a target whose name is not its profile's
+PROFILE = {"win64": "wine64"}
 
 
 def console(target):
-    data, status, killed = harness.boot(target, IMAGES[target], 10, 60, 1 << 20)
+    data, status, killed = harness.boot(PROFILE.get(target, target),
+                                        IMAGES[target], 10, 60, 1 << 20)
     assert not killed, killed
     text = data.decode("ascii").replace("\r", "")
     return text.split(": GNSS", 1)[1]  # after the line naming the board
@@ -64,7 +68,7 @@ class Demo(unittest.TestCase):
         cls.host = console("host")
 
     def test_every_target_prints_the_same_bits(self):
-        for target in ("ppc-e500", "arm-cm3", "riscv32"):
+        for target in ("ppc-e500", "arm-cm3", "riscv32", "win64"):
             self.assertEqual(self.host, console(target), target)
 
     def test_gps_time_matches_the_host_tool(self):

@@ -1,17 +1,22 @@
 # SPDX-License-Identifier: BSD-2-Clause
-"""Tests of the host tool build/host/drdc (run by ./waf check)."""
+"""Tests of the tool drdc (run by ./waf check): build/host/drdc, or with
+DRDC_TARGET=win64 build/win64/drdc.exe under Wine (tools/drdc_tool.py)."""
 import math
 import os
 import re
 import subprocess
+import sys
 import unittest
 
-DRDC = os.path.join(os.environ.get("DRDC_BUILD", "build"), "host", "drdc")
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(TOP, "tools"))
+import drdc_tool  # noqa: E402  (which drdc, and how it ends its lines)
+
+DRDC = drdc_tool.COMMAND
 
 
 def run(*args, stdin=""):
-    return subprocess.run([DRDC] + list(args), capture_output=True, text=True,
+    return subprocess.run(DRDC + list(args), capture_output=True, text=True,
                           input=stdin)
 
 
@@ -73,8 +78,8 @@ class OneLineOutPerLineIn(unittest.TestCase):
         data = b"\n".join(lines) + b"\n" + b"10 20"  # no final newline
         count = data.count(b"\n") + 1
         for args in self.COMMANDS:
-            r = subprocess.run([DRDC] + args, input=data, capture_output=True)
-            out = r.stdout.split(b"\n")
+            r = subprocess.run(DRDC + args, input=data, capture_output=True)
+            out = drdc_tool.lf_text(r.stdout).split(b"\n")
             self.assertEqual(b"", out[-1], args)
             self.assertEqual(count, len(out) - 1, args)
             self.assertIn(r.returncode, (0, 1), args)
@@ -86,10 +91,30 @@ class OneLineOutPerLineIn(unittest.TestCase):
     def test_a_100000_character_line_is_one_record(self):
         for args in self.COMMANDS:
             for line in (b"9" * 100000, b"1.5 " * 25000):
-                r = subprocess.run([DRDC] + args, input=line + b"\n",
+                r = subprocess.run(DRDC + args, input=line + b"\n",
                                    capture_output=True)
                 self.assertEqual(1, r.stdout.count(b"\n"), args)
                 self.assertTrue(r.stdout.startswith(b"ERROR: "), args)
+
+    def test_ctrl_z_is_an_ordinary_byte(self):
+        # Windows's text-mode input would end at Ctrl-Z (0x1a)
+        # the same line alone, as test_crlf_is_the_same_as_lf
+        r = subprocess.run(DRDC + ["geo", "-u"], input=b"\x1a\n10 20\n",
+                           capture_output=True)
+        alone = subprocess.run(DRDC + ["geo", "-u"], input=b"10 20\n",
+                               capture_output=True)
+        out = drdc_tool.lf_text(r.stdout).split(b"\n")
+        self.assertEqual(1, r.returncode)
+        self.assertEqual(3, len(out), out)
+        self.assertTrue(out[0].startswith(b"ERROR: "), out)
+        self.assertEqual(drdc_tool.lf_text(alone.stdout), out[1] + b"\n")
+
+    def test_lines_end_as_on_the_system(self):
+        # LF, and CR LF on Windows (as GeoConvert's lines there)
+        r = subprocess.run(DRDC + ["geo", "-u"], input=b"10 20\r\n30 40\n",
+                           capture_output=True)
+        self.assertEqual(2, r.stdout.count(drdc_tool.NEWLINE), r.stdout)
+        self.assertEqual(2, r.stdout.count(b"\n"), r.stdout)
 
     def test_crlf_is_the_same_as_lf(self):
         cases = [(["time", "--from", "utc", "--to", "gps"],
@@ -98,9 +123,9 @@ class OneLineOutPerLineIn(unittest.TestCase):
                  (["units"], b"3.5 ft m"), (["geo", "-u"], b"10 20"),
                  (["nmea"], b"$HEHDT,274.07,T*19")]
         for args, line in cases:
-            lf = subprocess.run([DRDC] + args, input=line + b"\n",
+            lf = subprocess.run(DRDC + args, input=line + b"\n",
                                 capture_output=True)
-            crlf = subprocess.run([DRDC] + args, input=line + b"\r\n",
+            crlf = subprocess.run(DRDC + args, input=line + b"\r\n",
                                   capture_output=True)
             self.assertEqual(0, lf.returncode, args)
             self.assertEqual(lf.stdout, crlf.stdout, args)

@@ -12,7 +12,9 @@ import unittest
 from fractions import Fraction
 
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-DRDC = os.path.join(os.environ.get("DRDC_BUILD", "build"), "host", "drdc")
+sys.path.insert(0, os.path.join(TOP, "tools"))
+import drdc_tool  # noqa: E402  (which drdc: host, or win64 under Wine)
+DRDC = drdc_tool.COMMAND
 sys.path.insert(0, os.path.join(TOP, "tests", "ref"))
 import gen_nmea  # noqa: E402  (the vectors' model)
 
@@ -21,7 +23,7 @@ BEYOND_NAMES = ["hdop", "speed", "rms", "sigma_major", "sigma_minor", "sigma_lat
 
 
 def nmea(*args, data=b""):
-    return subprocess.run([DRDC, "nmea"] + list(args), input=data, capture_output=True)
+    return subprocess.run(DRDC + ["nmea"] + list(args), input=data, capture_output=True)
 
 
 def decimal(value, decimals):
@@ -228,7 +230,7 @@ class NmeaCommand(unittest.TestCase):
             self.assertIn(word, r.stdout)
         r = nmea("--bogus")
         self.assertEqual(2, r.returncode)
-        top = subprocess.run([DRDC, "--help"], capture_output=True)
+        top = subprocess.run(DRDC + ["--help"], capture_output=True)
         self.assertIn(b"nmea", top.stdout)
 
 

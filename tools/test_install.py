@@ -30,10 +30,12 @@ TARGETS = {
                                      "-mfloat-abi=hard", "-mfpu=fpv4-sp-d16"]),
     "ppc-8540": ("elf32-powerpc", ["-mcpu=8540", "-msoft-float"]),
     "riscv32": ("elf32-littleriscv", ["-march=rv32imac", "-mabi=ilp32"]),
+    "win64": ("pe-x86-64", []),
 }
 OBJDUMP = {t: ("powerpc-linux-gnu-" if t.startswith("ppc") else
                "arm-none-eabi-" if t.startswith("arm") else
-               "riscv64-unknown-elf-" if t.startswith("riscv") else "") + "objdump"
+               "riscv64-unknown-elf-" if t.startswith("riscv") else
+               "x86_64-w64-mingw32-" if t == "win64" else "") + "objdump"
            for t in TARGETS}
 # The Arm architecture every object of an Arm library is built for (its
 # build attributes): Thumb-1 only for the Cortex-M0 build, which an
@@ -210,6 +212,22 @@ class Examples(unittest.TestCase):
         week, tow = drdc(lines["UTC"] + "\n", "time", "--from", "utc",
                          "--to", "gps").split()
         self.assertEqual("%s %s" % (week, tow.split(".")[0]), lines["GPS"])
+
+    def test_windows_example_prints_the_hosts_text(self):
+        """The README's "On Windows": examples/host built by mingw-w64
+        from the installed win64 library, run under Wine; its lines end
+        in CR LF, as Windows's text mode writes them."""
+        sys.path.insert(0, TOP)
+        from qemu import harness
+        want = self.host_text()
+        exe = os.path.join(self.destdir, "example-win64.exe")
+        self.make("host", exe, "TARGET=win64",
+                  "CC=x86_64-w64-mingw32-gcc-win32")
+        data, status, killed = harness.boot("wine64", exe, 10, 60, 1 << 16)
+        self.assertIsNone(killed)
+        self.assertEqual(0, status)
+        self.assertEqual(want.count("\n"), data.count(b"\r\n"))
+        self.assertEqual(want, data.decode("ascii").replace("\r\n", "\n"))
 
     def test_cortex_m0_linked_in_steps_is_thumb1_throughout(self):
         """Compile with --cflags, link with --libs alone: every input of

@@ -7,6 +7,7 @@
  */
 #include <ctype.h>
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -78,6 +79,14 @@ static const char *next_word(char **s, size_t *length)
 /* value in `from` -> value in `to`, through SI in long double (64-bit
  * mantissa: 3 more digits than printed). A result that is only the
  * rounding noise of two cancelling offsets (32 degF to degC) is 0. */
+/* Neither infinite nor NaN. Not isfinite(): mingw-w64's macro converts
+ * its argument to each floating type in turn, which -Wconversion rejects
+ * in the Windows build. */
+static int is_finite(long double v)
+{
+  return (v == v) && (fabsl(v) <= LDBL_MAX);
+}
+
 static long double convert(long double v, const drdc_units_expr_t *from,
                            const drdc_units_expr_t *to)
 {
@@ -155,7 +164,7 @@ static int convert_line(char *line, char *out, size_t size)
   }
   errno = 0;
   v = strtold(word, &end);
-  if ((end != word + n) || (errno != 0) || (*word == '\0') || !isfinite(v)) {
+  if ((end != word + n) || (errno != 0) || (*word == '\0') || !is_finite(v)) {
     snprintf(out, size, "ERROR: malformed value '%.*s'", (int)(n > 80 ? 80 : n),
              word);
     return 1;

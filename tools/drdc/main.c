@@ -7,6 +7,11 @@
 #include <stdio.h>
 #include <string.h>
 
+#ifdef _WIN32
+#include <fcntl.h>
+#include <io.h>
+#endif
+
 #include <drdc/version.h>
 
 #include "commands.h"
@@ -43,8 +48,22 @@ static const char usage[] =
     "  --help     this text\n"
     "  --version  the library version\n";
 
+/* Standard input in binary mode on Windows: the text mode of its C
+ * library would end the input at the first Ctrl-Z byte and drop each CR
+ * before an LF, so lines.c reads the same bytes, LF or CR LF lines, on
+ * every system. Standard output stays in text mode there, each line
+ * ending in CR LF, as GeoConvert's output (a C++ stream in text mode) and
+ * that of Windows's own console programs do. */
+static void binary_input(void)
+{
+#ifdef _WIN32
+  (void)_setmode(_fileno(stdin), _O_BINARY);
+#endif
+}
+
 int main(int argc, char **argv)
 {
+  binary_input();
   if ((argc == 2) && (strcmp(argv[1], "--help") == 0)) {
     fputs(usage, stdout);
     return 0;
