@@ -416,6 +416,7 @@ def configure(conf):
                       msg="Checking that %s compiles" % name)
         if "hosted_bait" in t:
             _check_hermetic(conf, name, t)
+        configure_cxx(conf, name, t)
     # The RTEMS BSP variants derive from the default environment (the
     # targets' own are set above).
     conf.setenv("")
@@ -497,6 +498,8 @@ def build_library(bld, cflags):
     bld.install_files("${INCLUDEDIR}/drdc",
                       _glob(bld, "fixed/include/drdc/*.h")
                       + _glob(bld, "core/include/drdc/*.h"))
+    # the C++ layer, header-only, beside the C headers' folder
+    bld.install_files("${INCLUDEDIR}", _glob(bld, "cxx/include/*.hpp"))
     glue = bool(bld.env.RTEMS_BSP and bld.env.HAVE_RTEMS_H)
     if glue:
         # RTEMS clock glue, installed beside the library
@@ -539,6 +542,89 @@ def _qemu_linkcmds(task):
         return 1
     task.outputs[0].write(text.replace(line + "\n", replacement + "\n"))
     return 0
+
+
+# ---------------------------------------------------------------------
+# The C++ layer: cxx/include/drdc.hpp (header-only, C++17, over the C
+# API), its Unity runner, the C++ demo and the wrapper's benchmark. One
+# entry per target that builds them:
+#   compilers  C++ compilers, the first with the target's tool prefix
+#              (its g++), the others native (host only)
+#   flags      what the target adds: bare metal has no exceptions, RTTI
+#              or libstdc++, so the images link with the C driver
+#   bench      the wrapper's quaternion product beside the C call, timed
+#              under QEMU -icount (tools/test_cxx.py)
+CXX_TARGETS = {
+    "host": {"compilers": ["g++", "clang++-14"], "flags": [],
+             "bench": False},
+    "arm-cm3": {"compilers": ["g++"], "flags": ["-fno-exceptions",
+                                               "-fno-rtti"],
+                "bench": True},
+}
+# The warnings of every C++ file we write, errors on every compiler.
+CXX_WARNINGS = ["-std=c++17", "-Wall", "-Wextra", "-pedantic", "-Werror",
+                "-Wconversion", "-Wsign-conversion", "-Wshadow"]
+
+
+def configure_cxx(conf, name, t):
+    """CXX (and CXX_<n> for the further compilers) of a target of
+    CXX_TARGETS; LINK_CXX is the C driver where there is no libstdc++."""
+    spec = CXX_TARGETS.get(name)
+    if spec is None:
+        return
+    first, others = spec["compilers"][0], spec["compilers"][1:]
+    conf.find_program(t["cross"] + first, var="CXX")
+    conf.load("gxx")
+    if t["cross"]:
+        conf.env.LINK_CXX = conf.env.CC
+    conf.env.CXX_OTHERS = []
+    for compiler in others:
+        var = "CXX_" + re.sub(r"\W", "_", compiler).upper()
+        conf.find_program(compiler, var=var)
+        conf.env.CXX_OTHERS += [(compiler, var)]
+
+
+def build_cxx(bld, t):
+    """Per C++ compiler of the target: fw/cxx-runner/cxx-runner (the Unity
+    tests of drdc.hpp) and fw/demo-cxx/demo-cxx (the C++ demo); the
+    further compilers' images get the compiler's name as a suffix
+    (cxx-runner-clang++-14). On a bench target also fw/bench-cxx."""
+    spec = CXX_TARGETS.get(bld.variant)
+    if spec is None:
+        return
+    unity = bld.root.find_dir(bld.env.UNITY)
+    cxxflags = (bld.env.ARCH + CODEGEN + CXX_WARNINGS + spec["flags"]
+                + ["-isystem", unity.abspath()])
+    includes = ["cxx/include", "tests", "bsp"]
+    ldscript = bld.path.find_node("bsp/%s/link.ld" % t["bsp"])
+    compilers = [("", None)] + [("-" + c, var)
+                                for c, var in bld.env.CXX_OTHERS]
+    for k, (suffix, var) in enumerate(compilers):
+        images = [
+            ("fw/cxx-runner/cxx-runner",
+             ["fw/cxx-runner/main.cpp", "tests/cxx/test_cxx.cpp"],
+             "libdrdc unity bsp"),
+            ("fw/demo-cxx/demo-cxx", ["fw/demo-cxx/main.cpp"],
+             "libdrdc bsp"),
+        ]
+        if spec["bench"] and not var:
+            images.append(("fw/bench-cxx/bench-cxx",
+                           ["fw/bench-cxx/main.cpp"], "libdrdc bsp"))
+        for name, source, use in images:
+            target = name + suffix + t["ext"]
+            # an environment of its own per image: waf appends the task
+            # generator's flags to it
+            env = bld.env.derive()
+            if var:
+                env.CXX = env.LINK_CXX = bld.env[var]
+            bld.program(features="cxx cxxprogram", source=source,
+                        target=target, use=use, env=env, idx=300 + k,
+                        cxxflags=cxxflags, includes=includes,
+                        install_path=None)
+            if ldscript:
+                bld.add_manual_dependency(
+                    bld.path.find_or_declare(target), ldscript)
+# ---------------------------------------------------------------------
 
 
 def build_rtems_runner(bld, cflags):
@@ -678,6 +764,7 @@ def build(bld):
             "".join(n.abspath() + "\n" for n in task.inputs)),
         source=list(runner.link_task.inputs),
         target="fw/test-runner/objects.txt")
+    build_cxx(bld, t)
     # the demo's link map: what of the library an application really links
     # (tools/footprint.py, docs/performance.md)
     demo_map = bld.path.find_or_declare("fw/demo/demo.map").abspath()
