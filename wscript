@@ -624,6 +624,21 @@ def build_cxx(bld, t):
             if ldscript:
                 bld.add_manual_dependency(
                     bld.path.find_or_declare(target), ldscript)
+
+
+def cxx_runner_images(top_env):
+    """harness.py specs of the C++ Unity runners: <target>-cxx[-<compiler>]."""
+    specs = []
+    for name, spec in CXX_TARGETS.items():
+        if name not in (top_env.TARGETS or []):
+            continue
+        t = TARGETS[name]
+        for k, compiler in enumerate(spec["compilers"]):
+            suffix = "-" + compiler if k else ""
+            specs.append("%s-cxx%s=%s:%s" % (
+                name, suffix, t["qemu"], os.path.join(
+                    out, name, "fw/cxx-runner/cxx-runner" + suffix + t["ext"])))
+    return specs
 # ---------------------------------------------------------------------
 
 
@@ -983,6 +998,8 @@ class RunChecks(Build.BuildContext):
             ("host tool drdc, the demo against it, the benchmark guard",
              ["-m", "unittest", "-q", "tools.test_drdc",
               "tools.test_drdc_nmea", "tools.test_demo", "tools.test_bench"]),
+            ("C++ layer: demo equals C demo, hot path within 5 %, example",
+             ["-m", "unittest", "-q", "tools.test_cxx"]),
             ("16-bit int: every digest part on an AVR under simavr",
              ["-m", "unittest", "-q", "tools.test_avr"]),
             ("installed tree: every target side by side, a client of it",
@@ -1002,6 +1019,8 @@ class RunChecks(Build.BuildContext):
         images = ["%s=%s:%s" % (n, t["qemu"], os.path.join(
             out, n, "fw/test-runner/test-runner" + t["ext"]))
             for n, t in TARGETS.items() if t.get("images", True)]
+        # the C++ layer's Unity suite, per C++ compiler (CXX_TARGETS)
+        images += cxx_runner_images(top_env)
         # the ppc-e500 runner linked against the library installed into
         # the stand-in RTEMS BSP prefix (tools/rtems_standin.py)
         images.append("rtems-standin=ppc-e500:" + os.path.join(

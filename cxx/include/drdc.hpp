@@ -618,9 +618,8 @@ public:
   {
     /* the C function writes straight into the returned object: the hot
      * path costs what the C call costs (fw/bench-cxx) */
-    return result<Quat>::of([&](Quat &out) {
-      return drdc_quat_mul(&q_, &b.q_, &out.q_);
-    });
+    return result<Quat>::of(
+        [&](Quat &out) { return drdc_quat_mul(&q_, &b.q_, &out.q_); });
   }
   /** Conjugate (drdc_quat_conj): the inverse of a unit quaternion. */
   Quat conj() const

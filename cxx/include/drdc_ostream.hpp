@@ -144,6 +144,11 @@ inline std::ostream &operator<<(std::ostream &os, const Utm &u)
             << u.northing();
 }
 
+inline std::ostream &operator<<(std::ostream &os, const Mgrs &m)
+{
+  return os << m.c_str();
+}
+
 /** The value, or the status's name. */
 template <typename T>
 std::ostream &operator<<(std::ostream &os, const result<T> &r)

@@ -382,6 +382,24 @@ void test_durations()
   TEST_ASSERT_TRUE(-drdc::Duration::seconds(1) < drdc::Duration());
 }
 
+#if defined(__cpp_exceptions)
+/* Where the compiler has exceptions, value_or_throw() throws the status. */
+void test_value_or_throw_throws_the_status()
+{
+  const drdc::result<drdc::Quat> zero = drdc::Quat(0, 0, 0, 0).normalized();
+  drdc::status caught = DRDC_OK;
+  try {
+    (void)zero.value_or_throw();
+  } catch (const drdc::error &e) {
+    caught = e.code;
+    TEST_ASSERT_EQUAL_STRING("DRDC_E_DOMAIN", e.what());
+  }
+  TEST_ASSERT_EQUAL_INT(DRDC_E_DOMAIN, caught);
+  TEST_ASSERT_TRUE(drdc::Quat(0, 0, 0, 1).normalized().value_or_throw() ==
+                   drdc::Quat(0, 0, 0, DRDC_Q1_30_ONE));
+}
+#endif
+
 } // namespace
 
 void suite_cxx(void)
@@ -400,4 +418,7 @@ void suite_cxx(void)
   RUN_TEST(test_time_points_across_a_leap_second);
   RUN_TEST(test_gps_time);
   RUN_TEST(test_durations);
+#if defined(__cpp_exceptions)
+  RUN_TEST(test_value_or_throw_throws_the_status);
+#endif
 }
