@@ -106,6 +106,7 @@ public:
   {
     return !drdc_status_is_error(status_);
   }
+  /** ok(), for `if (r)`. */
   constexpr explicit operator bool() const
   {
     return ok();
@@ -165,10 +166,13 @@ namespace detail {
  *  products (up to 19 digits times 2^42) exceed 64 bits, and not every
  *  target compiler has __int128. */
 struct u128 {
+  /** Bits 64..127. */
   uint64_t hi;
+  /** Bits 0..63. */
   uint64_t lo;
 };
 
+/** The full 128-bit product of two 64-bit factors. */
 constexpr u128 mul_64x64(uint64_t a, uint64_t b)
 {
   const uint64_t a0 = a & 0xffffffffu;
@@ -185,16 +189,19 @@ constexpr u128 mul_64x64(uint64_t a, uint64_t b)
               (middle << 32) | (p00 & 0xffffffffu)};
 }
 
+/** a < b. */
 constexpr bool less(u128 a, u128 b)
 {
   return (a.hi < b.hi) || ((a.hi == b.hi) && (a.lo < b.lo));
 }
 
+/** a - b (a >= b). */
 constexpr u128 minus(u128 a, u128 b)
 {
   return u128{a.hi - b.hi - ((a.lo < b.lo) ? 1u : 0u), a.lo - b.lo};
 }
 
+/** 2 a + bit. */
 constexpr u128 twice_plus(u128 a, unsigned bit)
 {
   return u128{(a.hi << 1) | (a.lo >> 63), (a.lo << 1) | bit};
@@ -263,6 +270,7 @@ template <char... C> constexpr decimal parse()
   return d;
 }
 
+/** 10^n (n <= 19). */
 constexpr uint64_t pow10(unsigned n)
 {
   uint64_t p = 1u;
@@ -285,6 +293,7 @@ constexpr bool fits_i64(u128 m, bool negative)
   return (m.hi == 0u) && (m.lo <= (negative ? (uint64_t{1} << 63) : INT64_MAX));
 }
 
+/** The signed value of a magnitude that fits_i64() accepts. */
 constexpr int64_t to_i64(u128 m, bool negative)
 {
   /* two's complement of the magnitude, in unsigned arithmetic */
@@ -302,6 +311,7 @@ struct metre_unit {};
  * are the template arguments), so that every conversion is a constant.
  */
 template <typename U, bool Negative, char... C> struct literal {
+  /** The decimal, parsed while compiling. */
   static constexpr detail::decimal value = detail::parse<C...>();
   static_assert(value.ok, "drdc literal: decimal digits and one '.' only, "
                           "at most 19 digits, no exponent");
@@ -351,22 +361,27 @@ public:
       : bam_(bam_of<N, C...>::value)
   {
   }
+  /** The binary angle, 2^32 per turn. */
   constexpr drdc_bam32_t bam() const
   {
     return bam_;
   }
+  /** Sum modulo one turn. */
   constexpr Angle operator+(Angle o) const
   {
     return Angle(static_cast<drdc_bam32_t>(bam_ + o.bam_));
   }
+  /** Difference modulo one turn. */
   constexpr Angle operator-(Angle o) const
   {
     return Angle(static_cast<drdc_bam32_t>(bam_ - o.bam_));
   }
+  /** Equal in every field. */
   constexpr bool operator==(Angle o) const
   {
     return bam_ == o.bam_;
   }
+  /** Not equal in some field. */
   constexpr bool operator!=(Angle o) const
   {
     return bam_ != o.bam_;
@@ -391,6 +406,7 @@ public:
   constexpr GeoAngle() : nas_(0)
   {
   }
+  /** From nano-arcseconds. */
   static constexpr GeoAngle from_nas(drdc_nas_t n)
   {
     return GeoAngle(n);
@@ -402,18 +418,22 @@ public:
       : nas_(nas_of<N, C...>::value)
   {
   }
+  /** Nano-arcseconds. */
   constexpr drdc_nas_t nas() const
   {
     return nas_;
   }
+  /** Equal in every field. */
   constexpr bool operator==(GeoAngle o) const
   {
     return nas_ == o.nas_;
   }
+  /** Not equal in some field. */
   constexpr bool operator!=(GeoAngle o) const
   {
     return nas_ != o.nas_;
   }
+  /** Smaller raw value. */
   constexpr bool operator<(GeoAngle o) const
   {
     return nas_ < o.nas_;
@@ -439,6 +459,7 @@ public:
   constexpr Length() : raw_(0)
   {
   }
+  /** From Q47.16 metres. */
   static constexpr Length from_q47_16(drdc_q47_16_t r)
   {
     return Length(r);
@@ -449,18 +470,22 @@ public:
       : raw_(raw_of<N, C...>::value)
   {
   }
+  /** Q47.16 metres. */
   constexpr drdc_q47_16_t q47_16() const
   {
     return raw_;
   }
+  /** Equal in every field. */
   constexpr bool operator==(Length o) const
   {
     return raw_ == o.raw_;
   }
+  /** Not equal in some field. */
   constexpr bool operator!=(Length o) const
   {
     return raw_ != o.raw_;
   }
+  /** Smaller raw value. */
   constexpr bool operator<(Length o) const
   {
     return raw_ < o.raw_;
@@ -486,6 +511,7 @@ public:
   constexpr LocalLength() : raw_(0)
   {
   }
+  /** From Q15.16 metres. */
   static constexpr LocalLength from_q15_16(drdc_q15_16_t r)
   {
     return LocalLength(r);
@@ -497,6 +523,7 @@ public:
       : raw_(raw_of<N, C...>::value)
   {
   }
+  /** Q15.16 metres. */
   constexpr drdc_q15_16_t q15_16() const
   {
     return raw_;
@@ -506,14 +533,17 @@ public:
   {
     return Length::from_q47_16(static_cast<drdc_q47_16_t>(raw_));
   }
+  /** Equal in every field. */
   constexpr bool operator==(LocalLength o) const
   {
     return raw_ == o.raw_;
   }
+  /** Not equal in some field. */
   constexpr bool operator!=(LocalLength o) const
   {
     return raw_ != o.raw_;
   }
+  /** Smaller raw value. */
   constexpr bool operator<(LocalLength o) const
   {
     return raw_ < o.raw_;
@@ -553,19 +583,23 @@ struct Euler {
   Angle pitch; /**< Theta: positive nose up */
   Angle roll;  /**< Phi: positive right wing down */
 
+  /** The C struct of the same value. */
   constexpr drdc_euler_t c() const
   {
     return drdc_euler_t{yaw.bam(), pitch.bam(), roll.bam()};
   }
+  /** From the C struct. */
   static constexpr Euler from_c(const drdc_euler_t &e)
   {
     return Euler{Angle::from_bam(e.yaw), Angle::from_bam(e.pitch),
                  Angle::from_bam(e.roll)};
   }
+  /** Equal in every field. */
   constexpr bool operator==(const Euler &o) const
   {
     return (yaw == o.yaw) && (pitch == o.pitch) && (roll == o.roll);
   }
+  /** Not equal in some field. */
   constexpr bool operator!=(const Euler &o) const
   {
     return !(*this == o);
@@ -584,6 +618,7 @@ public:
   constexpr Quat() : q_{DRDC_Q1_30_ONE, 0, 0, 0}
   {
   }
+  /** From the C struct. */
   constexpr explicit Quat(const drdc_quat_t &q) : q_(q)
   {
   }
@@ -592,22 +627,27 @@ public:
       : q_{s, x, y, z}
   {
   }
+  /** The C struct of the same value. */
   constexpr const drdc_quat_t &c() const
   {
     return q_;
   }
+  /** Scalar part, Q1.30. */
   constexpr drdc_q1_30_t s() const
   {
     return q_.s;
   }
+  /** x part, Q1.30. */
   constexpr drdc_q1_30_t x() const
   {
     return q_.x;
   }
+  /** y part, Q1.30. */
   constexpr drdc_q1_30_t y() const
   {
     return q_.y;
   }
+  /** z part, Q1.30. */
   constexpr drdc_q1_30_t z() const
   {
     return q_.z;
@@ -641,6 +681,7 @@ public:
     return (q_.s == o.q_.s) && (q_.x == o.q_.x) && (q_.y == o.q_.y) &&
            (q_.z == o.q_.z);
   }
+  /** Not equal in some field. */
   constexpr bool operator!=(const Quat &o) const
   {
     return !(*this == o);
@@ -657,11 +698,13 @@ inline result<Quat> operator*(const result<Quat> &a, const Quat &b)
   return a.ok() ? a.value() * b : a;
 }
 
+/** A product with a result factor: its error, or the product. */
 inline result<Quat> operator*(const result<Quat> &a, const result<Quat> &b)
 {
   return b.ok() ? a * b.value() : b;
 }
 
+/** A product with a result factor: its error, or the product. */
 inline result<Quat> operator*(const Quat &a, const result<Quat> &b)
 {
   return b.ok() ? a * b.value() : b;
@@ -690,10 +733,12 @@ struct LocalVec {
   LocalLength y; /**< right or east */
   LocalLength z; /**< down */
 
+  /** The C struct of the same value. */
   constexpr drdc_vec3_q15_16_t c() const
   {
     return drdc_vec3_q15_16_t{x.q15_16(), y.q15_16(), z.q15_16()};
   }
+  /** From the C struct. */
   static constexpr LocalVec from_c(const drdc_vec3_q15_16_t &v)
   {
     return LocalVec{LocalLength::from_q15_16(v.x),
@@ -728,54 +773,67 @@ public:
     return Duration(sec + floor_div(nsec),
                     nsec - (floor_div(nsec) * 1000000000));
   }
+  /** A whole number of seconds. */
   static constexpr Duration seconds(int64_t s)
   {
     return of(s, 0);
   }
+  /** A number of nanoseconds, carried into seconds. */
   static constexpr Duration nanoseconds(int64_t ns)
   {
     return of(0, ns);
   }
+  /** Whole seconds (floor). */
   constexpr int64_t sec() const
   {
     return sec_;
   }
+  /** Nanoseconds, 0..999 999 999. */
   constexpr int32_t nsec() const
   {
     return static_cast<int32_t>(nsec_);
   }
+  /** Sum. */
   constexpr Duration operator+(Duration o) const
   {
     return of(sec_ + o.sec_, nsec_ + o.nsec_);
   }
+  /** Difference. */
   constexpr Duration operator-(Duration o) const
   {
     return of(sec_ - o.sec_, nsec_ - o.nsec_);
   }
+  /** The negated span. */
   constexpr Duration operator-() const
   {
     return of(-sec_, -nsec_);
   }
+  /** Equal in every field. */
   constexpr bool operator==(Duration o) const
   {
     return (sec_ == o.sec_) && (nsec_ == o.nsec_);
   }
+  /** Not equal in some field. */
   constexpr bool operator!=(Duration o) const
   {
     return !(*this == o);
   }
+  /** Shorter. */
   constexpr bool operator<(Duration o) const
   {
     return (sec_ < o.sec_) || ((sec_ == o.sec_) && (nsec_ < o.nsec_));
   }
+  /** Longer. */
   constexpr bool operator>(Duration o) const
   {
     return o < *this;
   }
+  /** Not longer. */
   constexpr bool operator<=(Duration o) const
   {
     return !(o < *this);
   }
+  /** Not shorter. */
   constexpr bool operator>=(Duration o) const
   {
     return !(*this < o);
@@ -806,9 +864,11 @@ public:
   constexpr UtcTime() : t_{0, 0}
   {
   }
+  /** From the C struct. */
   constexpr explicit UtcTime(const drdc_time_t &t) : t_(t)
   {
   }
+  /** The C struct of the same value. */
   constexpr const drdc_time_t &c() const
   {
     return t_;
@@ -857,10 +917,12 @@ public:
     const status s = drdc_time_tai_to_utc(leap, &in, &out);
     return make_result(s, UtcTime(out));
   }
+  /** plus(d) with the built-in leap-second table. */
   result<UtcTime> operator+(Duration d) const
   {
     return plus(d);
   }
+  /** plus(-d) with the built-in leap-second table. */
   result<UtcTime> operator-(Duration d) const
   {
     return plus(-d);
@@ -878,10 +940,12 @@ public:
     }
     return a.value() - b.value();
   }
+  /** Equal in every field. */
   constexpr bool operator==(const UtcTime &o) const
   {
     return (t_.sec == o.t_.sec) && (t_.nsec == o.t_.nsec);
   }
+  /** Not equal in some field. */
   constexpr bool operator!=(const UtcTime &o) const
   {
     return !(*this == o);
@@ -893,14 +957,17 @@ public:
     return (t_.sec < o.t_.sec) ||
            ((t_.sec == o.t_.sec) && (t_.nsec < o.t_.nsec));
   }
+  /** Later in time. */
   constexpr bool operator>(const UtcTime &o) const
   {
     return o < *this;
   }
+  /** Not later. */
   constexpr bool operator<=(const UtcTime &o) const
   {
     return !(o < *this);
   }
+  /** Not earlier. */
   constexpr bool operator>=(const UtcTime &o) const
   {
     return !(*this < o);
@@ -916,21 +983,26 @@ public:
   constexpr GpsTime() : g_{0, 0, 0}
   {
   }
+  /** From the C struct. */
   constexpr explicit GpsTime(const drdc_time_gps_t &g) : g_(g)
   {
   }
+  /** The C struct of the same value. */
   constexpr const drdc_time_gps_t &c() const
   {
     return g_;
   }
+  /** Full GPS week since 1980-01-06. */
   constexpr int32_t week() const
   {
     return g_.week;
   }
+  /** Seconds of the week, 0..604 799. */
   constexpr int32_t tow() const
   {
     return g_.tow;
   }
+  /** Nanoseconds, 0..999 999 999. */
   constexpr int32_t nsec() const
   {
     return g_.nsec;
@@ -963,19 +1035,23 @@ public:
     }
     return from_utc(later.value());
   }
+  /** The GPS time `d` earlier. */
   result<GpsTime> operator-(Duration d) const
   {
     return *this + (-d);
   }
+  /** Equal in every field. */
   constexpr bool operator==(const GpsTime &o) const
   {
     return (g_.week == o.g_.week) && (g_.tow == o.g_.tow) &&
            (g_.nsec == o.g_.nsec);
   }
+  /** Not equal in some field. */
   constexpr bool operator!=(const GpsTime &o) const
   {
     return !(*this == o);
   }
+  /** Earlier in time. */
   constexpr bool operator<(const GpsTime &o) const
   {
     return (g_.week < o.g_.week) ||
@@ -983,14 +1059,17 @@ public:
             ((g_.tow < o.g_.tow) ||
              ((g_.tow == o.g_.tow) && (g_.nsec < o.g_.nsec))));
   }
+  /** Later in time. */
   constexpr bool operator>(const GpsTime &o) const
   {
     return o < *this;
   }
+  /** Not later. */
   constexpr bool operator<=(const GpsTime &o) const
   {
     return !(o < *this);
   }
+  /** Not earlier. */
   constexpr bool operator>=(const GpsTime &o) const
   {
     return !(*this < o);
@@ -1007,18 +1086,22 @@ private:
 struct Utm {
   drdc_geo_utm_t c; /**< zone, hemisphere, easting, northing */
 
+  /** UTM zone 1..60, or 0 for UPS. */
   constexpr int32_t zone() const
   {
     return c.zone;
   }
+  /** True in the northern hemisphere. */
   constexpr bool north() const
   {
     return c.north;
   }
+  /** Easting, Q47.16 m. */
   constexpr Length easting() const
   {
     return Length::from_q47_16(c.easting);
   }
+  /** Northing, Q47.16 m. */
   constexpr Length northing() const
   {
     return Length::from_q47_16(c.northing);
@@ -1048,6 +1131,7 @@ struct Mgrs {
         drdc_geo_mgrs_from_utm(&u.c, prec, out.text, sizeof out.text);
     return make_result(s, out);
   }
+  /** The NUL-terminated text. */
   const char *c_str() const
   {
     return text;
@@ -1061,11 +1145,13 @@ struct WPose {
   Length height;      /**< above mean sea level */
   Quat q;             /**< body FRD to NED */
 
+  /** The C struct of the same value. */
   drdc_WPose_t c() const
   {
     return drdc_WPose_t{longitude.nas(), latitude.nas(), height.q47_16(),
                         q.c()};
   }
+  /** From the C struct. */
   static WPose from_c(const drdc_WPose_t &w)
   {
     return WPose{GeoAngle::from_nas(w.longitude),
@@ -1081,11 +1167,13 @@ struct WePose {
   Length height;      /**< above mean sea level */
   Euler e;            /**< yaw from true north */
 
+  /** The C struct of the same value. */
   drdc_WePose_t c() const
   {
     return drdc_WePose_t{longitude.nas(), latitude.nas(), height.q47_16(),
                          e.c()};
   }
+  /** From the C struct. */
   static WePose from_c(const drdc_WePose_t &w)
   {
     return WePose{GeoAngle::from_nas(w.longitude),
@@ -1100,10 +1188,12 @@ struct WUTMPose {
   Length height; /**< above mean sea level */
   Quat q;        /**< grid north */
 
+  /** The C struct of the same value. */
   drdc_WUTMPose_t c() const
   {
     return drdc_WUTMPose_t{utm.c, height.q47_16(), q.c()};
   }
+  /** From the C struct. */
   static WUTMPose from_c(const drdc_WUTMPose_t &u)
   {
     return WUTMPose{Utm{u.utm}, Length::from_q47_16(u.height), Quat(u.q)};
@@ -1116,10 +1206,12 @@ struct WeUTMPose {
   Length height; /**< above mean sea level */
   Euler e;       /**< yaw from grid north */
 
+  /** The C struct of the same value. */
   drdc_WeUTMPose_t c() const
   {
     return drdc_WeUTMPose_t{utm.c, height.q47_16(), e.c()};
   }
+  /** From the C struct. */
   static WeUTMPose from_c(const drdc_WeUTMPose_t &u)
   {
     return WeUTMPose{Utm{u.utm}, Length::from_q47_16(u.height),
@@ -1139,10 +1231,12 @@ struct LPose {
   LocalVec p; /**< position */
   Quat q;     /**< attitude */
 
+  /** The C struct of the same value. */
   drdc_lPose_t c() const
   {
     return drdc_lPose_t{p.c(), q.c()};
   }
+  /** From the C struct. */
   static LPose from_c(const drdc_lPose_t &l)
   {
     return LPose{LocalVec::from_c(l.p), Quat(l.q)};
@@ -1154,10 +1248,12 @@ struct LePose {
   LocalVec p; /**< position */
   Euler e;    /**< attitude */
 
+  /** The C struct of the same value. */
   drdc_lePose_t c() const
   {
     return drdc_lePose_t{p.c(), e.c()};
   }
+  /** From the C struct. */
   static LePose from_c(const drdc_lePose_t &l)
   {
     return LePose{LocalVec::from_c(l.p), Euler::from_c(l.e)};
@@ -1275,18 +1371,22 @@ struct Nmea {
     const status s = drdc_nmea_utc(leap, &dated.c, &c, &out);
     return make_result(s, UtcTime(out));
   }
+  /** Latitude, nas (GGA, RMC, GNS, GLL). */
   constexpr GeoAngle latitude() const
   {
     return GeoAngle::from_nas(c.latitude);
   }
+  /** Longitude, nas (GGA, RMC, GNS, GLL). */
   constexpr GeoAngle longitude() const
   {
     return GeoAngle::from_nas(c.longitude);
   }
+  /** Height above mean sea level, Q47.16 m (GGA, GNS). */
   constexpr Length altitude() const
   {
     return Length::from_q47_16(c.altitude);
   }
+  /** True heading (HDT, THS). */
   constexpr Angle heading() const
   {
     return Angle::from_bam(c.heading);

@@ -64,6 +64,7 @@ inline std::ostream &put_scaled(std::ostream &os, const result<int64_t> &r,
 
 } // namespace detail
 
+/** The status by its name. */
 inline std::ostream &operator<<(std::ostream &os, status s)
 {
   return os << drdc_status_name(s);
@@ -75,6 +76,7 @@ inline std::ostream &operator<<(std::ostream &os, Length l)
   return detail::put_fixed(os, l.q47_16(), 16u, 3u);
 }
 
+/** Metres, 3 decimals. */
 inline std::ostream &operator<<(std::ostream &os, LocalLength l)
 {
   return detail::put_fixed(os, l.q15_16(), 16u, 3u);
@@ -94,6 +96,7 @@ inline std::ostream &operator<<(std::ostream &os, Angle a)
                             8u);
 }
 
+/** [s x y z], 9 decimals each. */
 inline std::ostream &operator<<(std::ostream &os, const Quat &q)
 {
   os << '[';
@@ -103,11 +106,13 @@ inline std::ostream &operator<<(std::ostream &os, const Quat &q)
   return detail::put_fixed(os, q.z(), 30u, 9u) << ']';
 }
 
+/** yaw, pitch, roll in degrees. */
 inline std::ostream &operator<<(std::ostream &os, const Euler &e)
 {
   return os << "yaw " << e.yaw << " pitch " << e.pitch << " roll " << e.roll;
 }
 
+/** ISO 8601 with nanoseconds. */
 inline std::ostream &operator<<(std::ostream &os, const UtcTime &t)
 {
   char text[DRDC_TIME_ISO8601_SIZE];
@@ -115,6 +120,7 @@ inline std::ostream &operator<<(std::ostream &os, const UtcTime &t)
   return os << (s == DRDC_OK ? text : drdc_status_name(s));
 }
 
+/** Week and time of week with nanoseconds. */
 inline std::ostream &operator<<(std::ostream &os, const GpsTime &g)
 {
   /* under 604 800 s: the nanoseconds of the week fit int64_t */
@@ -123,6 +129,7 @@ inline std::ostream &operator<<(std::ostream &os, const GpsTime &g)
       os, result<int64_t>((int64_t{g.tow()} * 1000000000) + g.nsec()), 9u);
 }
 
+/** Seconds with 9 decimals. */
 inline std::ostream &operator<<(std::ostream &os, const Duration &d)
 {
   const result<int64_t> whole = muldiv(d.sec(), 1000000000, 1);
@@ -132,18 +139,21 @@ inline std::ostream &operator<<(std::ostream &os, const Duration &d)
   return detail::put_scaled(os, result<int64_t>(whole.value() + d.nsec()), 9u);
 }
 
+/** Longitude, latitude, height and quaternion. */
 inline std::ostream &operator<<(std::ostream &os, const WPose &w)
 {
   return os << "lon " << w.longitude << " lat " << w.latitude << " h "
             << w.height << " q " << w.q;
 }
 
+/** Zone, hemisphere, easting and northing (m, 3 decimals). */
 inline std::ostream &operator<<(std::ostream &os, const Utm &u)
 {
   return os << u.zone() << (u.north() ? 'n' : 's') << ' ' << u.easting() << ' '
             << u.northing();
 }
 
+/** The MGRS text. */
 inline std::ostream &operator<<(std::ostream &os, const Mgrs &m)
 {
   return os << m.c_str();
