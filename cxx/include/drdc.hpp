@@ -759,29 +759,40 @@ inline result<LocalVec> rotate(const Quat &q, const LocalVec &v)
 /* ------------------------------------------------------------------ */
 /* Time                                                                */
 
-/** A span of time: whole seconds and nanoseconds 0..999 999 999 (a
- *  negative span has negative seconds, as drdc_time_count_t). */
+/**
+ * A span of time: whole seconds (floor) and nanoseconds 0..999 999 999,
+ * so a negative span has negative seconds, as drdc_time_count_t. Sums,
+ * differences and negation return a result: DRDC_E_OVERFLOW where the
+ * seconds would leave int64_t, never a wrapped value.
+ */
 class Duration {
 public:
+  /** Zero. */
   constexpr Duration() : sec_(0), nsec_(0)
   {
-  }
-  /** Seconds and nanoseconds; nanoseconds outside 0..999 999 999 are
-   *  carried into the seconds. */
-  static constexpr Duration of(int64_t sec, int64_t nsec)
-  {
-    return Duration(sec + floor_div(nsec),
-                    nsec - (floor_div(nsec) * 1000000000));
   }
   /** A whole number of seconds. */
   static constexpr Duration seconds(int64_t s)
   {
-    return of(s, 0);
+    return Duration(s, 0);
   }
-  /** A number of nanoseconds, carried into seconds. */
+  /** A number of nanoseconds, any int64_t: the floor of ns / 1e9 and the
+   *  remainder (truncating division, then the negative remainder moved
+   *  up, so that nothing can overflow). */
   static constexpr Duration nanoseconds(int64_t ns)
   {
-    return of(0, ns);
+    const int64_t whole = ns / ns_per_second;
+    const int64_t rest = ns % ns_per_second;
+    return (rest < 0) ? Duration(whole - 1, rest + ns_per_second)
+                      : Duration(whole, rest);
+  }
+  /** Seconds and nanoseconds; DRDC_E_NANOSECOND outside 0..999 999 999. */
+  static result<Duration> of(int64_t sec, int32_t nsec)
+  {
+    if ((nsec < 0) || (nsec >= ns_per_second)) {
+      return result<Duration>(DRDC_E_NANOSECOND);
+    }
+    return Duration(sec, nsec);
   }
   /** Whole seconds (floor). */
   constexpr int64_t sec() const
@@ -793,20 +804,37 @@ public:
   {
     return static_cast<int32_t>(nsec_);
   }
-  /** Sum. */
-  constexpr Duration operator+(Duration o) const
+  /** The sum; DRDC_E_OVERFLOW beyond int64_t seconds. */
+  result<Duration> operator+(Duration o) const
   {
-    return of(sec_ + o.sec_, nsec_ + o.nsec_);
+    const int64_t ns = nsec_ + o.nsec_; /* < 2e9 */
+    const int64_t carry = (ns >= ns_per_second) ? 1 : 0;
+    int64_t sec = 0;
+    if (!add(sec_, o.sec_, &sec) || !add(sec, carry, &sec)) {
+      return result<Duration>(DRDC_E_OVERFLOW);
+    }
+    return Duration(sec, ns - (carry * ns_per_second));
   }
-  /** Difference. */
-  constexpr Duration operator-(Duration o) const
+  /** The difference; DRDC_E_OVERFLOW beyond int64_t seconds. */
+  result<Duration> operator-(Duration o) const
   {
-    return of(sec_ - o.sec_, nsec_ - o.nsec_);
+    const result<Duration> minus_o = -o;
+    if (!minus_o.ok()) {
+      return minus_o;
+    }
+    return *this + minus_o.value();
   }
-  /** The negated span. */
-  constexpr Duration operator-() const
+  /** The negated span; DRDC_E_OVERFLOW for INT64_MIN whole seconds. */
+  result<Duration> operator-() const
   {
-    return of(-sec_, -nsec_);
+    if (nsec_ != 0) {
+      /* -(s + n) = (-s - 1) + (1 - n): -s - 1 is ~s, which always fits */
+      return Duration(~sec_, ns_per_second - nsec_);
+    }
+    if (sec_ == INT64_MIN) {
+      return result<Duration>(DRDC_E_OVERFLOW);
+    }
+    return Duration(-sec_, 0);
   }
   /** Equal in every field. */
   constexpr bool operator==(Duration o) const
@@ -840,10 +868,16 @@ public:
   }
 
 private:
-  /* seconds in a nanosecond count, rounded towards minus infinity */
-  static constexpr int64_t floor_div(int64_t ns)
+  static constexpr int64_t ns_per_second = 1000000000;
+  /* a + b into *out when it fits int64_t */
+  static bool add(int64_t a, int64_t b, int64_t *out)
   {
-    return (ns >= 0) ? (ns / 1000000000) : -((999999999 - ns) / 1000000000);
+    if (((b > 0) && (a > (INT64_MAX - b))) ||
+        ((b < 0) && (a < (INT64_MIN - b)))) {
+      return false;
+    }
+    *out = a + b;
+    return true;
   }
   constexpr Duration(int64_t s, int64_t ns) : sec_(s), nsec_(ns)
   {
@@ -851,6 +885,18 @@ private:
   int64_t sec_;
   int64_t nsec_;
 };
+
+/** A sum whose left term may be an error: the error, or the sum. */
+inline result<Duration> operator+(const result<Duration> &a, Duration b)
+{
+  return a.ok() ? a.value() + b : a;
+}
+
+/** A difference whose left term may be an error: the error, or it. */
+inline result<Duration> operator-(const result<Duration> &a, Duration b)
+{
+  return a.ok() ? a.value() - b : a;
+}
 
 /**
  * A UTC instant (drdc_time_t): seconds since 1970 at 86 400 a day and
@@ -902,7 +948,9 @@ public:
   {
     drdc_time_count_t out{0, 0};
     const status s = drdc_time_utc_to_tai(leap, &t_, &out);
-    return make_result(s, Duration::of(out.sec, out.nsec));
+    /* the C count's nanoseconds are 0..999 999 999, so of() takes them */
+    const result<Duration> d = Duration::of(out.sec, out.nsec);
+    return make_result(s, d.value());
   }
   /** The instant `d` later on the TAI time line. */
   result<UtcTime> plus(Duration d, const drdc_time_leap_t *leap = nullptr) const
@@ -911,8 +959,11 @@ public:
     if (!tai_now.ok()) {
       return result<UtcTime>(tai_now.code());
     }
-    const Duration later = tai_now.value() + d;
-    const drdc_time_count_t in{later.sec(), later.nsec()};
+    const result<Duration> later = tai_now.value() + d;
+    if (!later.ok()) {
+      return result<UtcTime>(later.code());
+    }
+    const drdc_time_count_t in{later.value().sec(), later.value().nsec()};
     drdc_time_t out{0, 0};
     const status s = drdc_time_tai_to_utc(leap, &in, &out);
     return make_result(s, UtcTime(out));
@@ -925,7 +976,11 @@ public:
   /** plus(-d) with the built-in leap-second table. */
   result<UtcTime> operator-(Duration d) const
   {
-    return plus(-d);
+    const result<Duration> minus_d = -d;
+    if (!minus_d.ok()) {
+      return result<UtcTime>(minus_d.code());
+    }
+    return plus(minus_d.value());
   }
   /** Elapsed time from `o` to this instant, leap seconds counted. */
   result<Duration> operator-(const UtcTime &o) const
@@ -1038,7 +1093,11 @@ public:
   /** The GPS time `d` earlier. */
   result<GpsTime> operator-(Duration d) const
   {
-    return *this + (-d);
+    const result<Duration> minus_d = -d;
+    if (!minus_d.ok()) {
+      return result<GpsTime>(minus_d.code());
+    }
+    return *this + minus_d.value();
   }
   /** Equal in every field. */
   constexpr bool operator==(const GpsTime &o) const

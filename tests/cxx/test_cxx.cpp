@@ -369,17 +369,57 @@ void test_gps_time()
                         drdc::UtcTime::parse("2017-13-01T00:00:00Z").code());
 }
 
-/* Durations normalise their nanoseconds, negative ones too. */
+/* Durations keep nanoseconds in 0..999 999 999, negative ones too, and
+ * refuse to wrap: INT64_MIN nanoseconds is -9 223 372 037 s + 145 224 192
+ * ns exactly. */
 void test_durations()
 {
-  constexpr drdc::Duration d = drdc::Duration::of(1, -1);
-  static_assert(d.sec() == 0 && d.nsec() == 999999999, "borrow");
-  TEST_ASSERT_EQUAL_INT64(-1, drdc::Duration::nanoseconds(-1).sec());
-  TEST_ASSERT_EQUAL_INT32(999999999, drdc::Duration::nanoseconds(-1).nsec());
-  TEST_ASSERT_TRUE(drdc::Duration::seconds(1) ==
-                   drdc::Duration::nanoseconds(400000000) +
-                       drdc::Duration::nanoseconds(600000000));
-  TEST_ASSERT_TRUE(-drdc::Duration::seconds(1) < drdc::Duration());
+  constexpr drdc::Duration d = drdc::Duration::nanoseconds(-1);
+  static_assert((d.sec() == -1) && (d.nsec() == 999999999), "floor");
+  const drdc::Duration low = drdc::Duration::nanoseconds(INT64_MIN);
+  TEST_ASSERT_EQUAL_INT64(INT64_C(-9223372037), low.sec());
+  TEST_ASSERT_EQUAL_INT32(145224192, low.nsec());
+  const drdc::result<drdc::Duration> one =
+      drdc::Duration::nanoseconds(400000000) +
+      drdc::Duration::nanoseconds(600000000);
+  TEST_ASSERT_TRUE(one.ok());
+  TEST_ASSERT_TRUE(one.value() == drdc::Duration::seconds(1));
+  const drdc::result<drdc::Duration> minus_one = -drdc::Duration::seconds(1);
+  TEST_ASSERT_TRUE(minus_one.ok());
+  TEST_ASSERT_TRUE(minus_one.value() < drdc::Duration());
+  const drdc::result<drdc::Duration> back = -d;
+  TEST_ASSERT_TRUE(back.ok());
+  TEST_ASSERT_TRUE(back.value() == drdc::Duration::nanoseconds(1));
+  /* a chain of sums: 1 s - 1 ns + 1 ns */
+  const drdc::result<drdc::Duration> chain = drdc::Duration::seconds(1) -
+                                             drdc::Duration::nanoseconds(1) +
+                                             drdc::Duration::nanoseconds(1);
+  TEST_ASSERT_TRUE(chain.ok());
+  TEST_ASSERT_TRUE(chain.value() == drdc::Duration::seconds(1));
+
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        (drdc::Duration::seconds(INT64_MAX) +
+                         drdc::Duration::nanoseconds(1000000000))
+                            .code());
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        (drdc::Duration::seconds(INT64_MAX) +
+                         drdc::Duration::nanoseconds(999999999) +
+                         drdc::Duration::nanoseconds(1))
+                            .code());
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        (-drdc::Duration::seconds(INT64_MIN)).code());
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, (drdc::Duration::seconds(INT64_MIN) -
+                                          drdc::Duration::nanoseconds(1))
+                                             .code());
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NANOSECOND,
+                        drdc::Duration::of(0, 1000000000).code());
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NANOSECOND, drdc::Duration::of(0, -1).code());
+  TEST_ASSERT_TRUE(drdc::Duration::of(-1, 999999999).value() == d);
+
+  /* an instant that far away: an error, not a wrapped time */
+  const drdc::UtcTime t(drdc_time_t{0, 0});
+  TEST_ASSERT_FALSE((t + drdc::Duration::seconds(INT64_MAX)).ok());
+  TEST_ASSERT_FALSE((t - drdc::Duration::seconds(INT64_MIN)).ok());
 }
 
 #if defined(__cpp_exceptions)
