@@ -577,11 +577,15 @@ def configure_cxx(conf, name, t):
     conf.load("gxx")
     if t["cross"]:
         conf.env.LINK_CXX = conf.env.CC
+    # the further compilers come with other targets' packages (clang-14:
+    # host-fuzz), so a tree configured for the host alone may lack them;
+    # ./waf check configures every target and tools/test_cxx.py demands
+    # them all
     conf.env.CXX_OTHERS = []
     for compiler in others:
         var = "CXX_" + re.sub(r"\W", "_", compiler).upper()
-        conf.find_program(compiler, var=var)
-        conf.env.CXX_OTHERS += [(compiler, var)]
+        if conf.find_program(compiler, var=var, mandatory=False):
+            conf.env.CXX_OTHERS += [(compiler, var)]
 
 
 def build_cxx(bld, t):
@@ -626,15 +630,17 @@ def build_cxx(bld, t):
                     bld.path.find_or_declare(target), ldscript)
 
 
-def cxx_runner_images(top_env):
-    """harness.py specs of the C++ Unity runners: <target>-cxx[-<compiler>]."""
+def cxx_runner_images(all_envs):
+    """harness.py specs of the C++ Unity runners: <target>-cxx[-<compiler>],
+    one per compiler configure found."""
     specs = []
-    for name, spec in CXX_TARGETS.items():
-        if name not in (top_env.TARGETS or []):
+    for name in CXX_TARGETS:
+        if name not in (all_envs[""].TARGETS or []):
             continue
         t = TARGETS[name]
-        for k, compiler in enumerate(spec["compilers"]):
-            suffix = "-" + compiler if k else ""
+        compilers = [""] + [c for c, _ in all_envs[name].CXX_OTHERS or []]
+        for compiler in compilers:
+            suffix = "-" + compiler if compiler else ""
             specs.append("%s-cxx%s=%s:%s" % (
                 name, suffix, t["qemu"], os.path.join(
                     out, name, "fw/cxx-runner/cxx-runner" + suffix + t["ext"])))
@@ -1020,7 +1026,7 @@ class RunChecks(Build.BuildContext):
             out, n, "fw/test-runner/test-runner" + t["ext"]))
             for n, t in TARGETS.items() if t.get("images", True)]
         # the C++ layer's Unity suite, per C++ compiler (CXX_TARGETS)
-        images += cxx_runner_images(top_env)
+        images += cxx_runner_images(self.all_envs)
         # the ppc-e500 runner linked against the library installed into
         # the stand-in RTEMS BSP prefix (tools/rtems_standin.py)
         images.append("rtems-standin=ppc-e500:" + os.path.join(

@@ -70,6 +70,14 @@ def tool(*args, stdin):
                           capture_output=True, text=True).stdout.split("\n")
 
 
+class Compilers(unittest.TestCase):
+    def test_every_host_compiler_was_found(self):
+        # configure skips a missing one (a tree for the host alone);
+        # ./waf check configures every target and needs them all
+        self.assertEqual(["g++", "clang++-14"],
+                         [name for name, _ in host_compilers()])
+
+
 class Demo(unittest.TestCase):
     def test_cxx_demo_prints_what_the_c_demo_prints(self):
         images = {"host": [("host", "demo-cxx")]
@@ -130,6 +138,16 @@ class CompileTime(unittest.TestCase):
                 r = compile_snippet(compiler, "  " + body)
                 self.assertNotEqual(0, r.returncode, "%s: %s" % (name, body))
                 self.assertIn(message, r.stderr, "%s: %s" % (name, body))
+
+    def test_the_example_of_drdc_hpp_compiles(self):
+        with open(os.path.join(TOP, "cxx", "include", "drdc.hpp")) as f:
+            head = f.read().split("@file", 1)[1].split("*/", 1)[0]
+        body = "\n".join(l[len(" *   "):] for l in head.splitlines()
+                         if l.startswith(" *     "))
+        self.assertIn("drdc::to_quat", body)
+        for name, compiler in host_compilers():
+            r = compile_snippet(compiler, body)
+            self.assertEqual(0, r.returncode, "%s: %s" % (name, r.stderr))
 
     def test_value_or_throw_needs_exceptions(self):
         body = "  (void)drdc::Quat().normalized().value_or_throw();"

@@ -22,9 +22,12 @@
  * exists at any stage.
  *
  *     using namespace drdc::literals;
- *     drdc::Euler e{46.5_deg, 2.2_deg, -0.8_deg};
- *     drdc::result<drdc::Quat> q = drdc::to_quat(e);
- *     if (q.ok()) { drdc::Quat r = q.value() * q.value().conj(); }
+ *     const drdc::Euler e{46.5_deg, 2.2_deg, -0.8_deg};
+ *     const drdc::result<drdc::Quat> q = drdc::to_quat(e);
+ *     const drdc::result<drdc::Quat> r = q * q.value().conj();
+ *     if (!r.ok()) {
+ *       return 1; // r.code() says why: q's error or the product's
+ *     }
  */
 #ifndef DRDC_HPP
 #define DRDC_HPP
