@@ -149,6 +149,21 @@ class CompileTime(unittest.TestCase):
             r = compile_snippet(compiler, body)
             self.assertEqual(0, r.returncode, "%s: %s" % (name, r.stderr))
 
+    def test_units_do_not_mix(self):
+        for name, compiler in host_compilers():
+            for body in ("drdc::Angle a = 1.5_m; (void)a;",
+                         "drdc::Length l = 1.5_deg; (void)l;",
+                         "drdc::GeoAngle g = 50; (void)g;",
+                         "drdc::Length l = 754; (void)l;",
+                         "drdc::Angle a = 1.5; (void)a;"):
+                r = compile_snippet(compiler, "  " + body)
+                self.assertNotEqual(0, r.returncode, "%s: %s" % (name, body))
+            ok = compile_snippet(compiler, "  drdc::Angle a = 90_deg;"
+                                 " drdc::GeoAngle g = -90_deg;"
+                                 " drdc::Length l = -1.5_m;"
+                                 " (void)a; (void)g; (void)l;")
+            self.assertEqual(0, ok.returncode, ok.stderr)
+
     def test_value_or_throw_needs_exceptions(self):
         body = "  (void)drdc::Quat().normalized().value_or_throw();"
         for name, compiler in host_compilers():

@@ -64,7 +64,8 @@ namespace drdc {
 using status = drdc_status_t;
 
 #if defined(__cpp_exceptions)
-/** Thrown by result::value_or_throw() (only where exceptions exist). */
+/** Thrown by result::value_or_throw() (only where exceptions exist). Not
+ *  derived from std::exception: this header includes no C++ library. */
 struct error {
   status code; /**< the status that was not DRDC_OK */
   /** The status's name, e.g. "DRDC_E_RANGE". */
@@ -87,11 +88,12 @@ public:
   constexpr result(const T &v) : value_(v), status_(DRDC_OK)
   {
   }
-  /** A value with the status the C call gave (DRDC_OK or a warning). */
+  /** A value with the status the C call gave; after an error (not a
+   *  warning) the value is what the call left, unspecified. */
   constexpr result(const T &v, status s) : value_(v), status_(s)
   {
   }
-  /** An error: no value. */
+  /** An error: no value (a default-constructed T behind it). */
   constexpr result(status s) : value_(), status_(s)
   {
   }
