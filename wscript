@@ -560,6 +560,15 @@ CXX_TARGETS = {
     "arm-cm3": {"compilers": ["g++"], "flags": ["-fno-exceptions",
                                                "-fno-rtti"],
                 "bench": True},
+    # Thumb-1 without a divide instruction, and RISC-V: the same header
+    # on the other instruction sets whose g++ comes with the pinned C
+    # cross compiler
+    "arm-cm0": {"compilers": ["g++"], "flags": ["-fno-exceptions",
+                                               "-fno-rtti"],
+                "bench": False},
+    "riscv32": {"compilers": ["g++"], "flags": ["-fno-exceptions",
+                                               "-fno-rtti"],
+                "bench": False},
 }
 # The warnings of every C++ file we write, errors on every compiler.
 CXX_WARNINGS = ["-std=c++17", "-Wall", "-Wextra", "-pedantic", "-Werror",
@@ -575,6 +584,9 @@ def configure_cxx(conf, name, t):
     first, others = spec["compilers"][0], spec["compilers"][1:]
     conf.find_program(t["cross"] + first, var="CXX")
     conf.load("gxx")
+    # for tools/test_cxx.py: how to run this target's images
+    conf.env.CXX_QEMU = t["qemu"]
+    conf.env.CXX_EXT = t["ext"]
     if t["cross"]:
         conf.env.LINK_CXX = conf.env.CC
     # the further compilers come with other targets' packages (clang-14:

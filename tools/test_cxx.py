@@ -5,9 +5,9 @@ The Unity suite (tests/cxx, fw/cxx-runner) runs with every other image
 under qemu/harness.py. Checked here, with the compilers configure found
 for each target of CXX_TARGETS (build/c4che/<target>_cache.py):
 - the C++ demo (fw/demo-cxx) prints exactly what the C demo (fw/demo)
-  prints, on the host with g++ and clang++-14 and on Cortex-M3 under
-  QEMU (the C demo itself is checked against independent references by
-  tools/test_demo.py);
+  prints, on the host with g++ and clang++-14 and on Cortex-M3, M0 and
+  RISC-V rv32 under QEMU (the C demo itself is checked against
+  independent references by tools/test_demo.py);
 - the wrapper's quaternion product costs at most 5 % more instructions
   per call than the C call drdc_quat_mul() (fw/bench-cxx under QEMU
   -icount on Cortex-M3);
@@ -78,19 +78,33 @@ class Compilers(unittest.TestCase):
                          [name for name, _ in host_compilers()])
 
 
+def cxx_targets():
+    """The targets configure set up a C++ compiler for (CXX_TARGETS)."""
+    names = []
+    for path in sorted(os.listdir(os.path.join(BUILD, "c4che"))):
+        if not path.endswith("_cache.py"):
+            continue
+        target = path[:-len("_cache.py")]
+        if target and "CXX" in configured(target):
+            names.append(target)
+    return names
+
+
 class Demo(unittest.TestCase):
     def test_cxx_demo_prints_what_the_c_demo_prints(self):
-        images = {"host": [("host", "demo-cxx")]
-                  + [("host", "demo-cxx-" + n) for n, _ in host_compilers()[1:]],
-                  "arm-cm3": [("arm-cm3", "demo-cxx.elf")]}
-        for target, runs in images.items():
-            ext = ".elf" if target != "host" else ""
-            c = console(target, os.path.join(BUILD, target, "fw", "demo",
+        targets = cxx_targets()
+        self.assertTrue({"host", "arm-cm3"} <= set(targets), targets)
+        for target in targets:
+            env = configured(target)
+            profile, ext = env["CXX_QEMU"], env["CXX_EXT"]
+            names = ["demo-cxx"] + ["demo-cxx-" + n
+                                    for n, _ in env.get("CXX_OTHERS", [])]
+            c = console(profile, os.path.join(BUILD, target, "fw", "demo",
                                               "demo" + ext))
             self.assertIn("epoch 4", c)
-            for profile, name in runs:
+            for name in names:
                 cxx = console(profile, os.path.join(BUILD, target, "fw",
-                                                    "demo-cxx", name))
+                                                    "demo-cxx", name + ext))
                 self.assertEqual(c, cxx, "%s %s" % (target, name))
 
 
