@@ -1182,6 +1182,18 @@ struct Utm {
   }
 };
 
+namespace detail {
+/** The MGRS text buffers of the C and C++ types, both
+ *  DRDC_GEO_MGRS_SIZE bytes. */
+inline void copy_text(char (&to)[DRDC_GEO_MGRS_SIZE],
+                      const char (&from)[DRDC_GEO_MGRS_SIZE])
+{
+  for (size_t k = 0u; k < DRDC_GEO_MGRS_SIZE; ++k) {
+    to[k] = from[k];
+  }
+}
+} // namespace detail
+
 /** An MGRS reference: NUL-terminated text, no heap. */
 struct Mgrs {
   char text[DRDC_GEO_MGRS_SIZE]; /**< e.g. "12UVA8788568665" */
@@ -1288,6 +1300,51 @@ struct WMGRSPose {
   Mgrs mgrs;     /**< the square */
   Length height; /**< above mean sea level */
   Quat q;        /**< grid north */
+
+  /** The C struct of the same value. */
+  drdc_WMGRSPose_t c() const
+  {
+    drdc_WMGRSPose_t out{};
+    detail::copy_text(out.mgrs, mgrs.text);
+    out.height = height.q47_16();
+    out.q = q.c();
+    return out;
+  }
+  /** From the C struct. */
+  static WMGRSPose from_c(const drdc_WMGRSPose_t &m)
+  {
+    WMGRSPose out{};
+    detail::copy_text(out.mgrs.text, m.mgrs);
+    out.height = Length::from_q47_16(m.height);
+    out.q = Quat(m.q);
+    return out;
+  }
+};
+
+/** {We-MGRS}: {W-MGRS} with Euler angles. */
+struct WeMGRSPose {
+  Mgrs mgrs;     /**< the square */
+  Length height; /**< above mean sea level */
+  Euler e;       /**< yaw from grid north */
+
+  /** The C struct of the same value. */
+  drdc_WeMGRSPose_t c() const
+  {
+    drdc_WeMGRSPose_t out{};
+    detail::copy_text(out.mgrs, mgrs.text);
+    out.height = height.q47_16();
+    out.e = e.c();
+    return out;
+  }
+  /** From the C struct. */
+  static WeMGRSPose from_c(const drdc_WeMGRSPose_t &m)
+  {
+    WeMGRSPose out{};
+    detail::copy_text(out.mgrs.text, m.mgrs);
+    out.height = Length::from_q47_16(m.height);
+    out.e = Euler::from_c(m.e);
+    return out;
+  }
 };
 
 /** Local pose {l}: x forward, y right, z down, attitude. */
@@ -1359,13 +1416,43 @@ inline result<WMGRSPose> to_mgrs(const WPose &w, int32_t prec)
   const drdc_WPose_t in = w.c();
   drdc_WMGRSPose_t out{};
   const status s = drdc_pose_wmgrs_from_w(&in, prec, &out);
-  WMGRSPose m{};
-  for (size_t k = 0u; k < sizeof m.mgrs.text; ++k) {
-    m.mgrs.text[k] = out.mgrs[k];
-  }
-  m.height = Length::from_q47_16(out.height);
-  m.q = Quat(out.q);
-  return make_result(s, m);
+  return make_result(s, WMGRSPose::from_c(out));
+}
+
+/** {We} -> {We-MGRS} with `prec` digit pairs (drdc_pose_wemgrs_from_we). */
+inline result<WeMGRSPose> to_mgrs(const WePose &w, int32_t prec)
+{
+  const drdc_WePose_t in = w.c();
+  drdc_WeMGRSPose_t out{};
+  const status s = drdc_pose_wemgrs_from_we(&in, prec, &out);
+  return make_result(s, WeMGRSPose::from_c(out));
+}
+
+/** {W-MGRS} -> {W} at the square's centre (drdc_pose_w_from_wmgrs). */
+inline result<WPose> to_w(const WMGRSPose &m)
+{
+  const drdc_WMGRSPose_t in = m.c();
+  drdc_WPose_t out{};
+  const status s = drdc_pose_w_from_wmgrs(&in, &out);
+  return make_result(s, WPose::from_c(out));
+}
+
+/** {We-UTM} -> {We} (drdc_pose_we_from_weutm). */
+inline result<WePose> to_we(const WeUTMPose &u)
+{
+  const drdc_WeUTMPose_t in = u.c();
+  drdc_WePose_t out{};
+  const status s = drdc_pose_we_from_weutm(&in, &out);
+  return make_result(s, WePose::from_c(out));
+}
+
+/** {We-MGRS} -> {We} at the square's centre (drdc_pose_we_from_wemgrs). */
+inline result<WePose> to_we(const WeMGRSPose &m)
+{
+  const drdc_WeMGRSPose_t in = m.c();
+  drdc_WePose_t out{};
+  const status s = drdc_pose_we_from_wemgrs(&in, &out);
+  return make_result(s, WePose::from_c(out));
 }
 
 /** {W} -> {l} relative to `ref`, with the geoid separation N
@@ -1401,6 +1488,27 @@ inline result<WePose> to_global(const WePose &ref, Length geoid_separation,
   const status s =
       drdc_pose_we_from_le(&r, geoid_separation.q47_16(), &in, &out);
   return make_result(s, WePose::from_c(out));
+}
+
+/** {We} -> {le} relative to `ref` (drdc_pose_le_from_we). */
+inline result<LePose> to_local(const WePose &ref, Length geoid_separation,
+                               const WePose &we)
+{
+  const drdc_WePose_t r = ref.c();
+  const drdc_WePose_t in = we.c();
+  drdc_lePose_t out{};
+  const status s =
+      drdc_pose_le_from_we(&r, geoid_separation.q47_16(), &in, &out);
+  return make_result(s, LePose::from_c(out));
+}
+
+/** {le} -> {l} (drdc_pose_l_from_le). */
+inline result<LPose> to_quat(const LePose &le)
+{
+  const drdc_lePose_t in = le.c();
+  drdc_lPose_t out{};
+  const status s = drdc_pose_l_from_le(&in, &out);
+  return make_result(s, LPose::from_c(out));
 }
 
 /** {l} -> {le} (drdc_pose_le_from_l). */

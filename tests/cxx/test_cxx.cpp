@@ -33,6 +33,12 @@ void assert_quat(const int32_t expected[4], const drdc::Quat &q)
   TEST_ASSERT_EQUAL_INT32(expected[3], q.z());
 }
 
+void assert_quat(const drdc_quat_t &expected, const drdc::Quat &q)
+{
+  const int32_t parts[4] = {expected.s, expected.x, expected.y, expected.z};
+  assert_quat(parts, q);
+}
+
 /* Exact products (Python integers, tests/ref/gen_orient_quat.py), their
  * overflow statuses included, through operator*. */
 void test_quat_product_matches_the_exact_vectors()
@@ -212,7 +218,7 @@ void test_mgrs_pose_matches_geoconvert()
     const drdc_WPose_t cw = w.c();
     drdc_WMGRSPose_t cm;
     TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_wmgrs_from_w(&cw, v.prec, &cm));
-    assert_quat(&cm.q.s, m.value().q);
+    assert_quat(cm.q, m.value().q);
   }
 }
 
@@ -238,7 +244,7 @@ void test_poses_equal_the_c_calls()
   TEST_ASSERT_TRUE(u.value().utm.north());
   TEST_ASSERT_EQUAL_INT64(cu.utm.easting, u.value().utm.easting().q47_16());
   TEST_ASSERT_EQUAL_INT64(cu.utm.northing, u.value().utm.northing().q47_16());
-  assert_quat(&cu.q.s, u.value().q);
+  assert_quat(cu.q, u.value().q);
 
   const drdc::result<drdc::WPose> back = drdc::to_w(u.value());
   drdc_WPose_t cback;
@@ -275,6 +281,82 @@ void test_poses_equal_the_c_calls()
     TEST_ASSERT_EQUAL_INT64(out.longitude, w.value().longitude.nas());
     TEST_ASSERT_EQUAL_INT64(out.height, w.value().height.q47_16());
     TEST_ASSERT_EQUAL_UINT32(out.e.yaw, w.value().e.yaw.bam());
+  }
+}
+
+/* {We} -> {We-MGRS}: GeoConvert's text again; the square back to {W}
+ * and {We} (its centre) and {We-UTM} -> {We}, each equal to its C
+ * call. */
+void test_mgrs_and_utm_back_to_global()
+{
+  for (size_t i = 0u; i < COUNT(pose_mgrs_vectors); i += 7u) {
+    const pose_mgrs_vector &v = pose_mgrs_vectors[i];
+    const drdc::Euler e{drdc::Angle::from_bam(v.yaw), 11_deg, 22_deg};
+    const drdc::WePose we{drdc::GeoAngle::from_nas(v.lon),
+                          drdc::GeoAngle::from_nas(v.lat), 754.3_m, e};
+    const drdc::result<drdc::WeMGRSPose> me = drdc::to_mgrs(we, v.prec);
+    TEST_ASSERT_TRUE(me.ok());
+    TEST_ASSERT_EQUAL_STRING(v.mgrs, me.value().mgrs.c_str());
+
+    const drdc::WMGRSPose m{me.value().mgrs, -3_m, quat_of(v.q)};
+    const drdc_WMGRSPose_t cm = m.c();
+    drdc_WPose_t cw;
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_w_from_wmgrs(&cm, &cw));
+    const drdc::result<drdc::WPose> w = drdc::to_w(m);
+    TEST_ASSERT_TRUE(w.ok());
+    TEST_ASSERT_EQUAL_INT64(cw.latitude, w.value().latitude.nas());
+    TEST_ASSERT_EQUAL_INT64(cw.longitude, w.value().longitude.nas());
+    TEST_ASSERT_EQUAL_INT64(cw.height, w.value().height.q47_16());
+    assert_quat(cw.q, w.value().q);
+
+    const drdc_WeMGRSPose_t cme = me.value().c();
+    drdc_WePose_t cwe;
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_we_from_wemgrs(&cme, &cwe));
+    const drdc::result<drdc::WePose> back = drdc::to_we(me.value());
+    TEST_ASSERT_TRUE(back.ok());
+    TEST_ASSERT_EQUAL_INT64(cwe.latitude, back.value().latitude.nas());
+    TEST_ASSERT_EQUAL_UINT32(cwe.e.yaw, back.value().e.yaw.bam());
+
+    const drdc::result<drdc::WeUTMPose> u = drdc::to_utm(we);
+    TEST_ASSERT_TRUE(u.ok());
+    const drdc_WeUTMPose_t cu = u.value().c();
+    drdc_WePose_t cfrom;
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_we_from_weutm(&cu, &cfrom));
+    const drdc::result<drdc::WePose> from = drdc::to_we(u.value());
+    TEST_ASSERT_TRUE(from.ok());
+    TEST_ASSERT_EQUAL_INT64(cfrom.latitude, from.value().latitude.nas());
+    TEST_ASSERT_EQUAL_INT64(cfrom.longitude, from.value().longitude.nas());
+    TEST_ASSERT_EQUAL_UINT32(cfrom.e.yaw, from.value().e.yaw.bam());
+  }
+}
+
+/* {We} -> {le} and {le} -> {l} through the wrappers equal the C calls,
+ * on the GeographicLib vectors' poses. */
+void test_local_euler_poses_equal_the_c_calls()
+{
+  for (size_t i = 0u; i < COUNT(pose_local_vectors); i += 5u) {
+    const pose_local_vector &v = pose_local_vectors[i];
+    const drdc_WePose_t ref = {
+        v.ref[1], v.ref[0], v.ref[2], {v.ref_e[0], v.ref_e[1], v.ref_e[2]}};
+    const drdc_WePose_t there = {
+        v.lon, v.lat, v.height, {v.out_e[0], v.out_e[1], v.out_e[2]}};
+    drdc_lePose_t cle;
+    drdc_lPose_t cl;
+
+    TEST_ASSERT_EQUAL_INT(DRDC_OK,
+                          drdc_pose_le_from_we(&ref, v.sep, &there, &cle));
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_pose_l_from_le(&cle, &cl));
+    const drdc::result<drdc::LePose> le = drdc::to_local(
+        drdc::WePose::from_c(ref), drdc::Length::from_q47_16(v.sep),
+        drdc::WePose::from_c(there));
+    TEST_ASSERT_TRUE(le.ok());
+    TEST_ASSERT_EQUAL_INT32(cle.p.x, le.value().p.x.q15_16());
+    TEST_ASSERT_EQUAL_INT32(cle.p.y, le.value().p.y.q15_16());
+    TEST_ASSERT_EQUAL_INT32(cle.p.z, le.value().p.z.q15_16());
+    TEST_ASSERT_EQUAL_UINT32(cle.e.roll, le.value().e.roll.bam());
+    const drdc::result<drdc::LPose> l = drdc::to_quat(le.value());
+    TEST_ASSERT_TRUE(l.ok());
+    assert_quat(cl.q, l.value().q);
   }
 }
 
@@ -454,6 +536,8 @@ void suite_cxx(void)
   RUN_TEST(test_literals_agree_with_the_nmea_parser);
   RUN_TEST(test_mgrs_pose_matches_geoconvert);
   RUN_TEST(test_poses_equal_the_c_calls);
+  RUN_TEST(test_mgrs_and_utm_back_to_global);
+  RUN_TEST(test_local_euler_poses_equal_the_c_calls);
   RUN_TEST(test_errors_are_statuses);
   RUN_TEST(test_time_points_across_a_leap_second);
   RUN_TEST(test_gps_time);
