@@ -12,8 +12,8 @@ for each target of CXX_TARGETS (build/c4che/<target>_cache.py):
   per call than the C call drdc_quat_mul() (fw/bench-cxx under QEMU
   -icount on Cortex-M3);
 - literals are compile-time only: a literal beyond its type, with an
-  exponent or hexadecimal does not compile; the Cortex-M3 C++ images link
-  no floating-point helper that the C images do not link;
+  exponent or hexadecimal does not compile; no C++ object of a bare-metal
+  target calls a soft-float helper;
 - value_or_throw() exists only with exceptions: with -fno-exceptions a
   program that calls it does not compile;
 - the README's C++ example is examples/cxx/pose.cpp, warning-free with
@@ -21,6 +21,7 @@ for each target of CXX_TARGETS (build/c4che/<target>_cache.py):
   MGRS equal to the host tool drdc.
 """
 import ast
+import glob
 import os
 import re
 import subprocess
@@ -186,21 +187,43 @@ class CompileTime(unittest.TestCase):
             self.assertNotEqual(0, r.returncode, name)
             self.assertIn("value_or_throw", r.stderr, name)
 
-    def test_no_floating_point_helper_beyond_the_c_images(self):
-        nm = configured("arm-cm3")["NM"]
-        helper = re.compile(r"^__(aeabi_[df]|[a-z]+[sd]f\d)")
-
-        def helpers(image):
-            out = subprocess.run(nm + [image], check=True,
-                                 capture_output=True, text=True).stdout
-            return {l.split()[-1] for l in out.splitlines()
-                    if helper.match(l.split()[-1])}
-        fw = os.path.join(BUILD, "arm-cm3", "fw")
-        c = helpers(os.path.join(fw, "demo", "demo.elf"))
-        for image in ("demo-cxx/demo-cxx.elf", "cxx-runner/cxx-runner.elf"):
-            self.assertEqual(set(), helpers(os.path.join(fw, image)) - c,
-                             image)
-
+    def test_cxx_objects_call_no_floating_point_helper(self):
+        # libgcc's soft-float routines (__adddf3, __floatsidf, __fixdfsi,
+        # __aeabi_dadd, __aeabi_f2d, ...): what float or double in the
+        # C++ code, literals included, would call on these FPU-less cores
+        helper = re.compile(r"^__(aeabi_[df]\w+|(add|sub|mul|div|neg)[sdt]f3"
+                            r"|(eq|ne|lt|le|gt|ge|unord|cmp)[sdt]f2"
+                            r"|float\w*[sdt]f|fix(uns)?[sdt]f\w+"
+                            r"|extend\w+|trunc[sdt]f\w+)$")
+        bare_metal = [t for t in cxx_targets() if configured(t)["CXX_EXT"]]
+        self.assertIn("arm-cm3", bare_metal)
+        for target in bare_metal:
+            nm = configured(target)["NM"]
+            objects = [o for d in ("cxx-runner", "demo-cxx", "bench-cxx")
+                       for o in glob.glob(os.path.join(BUILD, target, "fw",
+                                                       d, "*.cpp.*.o"))]
+            self.assertGreaterEqual(len(objects), 2, target)
+            for obj in objects:
+                undefined = subprocess.run(nm + ["-u", obj], check=True,
+                                           capture_output=True,
+                                           text=True).stdout.split()
+                calls = {u for u in undefined if helper.match(u)}
+                self.assertEqual(set(), calls, obj)
+            # the check bites: a double product in the same compile calls
+            # one
+            env = configured(target)
+            with tempfile.TemporaryDirectory() as tmp:
+                bait = os.path.join(tmp, "bait.cpp")
+                with open(bait, "w") as f:
+                    f.write("double bait(double a, int b) { return a * b; }\n")
+                subprocess.run(env["CXX"] + env["ARCH"] + ["-O2", "-c", bait,
+                                                           "-o", bait + ".o"],
+                               check=True)
+                undefined = subprocess.run(nm + ["-u", bait + ".o"],
+                                           check=True, capture_output=True,
+                                           text=True).stdout.split()
+            self.assertTrue({u for u in undefined if helper.match(u)},
+                            "%s: %s" % (target, undefined))
 
 def readme_example():
     """The C++ block of README.md's "From C++" section."""
