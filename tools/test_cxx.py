@@ -213,6 +213,20 @@ class CompileTime(unittest.TestCase):
             # one
             env = configured(target)
             with tempfile.TemporaryDirectory() as tmp:
+                # unoptimised too: the literals are constants by the
+                # language, not by the optimiser's folding
+                demo = os.path.join(tmp, "demo-O0.o")
+                subprocess.run(env["CXX"] + env["ARCH"] + INCLUDES
+                               + ["-I" + os.path.join(TOP, "bsp"), "-O0",
+                                  "-std=c++17", "-fno-exceptions", "-fno-rtti",
+                                  "-c", os.path.join(TOP, "fw", "demo-cxx",
+                                                     "main.cpp"), "-o", demo],
+                               check=True)
+                undefined = subprocess.run(nm + ["-u", demo], check=True,
+                                           capture_output=True,
+                                           text=True).stdout.split()
+                self.assertEqual(set(), {u for u in undefined
+                                         if helper.match(u)}, target)
                 bait = os.path.join(tmp, "bait.cpp")
                 with open(bait, "w") as f:
                     f.write("double bait(double a, int b) { return a * b; }\n")
