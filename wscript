@@ -557,6 +557,8 @@ def _qemu_linkcmds(task):
 CXX_TARGETS = {
     "host": {"compilers": ["g++", "clang++-14"], "flags": [],
              "bench": False},
+    # the same under ASan and UBSan (the target's flags)
+    "host-asan": {"compilers": ["g++"], "flags": [], "bench": False},
     "arm-cm3": {"compilers": ["g++"], "flags": ["-fno-exceptions",
                                                "-fno-rtti"],
                 "bench": True},

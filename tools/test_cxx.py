@@ -5,8 +5,8 @@ The Unity suite (tests/cxx, fw/cxx-runner) runs with every other image
 under qemu/harness.py. Checked here, with the compilers configure found
 for each target of CXX_TARGETS (build/c4che/<target>_cache.py):
 - the C++ demo (fw/demo-cxx) prints exactly what the C demo (fw/demo)
-  prints, on the host with g++ and clang++-14 and on Cortex-M3, M0 and
-  RISC-V rv32 under QEMU (the C demo itself is checked against
+  prints, on the host with g++ and clang++-14, under ASan and UBSan, and
+  on Cortex-M3, M0 and RISC-V rv32 under QEMU (the C demo itself is checked against
   independent references by tools/test_demo.py);
 - the wrapper's quaternion product costs at most 5 % more instructions
   per call than the C call drdc_quat_mul() (fw/bench-cxx under QEMU
