@@ -438,6 +438,7 @@ def configure(conf):
                       msg="Checking that %s compiles" % name)
         if "hosted_bait" in t:
             _check_hermetic(conf, name, t)
+        configure_cxx(conf, name, t)
     # The RTEMS BSP variants derive from the default environment (the
     # targets' own are set above).
     conf.setenv("")
@@ -520,6 +521,8 @@ def build_library(bld, cflags):
     bld.install_files("${INCLUDEDIR}/drdc",
                       _glob(bld, "fixed/include/drdc/*.h")
                       + _glob(bld, "core/include/drdc/*.h"))
+    # the C++ layer, header-only, beside the C headers' folder
+    bld.install_files("${INCLUDEDIR}", _glob(bld, "cxx/include/*.hpp"))
     glue = bool(bld.env.RTEMS_BSP and bld.env.HAVE_RTEMS_H)
     if glue:
         # RTEMS clock glue, installed beside the library
@@ -562,6 +565,124 @@ def _qemu_linkcmds(task):
         return 1
     task.outputs[0].write(text.replace(line + "\n", replacement + "\n"))
     return 0
+
+
+# ---------------------------------------------------------------------
+# The C++ layer: cxx/include/drdc.hpp (header-only, C++17, over the C
+# API), its Unity runner, the C++ demo and the wrapper's benchmark. One
+# entry per target that builds them:
+#   compilers  C++ compilers, the first with the target's tool prefix
+#              (its g++), the others native (host only)
+#   flags      what the target adds: bare metal has no exceptions, RTTI
+#              or libstdc++, so the images link with the C driver
+#   bench      the wrapper's quaternion product beside the C call, timed
+#              under QEMU -icount (tools/test_cxx.py)
+CXX_TARGETS = {
+    "host": {"compilers": ["g++", "clang++-14"], "flags": [],
+             "bench": False},
+    # the same under ASan and UBSan (the target's flags)
+    "host-asan": {"compilers": ["g++"], "flags": [], "bench": False},
+    "arm-cm3": {"compilers": ["g++"], "flags": ["-fno-exceptions",
+                                               "-fno-rtti"],
+                "bench": True},
+    # Thumb-1 without a divide instruction, and RISC-V: the same header
+    # on the other instruction sets whose g++ comes with the pinned C
+    # cross compiler
+    "arm-cm0": {"compilers": ["g++"], "flags": ["-fno-exceptions",
+                                               "-fno-rtti"],
+                "bench": False},
+    "riscv32": {"compilers": ["g++"], "flags": ["-fno-exceptions",
+                                               "-fno-rtti"],
+                "bench": False},
+}
+# The warnings of every C++ file we write, errors on every compiler.
+CXX_WARNINGS = ["-std=c++17", "-Wall", "-Wextra", "-pedantic", "-Werror",
+                "-Wconversion", "-Wsign-conversion", "-Wshadow"]
+
+
+def configure_cxx(conf, name, t):
+    """CXX (and CXX_<n> for the further compilers) of a target of
+    CXX_TARGETS; LINK_CXX is the C driver where there is no libstdc++."""
+    spec = CXX_TARGETS.get(name)
+    if spec is None:
+        return
+    first, others = spec["compilers"][0], spec["compilers"][1:]
+    conf.find_program(t["cross"] + first, var="CXX")
+    conf.load("gxx")
+    # for tools/test_cxx.py: how to run this target's images
+    conf.env.CXX_QEMU = t["qemu"]
+    conf.env.CXX_EXT = t["ext"]
+    if t["cross"]:
+        conf.env.LINK_CXX = conf.env.CC
+    # the further compilers come with other targets' packages (clang-14:
+    # host-fuzz), so a tree configured for the host alone may lack them;
+    # ./waf check configures every target and tools/test_cxx.py demands
+    # them all
+    conf.env.CXX_OTHERS = []
+    for compiler in others:
+        var = "CXX_" + re.sub(r"\W", "_", compiler).upper()
+        if conf.find_program(compiler, var=var, mandatory=False):
+            conf.env.CXX_OTHERS += [(compiler, var)]
+
+
+def build_cxx(bld, t):
+    """Per C++ compiler of the target: fw/cxx-runner/cxx-runner (the Unity
+    tests of drdc.hpp) and fw/demo-cxx/demo-cxx (the C++ demo); the
+    further compilers' images get the compiler's name as a suffix
+    (cxx-runner-clang++-14). On a bench target also fw/bench-cxx."""
+    spec = CXX_TARGETS.get(bld.variant)
+    if spec is None:
+        return
+    unity = bld.root.find_dir(bld.env.UNITY)
+    cxxflags = (bld.env.ARCH + CODEGEN + CXX_WARNINGS + spec["flags"]
+                + ["-isystem", unity.abspath()])
+    includes = ["cxx/include", "tests", "bsp"]
+    ldscript = bld.path.find_node("bsp/%s/link.ld" % t["bsp"])
+    compilers = [("", None)] + [("-" + c, var)
+                                for c, var in bld.env.CXX_OTHERS]
+    for k, (suffix, var) in enumerate(compilers):
+        images = [
+            ("fw/cxx-runner/cxx-runner",
+             ["fw/cxx-runner/main.cpp", "tests/cxx/test_cxx.cpp"],
+             "libdrdc unity bsp"),
+            ("fw/demo-cxx/demo-cxx", ["fw/demo-cxx/main.cpp"],
+             "libdrdc bsp"),
+        ]
+        if spec["bench"] and not var:
+            images.append(("fw/bench-cxx/bench-cxx",
+                           ["fw/bench-cxx/main.cpp"], "libdrdc bsp"))
+        for name, source, use in images:
+            target = name + suffix + t["ext"]
+            # an environment of its own per image: waf appends the task
+            # generator's flags to it
+            env = bld.env.derive()
+            if var:
+                env.CXX = env.LINK_CXX = bld.env[var]
+            bld.program(features="cxx cxxprogram", source=source,
+                        target=target, use=use, env=env, idx=300 + k,
+                        cxxflags=cxxflags, includes=includes,
+                        install_path=None)
+            if ldscript:
+                bld.add_manual_dependency(
+                    bld.path.find_or_declare(target), ldscript)
+
+
+def cxx_runner_images(all_envs):
+    """harness.py specs of the C++ Unity runners: <target>-cxx[-<compiler>],
+    one per compiler configure found."""
+    specs = []
+    for name in CXX_TARGETS:
+        if name not in (all_envs[""].TARGETS or []):
+            continue
+        t = TARGETS[name]
+        compilers = [""] + [c for c, _ in all_envs[name].CXX_OTHERS or []]
+        for compiler in compilers:
+            suffix = "-" + compiler if compiler else ""
+            specs.append("%s-cxx%s=%s:%s" % (
+                name, suffix, t["qemu"], os.path.join(
+                    out, name, "fw/cxx-runner/cxx-runner" + suffix + t["ext"])))
+    return specs
+# ---------------------------------------------------------------------
 
 
 def build_rtems_runner(bld, cflags):
@@ -701,6 +822,7 @@ def build(bld):
             "".join(n.abspath() + "\n" for n in task.inputs)),
         source=list(runner.link_task.inputs),
         target="fw/test-runner/objects.txt")
+    build_cxx(bld, t)
     # the demo's link map: what of the library an application really links
     # (tools/footprint.py, docs/performance.md)
     demo_map = bld.path.find_or_declare("fw/demo/demo.map").abspath()
@@ -929,6 +1051,8 @@ class RunChecks(Build.BuildContext):
              ["-m", "unittest", "-q", "tools.test_drdc",
               "tools.test_drdc_nmea"], {"DRDC_TARGET": "win64"}),
             # --- end of Windows (win64) ---
+            ("C++ layer: demo equals C demo, hot path within 5 %, example",
+             ["-m", "unittest", "-q", "tools.test_cxx"]),
             ("16-bit int: every digest part on an AVR under simavr",
              ["-m", "unittest", "-q", "tools.test_avr"]),
             ("installed tree: every target side by side, a client of it",
@@ -949,6 +1073,8 @@ class RunChecks(Build.BuildContext):
         images = ["%s=%s:%s" % (n, t["qemu"], os.path.join(
             out, n, "fw/test-runner/test-runner" + t["ext"]))
             for n, t in TARGETS.items() if t.get("images", True)]
+        # the C++ layer's Unity suite, per C++ compiler (CXX_TARGETS)
+        images += cxx_runner_images(self.all_envs)
         # the ppc-e500 runner linked against the library installed into
         # the stand-in RTEMS BSP prefix (tools/rtems_standin.py)
         images.append("rtems-standin=ppc-e500:" + os.path.join(

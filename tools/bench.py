@@ -90,8 +90,10 @@ BASELINE_NOTES = {
 }
 
 
-def run_target(build, target):
-    image = os.path.join(build, target, "fw", "bench", "bench.elf")
+def run_target(build, target, image=None):
+    """Instructions per call of each case of a benchmark image (fw/bench,
+    or another that prints its lines, such as fw/bench-cxx)."""
+    image = image or os.path.join(build, target, "fw", "bench", "bench.elf")
     data, status, killed = harness.boot(target, image, inactivity=20, timeout=300,
                                         max_bytes=1 << 20, extra=["-icount", "shift=0"])
     text = data.decode("ascii", errors="replace").replace("\r", "")

@@ -30,8 +30,10 @@ APT_GROUPS = {
     # (Debian's python3 has no pip of its own)
     "pip": {"python3-pip": "23.0.1+dfsg-1"},
     # host and host-asan: the native compiler (ASan and UBSan come with it)
-    # and the C library's headers (a Recommends of gcc)
-    "host": {"gcc": "4:12.2.0-3", "libc6-dev": None},
+    # and the C library's headers (a Recommends of gcc); g++ for the C++
+    # layer's images (cxx/, CXX_TARGETS in wscript; clang++-14 is in
+    # clang-14, below)
+    "host": {"gcc": "4:12.2.0-3", "g++": "4:12.2.0-3", "libc6-dev": None},
     # host-fuzz: libFuzzer (tools/fuzz.py)
     "host-fuzz": {"clang-14": "1:14.0.6-12",
                   "libclang-rt-14-dev": "1:14.0.6-12"},

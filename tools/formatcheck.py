@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-2-Clause
-"""The C sources of the tree against .clang-format (./waf check).
+"""The C and C++ sources of the tree against .clang-format (./waf check).
 
   formatcheck.py          list the files clang-format would change; exit 1
   formatcheck.py --fix    format them in place
 
-Every tracked .c and .h file is checked except generated ones (their
+Every tracked .c, .h, .cpp and .hpp file is checked except generated ones (their
 first lines say "do not edit"): their generators own their layout.
 """
 import argparse
@@ -20,7 +20,8 @@ GENERATED = re.compile(r"do not edit|edit that file, not this one", re.I)
 
 
 def sources():
-    out = subprocess.run(["git", "ls-files", "*.c", "*.h"], cwd=TOP,
+    out = subprocess.run(["git", "ls-files", "*.c", "*.h", "*.cpp",
+                          "*.hpp"], cwd=TOP,
                          check=True, capture_output=True, text=True).stdout
     for path in out.split():
         with open(os.path.join(TOP, path), encoding="utf-8") as f:

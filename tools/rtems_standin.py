@@ -148,13 +148,15 @@ def waf(args, lock, out=None):
 
 def expected_install():
     """What ./waf install puts under an RTEMS BSP's lib/ (with the glue),
-    sorted: the libraries, the public headers and drdc.pc."""
+    sorted: the libraries, the public headers (C and C++) and drdc.pc."""
     headers = sorted(os.path.basename(h) for h in
                      glob.glob(os.path.join(TOP, "fixed/include/drdc/*.h"))
                      + glob.glob(os.path.join(TOP, "core/include/drdc/*.h")))
     return sorted(["libdrdc.a", "libdrdc_rtems.a", "pkgconfig/drdc.pc",
                    "include/drdc/rtems.h"]
-                  + ["include/drdc/" + h for h in headers])
+                  + ["include/drdc/" + h for h in headers]
+                  + ["include/" + os.path.basename(h) for h in
+                     glob.glob(os.path.join(TOP, "cxx/include/*.hpp"))])
 
 
 def installed_tree(bspdir):

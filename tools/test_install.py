@@ -139,6 +139,32 @@ class InstalledTree(unittest.TestCase):
                         self.assertTrue(os.path.exists(cited),
                                         "%s cites %s" % (h, word))
 
+    def test_the_cxx_headers_beside_the_c_headers(self):
+        headers = sorted(os.path.basename(h) for h in
+                         glob.glob(os.path.join(TOP, "cxx/include/*.hpp")))
+        installed = sorted(h for h in os.listdir(os.path.join(self.prefix,
+                                                              "include"))
+                           if h.endswith(".hpp"))
+        self.assertEqual(["drdc.hpp", "drdc_ostream.hpp"], headers)
+        self.assertEqual(headers, installed)
+
+    def test_a_cxx_program_outside_the_tree(self):
+        """examples/cxx/pose.cpp from the prefix alone (tools/test_cxx.py
+        checks what it prints)."""
+        exe = os.path.join(self.destdir, "client-cxx")
+        subprocess.run(["g++", "-std=c++17", "-Wall", "-Wextra", "-Werror",
+                        "-pedantic",
+                        os.path.join(TOP, "examples", "cxx", "pose.cpp"),
+                        "-o", exe] + pkg_config("host", "--cflags", "--libs"),
+                       check=True)
+        out = subprocess.run([exe], check=True, capture_output=True,
+                             text=True).stdout
+        mgrs = subprocess.run([os.path.join(self.prefix, "bin", "drdc"), "geo",
+                               "-m", "-p", "0"], input="50.27 -111.17\n",
+                              check=True, capture_output=True,
+                              text=True).stdout
+        self.assertIn("MGRS " + mgrs, out)
+
     def test_a_program_outside_the_tree_equals_the_drdc_tool(self):
         exe = os.path.join(self.destdir, "client")
         subprocess.run(["gcc", "-std=c99", "-Wall", "-Werror",
