@@ -6,7 +6,6 @@ check; `python3 tools/geo_parity.py` prints the table of docs/accuracy.md).
 A line of drdc geo is accepted when it is byte-identical to GeoConvert's,
 or else when exactly one of these documented rules holds:
 
-  error   both are 'ERROR: ...' lines (the reasons are worded differently);
   cap     the option's output is a value computed by the library (not the
           input itself) and PREC is above the digits the library resolves:
           drdc prints what GeoConvert prints at the capped PREC (-g, -c
@@ -196,8 +195,6 @@ def classify(args, line, got, want, want_cap, ref):
     mode = mode_of(args)
     if got == want:
         return "identical"
-    if got.startswith("ERROR: ") and want.startswith("ERROR: "):
-        return "error"
     if mode == "-m" and line.split()[0] == "-0" and \
             re.match(r"\d+N", got) and re.match(r"\d+M", want):
         return "minus-zero"
@@ -308,6 +305,65 @@ def sixteenths(text):
     return "%d.%04d" % (v // 16, v % 16 * 625)
 
 
+# One line of each kind of input GeoConvert refuses, per option set: the
+# ERROR lines must be byte-identical (GeoConvert's wording, the offending
+# token and numbers quoted as it quotes them).
+BAD_INPUTS = [
+    # latitude and longitude text
+    "91 0", "-91 0", "90.5 10", "0 1e3", "33d61 44", "33d20'61\" 44",
+    "33d61.5 44", "33d20'60.5\" 44", "33x 44", "N33 N44", "33N 44S",
+    "E1 W2", "abc 44", "33.5d20 44", "33d20'10\"5 44", "33'20d 44",
+    "33d20d 44", "33'20' 44", "1.2.3 44", "33NN 44", "N33S 44", "N33N 44",
+    "33N+3E 44", "33+ 44", "d 44", "' 44", "33d' 44", ":33 44", "33::5 44",
+    "33: 44", "33:20:10:5 44", "N 44", "- 44", ". 44", "N-33x 44",
+    "33x5N 44", "33N+3x 44", "33d20+d 44", "-- 10", "3N3 10",
+    # fields
+    "33 44 55 66", "a b c", "33 44 x", "31 500000 4000000",
+    # UTM/UPS zone and hemisphere
+    "31q 500000 0", "61n 500000 0", "0n 500000 0", "00n 500000 0",
+    "-31n 500000 0", "+31n 500000 0", "123n 500000 0", "031n 500000 0",
+    "31northxx 500000 0", "31nort 500000 0", "3.1n 500000 0",
+    # UTM/UPS coordinates
+    "31n abc 4000000", "31n 500000 x", "31n 500000 4000000.5x",
+    "31n 5000600 4000000", "31n -600 4000000", "31n 500000 -20000600",
+    "31s 500000 20000400", "31s 0 899999", "31n 0 9600000.5",
+    "n 500000 0", "n 2000000 3000000", "s 3500000 2000000",
+    "s 2000000 -500",
+    # MGRS
+    "38", "1", "0", "38SM", "38SMB448", "38SMBX488", "38SMB44X", "38IMB4488",
+    "38SIB4488", "61SMB4488", "138SMB4488", "038SMB4488", "00SMB",
+    "38ZMB4488", "38SMZ4488", "ZZA00", "ZMB4488", "AAA00", "BZA", "YAA",
+    "YZZ", "AJI", "CAA", "cAA", "aB00", "38Sxb", "38S8", "38-S", "3.8SMB",
+    "38SMB+4", "38NMB4488", "38nmb4488", "38NMB44X", "38XMB4488", "32VFE00",
+    "38SMB4488448844884488448", "38SMB448844884488448844884488",
+]
+BAD_OPTIONS = [["-g"], ["-u", "-z", "31"], ["-m", "-z", "31"],
+               ["-u", "-z", "0"], ["-m", "-z", "0"], ["-u", "-z", "s"],
+               ["-c", "-t"], ["-m", "-t"]]
+# points each option set above refuses for the zone it asks for
+BAD_ZONE_INPUTS = ["0 20", "0 370", "-0 20", "69.99999 0", "-70 0", "70 0",
+                   "80 0", "83 10", "87 45", "-81.9 10", "28.526247014 -1.9",
+                   "-89.5 0", "85.7 150", "-81.3 92", "0 510", "0 -200",
+                   "0 63.0000001", "0 63", "0 -177", "0 -57.5", "38SMB4488",
+                   "31n 500000 0", "n 2000000 1500000"]
+
+
+def check_errors():
+    """The ERROR lines of BAD_INPUTS and BAD_ZONE_INPUTS that are not
+    byte-identical to GeoConvert's, and how many ERROR lines were
+    compared."""
+    bad, errors = [], 0
+    for args in BAD_OPTIONS:
+        lines = BAD_INPUTS + BAD_ZONE_INPUTS
+        for line, got, want in zip(lines, drdc(args, lines),
+                                   geoconvert(args, lines)):
+            if want.startswith("ERROR: ") or got.startswith("ERROR: "):
+                errors += 1
+                if got != want:
+                    bad.append((args, line, got, want))
+    return bad, errors
+
+
 # option set -> the inputs it is checked on
 OPTIONS = [
     (["-g"], "geographic"), (["-u"], "geographic"), (["-m"], "geographic"),
@@ -367,6 +423,11 @@ def main():
         for k, v in counts.items():
             total[k] = total.get(k, 0) + v
     print("total", total)
+    bad, errors = check_errors()
+    print("error lines of bad inputs: %d, not byte-identical %d"
+          % (errors, len(bad)))
+    for b in bad[:10]:
+        print("   ", b)
 
 
 if __name__ == "__main__":

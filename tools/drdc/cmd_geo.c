@@ -7,6 +7,7 @@
  *        from the exact fixed-point value).
  */
 #include <ctype.h>
+#include <stdarg.h>
 #include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -17,6 +18,7 @@
 #include <drdc/geo_mgrs.h>
 
 #include "commands.h"
+#include "geo_mgrs_text.h"
 #include "geo_text.h"
 #include "lines.h"
 
@@ -100,30 +102,18 @@ struct position {
   bool rezoned;         /* u was computed again for -z, -s or -t */
   drdc_nas_t conv;
   drdc_q5_58_t k;
+  char why[200]; /* the ERROR line's message when a step fails */
 };
 
-static const char *status_reason(drdc_status_t st)
+/* The ERROR message of pos; false, for `return fail(...)`. */
+static bool fail(struct position *pos, const char *format, ...)
 {
-  switch (st) {
-  case DRDC_E_LATITUDE:
-    return "latitude not in [-90d, 90d]";
-  case DRDC_E_LONGITUDE:
-    return "longitude not in [-540d, 540d)";
-  case DRDC_E_ZONE:
-    return "zone not in [0, 60]";
-  case DRDC_E_EASTING:
-    return "easting not in the UTM/UPS range";
-  case DRDC_E_NORTHING:
-    return "northing not in the UTM/UPS range";
-  case DRDC_E_MGRS:
-    return "malformed MGRS";
-  case DRDC_E_BAND:
-    return "MGRS 100 km square not in its latitude band";
-  case DRDC_E_RANGE:
-    return "point out of legal range for the UTM zone or UPS";
-  default:
-    return drdc_status_name(st);
-  }
+  va_list args;
+
+  va_start(args, format);
+  vsnprintf(pos->why, sizeof pos->why, format, args);
+  va_end(args);
+  return false;
 }
 
 static int imin(int a, int b)
@@ -170,31 +160,59 @@ static int utm_only_zone(drdc_nas_t lat, drdc_nas_t lon)
 }
 
 /* GeoConvert's zone+hemisphere text: 1..60 (at most 2 digits, no sign)
- * or nothing for UPS, then n, s, north or south in any case. */
-static const char *decode_zone(const char *s, int *zone, bool *north)
+ * or nothing for UPS, then n, s, north or south in any case. On error,
+ * GeoConvert's message goes to why. */
+static bool decode_zone(const char *s, int *zone, bool *north, char *why,
+                        size_t why_size)
 {
+  const char *p = s;
+  bool sign = false;
+  bool negative = false;
   size_t digits = 0;
-  int z = 0;
-  const char *h;
+  long z = 0;
   char lower[8];
   size_t i;
 
   if (strlen(s) > 7u) {
-    return "zone text longer than 7 characters";
+    snprintf(why, why_size, "More than 7 characters in zone specification %s",
+             s);
+    return false;
   }
-  while (isdigit((unsigned char)s[digits])) {
-    z = (z * 10) + (s[digits] - '0');
+  if ((*p == '+') || (*p == '-')) {
+    sign = true;
+    negative = (*p == '-');
+    p++;
+  }
+  while (isdigit((unsigned char)p[digits])) {
+    z = (z * 10) + (p[digits] - '0');
     digits++;
-    if (digits > 2u) {
-      return "zone with more than 2 digits";
+  }
+  if (digits == 0u) {
+    p = s; /* no number: the whole text is the hemisphere */
+    sign = false;
+  } else {
+    z = negative ? -z : z;
+    if (z == 0) {
+      snprintf(why, why_size,
+               "Illegal zone 0 in %s, use just the hemisphere for UPS", s);
+      return false;
     }
+    if ((z < 1) || (z > 60)) {
+      snprintf(why, why_size, "Zone %ld not in range [1, 60]", z);
+      return false;
+    }
+    if (sign) {
+      snprintf(why, why_size, "Must use unsigned number for zone %ld", z);
+      return false;
+    }
+    if (digits > 2u) {
+      snprintf(why, why_size, "More than 2 digits use to specify zone %ld", z);
+      return false;
+    }
+    p += digits;
   }
-  if ((digits > 0u) && ((z < 1) || (z > 60))) {
-    return "zone not in [1, 60] (UPS: the hemisphere alone)";
-  }
-  h = s + digits;
-  for (i = 0; (h[i] != '\0') && (i < (sizeof lower - 1u)); i++) {
-    lower[i] = (char)tolower((unsigned char)h[i]);
+  for (i = 0; (p[i] != '\0') && (i < (sizeof lower - 1u)); i++) {
+    lower[i] = (char)tolower((unsigned char)p[i]);
   }
   lower[i] = '\0';
   if ((strcmp(lower, "n") == 0) || (strcmp(lower, "north") == 0)) {
@@ -202,10 +220,12 @@ static const char *decode_zone(const char *s, int *zone, bool *north)
   } else if ((strcmp(lower, "s") == 0) || (strcmp(lower, "south") == 0)) {
     *north = false;
   } else {
-    return "illegal zone or hemisphere";
+    snprintf(why, why_size,
+             "Illegal hemisphere %s in %s, specify north or south", p, s);
+    return false;
   }
-  *zone = z;
-  return NULL;
+  *zone = (int)z;
+  return true;
 }
 
 /* Split on GeoConvert's separators: blanks and commas. */
@@ -234,6 +254,82 @@ static int split(char *line, char **words, int max)
   }
 }
 
+/* GeoConvert's message for UTM/UPS coordinates outside the ranges it
+ * (and the library) accepts: kilometres as printf's %g. */
+static bool grid_range_error(struct position *pos, drdc_status_t st)
+{
+  const drdc_geo_utm_t *u = &pos->u;
+  bool ups = (u->zone == DRDC_GEO_ZONE_UPS);
+  bool easting = (st == DRDC_E_EASTING);
+  /* [min, max] km: UTM easting, northing north, northing south; UPS
+   * south, north (easting and northing alike) */
+  static const int utm_km[3][2] = {{0, 1000}, {-9100, 9600}, {900, 19600}};
+  static const int ups_km[2][2] = {{700, 3300}, {1200, 2800}};
+  const int *range =
+      ups ? ups_km[u->north ? 1 : 0] : utm_km[easting ? 0 : (u->north ? 1 : 2)];
+  char km[32];
+
+  geo_text_put_general(km, sizeof km, easting ? u->easting : u->northing,
+                       1000 * Q16_PER_M, false);
+  return fail(pos, "%s %skm not in %s range for %c hemisphere [%dkm, %dkm]",
+              easting ? "Easting" : "Northing", km, ups ? "UPS" : "UTM",
+              u->north ? 'N' : 'S', range[0], range[1]);
+}
+
+/* The same for MGRS output, whose ranges are narrower and half open;
+ * GeoConvert quotes whole kilometres (rounded down) here. */
+static bool mgrs_range_error(struct position *pos, drdc_status_t st)
+{
+  const drdc_geo_utm_t *u = &pos->u;
+  bool ups = (u->zone == DRDC_GEO_ZONE_UPS);
+  bool easting = (st == DRDC_E_EASTING);
+  static const int utm_km[3][2] = {{100, 900}, {-9000, 9500}, {1000, 19500}};
+  static const int ups_km[2][2] = {{800, 3200}, {1300, 2700}};
+  const int *range =
+      ups ? ups_km[u->north ? 1 : 0] : utm_km[easting ? 0 : (u->north ? 1 : 2)];
+  int64_t km = floor_div(easting ? u->easting : u->northing, 1000 * Q16_PER_M);
+
+  return fail(pos,
+              "%s %lldkm not in MGRS/%s range for %c hemisphere "
+              "[%dkm, %dkm)",
+              easting ? "Easting" : "Northing", (long long)km,
+              ups ? "UPS" : "UTM", u->north ? 'N' : 'S', range[0], range[1]);
+}
+
+/* GeoConvert's message for a point that zone (UPS or 1..60) cannot
+ * hold, quoting latitude and longitude as printf's %g. */
+static bool zone_range_error(struct position *pos, int zone)
+{
+  char lat[32];
+  char lon[32];
+
+  geo_text_put_general(lat, sizeof lat, pos->lat.nas, NAS_PER_DEG,
+                       pos->lat.negative);
+  geo_text_put_general(lon, sizeof lon, pos->lon.nas, NAS_PER_DEG,
+                       pos->lon.negative);
+  if (zone != DRDC_GEO_ZONE_UPS) {
+    /* GeoConvert first tests the longitude east of the central meridian,
+     * reduced to [-180, 180) */
+    drdc_nas_t east =
+        reduce_longitude(pos->lon_calc - (((6 * zone) - 183) * NAS_PER_DEG));
+
+    if (east > (60 * NAS_PER_DEG)) {
+      return fail(pos, "Longitude %sd more than 60d from center of UTM zone %d",
+                  lon, zone);
+    }
+    return fail(pos,
+                "Latitude %s, longitude %s out of legal range for UTM zone %d",
+                lat, lon, zone);
+  }
+  if ((pos->lat.nas < (70 * NAS_PER_DEG)) &&
+      (pos->lat.nas > -(70 * NAS_PER_DEG))) {
+    return fail(pos, "Latitude %sd more than 20d from %c pole", lat,
+                pos->lat.negative ? 'S' : 'N');
+  }
+  return fail(pos, "Latitude %s, longitude %s out of legal range for UPS", lat,
+              lon);
+}
+
 static void set_computed_angle(geo_text_angle_t *a, drdc_nas_t nas)
 {
   a->nas = nas;
@@ -244,42 +340,44 @@ static void set_computed_angle(geo_text_angle_t *a, drdc_nas_t nas)
 
 /* UTM/UPS -> geographic, then GeoConvert's FixHemisphere: a UTM northing
  * given in the other hemisphere is moved to the latitude's own. */
-static const char *from_grid(struct position *pos)
+static bool from_grid(struct position *pos)
 {
   drdc_nas_t lat = 0;
   drdc_nas_t lon = 0;
   drdc_status_t st;
 
   st = drdc_geo_from_utm(&pos->u, &lat, &lon, &pos->conv, &pos->k);
+  if ((st == DRDC_E_EASTING) || (st == DRDC_E_NORTHING)) {
+    return grid_range_error(pos, st);
+  }
   if (st != DRDC_OK) {
-    return status_reason(st);
+    return fail(pos, "%s", drdc_status_name(st));
   }
   set_computed_angle(&pos->lat, lat);
   set_computed_angle(&pos->lon, lon);
   pos->lon_calc = lon;
   if ((lat != 0) && (pos->u.north != (lat > 0))) {
     if (pos->u.zone == DRDC_GEO_ZONE_UPS) {
-      return "hemisphere mixup";
+      return fail(pos, "UPS coordinates in the wrong hemisphere");
     }
     pos->u.northing += pos->u.north ? SOUTH_SHIFT : -SOUTH_SHIFT;
     pos->u.north = !pos->u.north;
   }
-  return NULL;
+  return true;
 }
 
-static const char *read_geographic(char *a, char *b, const struct options *o,
-                                   struct position *pos)
+static bool read_geographic(char *a, char *b, const struct options *o,
+                            struct position *pos)
 {
   geo_text_angle_t x;
   geo_text_angle_t y;
   enum geo_text_hemisphere hx;
   enum geo_text_hemisphere hy;
-  const char *why;
   drdc_status_t st;
 
-  if (((why = geo_text_read_angle(a, &x)) != NULL) ||
-      ((why = geo_text_read_angle(b, &y)) != NULL)) {
-    return why;
+  if (!geo_text_read_angle(a, &x, pos->why, sizeof pos->why) ||
+      !geo_text_read_angle(b, &y, pos->why, sizeof pos->why)) {
+    return false;
   }
   hx = x.hemisphere;
   hy = y.hemisphere;
@@ -292,13 +390,18 @@ static const char *read_geographic(char *a, char *b, const struct options *o,
     hy = (hx == GEO_TEXT_LATITUDE) ? GEO_TEXT_LONGITUDE : GEO_TEXT_LATITUDE;
   }
   if (hx == hy) {
-    return "both coordinates are latitudes or both longitudes";
+    return fail(pos, "Both %s and %s interpreted as %s", a, b,
+                (hx == GEO_TEXT_LATITUDE) ? "latitudes" : "longitudes");
   }
   pos->lat = (hx == GEO_TEXT_LATITUDE) ? x : y;
   pos->lon = (hx == GEO_TEXT_LATITUDE) ? y : x;
   if ((pos->lat.nas > (90 * NAS_PER_DEG)) ||
       (pos->lat.nas < -(90 * NAS_PER_DEG))) {
-    return status_reason(DRDC_E_LATITUDE);
+    char lat[32];
+
+    geo_text_put_general(lat, sizeof lat, pos->lat.nas, NAS_PER_DEG,
+                         pos->lat.negative);
+    return fail(pos, "Latitude %sd not in [-90d, 90d]", lat);
   }
   /* GeoConvert takes any longitude; the library [-540, 540) */
   pos->lon_calc = pos->lon.nas;
@@ -310,7 +413,7 @@ static const char *read_geographic(char *a, char *b, const struct options *o,
   st = drdc_geo_to_utm(pos->lat.nas, pos->lon_calc, DRDC_GEO_ZONE_STANDARD,
                        &pos->u, &pos->conv, &pos->k);
   if (st != DRDC_OK) {
-    return status_reason(st);
+    return fail(pos, "%s", drdc_status_name(st));
   }
   if ((pos->lat.nas == 0) && pos->lat.negative &&
       (pos->u.zone != DRDC_GEO_ZONE_UPS)) {
@@ -318,11 +421,42 @@ static const char *read_geographic(char *a, char *b, const struct options *o,
     pos->u.north = false;
     pos->u.northing += SOUTH_SHIFT;
   }
-  return NULL;
+  return true;
 }
 
-static const char *read_utm(char **w, const struct options *o,
+/* Metres of UTM/UPS input; GeoConvert's messages for what is not a
+ * number, or a number with more after it. */
+static bool read_coordinate(const char *text, int64_t *q16, bool *exact,
                             struct position *pos)
+{
+  const char *p = text;
+  size_t digits = 0;
+
+  if ((*p == '+') || (*p == '-')) {
+    p++;
+  }
+  for (; isdigit((unsigned char)*p) || (*p == '.'); p++) {
+    digits += isdigit((unsigned char)*p) ? 1u : 0u;
+  }
+  if (digits == 0u) {
+    return fail(pos, "Cannot decode %s", text);
+  }
+  if ((*p == 'e') || (*p == 'E')) {
+    return fail(pos, "Cannot decode %s (no exponents)", text);
+  }
+  if (*p != '\0') {
+    return fail(pos, "Extra text %s at end of %s", p, text);
+  }
+  if (!geo_text_read_metres(text, q16, exact)) {
+    return fail(pos,
+                "Cannot decode %s (more than 12 digits before the "
+                "point, or two points)",
+                text);
+  }
+  return true;
+}
+
+static bool read_utm(char **w, struct position *pos)
 {
   char *zone_text;
   char *e;
@@ -331,9 +465,7 @@ static const char *read_utm(char **w, const struct options *o,
   bool n_exact;
   int zone = 0;
   bool north = true;
-  const char *why;
 
-  (void)o;
   if ((*w[0] != '\0') && isalpha((unsigned char)w[0][strlen(w[0]) - 1u])) {
     zone_text = w[0];
     e = w[1];
@@ -344,23 +476,26 @@ static const char *read_utm(char **w, const struct options *o,
     e = w[0];
     n = w[1];
   } else {
-    return "neither the first nor the last word is a zone+hemisphere";
+    return fail(pos,
+                "Neither %s nor %s of the form UTM/UPS Zone + Hemisphere "
+                "(ex: 38n, 09s, n)",
+                w[0], w[2]);
   }
-  if ((why = decode_zone(zone_text, &zone, &north)) != NULL) {
-    return why;
+  if (!decode_zone(zone_text, &zone, &north, pos->why, sizeof pos->why)) {
+    return false;
   }
   pos->u.zone = zone;
   pos->u.north = north;
-  if (!geo_text_read_metres(e, &pos->u.easting, &e_exact) ||
-      !geo_text_read_metres(n, &pos->u.northing, &n_exact)) {
-    return "bad easting or northing";
+  if (!read_coordinate(e, &pos->u.easting, &e_exact, pos) ||
+      !read_coordinate(n, &pos->u.northing, &n_exact, pos)) {
+    return false;
   }
   pos->u_exact = e_exact && n_exact;
   return from_grid(pos);
 }
 
-static const char *read_mgrs(const char *text, const struct options *o,
-                             struct position *pos)
+static bool read_mgrs(const char *text, const struct options *o,
+                      struct position *pos)
 {
   drdc_geo_utm_t corner;
   drdc_geo_utm_t centre;
@@ -369,7 +504,7 @@ static const char *read_mgrs(const char *text, const struct options *o,
 
   st = drdc_geo_mgrs_decode(text, &corner, &centre, &prec);
   if (st != DRDC_OK) {
-    return status_reason(st);
+    return geo_mgrs_error(text, st, pos->why, sizeof pos->why);
   }
   pos->u = o->corner ? corner : centre;
   /* corners are multiples of 10^(5 - prec) m, centres half a cell more:
@@ -380,7 +515,7 @@ static const char *read_mgrs(const char *text, const struct options *o,
 
 /* The output zone: GeoConvert's SetAltZone and, for -u with a
  * hemisphere, its Transfer. */
-static const char *output_zone(const struct options *o, struct position *pos)
+static bool output_zone(const struct options *o, struct position *pos)
 {
   int zone;
   drdc_status_t st;
@@ -395,7 +530,7 @@ static const char *output_zone(const struct options *o, struct position *pos)
 
       st = drdc_geo_utm_zone(pos->lat.nas, pos->lon_calc, &z);
       if (st != DRDC_OK) {
-        return status_reason(st);
+        return fail(pos, "%s", drdc_status_name(st));
       }
       zone = (int)z;
     }
@@ -406,8 +541,11 @@ static const char *output_zone(const struct options *o, struct position *pos)
 
       st = drdc_geo_to_utm(pos->lat.nas, pos->lon_calc, zone, &pos->u,
                            &pos->conv, &pos->k);
+      if (st == DRDC_E_RANGE) {
+        return zone_range_error(pos, zone);
+      }
       if (st != DRDC_OK) {
-        return status_reason(st);
+        return fail(pos, "%s", drdc_status_name(st));
       }
       if ((pos->lat.nas == 0) && pos->lat.negative &&
           (pos->u.zone != DRDC_GEO_ZONE_UPS)) {
@@ -421,12 +559,13 @@ static const char *output_zone(const struct options *o, struct position *pos)
   if ((o->mode == MODE_UTM) && o->set_hemisphere &&
       (o->north != pos->u.north)) {
     if (pos->u.zone == DRDC_GEO_ZONE_UPS) {
-      return "UPS coordinates cannot change hemisphere";
+      return fail(pos,
+                  "Attempt to transfer UPS coordinates between hemispheres");
     }
     pos->u.northing += o->north ? -SOUTH_SHIFT : SOUTH_SHIFT;
     pos->u.north = o->north;
   }
-  return NULL;
+  return true;
 }
 
 /* A UTM coordinate as GeoConvert's UTMUPSString: PREC decimals, or for a
@@ -474,10 +613,10 @@ static void put_dms(char *out, size_t size, const geo_text_angle_t *a, int prec,
                    a->exact ? prec : imin(prec, most), which, sep);
 }
 
-/* The output line of a converted position; false for an ERROR line. */
-static const char *write_output(const struct options *o,
-                                const struct position *pos, char *out,
-                                size_t size)
+/* The output line of a converted position; false for an ERROR line
+ * (its message in pos->why). */
+static bool write_output(const struct options *o, struct position *pos,
+                         char *out, size_t size)
 {
   char a[64];
   char b[64];
@@ -520,7 +659,7 @@ static const char *write_output(const struct options *o,
     put_metres(a, sizeof a, u->easting, prec);
     put_metres(b, sizeof b, u->northing, prec);
     snprintf(out, size, "%.8s %.60s %.60s", zone, a, b);
-    return NULL;
+    return true;
   }
   case MODE_MGRS: {
     int32_t prec = imax(-1, imin(6, p) + 5);
@@ -538,7 +677,10 @@ static const char *write_output(const struct options *o,
       }
       st = drdc_geo_mgrs_from_utm(u, prec, out, size);
     }
-    return (st == DRDC_OK) ? NULL : status_reason(st);
+    if ((st == DRDC_E_EASTING) || (st == DRDC_E_NORTHING)) {
+      return mgrs_range_error(pos, st);
+    }
+    return (st == DRDC_OK) ? true : fail(pos, "%s", drdc_status_name(st));
   }
   default: {
     int prec = imax(-5, imin(8, p));
@@ -560,7 +702,7 @@ static const char *write_output(const struct options *o,
   }
   }
   snprintf(out, size, "%.60s %.60s", a, b);
-  return NULL;
+  return true;
 }
 
 /* One line -> its output text; returns false for an ERROR line. */
@@ -570,29 +712,23 @@ static bool convert_line(char *line, const struct options *o, char *out,
   char *w[4];
   int n = split(line, w, 3);
   struct position pos;
-  const char *why;
+  bool ok;
 
   memset(&pos, 0, sizeof pos);
   if (n == 1) {
-    why = read_mgrs(w[0], o, &pos);
+    ok = read_mgrs(w[0], o, &pos);
   } else if (n == 2) {
-    why = read_geographic(w[0], w[1], o, &pos);
+    ok = read_geographic(w[0], w[1], o, &pos);
   } else if (n == 3) {
-    why = read_utm(w, o, &pos);
+    ok = read_utm(w, &pos);
   } else {
-    why = "a position has 1, 2 or 3 words";
+    ok = fail(&pos, "Coordinate requires 1, 2, or 3 elements");
   }
-  if (why == NULL) {
-    why = output_zone(o, &pos);
+  ok = ok && output_zone(o, &pos) && write_output(o, &pos, out, size);
+  if (!ok) {
+    snprintf(out, size, "ERROR: %s", pos.why);
   }
-  if (why == NULL) {
-    why = write_output(o, &pos, out, size);
-  }
-  if (why != NULL) {
-    snprintf(out, size, "ERROR: %s", why);
-    return false;
-  }
-  return true;
+  return ok;
 }
 
 /* -p's integer, as GeoConvert reads it. */
@@ -650,9 +786,10 @@ static int parse_options(int argc, char **argv, struct options *o)
     } else if ((strcmp(a, "-z") == 0) && has_value) {
       int z = 0;
       bool north = true;
+      char why[120];
 
       i++;
-      if (decode_zone(argv[i], &z, &north) == NULL) {
+      if (decode_zone(argv[i], &z, &north, why, sizeof why)) {
         o->set_hemisphere = true;
         o->north = north;
       } else if (read_int(argv[i], &z) && (z >= 0) && (z <= 60)) {
@@ -706,7 +843,7 @@ int drdc_cmd_geo(int argc, char **argv)
       printf("ERROR: %s\n", problem);
       failed = 1;
     } else {
-      char out[160];
+      char out[240];
 
       if (!convert_line(line, &o, out, sizeof out)) {
         failed = 1;

@@ -134,13 +134,20 @@ static bool is_sign(char c)
   return (c == '+') || (c == '-');
 }
 
+static const char *const component_names[3] = {"degrees", "minutes", "seconds"};
+
 /* One piece of an angle (no interior sign), GeoConvert's InternalDecode:
- * [hemisphere][sign]components[hemisphere]. */
-static const char *read_piece(const char *s, size_t beg, size_t end,
-                              geo_text_angle_t *out)
+ * [hemisphere][sign]components[hemisphere]. On error, `why` gets
+ * GeoConvert's message, which quotes the piece without its hemisphere
+ * letters and sign (or the whole piece when nothing is left of it). */
+static bool read_piece(const char *s, size_t beg, size_t end,
+                       geo_text_angle_t *out, char *why, size_t why_size)
 {
+  size_t piece_beg = beg;
+  size_t piece_end = end;
   int sign = 1;
   int h;
+  char first_letter = '\0';
   int64_t whole[3] = {0, 0, 0};
   int64_t current = 0;
   u128 frac = 0;
@@ -156,16 +163,30 @@ static const char *read_piece(const char *s, size_t beg, size_t end,
                       GEO_TEXT_NAS_PER_SECOND};
   int64_t nas;
   bool exact = true;
+  int len;
+  int k_check;
 
   out->hemisphere = GEO_TEXT_NONE;
   if ((end > beg) && ((h = hemisphere_of(s[beg])) != 0)) {
     out->hemisphere = (enum geo_text_hemisphere)((h < 0) ? -h : h);
     sign = (h < 0) ? -1 : 1;
+    first_letter = (char)toupper((unsigned char)s[beg]);
     beg++;
   }
   if ((end > beg) && ((h = hemisphere_of(s[end - 1u])) != 0)) {
-    if (out->hemisphere != GEO_TEXT_NONE) {
-      return "repeated or contradictory hemisphere letters";
+    char last_letter = (char)toupper((unsigned char)s[end - 1u]);
+
+    len = (int)(piece_end - piece_beg);
+    if (first_letter == last_letter) {
+      snprintf(why, why_size, "Repeated hemisphere indicators %c in %.*s",
+               last_letter, len, s + piece_beg);
+      return false;
+    }
+    if (first_letter != '\0') {
+      snprintf(why, why_size,
+               "Contradictory hemisphere indicators %c and %c in %.*s",
+               first_letter, last_letter, len, s + piece_beg);
+      return false;
     }
     out->hemisphere = (enum geo_text_hemisphere)((h < 0) ? -h : h);
     sign = (h < 0) ? -1 : 1;
@@ -175,8 +196,11 @@ static const char *read_piece(const char *s, size_t beg, size_t end,
     sign *= (s[beg] == '-') ? -1 : 1;
     beg++;
   }
+  len = (int)(end - beg);
   if (end == beg) {
-    return "empty or incomplete angle";
+    snprintf(why, why_size, "Empty or incomplete DMS string %.*s",
+             (int)(piece_end - piece_beg), s + piece_beg);
+    return false;
   }
   for (p = beg; p < end; p++) {
     char x = s[p];
@@ -194,7 +218,8 @@ static const char *read_piece(const char *s, size_t beg, size_t end,
         }
       } else {
         if (current > GEO_TEXT_DEGREES_MAX) {
-          return "angle too large";
+          snprintf(why, why_size, "angle too large");
+          return false;
         }
         current = (current * 10) + (x - '0');
       }
@@ -202,7 +227,9 @@ static const char *read_piece(const char *s, size_t beg, size_t end,
     }
     if (x == '.') {
       if (point) {
-        return "several decimal points";
+        snprintf(why, why_size, "Multiple decimal points in %.*s", len,
+                 s + beg);
+        return false;
       }
       point = true;
       digcount = 1;
@@ -220,18 +247,36 @@ static const char *read_piece(const char *s, size_t beg, size_t end,
       break;
     case ':':
       if ((p + 1u) == end) {
-        return "':' at the end of an angle";
+        snprintf(why, why_size, "Illegal for : to appear at the end of %.*s",
+                 len, s + beg);
+        return false;
       }
       k = npiece;
       break;
     default:
-      return is_sign(x) ? "sign inside an angle" : "illegal character";
+      snprintf(why, why_size, "Illegal character %c in DMS string %.*s", x, len,
+               s + beg);
+      return false;
+    }
+    if (k == (npiece - 1)) {
+      snprintf(why, why_size, "Repeated %s component in %.*s",
+               component_names[k], len, s + beg);
+      return false;
     }
     if (k < npiece) {
-      return "degrees, minutes and seconds out of order";
+      snprintf(why, why_size, "%s component follows %s component in %.*s",
+               component_names[k], component_names[npiece - 1], len, s + beg);
+      return false;
     }
-    if ((k > 2) || (ncurrent == 0)) {
-      return "missing number in an angle";
+    if (k > 2) {
+      snprintf(why, why_size, "Extra text following seconds in DMS string %.*s",
+               len, s + beg);
+      return false;
+    }
+    if (ncurrent == 0) {
+      snprintf(why, why_size, "Missing numbers in %s component of %.*s",
+               component_names[k], len, s + beg);
+      return false;
     }
     whole[k] = current;
     if (digcount > 0) {
@@ -246,10 +291,14 @@ static const char *read_piece(const char *s, size_t beg, size_t end,
   }
   if (strchr("Dd'\":", s[end - 1u]) == NULL) {
     if (npiece >= 3) {
-      return "extra text after the seconds";
+      snprintf(why, why_size, "Extra text following seconds in DMS string %.*s",
+               len, s + beg);
+      return false;
     }
     if (ncurrent == 0) {
-      return "missing number in an angle";
+      snprintf(why, why_size, "Missing numbers in trailing component of %.*s",
+               len, s + beg);
+      return false;
     }
     whole[npiece] = current;
     if (digcount > 0) {
@@ -257,13 +306,31 @@ static const char *read_piece(const char *s, size_t beg, size_t end,
     }
   }
   if (point && (digcount == 0)) {
-    return "decimal point before the last component";
-  }
-  if ((whole[1] >= 60) || (whole[2] >= 60)) {
-    return "minutes or seconds not in [0, 60)";
+    snprintf(why, why_size, "Decimal point in non-terminal component of %.*s",
+             len, s + beg);
+    return false;
   }
   if (whole[0] > GEO_TEXT_DEGREES_MAX) {
-    return "angle too large";
+    snprintf(why, why_size, "angle too large");
+    return false;
+  }
+  for (k_check = 1; k_check < 3; k_check++) {
+    if (whole[k_check] >= 60) {
+      /* GeoConvert quotes the component with its fraction */
+      int64_t v = whole[k_check] * units[k_check];
+      char number[32];
+      bool ignored;
+
+      if (frac_piece == k_check) {
+        v += (int64_t)divide_round_even(frac * (u128)(uint64_t)units[k_check],
+                                        pow10_u128(frac_digits), frac_above,
+                                        &ignored);
+      }
+      geo_text_put_general(number, sizeof number, v, units[k_check], false);
+      snprintf(why, why_size, "%s %s not in range [0, 60)",
+               (k_check == 1) ? "Minutes" : "Seconds", number);
+      return false;
+    }
   }
   nas = (whole[0] * units[0]) + (whole[1] * units[1]) + (whole[2] * units[2]);
   if (frac_piece >= 0) {
@@ -274,10 +341,11 @@ static const char *read_piece(const char *s, size_t beg, size_t end,
   out->nas = sign * nas;
   out->negative = (sign < 0);
   out->exact = exact;
-  return NULL;
+  return true;
 }
 
-const char *geo_text_read_angle(const char *text, geo_text_angle_t *out)
+bool geo_text_read_angle(const char *text, geo_text_angle_t *out, char *why,
+                         size_t why_size)
 {
   char s[TOKEN_MAX + 1];
   size_t i;
@@ -289,7 +357,8 @@ const char *geo_text_read_angle(const char *text, geo_text_angle_t *out)
   geo_text_angle_t sum = {0, true, true, GEO_TEXT_NONE};
 
   if (strlen(text) > TOKEN_MAX) {
-    return "angle text too long";
+    snprintf(why, why_size, "angle text longer than %d bytes", TOKEN_MAX);
+    return false;
   }
   strcpy(s, text);
   for (i = 0; i < (sizeof aliases / sizeof aliases[0]); i++) {
@@ -305,7 +374,6 @@ const char *geo_text_read_angle(const char *text, geo_text_angle_t *out)
   for (p = beg; p < end; p = pb, pieces++) {
     size_t pa = p;
     geo_text_angle_t piece;
-    const char *why;
 
     if ((pieces == 0) && (hemisphere_of(s[pa]) != 0)) {
       pa++;
@@ -315,16 +383,16 @@ const char *geo_text_read_angle(const char *text, geo_text_angle_t *out)
     }
     for (pb = pa; (pb < end) && !is_sign(s[pb]); pb++) {
     }
-    why = read_piece(s, p, pb, &piece);
-    if (why != NULL) {
-      return why;
+    if (!read_piece(s, p, pb, &piece, why, why_size)) {
+      return false;
     }
     /* each piece and the sum stay within GEO_TEXT_DEGREES_MAX: no
      * overflow here nor when the sum is printed */
     sum.nas += piece.nas;
     if ((sum.nas > (GEO_TEXT_DEGREES_MAX * GEO_TEXT_NAS_PER_DEGREE)) ||
         (sum.nas < -(GEO_TEXT_DEGREES_MAX * GEO_TEXT_NAS_PER_DEGREE))) {
-      return "angle too large";
+      snprintf(why, why_size, "angle too large");
+      return false;
     }
     /* GeoConvert sums from -0.0: the sum is a negative zero only when
      * every piece is one */
@@ -334,17 +402,20 @@ const char *geo_text_read_angle(const char *text, geo_text_angle_t *out)
       sum.hemisphere = piece.hemisphere;
     } else if ((piece.hemisphere != GEO_TEXT_NONE) &&
                (piece.hemisphere != sum.hemisphere)) {
-      return "incompatible hemisphere letters";
+      snprintf(why, why_size, "Incompatible hemisphere specifier in %.*s",
+               (int)(end - beg), s + beg);
+      return false;
     }
   }
   if (pieces == 0) {
-    return "empty or incomplete angle";
+    snprintf(why, why_size, "Empty or incomplete DMS string %s", s);
+    return false;
   }
   if (sum.nas != 0) {
     sum.negative = (sum.nas < 0);
   }
   *out = sum;
-  return NULL;
+  return true;
 }
 
 bool geo_text_read_metres(const char *s, int64_t *q16, bool *exact)
@@ -464,6 +535,83 @@ void geo_text_put_fixed(char *out, size_t size, int64_t value, int64_t unit,
   if (decimals > 0) {
     put_char(&t, '.');
     put_uint(&t, q % p, decimals);
+  }
+}
+
+void geo_text_put_general(char *out, size_t size, int64_t value, int64_t unit,
+                          bool negative)
+{
+  u128 mag = (value < 0) ? (u128)(-(value + 1)) + 1u : (u128)value;
+  u128 den = (u128)unit;
+  int exponent = 0; /* 10^exponent <= mag / den < 10^(exponent + 1) */
+  u128 q;
+  u128 rest;
+  bool exact;
+  char digits[8];
+  int decimals;
+  int n;
+  struct text t;
+
+  start(&t, out, size);
+  if ((value < 0) || ((value == 0) && negative)) {
+    put_char(&t, '-');
+  }
+  if (mag == 0u) {
+    put_char(&t, '0');
+    return;
+  }
+  while (mag >= (den * pow10_u128(exponent + 1))) {
+    exponent++;
+  }
+  while ((mag * pow10_u128(-exponent)) < den) {
+    exponent--;
+  }
+  /* the 6 significant digits, rounded half to even from the exact value */
+  if (exponent <= 5) {
+    q = divide_round_even(mag * pow10_u128(5 - exponent), den, false, &exact);
+  } else {
+    q = divide_round_even(mag, den * pow10_u128(exponent - 5), false, &exact);
+  }
+  if (q == 1000000u) {
+    q = 100000u;
+    exponent++;
+  }
+  for (n = 5, rest = q; n >= 0; n--) {
+    digits[n] = (char)('0' + (int)(rest % 10u));
+    rest /= 10u;
+  }
+  digits[6] = '\0';
+  if ((exponent < -4) || (exponent >= 6)) {
+    /* d.ddddde+XX without trailing zeros */
+    for (n = 6; (n > 1) && (digits[n - 1] == '0'); n--) {
+    }
+    put_char(&t, digits[0]);
+    if (n > 1) {
+      put_char(&t, '.');
+      for (decimals = 1; decimals < n; decimals++) {
+        put_char(&t, digits[decimals]);
+      }
+    }
+    put_char(&t, 'e');
+    put_char(&t, (exponent < 0) ? '-' : '+');
+    put_uint(&t, (uint64_t)((exponent < 0) ? -exponent : exponent), 2);
+    return;
+  }
+  /* fixed: q / 10^decimals, trailing zeros of the fraction dropped */
+  {
+    uint64_t whole = (uint64_t)(q / pow10_u128(5 - exponent));
+    uint64_t fraction = (uint64_t)(q % pow10_u128(5 - exponent));
+
+    decimals = 5 - exponent;
+    while ((decimals > 0) && ((fraction % 10u) == 0u)) {
+      fraction /= 10u;
+      decimals--;
+    }
+    put_uint(&t, whole, 1);
+    if (decimals > 0) {
+      put_char(&t, '.');
+      put_uint(&t, fraction, decimals);
+    }
   }
 }
 

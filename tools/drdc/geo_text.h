@@ -43,9 +43,12 @@ typedef struct geo_text_angle {
  * letter N S E W before or after; interior signs add pieces
  * ("39N+0:0:15"). No exponent, nan or inf.
  *
- * @return NULL and *out written, or the reason the text is not an angle.
+ * @param[out] why on failure, GeoConvert's message for the text (quoting
+ *        the offending piece as it does), cut at why_size.
+ * @return true and *out written, or false and *why written.
  */
-const char *geo_text_read_angle(const char *text, geo_text_angle_t *out);
+bool geo_text_read_angle(const char *text, geo_text_angle_t *out, char *why,
+                         size_t why_size);
 
 /**
  * Read a decimal number of metres, [+-]digits[.digits] (at most 12
@@ -65,6 +68,16 @@ bool geo_text_read_metres(const char *text, int64_t *q16, bool *exact);
  */
 void geo_text_put_fixed(char *out, size_t size, int64_t value, int64_t unit,
                         int decimals, bool negative);
+
+/**
+ * Write value / unit as printf("%g") writes a double (as GeoConvert's
+ * error messages quote numbers): 6 significant digits rounded half to
+ * even from the exact quotient, trailing zeros dropped, an exponent
+ * (1e-05, 1.5e+06) below 1e-4 and from 1e6 on. A '-' as for
+ * geo_text_put_fixed(). unit > 0.
+ */
+void geo_text_put_general(char *out, size_t size, int64_t value, int64_t unit,
+                          bool negative);
 
 /**
  * Write an angle as GeoConvert's DMS::Encode with `prec` digits (0..15):
