@@ -665,17 +665,28 @@ static bool write_output(const struct options *o, struct position *pos,
     int32_t prec = imax(-1, imin(6, p) + 5);
     drdc_status_t st;
 
-    if (pos->geographic && !pos->rezoned) {
+    bool south_of_equator = (pos->lat.nas == 0) && pos->lat.negative &&
+                            (u->zone != DRDC_GEO_ZONE_UPS);
+
+    if (pos->geographic && !pos->rezoned && !south_of_equator) {
       /* the library's own MGRS of a geographic point: its digits come
-       * from 2^-36 m, not from the Q47.16 metres (latitude -0 is the
-       * equator, band N; GeoConvert writes the southern band's
-       * 9 999 999 m) */
+       * from 2^-36 m, not from the Q47.16 metres */
       st = drdc_geo_mgrs_encode(pos->lat.nas, pos->lon_calc, prec, out, size);
     } else {
+      drdc_geo_utm_t grid = *u;
+
       if (!pos->u_exact) {
         prec = imin(prec, MGRS_DIGITS_FROM_METRES_MAX);
       }
-      st = drdc_geo_mgrs_from_utm(u, prec, out, size);
+      if (south_of_equator) {
+        /* a latitude of -0 (or negative, under half a nas) is a point
+         * just south of the equator, as GeoConvert's sign bit makes it:
+         * band M, the northing 10 000 000 m less than the last digit
+         * resolves, which truncates to all nines */
+        grid.north = false;
+        grid.northing = SOUTH_SHIFT - 1;
+      }
+      st = drdc_geo_mgrs_from_utm(&grid, prec, out, size);
     }
     if ((st == DRDC_E_EASTING) || (st == DRDC_E_NORTHING)) {
       return mgrs_range_error(pos, st);
