@@ -698,7 +698,7 @@ class GeoParity(unittest.TestCase):
 
     def test_options_and_bad_arguments(self):
         for args in (["-z", "61"], ["-z", "x"], ["-z"], ["-p", "1.5"],
-                     ["-S"]):
+                     ["-X"]):
             self.assertEqual(2, run("geo", *args).returncode, args)
         # angles are bounded so that every printed digit fits 64 bits
         code, out = geo(["-p", "9"], ["0 100001", "0 99999+99999",
@@ -720,6 +720,95 @@ class GeoParity(unittest.TestCase):
             want = geoconvert(args, lines)
             for line, a, b in zip(lines, out, want):
                 self.assertEqual(b, a, line)
+
+
+class GeoOptions(unittest.TestCase):
+    """GeoConvert's -S -T and input/output options, byte for byte."""
+
+    def setUp(self):
+        import shutil
+        if shutil.which("GeoConvert") is None:
+            self.skipTest("GeoConvert not installed")
+
+    def same(self, args, lines=None, stdin=None):
+        text = "".join(l + "\n" for l in lines) if lines is not None else ""
+        want = subprocess.run(["GeoConvert"] + args, capture_output=True,
+                              text=True, input=text)
+        got = run("geo", *args, stdin=text)
+        self.assertEqual(want.stdout, got.stdout, args)
+        self.assertEqual(want.returncode, got.returncode, args)
+
+    def test_first_conversion_holds_the_zone(self):
+        runs = [["91 0", "33 44", "33 50", "-10 44", "85 0", "-85 0",
+                 "38n 444140 3684706"],
+                ["-10 44", "33 44", "38SMB4488"],
+                ["85 0", "33 44", "89 100", "-89 0"],
+                ["-85 0", "-89 0", "33 44", "-0 3"]]
+        for lines in runs:
+            for opts in (["-u", "-S"], ["-u", "-T"], ["-m", "-S"],
+                         ["-m", "-T"], ["-c", "-S"], ["-g", "-T"],
+                         ["-u", "-p", "2", "-S", "-l"],
+                         ["-u", "-S", "-z", "31"], ["-u", "-z", "31", "-T"]):
+                self.same(opts, lines)
+
+    def test_comment_delimiter(self):
+        lines = ["33 44 # hello", "91 0 #bad", "# only", "", "  33 44#x#y",
+                 "33 44", "38SMB4488 // two // delimiters"]
+        for delim in ("#", "//"):
+            self.same(["--comment-delimiter", delim, "-u"], lines)
+
+    def test_input_string_and_line_separator(self):
+        for args in (["--input-string", "33 44;10 20;91 0;"],
+                     ["--input-string", ";33 44|x", "--line-separator", "|"],
+                     ["--input-string", "33 44"], ["--input-string", ""],
+                     ["--input-string", "38SMB4488;;", "-u"]):
+            self.same(args)
+
+    def test_input_and_output_files(self):
+        import tempfile
+        with tempfile.TemporaryDirectory() as d:
+            src = os.path.join(d, "in.txt")
+            with open(src, "w") as f:
+                f.write("33 44\n91 0\n38n 444140 3684706\n")
+            self.same(["--input-file", src, "-u"])
+            self.same(["--input-file", "-", "-m"], ["33 44"])
+            dst = os.path.join(d, "out.txt")
+            r = run("geo", "--input-file", src, "--output-file", dst, "-u")
+            self.assertEqual(1, r.returncode)
+            self.assertEqual("", r.stdout)
+            with open(dst) as f:
+                self.assertEqual(subprocess.run(
+                    ["GeoConvert", "--input-file", src, "-u"],
+                    capture_output=True, text=True).stdout, f.read())
+
+    def test_usage_errors_say_what_geoconvert_says(self):
+        for args, message in (
+                (["--input-file", "/nonexistent"],
+                 "Cannot open /nonexistent for reading"),
+                (["--output-file", "/nonexistent/x"],
+                 "Cannot open /nonexistent/x for writing"),
+                (["--input-string", "1 2", "--input-file", "-"],
+                 "Cannot specify --input-string and --input-file together"),
+                (["--line-separator", "||"],
+                 "Line separator must be a single character")):
+            r = run("geo", *args, stdin="")
+            self.assertEqual(2, r.returncode, args)
+            self.assertEqual("drdc geo: %s\n" % message, r.stderr)
+
+    def test_version_and_help(self):
+        with open(os.path.join(TOP, "core/include/drdc/version.h")) as f:
+            version = re.search(r'DRDC_VERSION_STRING "([^"]+)"',
+                                f.read()).group(1)
+        r = run("geo", "--version")
+        self.assertEqual((0, "drdc geo: libdrdc-fx version %s\n" % version),
+                         (r.returncode, r.stdout))
+        for opt in ("-h", "--help"):
+            r = run("geo", opt)
+            self.assertEqual(0, r.returncode)
+            for name in ("-S", "-T", "--input-string", "--input-file",
+                         "--line-separator", "--output-file",
+                         "--comment-delimiter", "--version"):
+                self.assertIn(name, r.stdout)
 
 
 if __name__ == "__main__":

@@ -16,6 +16,7 @@
 
 #include <drdc/geo.h>
 #include <drdc/geo_mgrs.h>
+#include <drdc/version.h>
 
 #include "commands.h"
 #include "geo_mgrs_text.h"
@@ -23,11 +24,16 @@
 #include "lines.h"
 
 static const char usage[] =
-    "usage: drdc geo [-g | -d | -: | -u | -m | -c] [-z ZONE | -s | -t]\n"
-    "                [-n] [-w] [-p PREC] [-l | -a]\n"
+    "usage: drdc geo [-g | -d | -: | -u | -m | -c] [-z ZONE | -s | -t | -S | "
+    "-T]\n"
+    "                [-n] [-w] [-p PREC] [-l | -a] [--comment-delimiter "
+    "DELIM]\n"
+    "                [--version | -h | --help]\n"
+    "                [--input-file FILE | --input-string STRING]\n"
+    "                [--line-separator CHAR] [--output-file FILE]\n"
     "\n"
-    "Reads one position per line on standard input and writes it as\n"
-    "GeographicLib's GeoConvert does, from the library's integer geodesy:\n"
+    "Reads one position per line and writes it as GeographicLib's\n"
+    "GeoConvert 2.1.2 does, from the library's integer geodesy:\n"
     "  input   'LAT LON' in decimal degrees or degrees, minutes, seconds\n"
     "          (33.3, 33d18'N, 33:18:00N, N33d18; a hemisphere letter\n"
     "          may swap the order); 'ZONE{n|s} EASTING NORTHING' or\n"
@@ -45,21 +51,33 @@ static const char usage[] =
     "          degree) and the point scale (PREC + 7 decimals)\n"
     "  -z ZONE output in UTM zone ZONE (1..60, 0 for UPS, or with its\n"
     "          hemisphere, 38n); -s the standard zone; -t the standard UTM\n"
-    "          zone also in the polar caps. Default: geographic input in\n"
-    "          its standard zone, UTM/UPS and MGRS input in its own\n"
+    "          zone also in the polar caps; -S, -T as -s, -t until a line\n"
+    "          converts, then that line's zone and hemisphere for the rest.\n"
+    "          Default: geographic input in its standard zone, UTM/UPS and\n"
+    "          MGRS input in its own\n"
     "  -n      MGRS input means the south-west corner of its cell\n"
     "  -w      longitude first, on input and output\n"
     "  -l, -a  hemisphere written north/south, or n/s (the default)\n"
     "  -p PREC precision, -5..10 (-6 for MGRS), default 0\n"
+    "  --comment-delimiter DELIM  cut DELIM and the rest of a line off\n"
+    "          before reading it, and write them after its output\n"
+    "  --input-file FILE, --output-file FILE  read or write FILE instead\n"
+    "          of standard input or output ('-': those)\n"
+    "  --input-string STRING  read STRING, its lines separated by CHAR\n"
+    "          (--line-separator, default ';')\n"
+    "  --version  the library version; -h, --help this text\n"
     "Printed decimals are the library's fixed-point values rounded half to\n"
     "even, never more digits than those values resolve: a value that is\n"
     "not exactly the input is written with at most 12 decimals of a degree\n"
     "(-g, -c: PREC 7; the library's unit is 1 nas, 2.8e-13 degree), 9 of\n"
     "a second (-d: PREC 8) and 4 of a metre (-u: PREC 4; 1/65536 m), and\n"
     "MGRS computed from such metres with at most 9 digits (PREC 4).\n"
-    "UTM/UPS input is read to the nearest 1/65536 m.\n"
-    "A line that cannot be converted gives 'ERROR: <reason>'; the others go\n"
-    "on and the exit status is 1 at the end.\n";
+    "UTM/UPS input is read to the nearest 1/65536 m. Latitude -0 (or 0S)\n"
+    "is just south of the equator, as in GeoConvert.\n"
+    "A line that cannot be converted gives GeoConvert's 'ERROR: <message>'\n"
+    "(nan, inf, exponents in metres and angles beyond 100000 degrees are\n"
+    "errors here); the others go on and the exit status is 1 at the end;\n"
+    "bad options exit with status 2.\n";
 
 #define Q16_PER_M   INT64_C(65536)
 #define Q58_ONE     INT64_C(288230376151711744)
@@ -82,13 +100,19 @@ enum mode { MODE_GEO, MODE_DMS, MODE_UTM, MODE_MGRS, MODE_CONV };
 struct options {
   enum mode mode;
   int prec;
-  int zone;            /* ZONE_MATCH, ZONE_UTM, standard, UPS or 1..60 */
-  bool set_hemisphere; /* -z with a hemisphere: -u writes in it */
-  bool north;          /* that hemisphere */
-  bool corner;         /* -n */
-  bool lon_first;      /* -w */
-  bool long_names;     /* -l */
-  char sep;            /* -: */
+  int zone;               /* ZONE_MATCH, ZONE_UTM, standard, UPS or 1..60 */
+  bool set_hemisphere;    /* -z with a hemisphere: -u writes in it */
+  bool north;             /* that hemisphere */
+  bool corner;            /* -n */
+  bool lon_first;         /* -w */
+  bool long_names;        /* -l */
+  char sep;               /* -: */
+  bool sticky;            /* -S, -T: the first conversion's zone from then on */
+  const char *comment;    /* --comment-delimiter, or NULL */
+  const char *input_file; /* --input-file, or NULL for standard input */
+  const char *input_string; /* --input-string, or NULL */
+  char line_separator;      /* --line-separator, in the input string */
+  const char *output_file;  /* --output-file, or NULL for standard output */
 };
 
 /* One converted line. */
@@ -716,9 +740,10 @@ static bool write_output(const struct options *o, struct position *pos,
   return true;
 }
 
-/* One line -> its output text; returns false for an ERROR line. */
-static bool convert_line(char *line, const struct options *o, char *out,
-                         size_t size)
+/* One line -> its output text; returns false for an ERROR line. After
+ * the first line that converts, -S and -T hold its zone and hemisphere,
+ * as -z would. */
+static bool convert_line(char *line, struct options *o, char *out, size_t size)
 {
   char *w[4];
   int n = split(line, w, 3);
@@ -738,6 +763,11 @@ static bool convert_line(char *line, const struct options *o, char *out,
   ok = ok && output_zone(o, &pos) && write_output(o, &pos, out, size);
   if (!ok) {
     snprintf(out, size, "ERROR: %s", pos.why);
+  } else if (o->sticky) {
+    o->sticky = false;
+    o->zone = (int)pos.u.zone;
+    o->set_hemisphere = true;
+    o->north = pos.u.north;
   }
   return ok;
 }
@@ -766,6 +796,28 @@ static int parse_options(int argc, char **argv, struct options *o)
     if ((strcmp(a, "--help") == 0) || (strcmp(a, "-h") == 0)) {
       fputs(usage, stdout);
       return 0;
+    } else if (strcmp(a, "--version") == 0) {
+      printf("drdc geo: libdrdc-fx version %s\n", DRDC_VERSION_STRING);
+      return 0;
+    } else if ((strcmp(a, "-S") == 0) || (strcmp(a, "-T") == 0)) {
+      o->zone = (a[1] == 'S') ? DRDC_GEO_ZONE_STANDARD : ZONE_UTM;
+      o->set_hemisphere = false;
+      o->sticky = true;
+    } else if ((strcmp(a, "--comment-delimiter") == 0) && has_value) {
+      o->comment = argv[++i];
+    } else if ((strcmp(a, "--input-file") == 0) && has_value) {
+      o->input_file = argv[++i];
+    } else if ((strcmp(a, "--input-string") == 0) && has_value) {
+      o->input_string = argv[++i];
+    } else if ((strcmp(a, "--output-file") == 0) && has_value) {
+      o->output_file = argv[++i];
+    } else if ((strcmp(a, "--line-separator") == 0) && has_value) {
+      i++;
+      if (strlen(argv[i]) != 1u) {
+        fputs("drdc geo: Line separator must be a single character\n", stderr);
+        return 2;
+      }
+      o->line_separator = argv[i][0];
     } else if (strcmp(a, "-g") == 0) {
       o->mode = MODE_GEO;
     } else if (strcmp(a, "-d") == 0) {
@@ -791,9 +843,11 @@ static int parse_options(int argc, char **argv, struct options *o)
     } else if (strcmp(a, "-s") == 0) {
       o->zone = DRDC_GEO_ZONE_STANDARD;
       o->set_hemisphere = false;
+      o->sticky = false;
     } else if (strcmp(a, "-t") == 0) {
       o->zone = ZONE_UTM;
       o->set_hemisphere = false;
+      o->sticky = false;
     } else if ((strcmp(a, "-z") == 0) && has_value) {
       int z = 0;
       bool north = true;
@@ -811,6 +865,7 @@ static int parse_options(int argc, char **argv, struct options *o)
         return 2;
       }
       o->zone = z;
+      o->sticky = false;
     } else if ((strcmp(a, "-p") == 0) && has_value) {
       i++;
       if (!read_int(argv[i], &o->prec)) {
@@ -822,47 +877,153 @@ static int parse_options(int argc, char **argv, struct options *o)
       return 2;
     }
   }
+  if ((o->input_file != NULL) && (o->input_string != NULL)) {
+    fputs("drdc geo: Cannot specify --input-string and --input-file "
+          "together\n",
+          stderr);
+    return 2;
+  }
   return -1;
 }
 
-int drdc_cmd_geo(int argc, char **argv)
+/* Convert one input line and write its output line (with the comment
+ * GeoConvert moves to its end); false for an ERROR line. */
+static bool put_line(char *line, size_t len, int got, struct options *o,
+                     FILE *out)
 {
-  struct options o = {MODE_GEO, 0,     ZONE_MATCH, false, true,
-                      false,    false, false,      '\0'};
-  int status;
+  const char *problem = drdc_tool_line_problem(got, line, len);
+  char *comment = NULL;
+  char text[240];
+  bool ok = false;
+
+  if (problem != NULL) {
+    snprintf(text, sizeof text, "ERROR: %s", problem);
+  } else {
+    if ((o->comment != NULL) && (*o->comment != '\0')) {
+      char *found = strstr(line, o->comment);
+
+      if (found != NULL) {
+        /* the line is converted without it; the delimiter and what
+         * follows are written after the output, one blank between */
+        size_t n = strlen(found) + 1u;
+
+        comment = malloc(n);
+        if (comment == NULL) {
+          fputs("drdc geo: out of memory\n", stderr);
+          exit(1);
+        }
+        memcpy(comment, found, n);
+        *found = '\0';
+      }
+    }
+    ok = convert_line(line, o, text, sizeof text);
+  }
+  if (comment != NULL) {
+    fprintf(out, "%s %s\n", text, comment);
+    free(comment);
+  } else {
+    fprintf(out, "%s\n", text);
+  }
+  fflush(out);
+  return ok;
+}
+
+/* --input-string: GeoConvert's lines are the pieces between line
+ * separators; nothing after the last separator is no line. */
+static int convert_string(const char *s, struct options *o, FILE *out)
+{
+  int failed = 0;
+  size_t n = strlen(s);
+  char *copy = malloc(n + 2u);
+  char *p;
+
+  if (copy == NULL) {
+    fputs("drdc geo: out of memory\n", stderr);
+    return 1;
+  }
+  /* a line after the last separator, unless it is empty */
+  memcpy(copy, s, n + 1u);
+  if ((n > 0u) && (copy[n - 1u] != o->line_separator)) {
+    copy[n] = o->line_separator;
+    copy[n + 1u] = '\0';
+  }
+  for (p = copy; *p != '\0';) {
+    char *end = strchr(p, o->line_separator);
+
+    *end = '\0';
+    if (!put_line(p, strlen(p), DRDC_TOOL_LINE_OK, o, out)) {
+      failed = 1;
+    }
+    p = end + 1;
+  }
+  free(copy);
+  return failed;
+}
+
+static int convert_stream(FILE *in, struct options *o, FILE *out)
+{
+  int failed = 0;
   char *line = NULL;
   size_t cap = 0;
   size_t len = 0;
   int got;
-  int failed = 0;
 
+  while ((got = drdc_tool_read_line(in, &line, &cap, &len)) !=
+         DRDC_TOOL_LINE_EOF) {
+    if (got == DRDC_TOOL_LINE_ERROR) {
+      fputs("drdc geo: cannot read the input\n", stderr);
+      failed = 1;
+      break;
+    }
+    if (!put_line(line, len, got, o, out)) {
+      failed = 1;
+    }
+  }
+  free(line);
+  return failed;
+}
+
+int drdc_cmd_geo(int argc, char **argv)
+{
+  struct options o;
+  int status;
+  FILE *in = stdin;
+  FILE *out = stdout;
+
+  memset(&o, 0, sizeof o);
+  o.mode = MODE_GEO;
+  o.zone = ZONE_MATCH;
+  o.north = true;
+  o.line_separator = ';';
   status = parse_options(argc, argv, &o);
   if (status >= 0) {
     return status;
   }
-  while ((got = drdc_tool_read_line(stdin, &line, &cap, &len)) !=
-         DRDC_TOOL_LINE_EOF) {
-    const char *problem;
-
-    if (got == DRDC_TOOL_LINE_ERROR) {
-      fputs("drdc geo: cannot read standard input\n", stderr);
-      failed = 1;
-      break;
+  if ((o.input_file != NULL) && (strcmp(o.input_file, "-") != 0)) {
+    in = fopen(o.input_file, "r");
+    if (in == NULL) {
+      fprintf(stderr, "drdc geo: Cannot open %s for reading\n", o.input_file);
+      return 2;
     }
-    problem = drdc_tool_line_problem(got, line, len);
-    if (problem != NULL) {
-      printf("ERROR: %s\n", problem);
-      failed = 1;
-    } else {
-      char out[240];
-
-      if (!convert_line(line, &o, out, sizeof out)) {
-        failed = 1;
-      }
-      printf("%s\n", out);
-    }
-    fflush(stdout);
   }
-  free(line);
-  return failed;
+  if ((o.output_file != NULL) && (strcmp(o.output_file, "-") != 0)) {
+    out = fopen(o.output_file, "w");
+    if (out == NULL) {
+      fprintf(stderr, "drdc geo: Cannot open %s for writing\n", o.output_file);
+      if (in != stdin) {
+        fclose(in);
+      }
+      return 2;
+    }
+  }
+  status = (o.input_string != NULL) ? convert_string(o.input_string, &o, out)
+                                    : convert_stream(in, &o, out);
+  if (in != stdin) {
+    fclose(in);
+  }
+  if ((out != stdout) && (fclose(out) != 0)) {
+    fprintf(stderr, "drdc geo: cannot write %s\n", o.output_file);
+    status = 1;
+  }
+  return status;
 }
