@@ -369,6 +369,7 @@ OPTIONS = [
     (["-u", "-t"], "polar"), (["-m", "-t"], "polar"),
     (["-c", "-t"], "polar"), (["-g", "-w"], "lonlat"),
     (["-d", "-w"], "lonlat"), (["-u", "-n"], "geographic"),
+    (["-u", "-S"], "zone31"), (["-m", "-T"], "polar"),
 ]
 PRECS = range(-5, 11)
 

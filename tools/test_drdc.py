@@ -631,12 +631,12 @@ class GeoCommand(unittest.TestCase):
 class GeoParity(unittest.TestCase):
     """drdc geo against GeoConvert 2.1.2 byte for byte on random inputs
     (geographic decimal and DMS text, UTM/UPS, MGRS) for each of -g -u -m
-    -c -d -: -z -s -t -w -n with -p from -5 to 10. Every line that is not
-    byte-identical must be explained by one of the documented rules of
-    tools/geo_parity.py (the precision cap; one unit of the
-    last digit where GeoConvert's value lies within the library's accuracy
-    of the rounding boundary; the exact input, where GeoConvert's double
-    is off; latitude -0 in MGRS)."""
+    -c -d -: -z -s -t -S -T -w -n with -p from -5 to 10. Every line that
+    is not byte-identical must be explained by one of the documented rules
+    of tools/geo_parity.py (the precision cap; one unit of the last digit
+    where GeoConvert's value lies within the library's accuracy of the
+    rounding boundary; the exact input, where GeoConvert's double is off).
+    ERROR lines are byte-identical."""
 
     def setUp(self):
         import shutil
