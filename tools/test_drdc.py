@@ -790,7 +790,11 @@ class GeoOptions(unittest.TestCase):
                 (["--input-string", "1 2", "--input-file", "-"],
                  "Cannot specify --input-string and --input-file together"),
                 (["--line-separator", "||"],
-                 "Line separator must be a single character")):
+                 "Line separator must be a single character"),
+                (["-z", "61"], "Zone 61 not in [0, 60]"),
+                (["-z", "-1"], "Zone -1 not in [0, 60]"),
+                (["-z", "31q"], "Zone 31q is not a number or zone+hemisphere"),
+                (["-p", "1.5"], "Precision 1.5 is not a number")):
             r = run("geo", *args, stdin="")
             self.assertEqual(2, r.returncode, args)
             self.assertEqual("drdc geo: %s\n" % message, r.stderr)

@@ -857,19 +857,23 @@ static int parse_options(int argc, char **argv, struct options *o)
       if (decode_zone(argv[i], &z, &north, why, sizeof why)) {
         o->set_hemisphere = true;
         o->north = north;
-      } else if (read_int(argv[i], &z) && (z >= 0) && (z <= 60)) {
-        o->set_hemisphere = false;
-      } else {
-        fprintf(stderr, "drdc geo: zone '%s' is not 0..60 or zone+hemisphere\n",
+      } else if (!read_int(argv[i], &z)) {
+        fprintf(stderr,
+                "drdc geo: Zone %s is not a number or zone+hemisphere\n",
                 argv[i]);
         return 2;
+      } else if ((z < 0) || (z > 60)) {
+        fprintf(stderr, "drdc geo: Zone %s not in [0, 60]\n", argv[i]);
+        return 2;
+      } else {
+        o->set_hemisphere = false;
       }
       o->zone = z;
       o->sticky = false;
     } else if ((strcmp(a, "-p") == 0) && has_value) {
       i++;
       if (!read_int(argv[i], &o->prec)) {
-        fprintf(stderr, "drdc geo: -p needs an integer\n");
+        fprintf(stderr, "drdc geo: Precision %s is not a number\n", argv[i]);
         return 2;
       }
     } else {
