@@ -331,6 +331,12 @@ BAD_INPUTS = [
     "YZZ", "AJI", "CAA", "cAA", "aB00", "38Sxb", "38S8", "38-S", "3.8SMB",
     "38SMB+4", "38NMB4488", "38nmb4488", "38NMB44X", "38XMB4488", "32VFE00",
     "38SMB4488448844884488448", "38SMB448844884488448844884488",
+    "01KRH74337", "03T4770494740", "1156086569070SMB", "99999999999",
+    # GeoConvert names the fourth ':' component after its separators
+    "3\":9 10", "060\":9 11295",
+    # kilometres at a tie of the 6th digit, quoted from a double
+    "31n 1101085 0", "31n 2033345 0", "31n 500000 7720465",
+    "31n 500000 -9365255",
 ]
 BAD_OPTIONS = [["-g"], ["-u", "-z", "31"], ["-m", "-z", "31"],
                ["-u", "-z", "0"], ["-m", "-z", "0"], ["-u", "-z", "s"],

@@ -671,7 +671,7 @@ class GeoParity(unittest.TestCase):
         self.assertEqual(["ERROR: Repeated hemisphere indicators N in nan",
                           "ERROR: Illegal character i in DMS string inf",
                           "ERROR: Cannot decode 1e6 (no exponents)",
-                          "ERROR: angle too large",
+                          "ERROR: angle beyond 100000d in 200000",
                           "ERROR: Cannot decode nan"], out)
 
     def test_halfway_values_round_to_even(self):

@@ -7,6 +7,7 @@
  *        in GeoConvert's order of checks.
  */
 #include <ctype.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -51,28 +52,24 @@ bool geo_mgrs_error(const char *text, drdc_status_t st, char *why,
 {
   size_t len = strlen(text);
   size_t p = 0;
-  int zone = 0;
+  uint32_t digits_value = 0;
+  int32_t zone;
   const char *rest;
   size_t digits = 0;
   size_t i;
   bool ups;
 
+  /* GeoConvert reads the zone into a 32-bit int, which wraps */
   while (isdigit((unsigned char)text[p])) {
-    if (p < 3u) {
-      zone = (zone * 10) + (text[p] - '0');
-    }
+    digits_value = (digits_value * 10u) + (uint32_t)(text[p] - '0');
     p++;
   }
+  zone = (digits_value > (uint32_t)INT32_MAX)
+             ? (-(int32_t)(UINT32_MAX - digits_value) - 1)
+             : (int32_t)digits_value;
   ups = (p == 0u);
-  if (!ups && ((p > 3u) || (zone < 1) || (zone > 60))) {
-    /* the zone's digits without leading zeros, however many */
-    size_t zeros = 0;
-
-    while ((zeros + 1u) < p && (text[zeros] == '0')) {
-      zeros++;
-    }
-    snprintf(why, why_size, "Zone %.*s not in [1,60]", (int)(p - zeros),
-             text + zeros);
+  if (!ups && ((zone < 1) || (zone > 60))) {
+    snprintf(why, why_size, "Zone %ld not in [1,60]", (long)zone);
     return false;
   }
   if (p > 2u) {
@@ -106,8 +103,8 @@ bool geo_mgrs_error(const char *text, drdc_status_t st, char *why,
         snprintf(why, why_size, "Column letter %c not in UPS band %c set %s",
                  text[p + 1u], text[p], columns);
       } else {
-        snprintf(why, why_size, "Column letter %c not in zone %d set %s",
-                 text[p + 1u], zone, columns);
+        snprintf(why, why_size, "Column letter %c not in zone %.*s set %s",
+                 text[p + 1u], (int)p, text, columns);
       }
       return false;
     }

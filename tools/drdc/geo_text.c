@@ -134,7 +134,13 @@ static bool is_sign(char c)
   return (c == '+') || (c == '-');
 }
 
-static const char *const component_names[3] = {"degrees", "minutes", "seconds"};
+/* GeoConvert's names of the components in its messages; a fourth ':'
+ * component without digits is named by the separators' list. */
+static const char *const component_names[4] = {"degrees", "minutes", "seconds",
+                                               "D'\":"};
+/* Integer digits kept of a component; GeoConvert takes any, drdc refuses
+ * angles beyond GEO_TEXT_DEGREES_MAX after every other check. */
+#define COMPONENT_MAX INT64_C(1000000000000000)
 
 /* One piece of an angle (no interior sign), GeoConvert's InternalDecode:
  * [hemisphere][sign]components[hemisphere]. On error, `why` gets
@@ -217,11 +223,8 @@ static bool read_piece(const char *s, size_t beg, size_t end,
           frac_above = true;
         }
       } else {
-        if (current > GEO_TEXT_DEGREES_MAX) {
-          snprintf(why, why_size, "angle too large");
-          return false;
-        }
-        current = (current * 10) + (x - '0');
+        current = (current < COMPONENT_MAX) ? ((current * 10) + (x - '0'))
+                                            : COMPONENT_MAX;
       }
       continue;
     }
@@ -268,14 +271,14 @@ static bool read_piece(const char *s, size_t beg, size_t end,
                component_names[k], component_names[npiece - 1], len, s + beg);
       return false;
     }
-    if (k > 2) {
-      snprintf(why, why_size, "Extra text following seconds in DMS string %.*s",
-               len, s + beg);
-      return false;
-    }
     if (ncurrent == 0) {
       snprintf(why, why_size, "Missing numbers in %s component of %.*s",
                component_names[k], len, s + beg);
+      return false;
+    }
+    if (k > 2) {
+      snprintf(why, why_size, "Extra text following seconds in DMS string %.*s",
+               len, s + beg);
       return false;
     }
     whole[k] = current;
@@ -310,10 +313,6 @@ static bool read_piece(const char *s, size_t beg, size_t end,
              len, s + beg);
     return false;
   }
-  if (whole[0] > GEO_TEXT_DEGREES_MAX) {
-    snprintf(why, why_size, "angle too large");
-    return false;
-  }
   for (k_check = 1; k_check < 3; k_check++) {
     if (whole[k_check] >= 60) {
       /* GeoConvert quotes the component with its fraction */
@@ -331,6 +330,11 @@ static bool read_piece(const char *s, size_t beg, size_t end,
                (k_check == 1) ? "Minutes" : "Seconds", number);
       return false;
     }
+  }
+  if (whole[0] > GEO_TEXT_DEGREES_MAX) {
+    snprintf(why, why_size, "angle beyond %dd in %.*s", GEO_TEXT_DEGREES_MAX,
+             len, s + beg);
+    return false;
   }
   nas = (whole[0] * units[0]) + (whole[1] * units[1]) + (whole[2] * units[2]);
   if (frac_piece >= 0) {
@@ -391,7 +395,8 @@ bool geo_text_read_angle(const char *text, geo_text_angle_t *out, char *why,
     sum.nas += piece.nas;
     if ((sum.nas > (GEO_TEXT_DEGREES_MAX * GEO_TEXT_NAS_PER_DEGREE)) ||
         (sum.nas < -(GEO_TEXT_DEGREES_MAX * GEO_TEXT_NAS_PER_DEGREE))) {
-      snprintf(why, why_size, "angle too large");
+      snprintf(why, why_size, "angle beyond %dd in %.*s", GEO_TEXT_DEGREES_MAX,
+               (int)(end - beg), s + beg);
       return false;
     }
     /* GeoConvert sums from -0.0: the sum is a negative zero only when
@@ -538,11 +543,58 @@ void geo_text_put_fixed(char *out, size_t size, int64_t value, int64_t unit,
   }
 }
 
+static int bit_length(u128 v)
+{
+  int n = 0;
+
+  while (v != 0u) {
+    v >>= 1;
+    n++;
+  }
+  return n;
+}
+
+/* mag / den (mag, den > 0, the quotient below 2^64) rounded to the
+ * nearest double, as *m / 2^*shift with 2^52 <= *m < 2^53: the number
+ * GeoConvert holds when it reads the value's text or divides by a power
+ * of ten, correctly rounded. mag * 2^shift stays below 2^110 for the
+ * quotients drdc geo quotes (>= 1 nas of a degree, 2^-16 m of a km). */
+static void nearest_double(u128 mag, u128 den, u128 *m, int *shift)
+{
+  u128 limit = (u128)1 << 53;
+  int s = 52 - (bit_length(mag) - bit_length(den));
+  u128 num;
+  u128 d;
+  u128 q;
+  bool exact;
+
+  for (;;) {
+    num = (s >= 0) ? (mag << s) : mag;
+    d = (s >= 0) ? den : (den << -s);
+    q = num / d;
+    if (q >= limit) {
+      s--;
+    } else if (q < (limit >> 1)) {
+      s++;
+    } else {
+      break;
+    }
+  }
+  q = divide_round_even(num, d, false, &exact);
+  if (q == limit) {
+    q >>= 1;
+    s--;
+  }
+  *m = q;
+  *shift = s;
+}
+
 void geo_text_put_general(char *out, size_t size, int64_t value, int64_t unit,
                           bool negative)
 {
   u128 mag = (value < 0) ? (u128)(-(value + 1)) + 1u : (u128)value;
   u128 den = (u128)unit;
+  int shift;
   int exponent = 0; /* 10^exponent <= mag / den < 10^(exponent + 1) */
   u128 q;
   u128 rest;
@@ -560,6 +612,10 @@ void geo_text_put_general(char *out, size_t size, int64_t value, int64_t unit,
     put_char(&t, '0');
     return;
   }
+  /* printf rounds the double's exact binary value, half to even */
+  nearest_double(mag, den, &mag, &shift);
+  den = (shift >= 0) ? ((u128)1 << shift) : 1u;
+  mag = (shift >= 0) ? mag : (mag << -shift);
   while (mag >= (den * pow10_u128(exponent + 1))) {
     exponent++;
   }

@@ -70,11 +70,12 @@ void geo_text_put_fixed(char *out, size_t size, int64_t value, int64_t unit,
                         int decimals, bool negative);
 
 /**
- * Write value / unit as printf("%g") writes a double (as GeoConvert's
- * error messages quote numbers): 6 significant digits rounded half to
- * even from the exact quotient, trailing zeros dropped, an exponent
- * (1e-05, 1.5e+06) below 1e-4 and from 1e6 on. A '-' as for
- * geo_text_put_fixed(). unit > 0.
+ * Write value / unit as printf("%g") writes the double nearest to it (as
+ * GeoConvert's error messages quote the numbers it read or divided):
+ * the quotient rounded to 53 significant bits, then to 6 significant
+ * digits from that binary value, half to even; trailing zeros dropped,
+ * an exponent (1e-05, 1.5e+06) below 1e-4 and from 1e6 on. A '-' as for
+ * geo_text_put_fixed(). unit > 0, |value| / unit >= 2^-64.
  */
 void geo_text_put_general(char *out, size_t size, int64_t value, int64_t unit,
                           bool negative);
