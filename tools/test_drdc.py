@@ -666,12 +666,12 @@ class GeoParity(unittest.TestCase):
         # what GeoConvert reads and drdc refuses: nan, inf, exponents in
         # metres and angles beyond 100 000 degrees
         code, out = geo([], ["nan 0", "0 inf", "31n 500000 1e6",
-                             "33 200000", "31n nan 0"])
+                             "33 2000000", "31n nan 0"])
         self.assertEqual(1, code)
         self.assertEqual(["ERROR: Repeated hemisphere indicators N in nan",
                           "ERROR: Illegal character i in DMS string inf",
                           "ERROR: Cannot decode 1e6 (no exponents)",
-                          "ERROR: angle beyond 100000d in 200000",
+                          "ERROR: angle beyond 1000000d in 2000000",
                           "ERROR: Cannot decode nan"], out)
 
     def test_halfway_values_round_to_even(self):
@@ -700,15 +700,20 @@ class GeoParity(unittest.TestCase):
         for args in (["-z", "61"], ["-z", "x"], ["-z"], ["-p", "1.5"],
                      ["-X"]):
             self.assertEqual(2, run("geo", *args).returncode, args)
-        # angles are bounded so that every printed digit fits 64 bits
-        code, out = geo(["-p", "9"], ["0 100001", "0 99999+99999",
-                                      "0 -99999.5", "N 0"])
+        # angles are bounded so that nas hold them: beyond 1 000 000
+        # degrees an error of its own (GeoConvert converts them), after
+        # GeoConvert's checks of the other word
+        lines = ["0 1000001", "0 999999+999999", "0 -999999.5", "N 0",
+                 "91 2000000", "2000000 x"]
+        code, out = geo(["-p", "9"], lines)
+        want = geoconvert(["-p", "9"], lines)
         self.assertEqual(1, code)
-        self.assertEqual(4, len(out))
-        self.assertTrue(out[0].startswith("ERROR: "), out)
-        self.assertTrue(out[1].startswith("ERROR: "), out)
-        self.assertEqual("0.00000000000000 -99999.50000000000000", out[2])
-        self.assertTrue(out[3].startswith("ERROR: "), out)
+        self.assertEqual(["ERROR: angle beyond 1000000d in 1000001",
+                          "ERROR: angle beyond 1000000d in 999999+999999",
+                          want[2], want[3], want[4], want[5]], out)
+        self.assertEqual("0.00000000000000 -999999.50000000000000", out[2])
+        self.assertEqual(geoconvert(["-d", "-p", "10"], ["-1 -999999.5"]),
+                         geo(["-d", "-p", "10"], ["-1 -999999.5"])[1])
 
     def test_dms_input_and_output(self):
         lines = ["33d20'N 44d24E", "44:24 33:20:00N", "33.3 44.4",

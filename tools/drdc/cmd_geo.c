@@ -360,6 +360,7 @@ static void set_computed_angle(geo_text_angle_t *a, drdc_nas_t nas)
   a->negative = (nas < 0);
   a->exact = false;
   a->hemisphere = GEO_TEXT_NONE;
+  a->too_large = false;
 }
 
 /* UTM/UPS -> geographic, then GeoConvert's FixHemisphere: a UTM northing
@@ -419,6 +420,11 @@ static bool read_geographic(char *a, char *b, const struct options *o,
   }
   pos->lat = (hx == GEO_TEXT_LATITUDE) ? x : y;
   pos->lon = (hx == GEO_TEXT_LATITUDE) ? y : x;
+  if (pos->lat.too_large) {
+    /* GeoConvert reads any angle; drdc holds up to GEO_TEXT_DEGREES_MAX */
+    return fail(pos, "angle beyond %dd in %s", GEO_TEXT_DEGREES_MAX,
+                (hx == GEO_TEXT_LATITUDE) ? a : b);
+  }
   if ((pos->lat.nas > (90 * NAS_PER_DEG)) ||
       (pos->lat.nas < -(90 * NAS_PER_DEG))) {
     char lat[32];
@@ -426,6 +432,10 @@ static bool read_geographic(char *a, char *b, const struct options *o,
     geo_text_put_general(lat, sizeof lat, pos->lat.nas, NAS_PER_DEG,
                          pos->lat.negative);
     return fail(pos, "Latitude %sd not in [-90d, 90d]", lat);
+  }
+  if (pos->lon.too_large) {
+    return fail(pos, "angle beyond %dd in %s", GEO_TEXT_DEGREES_MAX,
+                (hx == GEO_TEXT_LATITUDE) ? b : a);
   }
   /* GeoConvert takes any longitude; the library [-540, 540) */
   pos->lon_calc = pos->lon.nas;
@@ -731,6 +741,7 @@ static bool write_output(const struct options *o, struct position *pos,
     conv.negative = (pos->conv < 0) || (pos->lat.negative != west);
     conv.exact = false;
     conv.hemisphere = GEO_TEXT_NONE;
+    conv.too_large = false;
     put_degrees(a, sizeof a, &conv, prec + 5);
     geo_text_put_fixed(b, sizeof b, pos->k, Q58_ONE, prec + 7, false);
     break;

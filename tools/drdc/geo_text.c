@@ -331,10 +331,11 @@ static bool read_piece(const char *s, size_t beg, size_t end,
       return false;
     }
   }
-  if (whole[0] > GEO_TEXT_DEGREES_MAX) {
-    snprintf(why, why_size, "angle beyond %dd in %.*s", GEO_TEXT_DEGREES_MAX,
-             len, s + beg);
-    return false;
+  out->too_large = (whole[0] > GEO_TEXT_DEGREES_MAX);
+  if (out->too_large) {
+    /* GeoConvert reads it; drdc cannot hold it (the caller says so
+     * after GeoConvert's own checks of the other word) */
+    whole[0] = 0;
   }
   nas = (whole[0] * units[0]) + (whole[1] * units[1]) + (whole[2] * units[2]);
   if (frac_piece >= 0) {
@@ -358,7 +359,7 @@ bool geo_text_read_angle(const char *text, geo_text_angle_t *out, char *why,
   size_t p;
   size_t pb;
   int pieces = 0;
-  geo_text_angle_t sum = {0, true, true, GEO_TEXT_NONE};
+  geo_text_angle_t sum = {0, true, true, GEO_TEXT_NONE, false};
 
   if (strlen(text) > TOKEN_MAX) {
     snprintf(why, why_size, "angle text longer than %d bytes", TOKEN_MAX);
@@ -394,10 +395,10 @@ bool geo_text_read_angle(const char *text, geo_text_angle_t *out, char *why,
      * overflow here nor when the sum is printed */
     sum.nas += piece.nas;
     if ((sum.nas > (GEO_TEXT_DEGREES_MAX * GEO_TEXT_NAS_PER_DEGREE)) ||
-        (sum.nas < -(GEO_TEXT_DEGREES_MAX * GEO_TEXT_NAS_PER_DEGREE))) {
-      snprintf(why, why_size, "angle beyond %dd in %.*s", GEO_TEXT_DEGREES_MAX,
-               (int)(end - beg), s + beg);
-      return false;
+        (sum.nas < -(GEO_TEXT_DEGREES_MAX * GEO_TEXT_NAS_PER_DEGREE)) ||
+        piece.too_large) {
+      sum.too_large = true;
+      sum.nas = 0;
     }
     /* GeoConvert sums from -0.0: the sum is a negative zero only when
      * every piece is one */
@@ -491,9 +492,9 @@ static void put_string(struct text *t, const char *s)
 }
 
 /* v in decimal with at least `digits` digits (zero-filled). */
-static void put_uint(struct text *t, uint64_t v, int digits)
+static void put_uint(struct text *t, u128 v, int digits)
 {
-  char d[24];
+  char d[48];
   int n = 0;
 
   do {
@@ -516,20 +517,20 @@ static void start(struct text *t, char *out, size_t size)
 }
 
 /* |value| * 10^decimals / unit rounded half to even. */
-static uint64_t scaled_magnitude(int64_t value, int64_t unit, int decimals)
+static u128 scaled_magnitude(int64_t value, int64_t unit, int decimals)
 {
   u128 mag = (value < 0) ? (u128)(-(value + 1)) + 1u : (u128)value;
   bool exact;
 
-  return (uint64_t)divide_round_even(mag * pow10_u128(decimals), (u128)unit,
-                                     false, &exact);
+  return divide_round_even(mag * pow10_u128(decimals), (u128)unit, false,
+                           &exact);
 }
 
 void geo_text_put_fixed(char *out, size_t size, int64_t value, int64_t unit,
                         int decimals, bool negative)
 {
-  uint64_t q = scaled_magnitude(value, unit, decimals);
-  uint64_t p = (uint64_t)pow10_u128(decimals);
+  u128 q = scaled_magnitude(value, unit, decimals);
+  u128 p = pow10_u128(decimals);
   struct text t;
 
   start(&t, out, size);
@@ -650,7 +651,7 @@ void geo_text_put_general(char *out, size_t size, int64_t value, int64_t unit,
     }
     put_char(&t, 'e');
     put_char(&t, (exponent < 0) ? '-' : '+');
-    put_uint(&t, (uint64_t)((exponent < 0) ? -exponent : exponent), 2);
+    put_uint(&t, (u128)(unsigned)((exponent < 0) ? -exponent : exponent), 2);
     return;
   }
   /* fixed: q / 10^decimals, trailing zeros of the fraction dropped */
@@ -679,9 +680,9 @@ void geo_text_put_dms(char *out, size_t size, int64_t nas, bool negative,
   int decimals = prec - (2 * last);
   const int64_t units[3] = {GEO_TEXT_NAS_PER_DEGREE, GEO_TEXT_NAS_PER_MINUTE,
                             GEO_TEXT_NAS_PER_SECOND};
-  uint64_t total = scaled_magnitude(nas, units[last], decimals);
-  uint64_t p = (uint64_t)pow10_u128(decimals);
-  uint64_t whole = total / p;
+  u128 total = scaled_magnitude(nas, units[last], decimals);
+  u128 p = pow10_u128(decimals);
+  u128 whole = total / p;
   int width = (int)which + 1; /* degree digits: 2 latitude, 3 longitude */
   bool south_or_west = (nas < 0) || ((nas == 0) && negative);
   struct text t;

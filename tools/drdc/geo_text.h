@@ -16,8 +16,10 @@
 #define GEO_TEXT_NAS_PER_DEGREE INT64_C(3600000000000)
 #define GEO_TEXT_NAS_PER_MINUTE INT64_C(60000000000)
 #define GEO_TEXT_NAS_PER_SECOND INT64_C(1000000000)
-/** Largest |angle| read, degrees: its decimals at -p 9 fit 64 bits. */
-#define GEO_TEXT_DEGREES_MAX 100000
+/** Largest |angle| held, degrees: in nas, it and the sum of two pieces
+ *  fit int64. GeoConvert reads any; a larger angle is read (so that the
+ *  text's other errors come first) and marked too_large. */
+#define GEO_TEXT_DEGREES_MAX 1000000
 
 /** Which coordinate a hemisphere letter made of an angle. */
 enum geo_text_hemisphere {
@@ -33,6 +35,7 @@ typedef struct geo_text_angle {
                       ("-0", "0S"), as the sign bit of GeoConvert's double */
   bool exact;    /**< nas is the text's value exactly, no rounding */
   enum geo_text_hemisphere hemisphere; /**< from N, S, E or W, or NONE */
+  bool too_large; /**< |angle| beyond GEO_TEXT_DEGREES_MAX: nas is 0 */
 } geo_text_angle_t;
 
 /**
