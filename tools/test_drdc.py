@@ -664,7 +664,7 @@ class GeoParity(unittest.TestCase):
 
     def test_own_limits_are_errors_of_their_own(self):
         # what GeoConvert reads and drdc refuses: nan, inf, exponents in
-        # metres and angles beyond 100 000 degrees
+        # metres and angles beyond 1 000 000 degrees
         code, out = geo([], ["nan 0", "0 inf", "31n 500000 1e6",
                              "33 2000000", "31n nan 0"])
         self.assertEqual(1, code)

@@ -75,7 +75,7 @@ static const char usage[] =
     "UTM/UPS input is read to the nearest 1/65536 m. Latitude -0 (or 0S)\n"
     "is just south of the equator, as in GeoConvert.\n"
     "A line that cannot be converted gives GeoConvert's 'ERROR: <message>'\n"
-    "(nan, inf, exponents in metres and angles beyond 100000 degrees are\n"
+    "(nan, inf, exponents in metres and angles beyond 1000000 degrees are\n"
     "errors here); the others go on and the exit status is 1 at the end;\n"
     "bad options exit with status 2.\n";
 
