@@ -663,16 +663,26 @@ class GeoParity(unittest.TestCase):
         self.assertGreater(errors, 900)
 
     def test_own_limits_are_errors_of_their_own(self):
-        # what GeoConvert reads and drdc refuses: nan, inf, exponents in
-        # metres and angles beyond 1 000 000 degrees
-        code, out = geo([], ["nan 0", "0 inf", "31n 500000 1e6",
+        # what GeoConvert reads and drdc refuses: nan, inf, metres beyond
+        # 1e12 and angles beyond 1 000 000 degrees
+        code, out = geo([], ["nan 0", "0 inf", "31n 500000 1e13",
                              "33 2000000", "31n nan 0"])
         self.assertEqual(1, code)
         self.assertEqual(["ERROR: Repeated hemisphere indicators N in nan",
                           "ERROR: Illegal character i in DMS string inf",
-                          "ERROR: Cannot decode 1e6 (no exponents)",
+                          "ERROR: Cannot decode 1e13 (beyond 1e12 m)",
                           "ERROR: angle beyond 1000000d in 2000000",
                           "ERROR: Cannot decode nan"], out)
+
+    def test_metres_with_exponents(self):
+        lines = ["31n 5e5 4e6", "31n 5E5 4.0e+6", "31n .5e6 4000000",
+                 "31n 500000 40000000e-1", "31n 500000 1e", "31n 500000 1e+",
+                 "31n 500000 4e6x", "31n 500000 1.2.3", "31n 500000 +-3",
+                 "31n 500000 .", "31n 500000 1e11", "5e5 4e6 31n",
+                 "31n 0000000000000000000000000000000000000500000 4000000",
+                 "31n 500000.25e0 39999995e-1"]
+        for args in (["-u", "-p", "3"], ["-g"]):
+            self.assertEqual(geoconvert(args, lines), geo(args, lines)[1])
 
     def test_halfway_values_round_to_even(self):
         for args, line, want in (

@@ -75,7 +75,7 @@ static const char usage[] =
     "UTM/UPS input is read to the nearest 1/65536 m. Latitude -0 (or 0S)\n"
     "is just south of the equator, as in GeoConvert.\n"
     "A line that cannot be converted gives GeoConvert's 'ERROR: <message>'\n"
-    "(nan, inf, exponents in metres and angles beyond 1000000 degrees are\n"
+    "(nan, inf, metres beyond 1e12 and angles beyond 1000000 degrees are\n"
     "errors here); the others go on and the exit status is 1 at the end;\n"
     "bad options exit with status 2.\n";
 
@@ -466,26 +466,39 @@ static bool read_coordinate(const char *text, int64_t *q16, bool *exact,
   const char *p = text;
   size_t digits = 0;
 
+  /* the number GeoConvert's stream reads: [+-]digits[.digits], then an
+   * exponent only with its digits */
   if ((*p == '+') || (*p == '-')) {
     p++;
   }
-  for (; isdigit((unsigned char)*p) || (*p == '.'); p++) {
-    digits += isdigit((unsigned char)*p) ? 1u : 0u;
+  for (; isdigit((unsigned char)*p); p++) {
+    digits++;
+  }
+  if (*p == '.') {
+    for (p++; isdigit((unsigned char)*p); p++) {
+      digits++;
+    }
   }
   if (digits == 0u) {
     return fail(pos, "Cannot decode %s", text);
   }
   if ((*p == 'e') || (*p == 'E')) {
-    return fail(pos, "Cannot decode %s (no exponents)", text);
+    const char *q = p + 1;
+
+    if ((*q == '+') || (*q == '-')) {
+      q++;
+    }
+    if (!isdigit((unsigned char)*q)) {
+      return fail(pos, "Cannot decode %s", text);
+    }
+    for (p = q; isdigit((unsigned char)*p); p++) {
+    }
   }
   if (*p != '\0') {
     return fail(pos, "Extra text %s at end of %s", p, text);
   }
   if (!geo_text_read_metres(text, q16, exact)) {
-    return fail(pos,
-                "Cannot decode %s (more than 12 digits before the "
-                "point, or two points)",
-                text);
+    return fail(pos, "Cannot decode %s (beyond 1e12 m)", text);
   }
   return true;
 }

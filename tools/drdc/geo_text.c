@@ -13,6 +13,12 @@
 
 __extension__ typedef unsigned __int128 u128;
 
+/* Significant digits of metres kept when reading (digits * 65536 fits
+ * 128 bits); later ones only tell whether the value is exact. */
+#define METRE_DIGITS_KEPT 33
+/* Largest metres read: GeoConvert reads any, Q47.16 holds 1.4e14 m and
+ * no UTM/UPS coordinate is near 1e12 m. */
+#define METRE_INTEGER_MAX ((u128)1000000000000u)
 /* Fraction digits kept when reading; later ones only tell whether the
  * value is exact and break a tie. */
 #define FRACTION_DIGITS_MAX 18
@@ -427,44 +433,78 @@ bool geo_text_read_angle(const char *text, geo_text_angle_t *out, char *why,
 bool geo_text_read_metres(const char *s, int64_t *q16, bool *exact)
 {
   bool neg = false;
-  int64_t ip = 0;
-  int ipd = 0;
-  u128 fp = 0;
-  int fd = 0;
-  bool above = false;
-  bool digits = false;
+  u128 digits = 0;    /* the significant digits kept, as an integer */
+  int kept = 0;       /* how many */
+  int scale = 0;      /* value = digits * 10^scale (before the exponent) */
+  bool above = false; /* nonzero digits dropped after those kept */
+  bool any = false;
+  bool point = false;
+  int exponent = 0;
   u128 v;
 
   if ((*s == '+') || (*s == '-')) {
     neg = (*s == '-');
     s++;
   }
-  while (isdigit((unsigned char)*s)) {
-    if (++ipd > 12) {
-      return false;
+  for (; isdigit((unsigned char)*s) || ((*s == '.') && !point); s++) {
+    if (*s == '.') {
+      point = true;
+      continue;
     }
-    ip = (ip * 10) + (*s - '0');
-    s++;
-    digits = true;
-  }
-  if (*s == '.') {
-    s++;
-    while (isdigit((unsigned char)*s)) {
-      if (fd < FRACTION_DIGITS_MAX) {
-        fp = (fp * 10u) + (u128)(unsigned)(*s - '0');
-        fd++;
-      } else if (*s != '0') {
-        above = true;
-      }
-      s++;
-      digits = true;
+    any = true;
+    if ((kept < METRE_DIGITS_KEPT) && ((kept > 0) || (*s != '0'))) {
+      digits = (digits * 10u) + (u128)(unsigned)(*s - '0');
+      kept++;
+      scale -= point ? 1 : 0;
+    } else if (kept == METRE_DIGITS_KEPT) {
+      scale += point ? 0 : 1; /* a dropped integer digit */
+      above = above || (*s != '0');
+    } else {
+      scale -= point ? 1 : 0; /* a leading zero after the point */
     }
   }
-  if ((*s != '\0') || !digits) {
+  if (!any) {
     return false;
   }
-  v = divide_round_even(fp * 65536u, pow10_u128(fd), above, exact);
-  v += (u128)ip * 65536u;
+  if ((*s == 'e') || (*s == 'E')) {
+    int sign = 1;
+
+    s++;
+    if ((*s == '+') || (*s == '-')) {
+      sign = (*s == '-') ? -1 : 1;
+      s++;
+    }
+    if (!isdigit((unsigned char)*s)) {
+      return false;
+    }
+    for (; isdigit((unsigned char)*s); s++) {
+      exponent = (exponent < 10000) ? ((exponent * 10) + (*s - '0')) : 10000;
+    }
+    exponent *= sign;
+  }
+  if (*s != '\0') {
+    return false;
+  }
+  scale += exponent;
+  if (digits == 0u) {
+    v = 0;
+    *exact = !above;
+  } else if (scale >= 0) {
+    /* an integer: at most METRE_INTEGER_MAX */
+    if ((scale > 12) || (digits * pow10_u128(scale) > METRE_INTEGER_MAX)) {
+      return false;
+    }
+    v = digits * pow10_u128(scale) * 65536u;
+    *exact = !above;
+  } else if (scale < -38) {
+    v = 0; /* below 2^-17 m: 10^-38 of 33 digits */
+    *exact = false;
+  } else {
+    v = divide_round_even(digits * 65536u, pow10_u128(-scale), above, exact);
+    if (v > (METRE_INTEGER_MAX * 65536u)) {
+      return false;
+    }
+  }
   *q16 = neg ? -(int64_t)v : (int64_t)v;
   return true;
 }

@@ -54,8 +54,9 @@ bool geo_text_read_angle(const char *text, geo_text_angle_t *out, char *why,
                          size_t why_size);
 
 /**
- * Read a decimal number of metres, [+-]digits[.digits] (at most 12
- * integer digits), to Q47.16, rounded to nearest (ties to even).
+ * Read a decimal number of metres, [+-]digits[.digits][e[+-]digits] (at
+ * most 1e12 m), to Q47.16, rounded to nearest (ties to even) from its
+ * exact value.
  *
  * @param[out] exact true when no rounding happened.
  * @return true when the text is such a number.
