@@ -766,6 +766,9 @@ class GeoOptions(unittest.TestCase):
                          ["-u", "-S", "-z", "31"], ["-u", "-z", "31", "-T"]):
                 self.same(opts, lines)
 
+    def test_zone_and_precision_with_blanks(self):
+        self.same(["-u", "-z", " 38 ", "-p", "2 "], ["33 44"])
+
     def test_comment_delimiter(self):
         lines = ["33 44 # hello", "91 0 #bad", "# only", "", "  33 44#x#y",
                  "33 44", "38SMB4488 // two // delimiters"]
@@ -809,7 +812,8 @@ class GeoOptions(unittest.TestCase):
                 (["-z", "61"], "Zone 61 not in [0, 60]"),
                 (["-z", "-1"], "Zone -1 not in [0, 60]"),
                 (["-z", "31q"], "Zone 31q is not a number or zone+hemisphere"),
-                (["-p", "1.5"], "Precision 1.5 is not a number")):
+                (["-p", "1.5"], "Precision 1.5 is not a number"),
+                (["-z", " "], "Zone   is not a number or zone+hemisphere")):
             r = run("geo", *args, stdin="")
             self.assertEqual(2, r.returncode, args)
             self.assertEqual("drdc geo: %s\n" % message, r.stderr)

@@ -801,8 +801,13 @@ static bool read_int(const char *s, int *out)
 {
   char *end = NULL;
   long v = strtol(s, &end, 10);
+  bool digits = (end != s);
 
-  if ((*s == '\0') || (*end != '\0')) {
+  /* blanks around the number, as GeoConvert's stream reads it */
+  while (isspace((unsigned char)*end)) {
+    end++;
+  }
+  if (!digits || (*end != '\0')) {
     return false;
   }
   *out = (v < -100) ? -100 : ((v > 100) ? 100 : (int)v);
