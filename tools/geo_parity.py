@@ -337,6 +337,8 @@ BAD_INPUTS = [
     # kilometres at a tie of the 6th digit, quoted from a double
     "31n 1101085 0", "31n 2033345 0", "31n 500000 7720465",
     "31n 500000 -9365255",
+    # letters quoted as given, a hemisphere lower-cased
+    "n33N 4", "N33n 4", "s33N 4", "e38.W 1", "1 2 31WWW", "W 31147 0",
 ]
 BAD_OPTIONS = [["-g"], ["-u", "-z", "31"], ["-m", "-z", "31"],
                ["-u", "-z", "0"], ["-m", "-z", "0"], ["-u", "-z", "s"],

@@ -668,7 +668,7 @@ class GeoParity(unittest.TestCase):
         code, out = geo([], ["nan 0", "0 inf", "31n 500000 1e13",
                              "33 2000000", "31n nan 0"])
         self.assertEqual(1, code)
-        self.assertEqual(["ERROR: Repeated hemisphere indicators N in nan",
+        self.assertEqual(["ERROR: Repeated hemisphere indicators n in nan",
                           "ERROR: Illegal character i in DMS string inf",
                           "ERROR: Cannot decode 1e13 (beyond 1e12 m)",
                           "ERROR: angle beyond 1000000d in 2000000",

@@ -244,8 +244,9 @@ static bool decode_zone(const char *s, int *zone, bool *north, char *why,
   } else if ((strcmp(lower, "s") == 0) || (strcmp(lower, "south") == 0)) {
     *north = false;
   } else {
+    /* GeoConvert quotes the hemisphere lower-cased */
     snprintf(why, why_size,
-             "Illegal hemisphere %s in %s, specify north or south", p, s);
+             "Illegal hemisphere %s in %s, specify north or south", lower, s);
     return false;
   }
   *zone = (int)z;

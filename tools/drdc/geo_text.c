@@ -182,16 +182,17 @@ static bool read_piece(const char *s, size_t beg, size_t end,
   if ((end > beg) && ((h = hemisphere_of(s[beg])) != 0)) {
     out->hemisphere = (enum geo_text_hemisphere)((h < 0) ? -h : h);
     sign = (h < 0) ? -1 : 1;
-    first_letter = (char)toupper((unsigned char)s[beg]);
+    first_letter = s[beg]; /* quoted as given */
     beg++;
   }
   if ((end > beg) && ((h = hemisphere_of(s[end - 1u])) != 0)) {
-    char last_letter = (char)toupper((unsigned char)s[end - 1u]);
+    char last_letter = s[end - 1u];
 
     len = (int)(piece_end - piece_beg);
-    if (first_letter == last_letter) {
+    if (toupper((unsigned char)first_letter) ==
+        toupper((unsigned char)last_letter)) {
       snprintf(why, why_size, "Repeated hemisphere indicators %c in %.*s",
-               last_letter, len, s + piece_beg);
+               first_letter, len, s + piece_beg);
       return false;
     }
     if (first_letter != '\0') {
