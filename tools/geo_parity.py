@@ -24,6 +24,13 @@ or else when exactly one of these documented rules holds:
           test computes with Python fractions, while GeoConvert's double
           differs from it by one unit of the last digit (its 53-bit
           mantissa carries 15 to 17 significant digits).
+
+ERROR lines are byte-identical: every one of the random lines above, of
+BAD_INPUTS (check_errors()) and of fuzz_lines() (check_fuzz()), where
+one more rule is counted:
+
+  own-limit  drdc's 'angle beyond 1000000d in TOKEN': GeoConvert reads
+          angles of any size, drdc holds 1 000 000 degrees.
 """
 import math
 import os
@@ -367,6 +374,63 @@ def check_errors():
     return bad, errors
 
 
+def fuzz_lines(seed, n=3000):
+    """Random lines of DMS-like tokens, MGRS-like and UTM-like strings:
+    most of them bad input of some kind."""
+    rng = random.Random(seed)
+
+    def token():
+        return "".join(rng.choice("0123456789" * 4 + ".d':NSEWnsew+-\"e ")
+                       for _ in range(rng.randint(1, 9))).strip() or "0"
+
+    def mgrs_like():
+        zone = rng.choice(["", str(rng.randint(0, 62)),
+                           "%02d" % rng.randint(1, 60)])
+        letters = "".join(rng.choice("ABCDEFGHIJKLMNOPQRSTUVWXYZab")
+                          for _ in range(rng.randint(0, 3)))
+        return zone + letters + "".join(
+            rng.choice("0123456789") for _ in range(rng.randint(0, 12)))
+
+    def utm_like():
+        words = [rng.choice(["n", "s", "%d%s" % (rng.randint(0, 61),
+                                                 rng.choice("nsNSq"))]),
+                 "%d" % rng.randint(-100000, 4000000),
+                 "%d" % rng.randint(-10000000, 20000000)]
+        return " ".join(words if rng.random() < 0.7 else words[1:] + words[:1])
+
+    lines = []
+    for _ in range(n):
+        r = rng.random()
+        lines.append(token() + " " + token() if r < 0.4 else
+                     mgrs_like() if r < 0.75 else utm_like())
+    return lines
+
+
+FUZZ_OPTIONS = [[], ["-d"], ["-u"], ["-m"], ["-c"], ["-u", "-z", "31"],
+                ["-m", "-z", "0"], ["-m", "-t"], ["-u", "-z", "31s"], ["-w"]]
+
+
+def check_fuzz():
+    """ERROR lines of fuzz_lines() under FUZZ_OPTIONS: counts of
+    'identical' and 'own-limit' (drdc's angles beyond 1 000 000 degrees,
+    which GeoConvert reads), and the lines neither explains."""
+    counts, bad = {}, []
+    lines = fuzz_lines(7)
+    for args in FUZZ_OPTIONS:
+        for line, got, want in zip(lines, drdc(args, lines),
+                                   geoconvert(args, lines)):
+            if not (got.startswith("ERROR: ") or want.startswith("ERROR: ")):
+                continue
+            rule = ("identical" if got == want else
+                    "own-limit" if got.startswith("ERROR: angle beyond "
+                                                  "1000000d in ") else None)
+            if rule is None:
+                bad.append((args, line, got, want))
+            else:
+                counts[rule] = counts.get(rule, 0) + 1
+    return counts, bad
+
+
 # option set -> the inputs it is checked on
 OPTIONS = [
     (["-g"], "geographic"), (["-u"], "geographic"), (["-m"], "geographic"),
@@ -430,6 +494,12 @@ def main():
     bad, errors = check_errors()
     print("error lines of bad inputs: %d, not byte-identical %d"
           % (errors, len(bad)))
+    for b in bad[:10]:
+        print("   ", b)
+    counts, bad = check_fuzz()
+    print("error lines of fuzz input: %s; unexplained %d"
+          % (", ".join("%s %d" % kv for kv in sorted(counts.items())),
+             len(bad)))
     for b in bad[:10]:
         print("   ", b)
 

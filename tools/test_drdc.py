@@ -662,6 +662,15 @@ class GeoParity(unittest.TestCase):
         self.assertEqual([], bad[:5])
         self.assertGreater(errors, 900)
 
+    def test_fuzz_error_lines_are_geoconverts(self):
+        import sys
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        import geo_parity
+        counts, bad = geo_parity.check_fuzz()
+        self.assertEqual([], bad[:5])
+        # nearly all byte-identical; the rest is the one named own limit
+        self.assertGreater(counts["identical"], 100 * counts["own-limit"])
+
     def test_own_limits_are_errors_of_their_own(self):
         # what GeoConvert reads and drdc refuses: nan, inf, metres beyond
         # 1e12 and angles beyond 1 000 000 degrees
