@@ -19,6 +19,7 @@
 #include <drdc/version.h>
 
 #include "commands.h"
+#include "geo_grid_text.h"
 #include "geo_mgrs_text.h"
 #include "geo_text.h"
 #include "lines.h"
@@ -183,76 +184,6 @@ static int utm_only_zone(drdc_nas_t lat, drdc_nas_t lon)
   return zone;
 }
 
-/* GeoConvert's zone+hemisphere text: 1..60 (at most 2 digits, no sign)
- * or nothing for UPS, then n, s, north or south in any case. On error,
- * GeoConvert's message goes to why. */
-static bool decode_zone(const char *s, int *zone, bool *north, char *why,
-                        size_t why_size)
-{
-  const char *p = s;
-  bool sign = false;
-  bool negative = false;
-  size_t digits = 0;
-  long z = 0;
-  char lower[8];
-  size_t i;
-
-  if (strlen(s) > 7u) {
-    snprintf(why, why_size, "More than 7 characters in zone specification %s",
-             s);
-    return false;
-  }
-  if ((*p == '+') || (*p == '-')) {
-    sign = true;
-    negative = (*p == '-');
-    p++;
-  }
-  while (isdigit((unsigned char)p[digits])) {
-    z = (z * 10) + (p[digits] - '0');
-    digits++;
-  }
-  if (digits == 0u) {
-    p = s; /* no number: the whole text is the hemisphere */
-    sign = false;
-  } else {
-    z = negative ? -z : z;
-    if (z == 0) {
-      snprintf(why, why_size,
-               "Illegal zone 0 in %s, use just the hemisphere for UPS", s);
-      return false;
-    }
-    if ((z < 1) || (z > 60)) {
-      snprintf(why, why_size, "Zone %ld not in range [1, 60]", z);
-      return false;
-    }
-    if (sign) {
-      snprintf(why, why_size, "Must use unsigned number for zone %ld", z);
-      return false;
-    }
-    if (digits > 2u) {
-      snprintf(why, why_size, "More than 2 digits use to specify zone %ld", z);
-      return false;
-    }
-    p += digits;
-  }
-  for (i = 0; (p[i] != '\0') && (i < (sizeof lower - 1u)); i++) {
-    lower[i] = (char)tolower((unsigned char)p[i]);
-  }
-  lower[i] = '\0';
-  if ((strcmp(lower, "n") == 0) || (strcmp(lower, "north") == 0)) {
-    *north = true;
-  } else if ((strcmp(lower, "s") == 0) || (strcmp(lower, "south") == 0)) {
-    *north = false;
-  } else {
-    /* GeoConvert quotes the hemisphere lower-cased */
-    snprintf(why, why_size,
-             "Illegal hemisphere %s in %s, specify north or south", lower, s);
-    return false;
-  }
-  *zone = (int)z;
-  return true;
-}
-
 /* Split on GeoConvert's separators: blanks and commas. */
 static int split(char *line, char **words, int max)
 {
@@ -279,80 +210,15 @@ static int split(char *line, char **words, int max)
   }
 }
 
-/* GeoConvert's message for UTM/UPS coordinates outside the ranges it
- * (and the library) accepts: kilometres as printf's %g. */
-static bool grid_range_error(struct position *pos, drdc_status_t st)
-{
-  const drdc_geo_utm_t *u = &pos->u;
-  bool ups = (u->zone == DRDC_GEO_ZONE_UPS);
-  bool easting = (st == DRDC_E_EASTING);
-  /* [min, max] km: UTM easting, northing north, northing south; UPS
-   * south, north (easting and northing alike) */
-  static const int utm_km[3][2] = {{0, 1000}, {-9100, 9600}, {900, 19600}};
-  static const int ups_km[2][2] = {{700, 3300}, {1200, 2800}};
-  const int *range =
-      ups ? ups_km[u->north ? 1 : 0] : utm_km[easting ? 0 : (u->north ? 1 : 2)];
-  char km[32];
-
-  geo_text_put_general(km, sizeof km, easting ? u->easting : u->northing,
-                       1000 * Q16_PER_M, false);
-  return fail(pos, "%s %skm not in %s range for %c hemisphere [%dkm, %dkm]",
-              easting ? "Easting" : "Northing", km, ups ? "UPS" : "UTM",
-              u->north ? 'N' : 'S', range[0], range[1]);
-}
-
-/* The same for MGRS output, whose ranges are narrower and half open;
- * GeoConvert quotes whole kilometres (rounded down) here. */
-static bool mgrs_range_error(struct position *pos, drdc_status_t st)
-{
-  const drdc_geo_utm_t *u = &pos->u;
-  bool ups = (u->zone == DRDC_GEO_ZONE_UPS);
-  bool easting = (st == DRDC_E_EASTING);
-  static const int utm_km[3][2] = {{100, 900}, {-9000, 9500}, {1000, 19500}};
-  static const int ups_km[2][2] = {{800, 3200}, {1300, 2700}};
-  const int *range =
-      ups ? ups_km[u->north ? 1 : 0] : utm_km[easting ? 0 : (u->north ? 1 : 2)];
-  int64_t km = floor_div(easting ? u->easting : u->northing, 1000 * Q16_PER_M);
-
-  return fail(pos,
-              "%s %lldkm not in MGRS/%s range for %c hemisphere "
-              "[%dkm, %dkm)",
-              easting ? "Easting" : "Northing", (long long)km,
-              ups ? "UPS" : "UTM", u->north ? 'N' : 'S', range[0], range[1]);
-}
-
-/* GeoConvert's message for a point that zone (UPS or 1..60) cannot
- * hold, quoting latitude and longitude as printf's %g. */
+/* GeoConvert's message for a point that zone cannot hold. */
 static bool zone_range_error(struct position *pos, int zone)
 {
-  char lat[32];
-  char lon[32];
+  /* east of the central meridian, reduced to [-180, 180) */
+  drdc_nas_t east =
+      reduce_longitude(pos->lon_calc - (((6 * zone) - 183) * NAS_PER_DEG));
 
-  geo_text_put_general(lat, sizeof lat, pos->lat.nas, NAS_PER_DEG,
-                       pos->lat.negative);
-  geo_text_put_general(lon, sizeof lon, pos->lon.nas, NAS_PER_DEG,
-                       pos->lon.negative);
-  if (zone != DRDC_GEO_ZONE_UPS) {
-    /* GeoConvert first tests the longitude east of the central meridian,
-     * reduced to [-180, 180) */
-    drdc_nas_t east =
-        reduce_longitude(pos->lon_calc - (((6 * zone) - 183) * NAS_PER_DEG));
-
-    if (east > (60 * NAS_PER_DEG)) {
-      return fail(pos, "Longitude %sd more than 60d from center of UTM zone %d",
-                  lon, zone);
-    }
-    return fail(pos,
-                "Latitude %s, longitude %s out of legal range for UTM zone %d",
-                lat, lon, zone);
-  }
-  if ((pos->lat.nas < (70 * NAS_PER_DEG)) &&
-      (pos->lat.nas > -(70 * NAS_PER_DEG))) {
-    return fail(pos, "Latitude %sd more than 20d from %c pole", lat,
-                pos->lat.negative ? 'S' : 'N');
-  }
-  return fail(pos, "Latitude %s, longitude %s out of legal range for UPS", lat,
-              lon);
+  return geo_grid_zone_error(&pos->lat, &pos->lon, east, zone, pos->why,
+                             sizeof pos->why);
 }
 
 static void set_computed_angle(geo_text_angle_t *a, drdc_nas_t nas)
@@ -374,7 +240,7 @@ static bool from_grid(struct position *pos)
 
   st = drdc_geo_from_utm(&pos->u, &lat, &lon, &pos->conv, &pos->k);
   if ((st == DRDC_E_EASTING) || (st == DRDC_E_NORTHING)) {
-    return grid_range_error(pos, st);
+    return geo_grid_range_error(&pos->u, st, pos->why, sizeof pos->why);
   }
   if (st != DRDC_OK) {
     return fail(pos, "%s", drdc_status_name(st));
@@ -459,51 +325,6 @@ static bool read_geographic(char *a, char *b, const struct options *o,
   return true;
 }
 
-/* Metres of UTM/UPS input; GeoConvert's messages for what is not a
- * number, or a number with more after it. */
-static bool read_coordinate(const char *text, int64_t *q16, bool *exact,
-                            struct position *pos)
-{
-  const char *p = text;
-  size_t digits = 0;
-
-  /* the number GeoConvert's stream reads: [+-]digits[.digits], then an
-   * exponent only with its digits */
-  if ((*p == '+') || (*p == '-')) {
-    p++;
-  }
-  for (; isdigit((unsigned char)*p); p++) {
-    digits++;
-  }
-  if (*p == '.') {
-    for (p++; isdigit((unsigned char)*p); p++) {
-      digits++;
-    }
-  }
-  if (digits == 0u) {
-    return fail(pos, "Cannot decode %s", text);
-  }
-  if ((*p == 'e') || (*p == 'E')) {
-    const char *q = p + 1;
-
-    if ((*q == '+') || (*q == '-')) {
-      q++;
-    }
-    if (!isdigit((unsigned char)*q)) {
-      return fail(pos, "Cannot decode %s", text);
-    }
-    for (p = q; isdigit((unsigned char)*p); p++) {
-    }
-  }
-  if (*p != '\0') {
-    return fail(pos, "Extra text %s at end of %s", p, text);
-  }
-  if (!geo_text_read_metres(text, q16, exact)) {
-    return fail(pos, "Cannot decode %s (beyond 1e12 m)", text);
-  }
-  return true;
-}
-
 static bool read_utm(char **w, struct position *pos)
 {
   char *zone_text;
@@ -529,13 +350,16 @@ static bool read_utm(char **w, struct position *pos)
                 "(ex: 38n, 09s, n)",
                 w[0], w[2]);
   }
-  if (!decode_zone(zone_text, &zone, &north, pos->why, sizeof pos->why)) {
+  if (!geo_grid_read_zone(zone_text, &zone, &north, pos->why,
+                          sizeof pos->why)) {
     return false;
   }
   pos->u.zone = zone;
   pos->u.north = north;
-  if (!read_coordinate(e, &pos->u.easting, &e_exact, pos) ||
-      !read_coordinate(n, &pos->u.northing, &n_exact, pos)) {
+  if (!geo_grid_read_metres(e, &pos->u.easting, &e_exact, pos->why,
+                            sizeof pos->why) ||
+      !geo_grid_read_metres(n, &pos->u.northing, &n_exact, pos->why,
+                            sizeof pos->why)) {
     return false;
   }
   pos->u_exact = e_exact && n_exact;
@@ -737,7 +561,7 @@ static bool write_output(const struct options *o, struct position *pos,
       st = drdc_geo_mgrs_from_utm(&grid, prec, out, size);
     }
     if ((st == DRDC_E_EASTING) || (st == DRDC_E_NORTHING)) {
-      return mgrs_range_error(pos, st);
+      return geo_grid_mgrs_range_error(u, st, pos->why, sizeof pos->why);
     }
     return (st == DRDC_OK) ? true : fail(pos, "%s", drdc_status_name(st));
   }
@@ -884,7 +708,7 @@ static int parse_options(int argc, char **argv, struct options *o)
       char why[120];
 
       i++;
-      if (decode_zone(argv[i], &z, &north, why, sizeof why)) {
+      if (geo_grid_read_zone(argv[i], &z, &north, why, sizeof why)) {
         o->set_hemisphere = true;
         o->north = north;
       } else if (!read_int(argv[i], &z)) {
