@@ -6,7 +6,6 @@ check; `python3 tools/geo_parity.py` prints the table of docs/accuracy.md).
 A line of drdc geo is accepted when it is byte-identical to GeoConvert's,
 or else when exactly one of these documented rules holds:
 
-  error   both are 'ERROR: ...' lines (the reasons are worded differently);
   cap     the option's output is a value computed by the library (not the
           input itself) and PREC is above the digits the library resolves:
           drdc prints what GeoConvert prints at the capped PREC (-g, -c
@@ -20,14 +19,18 @@ or else when exactly one of these documented rules holds:
           2^-16 m for metres, 1 nas (1/3.6e12 degree) for angles, 1.2e-15
           for the point scale, each plus half a unit of GeoConvert's last
           printed digit;
-  minus-zero  -m of latitude -0 (text "-0"): drdc writes the equator's
-          band N; GeoConvert's signed zero puts the point in the southern
-          hemisphere, band M, at northing 9 999 999 m;
   exact   the value is the input itself (-g and -d of 'LAT LON' text):
           drdc prints its exact decimal rounded half to even, which the
           test computes with Python fractions, while GeoConvert's double
           differs from it by one unit of the last digit (its 53-bit
           mantissa carries 15 to 17 significant digits).
+
+ERROR lines are byte-identical: every one of the random lines above, of
+BAD_INPUTS (check_errors()) and of fuzz_lines() (check_fuzz()), where
+one more rule is counted:
+
+  own-limit  drdc's 'angle beyond 1000000d in TOKEN': GeoConvert reads
+          angles of any size, drdc holds 1 000 000 degrees.
 """
 import math
 import os
@@ -199,11 +202,6 @@ def classify(args, line, got, want, want_cap, ref):
     mode = mode_of(args)
     if got == want:
         return "identical"
-    if got.startswith("ERROR: ") and want.startswith("ERROR: "):
-        return "error"
-    if mode == "-m" and line.split()[0] == "-0" and \
-            re.match(r"\d+N", got) and re.match(r"\d+M", want):
-        return "minus-zero"
     gw, ww, rw = got.split(), want.split(), ref.split()
     cw = want_cap.split() if want_cap is not None else ww
     if len(gw) != len(ww) or len(cw) != len(gw) or \
@@ -285,7 +283,8 @@ def inputs(seed, kind, n=120):
             pts.append("%.*f %.*f" % (d, lat, d, lon))
         # halfway values and DMS input
         pts += ["5.5 6.5", "-2.5 -3.5", "0.125 0.375", "33d20'N 44d24E",
-                "44:24 33:20:00N", "39N 70W+0:0:15E", "-0 -0"]
+                "44:24 33:20:00N", "39N 70W+0:0:15E", "-0 -0", "-0 10",
+                "0S 3", "-0.0000000000001 10"]
     if kind == "lonlat":  # -w: longitude first
         return [" ".join(reversed(p.split())) for p in inputs(seed, "geo")]
     if kind != "geographic":
@@ -311,6 +310,130 @@ def sixteenths(text):
     return "%d.%04d" % (v // 16, v % 16 * 625)
 
 
+# One line of each kind of input GeoConvert refuses, per option set: the
+# ERROR lines must be byte-identical (GeoConvert's wording, the offending
+# token and numbers quoted as it quotes them).
+BAD_INPUTS = [
+    # latitude and longitude text
+    "91 0", "-91 0", "90.5 10", "0 1e3", "33d61 44", "33d20'61\" 44",
+    "33d61.5 44", "33d20'60.5\" 44", "33x 44", "N33 N44", "33N 44S",
+    "E1 W2", "abc 44", "33.5d20 44", "33d20'10\"5 44", "33'20d 44",
+    "33d20d 44", "33'20' 44", "1.2.3 44", "33NN 44", "N33S 44", "N33N 44",
+    "33N+3E 44", "33+ 44", "d 44", "' 44", "33d' 44", ":33 44", "33::5 44",
+    "33: 44", "33:20:10:5 44", "N 44", "- 44", ". 44", "N-33x 44",
+    "33x5N 44", "33N+3x 44", "33d20+d 44", "-- 10", "3N3 10",
+    # fields
+    "33 44 55 66", "a b c", "33 44 x", "31 500000 4000000",
+    # UTM/UPS zone and hemisphere
+    "31q 500000 0", "61n 500000 0", "0n 500000 0", "00n 500000 0",
+    "-31n 500000 0", "+31n 500000 0", "123n 500000 0", "031n 500000 0",
+    "31northxx 500000 0", "31nort 500000 0", "3.1n 500000 0",
+    # UTM/UPS coordinates
+    "31n abc 4000000", "31n 500000 x", "31n 500000 4000000.5x",
+    "31n 5000600 4000000", "31n -600 4000000", "31n 500000 -20000600",
+    "31s 500000 20000400", "31s 0 899999", "31n 0 9600000.5",
+    "n 500000 0", "n 2000000 3000000", "s 3500000 2000000",
+    "s 2000000 -500",
+    # MGRS
+    "38", "1", "0", "38SM", "38SMB448", "38SMBX488", "38SMB44X", "38IMB4488",
+    "38SIB4488", "61SMB4488", "138SMB4488", "038SMB4488", "00SMB",
+    "38ZMB4488", "38SMZ4488", "ZZA00", "ZMB4488", "AAA00", "BZA", "YAA",
+    "YZZ", "AJI", "CAA", "cAA", "aB00", "38Sxb", "38S8", "38-S", "3.8SMB",
+    "38SMB+4", "38NMB4488", "38nmb4488", "38NMB44X", "38XMB4488", "32VFE00",
+    "38SMB4488448844884488448", "38SMB448844884488448844884488",
+    "01KRH74337", "03T4770494740", "1156086569070SMB", "99999999999",
+    # GeoConvert names the fourth ':' component after its separators
+    "3\":9 10", "060\":9 11295",
+    # kilometres at a tie of the 6th digit, quoted from a double
+    "31n 1101085 0", "31n 2033345 0", "31n 500000 7720465",
+    "31n 500000 -9365255",
+    # letters quoted as given, a hemisphere lower-cased
+    "n33N 4", "N33n 4", "s33N 4", "e38.W 1", "1 2 31WWW", "W 31147 0",
+]
+BAD_OPTIONS = [["-g"], ["-u", "-z", "31"], ["-m", "-z", "31"],
+               ["-u", "-z", "0"], ["-m", "-z", "0"], ["-u", "-z", "s"],
+               ["-c", "-t"], ["-m", "-t"]]
+# points each option set above refuses for the zone it asks for
+BAD_ZONE_INPUTS = ["0 20", "0 370", "-0 20", "69.99999 0", "-70 0", "70 0",
+                   "80 0", "83 10", "87 45", "-81.9 10", "28.526247014 -1.9",
+                   "-89.5 0", "85.7 150", "-81.3 92", "0 510", "0 -200",
+                   "0 63.0000001", "0 63", "0 -177", "0 -57.5", "38SMB4488",
+                   "31n 500000 0", "n 2000000 1500000"]
+
+
+def check_errors():
+    """The ERROR lines of BAD_INPUTS and BAD_ZONE_INPUTS that are not
+    byte-identical to GeoConvert's, and how many ERROR lines were
+    compared."""
+    bad, errors = [], 0
+    for args in BAD_OPTIONS:
+        lines = BAD_INPUTS + BAD_ZONE_INPUTS
+        for line, got, want in zip(lines, drdc(args, lines),
+                                   geoconvert(args, lines)):
+            if want.startswith("ERROR: ") or got.startswith("ERROR: "):
+                errors += 1
+                if got != want:
+                    bad.append((args, line, got, want))
+    return bad, errors
+
+
+def fuzz_lines(seed, n=3000):
+    """Random lines of DMS-like tokens, MGRS-like and UTM-like strings:
+    most of them bad input of some kind."""
+    rng = random.Random(seed)
+
+    def token():
+        return "".join(rng.choice("0123456789" * 4 + ".d':NSEWnsew+-\"e ")
+                       for _ in range(rng.randint(1, 9))).strip() or "0"
+
+    def mgrs_like():
+        zone = rng.choice(["", str(rng.randint(0, 62)),
+                           "%02d" % rng.randint(1, 60)])
+        letters = "".join(rng.choice("ABCDEFGHIJKLMNOPQRSTUVWXYZab")
+                          for _ in range(rng.randint(0, 3)))
+        return zone + letters + "".join(
+            rng.choice("0123456789") for _ in range(rng.randint(0, 12)))
+
+    def utm_like():
+        words = [rng.choice(["n", "s", "%d%s" % (rng.randint(0, 61),
+                                                 rng.choice("nsNSq"))]),
+                 "%d" % rng.randint(-100000, 4000000),
+                 "%d" % rng.randint(-10000000, 20000000)]
+        return " ".join(words if rng.random() < 0.7 else words[1:] + words[:1])
+
+    lines = []
+    for _ in range(n):
+        r = rng.random()
+        lines.append(token() + " " + token() if r < 0.4 else
+                     mgrs_like() if r < 0.75 else utm_like())
+    return lines
+
+
+FUZZ_OPTIONS = [[], ["-d"], ["-u"], ["-m"], ["-c"], ["-u", "-z", "31"],
+                ["-m", "-z", "0"], ["-m", "-t"], ["-u", "-z", "31s"], ["-w"]]
+
+
+def check_fuzz():
+    """ERROR lines of fuzz_lines() under FUZZ_OPTIONS: counts of
+    'identical' and 'own-limit' (drdc's angles beyond 1 000 000 degrees,
+    which GeoConvert reads), and the lines neither explains."""
+    counts, bad = {}, []
+    lines = fuzz_lines(7)
+    for args in FUZZ_OPTIONS:
+        for line, got, want in zip(lines, drdc(args, lines),
+                                   geoconvert(args, lines)):
+            if not (got.startswith("ERROR: ") or want.startswith("ERROR: ")):
+                continue
+            rule = ("identical" if got == want else
+                    "own-limit" if got.startswith("ERROR: angle beyond "
+                                                  "1000000d in ") else None)
+            if rule is None:
+                bad.append((args, line, got, want))
+            else:
+                counts[rule] = counts.get(rule, 0) + 1
+    return counts, bad
+
+
 # option set -> the inputs it is checked on
 OPTIONS = [
     (["-g"], "geographic"), (["-u"], "geographic"), (["-m"], "geographic"),
@@ -321,6 +444,7 @@ OPTIONS = [
     (["-u", "-t"], "polar"), (["-m", "-t"], "polar"),
     (["-c", "-t"], "polar"), (["-g", "-w"], "lonlat"),
     (["-d", "-w"], "lonlat"), (["-u", "-n"], "geographic"),
+    (["-u", "-S"], "zone31"), (["-m", "-T"], "polar"),
 ]
 PRECS = range(-5, 11)
 
@@ -370,6 +494,17 @@ def main():
         for k, v in counts.items():
             total[k] = total.get(k, 0) + v
     print("total", total)
+    bad, errors = check_errors()
+    print("error lines of bad inputs: %d, not byte-identical %d"
+          % (errors, len(bad)))
+    for b in bad[:10]:
+        print("   ", b)
+    counts, bad = check_fuzz()
+    print("error lines of fuzz input: %s; unexplained %d"
+          % (", ".join("%s %d" % kv for kv in sorted(counts.items())),
+             len(bad)))
+    for b in bad[:10]:
+        print("   ", b)
 
 
 if __name__ == "__main__":

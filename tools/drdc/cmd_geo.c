@@ -7,6 +7,7 @@
  *        from the exact fixed-point value).
  */
 #include <ctype.h>
+#include <stdarg.h>
 #include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -15,17 +16,25 @@
 
 #include <drdc/geo.h>
 #include <drdc/geo_mgrs.h>
+#include <drdc/version.h>
 
 #include "commands.h"
+#include "geo_grid_text.h"
+#include "geo_mgrs_text.h"
 #include "geo_text.h"
 #include "lines.h"
 
 static const char usage[] =
-    "usage: drdc geo [-g | -d | -: | -u | -m | -c] [-z ZONE | -s | -t]\n"
-    "                [-n] [-w] [-p PREC] [-l | -a]\n"
+    "usage: drdc geo [-g | -d | -: | -u | -m | -c] [-z ZONE | -s | -t | -S | "
+    "-T]\n"
+    "                [-n] [-w] [-p PREC] [-l | -a] [--comment-delimiter "
+    "DELIM]\n"
+    "                [--version | -h | --help]\n"
+    "                [--input-file FILE | --input-string STRING]\n"
+    "                [--line-separator CHAR] [--output-file FILE]\n"
     "\n"
-    "Reads one position per line on standard input and writes it as\n"
-    "GeographicLib's GeoConvert does, from the library's integer geodesy:\n"
+    "Reads one position per line and writes it as GeographicLib's\n"
+    "GeoConvert 2.1.2 does, from the library's integer geodesy:\n"
     "  input   'LAT LON' in decimal degrees or degrees, minutes, seconds\n"
     "          (33.3, 33d18'N, 33:18:00N, N33d18; a hemisphere letter\n"
     "          may swap the order); 'ZONE{n|s} EASTING NORTHING' or\n"
@@ -43,21 +52,33 @@ static const char usage[] =
     "          degree) and the point scale (PREC + 7 decimals)\n"
     "  -z ZONE output in UTM zone ZONE (1..60, 0 for UPS, or with its\n"
     "          hemisphere, 38n); -s the standard zone; -t the standard UTM\n"
-    "          zone also in the polar caps. Default: geographic input in\n"
-    "          its standard zone, UTM/UPS and MGRS input in its own\n"
+    "          zone also in the polar caps; -S, -T as -s, -t until a line\n"
+    "          converts, then that line's zone and hemisphere for the rest.\n"
+    "          Default: geographic input in its standard zone, UTM/UPS and\n"
+    "          MGRS input in its own\n"
     "  -n      MGRS input means the south-west corner of its cell\n"
     "  -w      longitude first, on input and output\n"
     "  -l, -a  hemisphere written north/south, or n/s (the default)\n"
     "  -p PREC precision, -5..10 (-6 for MGRS), default 0\n"
+    "  --comment-delimiter DELIM  cut DELIM and the rest of a line off\n"
+    "          before reading it, and write them after its output\n"
+    "  --input-file FILE, --output-file FILE  read or write FILE instead\n"
+    "          of standard input or output ('-': those)\n"
+    "  --input-string STRING  read STRING, its lines separated by CHAR\n"
+    "          (--line-separator, default ';')\n"
+    "  --version  the library version; -h, --help this text\n"
     "Printed decimals are the library's fixed-point values rounded half to\n"
     "even, never more digits than those values resolve: a value that is\n"
     "not exactly the input is written with at most 12 decimals of a degree\n"
     "(-g, -c: PREC 7; the library's unit is 1 nas, 2.8e-13 degree), 9 of\n"
     "a second (-d: PREC 8) and 4 of a metre (-u: PREC 4; 1/65536 m), and\n"
     "MGRS computed from such metres with at most 9 digits (PREC 4).\n"
-    "UTM/UPS input is read to the nearest 1/65536 m.\n"
-    "A line that cannot be converted gives 'ERROR: <reason>'; the others go\n"
-    "on and the exit status is 1 at the end.\n";
+    "UTM/UPS input is read to the nearest 1/65536 m. Latitude -0 (or 0S)\n"
+    "is just south of the equator, as in GeoConvert.\n"
+    "A line that cannot be converted gives GeoConvert's 'ERROR: <message>'\n"
+    "(nan, inf, metres beyond 1e12 and angles beyond 1000000 degrees are\n"
+    "errors here); the others go on and the exit status is 1 at the end;\n"
+    "bad options exit with status 2.\n";
 
 #define Q16_PER_M   INT64_C(65536)
 #define Q58_ONE     INT64_C(288230376151711744)
@@ -80,13 +101,19 @@ enum mode { MODE_GEO, MODE_DMS, MODE_UTM, MODE_MGRS, MODE_CONV };
 struct options {
   enum mode mode;
   int prec;
-  int zone;            /* ZONE_MATCH, ZONE_UTM, standard, UPS or 1..60 */
-  bool set_hemisphere; /* -z with a hemisphere: -u writes in it */
-  bool north;          /* that hemisphere */
-  bool corner;         /* -n */
-  bool lon_first;      /* -w */
-  bool long_names;     /* -l */
-  char sep;            /* -: */
+  int zone;               /* ZONE_MATCH, ZONE_UTM, standard, UPS or 1..60 */
+  bool set_hemisphere;    /* -z with a hemisphere: -u writes in it */
+  bool north;             /* that hemisphere */
+  bool corner;            /* -n */
+  bool lon_first;         /* -w */
+  bool long_names;        /* -l */
+  char sep;               /* -: */
+  bool sticky;            /* -S, -T: the first conversion's zone from then on */
+  const char *comment;    /* --comment-delimiter, or NULL */
+  const char *input_file; /* --input-file, or NULL for standard input */
+  const char *input_string; /* --input-string, or NULL */
+  char line_separator;      /* --line-separator, in the input string */
+  const char *output_file;  /* --output-file, or NULL for standard output */
 };
 
 /* One converted line. */
@@ -100,30 +127,18 @@ struct position {
   bool rezoned;         /* u was computed again for -z, -s or -t */
   drdc_nas_t conv;
   drdc_q5_58_t k;
+  char why[200]; /* the ERROR line's message when a step fails */
 };
 
-static const char *status_reason(drdc_status_t st)
+/* The ERROR message of pos; false, for `return fail(...)`. */
+static bool fail(struct position *pos, const char *format, ...)
 {
-  switch (st) {
-  case DRDC_E_LATITUDE:
-    return "latitude not in [-90d, 90d]";
-  case DRDC_E_LONGITUDE:
-    return "longitude not in [-540d, 540d)";
-  case DRDC_E_ZONE:
-    return "zone not in [0, 60]";
-  case DRDC_E_EASTING:
-    return "easting not in the UTM/UPS range";
-  case DRDC_E_NORTHING:
-    return "northing not in the UTM/UPS range";
-  case DRDC_E_MGRS:
-    return "malformed MGRS";
-  case DRDC_E_BAND:
-    return "MGRS 100 km square not in its latitude band";
-  case DRDC_E_RANGE:
-    return "point out of legal range for the UTM zone or UPS";
-  default:
-    return drdc_status_name(st);
-  }
+  va_list args;
+
+  va_start(args, format);
+  vsnprintf(pos->why, sizeof pos->why, format, args);
+  va_end(args);
+  return false;
 }
 
 static int imin(int a, int b)
@@ -169,45 +184,6 @@ static int utm_only_zone(drdc_nas_t lat, drdc_nas_t lon)
   return zone;
 }
 
-/* GeoConvert's zone+hemisphere text: 1..60 (at most 2 digits, no sign)
- * or nothing for UPS, then n, s, north or south in any case. */
-static const char *decode_zone(const char *s, int *zone, bool *north)
-{
-  size_t digits = 0;
-  int z = 0;
-  const char *h;
-  char lower[8];
-  size_t i;
-
-  if (strlen(s) > 7u) {
-    return "zone text longer than 7 characters";
-  }
-  while (isdigit((unsigned char)s[digits])) {
-    z = (z * 10) + (s[digits] - '0');
-    digits++;
-    if (digits > 2u) {
-      return "zone with more than 2 digits";
-    }
-  }
-  if ((digits > 0u) && ((z < 1) || (z > 60))) {
-    return "zone not in [1, 60] (UPS: the hemisphere alone)";
-  }
-  h = s + digits;
-  for (i = 0; (h[i] != '\0') && (i < (sizeof lower - 1u)); i++) {
-    lower[i] = (char)tolower((unsigned char)h[i]);
-  }
-  lower[i] = '\0';
-  if ((strcmp(lower, "n") == 0) || (strcmp(lower, "north") == 0)) {
-    *north = true;
-  } else if ((strcmp(lower, "s") == 0) || (strcmp(lower, "south") == 0)) {
-    *north = false;
-  } else {
-    return "illegal zone or hemisphere";
-  }
-  *zone = z;
-  return NULL;
-}
-
 /* Split on GeoConvert's separators: blanks and commas. */
 static int split(char *line, char **words, int max)
 {
@@ -234,52 +210,66 @@ static int split(char *line, char **words, int max)
   }
 }
 
+/* GeoConvert's message for a point that zone cannot hold. */
+static bool zone_range_error(struct position *pos, int zone)
+{
+  /* east of the central meridian, reduced to [-180, 180) */
+  drdc_nas_t east =
+      reduce_longitude(pos->lon_calc - (((6 * zone) - 183) * NAS_PER_DEG));
+
+  return geo_grid_zone_error(&pos->lat, &pos->lon, east, zone, pos->why,
+                             sizeof pos->why);
+}
+
 static void set_computed_angle(geo_text_angle_t *a, drdc_nas_t nas)
 {
   a->nas = nas;
   a->negative = (nas < 0);
   a->exact = false;
   a->hemisphere = GEO_TEXT_NONE;
+  a->too_large = false;
 }
 
 /* UTM/UPS -> geographic, then GeoConvert's FixHemisphere: a UTM northing
  * given in the other hemisphere is moved to the latitude's own. */
-static const char *from_grid(struct position *pos)
+static bool from_grid(struct position *pos)
 {
   drdc_nas_t lat = 0;
   drdc_nas_t lon = 0;
   drdc_status_t st;
 
   st = drdc_geo_from_utm(&pos->u, &lat, &lon, &pos->conv, &pos->k);
+  if ((st == DRDC_E_EASTING) || (st == DRDC_E_NORTHING)) {
+    return geo_grid_range_error(&pos->u, st, pos->why, sizeof pos->why);
+  }
   if (st != DRDC_OK) {
-    return status_reason(st);
+    return fail(pos, "%s", drdc_status_name(st));
   }
   set_computed_angle(&pos->lat, lat);
   set_computed_angle(&pos->lon, lon);
   pos->lon_calc = lon;
   if ((lat != 0) && (pos->u.north != (lat > 0))) {
     if (pos->u.zone == DRDC_GEO_ZONE_UPS) {
-      return "hemisphere mixup";
+      return fail(pos, "UPS coordinates in the wrong hemisphere");
     }
     pos->u.northing += pos->u.north ? SOUTH_SHIFT : -SOUTH_SHIFT;
     pos->u.north = !pos->u.north;
   }
-  return NULL;
+  return true;
 }
 
-static const char *read_geographic(char *a, char *b, const struct options *o,
-                                   struct position *pos)
+static bool read_geographic(char *a, char *b, const struct options *o,
+                            struct position *pos)
 {
   geo_text_angle_t x;
   geo_text_angle_t y;
   enum geo_text_hemisphere hx;
   enum geo_text_hemisphere hy;
-  const char *why;
   drdc_status_t st;
 
-  if (((why = geo_text_read_angle(a, &x)) != NULL) ||
-      ((why = geo_text_read_angle(b, &y)) != NULL)) {
-    return why;
+  if (!geo_text_read_angle(a, &x, pos->why, sizeof pos->why) ||
+      !geo_text_read_angle(b, &y, pos->why, sizeof pos->why)) {
+    return false;
   }
   hx = x.hemisphere;
   hy = y.hemisphere;
@@ -292,13 +282,27 @@ static const char *read_geographic(char *a, char *b, const struct options *o,
     hy = (hx == GEO_TEXT_LATITUDE) ? GEO_TEXT_LONGITUDE : GEO_TEXT_LATITUDE;
   }
   if (hx == hy) {
-    return "both coordinates are latitudes or both longitudes";
+    return fail(pos, "Both %s and %s interpreted as %s", a, b,
+                (hx == GEO_TEXT_LATITUDE) ? "latitudes" : "longitudes");
   }
   pos->lat = (hx == GEO_TEXT_LATITUDE) ? x : y;
   pos->lon = (hx == GEO_TEXT_LATITUDE) ? y : x;
+  if (pos->lat.too_large) {
+    /* GeoConvert reads any angle; drdc holds up to GEO_TEXT_DEGREES_MAX */
+    return fail(pos, "angle beyond %dd in %s", GEO_TEXT_DEGREES_MAX,
+                (hx == GEO_TEXT_LATITUDE) ? a : b);
+  }
   if ((pos->lat.nas > (90 * NAS_PER_DEG)) ||
       (pos->lat.nas < -(90 * NAS_PER_DEG))) {
-    return status_reason(DRDC_E_LATITUDE);
+    char lat[32];
+
+    geo_text_put_general(lat, sizeof lat, pos->lat.nas, NAS_PER_DEG,
+                         pos->lat.negative);
+    return fail(pos, "Latitude %sd not in [-90d, 90d]", lat);
+  }
+  if (pos->lon.too_large) {
+    return fail(pos, "angle beyond %dd in %s", GEO_TEXT_DEGREES_MAX,
+                (hx == GEO_TEXT_LATITUDE) ? b : a);
   }
   /* GeoConvert takes any longitude; the library [-540, 540) */
   pos->lon_calc = pos->lon.nas;
@@ -310,7 +314,7 @@ static const char *read_geographic(char *a, char *b, const struct options *o,
   st = drdc_geo_to_utm(pos->lat.nas, pos->lon_calc, DRDC_GEO_ZONE_STANDARD,
                        &pos->u, &pos->conv, &pos->k);
   if (st != DRDC_OK) {
-    return status_reason(st);
+    return fail(pos, "%s", drdc_status_name(st));
   }
   if ((pos->lat.nas == 0) && pos->lat.negative &&
       (pos->u.zone != DRDC_GEO_ZONE_UPS)) {
@@ -318,11 +322,10 @@ static const char *read_geographic(char *a, char *b, const struct options *o,
     pos->u.north = false;
     pos->u.northing += SOUTH_SHIFT;
   }
-  return NULL;
+  return true;
 }
 
-static const char *read_utm(char **w, const struct options *o,
-                            struct position *pos)
+static bool read_utm(char **w, struct position *pos)
 {
   char *zone_text;
   char *e;
@@ -331,9 +334,7 @@ static const char *read_utm(char **w, const struct options *o,
   bool n_exact;
   int zone = 0;
   bool north = true;
-  const char *why;
 
-  (void)o;
   if ((*w[0] != '\0') && isalpha((unsigned char)w[0][strlen(w[0]) - 1u])) {
     zone_text = w[0];
     e = w[1];
@@ -344,23 +345,29 @@ static const char *read_utm(char **w, const struct options *o,
     e = w[0];
     n = w[1];
   } else {
-    return "neither the first nor the last word is a zone+hemisphere";
+    return fail(pos,
+                "Neither %s nor %s of the form UTM/UPS Zone + Hemisphere "
+                "(ex: 38n, 09s, n)",
+                w[0], w[2]);
   }
-  if ((why = decode_zone(zone_text, &zone, &north)) != NULL) {
-    return why;
+  if (!geo_grid_read_zone(zone_text, &zone, &north, pos->why,
+                          sizeof pos->why)) {
+    return false;
   }
   pos->u.zone = zone;
   pos->u.north = north;
-  if (!geo_text_read_metres(e, &pos->u.easting, &e_exact) ||
-      !geo_text_read_metres(n, &pos->u.northing, &n_exact)) {
-    return "bad easting or northing";
+  if (!geo_grid_read_metres(e, &pos->u.easting, &e_exact, pos->why,
+                            sizeof pos->why) ||
+      !geo_grid_read_metres(n, &pos->u.northing, &n_exact, pos->why,
+                            sizeof pos->why)) {
+    return false;
   }
   pos->u_exact = e_exact && n_exact;
   return from_grid(pos);
 }
 
-static const char *read_mgrs(const char *text, const struct options *o,
-                             struct position *pos)
+static bool read_mgrs(const char *text, const struct options *o,
+                      struct position *pos)
 {
   drdc_geo_utm_t corner;
   drdc_geo_utm_t centre;
@@ -369,7 +376,7 @@ static const char *read_mgrs(const char *text, const struct options *o,
 
   st = drdc_geo_mgrs_decode(text, &corner, &centre, &prec);
   if (st != DRDC_OK) {
-    return status_reason(st);
+    return geo_mgrs_error(text, st, pos->why, sizeof pos->why);
   }
   pos->u = o->corner ? corner : centre;
   /* corners are multiples of 10^(5 - prec) m, centres half a cell more:
@@ -380,7 +387,7 @@ static const char *read_mgrs(const char *text, const struct options *o,
 
 /* The output zone: GeoConvert's SetAltZone and, for -u with a
  * hemisphere, its Transfer. */
-static const char *output_zone(const struct options *o, struct position *pos)
+static bool output_zone(const struct options *o, struct position *pos)
 {
   int zone;
   drdc_status_t st;
@@ -395,7 +402,7 @@ static const char *output_zone(const struct options *o, struct position *pos)
 
       st = drdc_geo_utm_zone(pos->lat.nas, pos->lon_calc, &z);
       if (st != DRDC_OK) {
-        return status_reason(st);
+        return fail(pos, "%s", drdc_status_name(st));
       }
       zone = (int)z;
     }
@@ -406,8 +413,11 @@ static const char *output_zone(const struct options *o, struct position *pos)
 
       st = drdc_geo_to_utm(pos->lat.nas, pos->lon_calc, zone, &pos->u,
                            &pos->conv, &pos->k);
+      if (st == DRDC_E_RANGE) {
+        return zone_range_error(pos, zone);
+      }
       if (st != DRDC_OK) {
-        return status_reason(st);
+        return fail(pos, "%s", drdc_status_name(st));
       }
       if ((pos->lat.nas == 0) && pos->lat.negative &&
           (pos->u.zone != DRDC_GEO_ZONE_UPS)) {
@@ -421,12 +431,13 @@ static const char *output_zone(const struct options *o, struct position *pos)
   if ((o->mode == MODE_UTM) && o->set_hemisphere &&
       (o->north != pos->u.north)) {
     if (pos->u.zone == DRDC_GEO_ZONE_UPS) {
-      return "UPS coordinates cannot change hemisphere";
+      return fail(pos,
+                  "Attempt to transfer UPS coordinates between hemispheres");
     }
     pos->u.northing += o->north ? -SOUTH_SHIFT : SOUTH_SHIFT;
     pos->u.north = o->north;
   }
-  return NULL;
+  return true;
 }
 
 /* A UTM coordinate as GeoConvert's UTMUPSString: PREC decimals, or for a
@@ -474,10 +485,10 @@ static void put_dms(char *out, size_t size, const geo_text_angle_t *a, int prec,
                    a->exact ? prec : imin(prec, most), which, sep);
 }
 
-/* The output line of a converted position; false for an ERROR line. */
-static const char *write_output(const struct options *o,
-                                const struct position *pos, char *out,
-                                size_t size)
+/* The output line of a converted position; false for an ERROR line
+ * (its message in pos->why). */
+static bool write_output(const struct options *o, struct position *pos,
+                         char *out, size_t size)
 {
   char a[64];
   char b[64];
@@ -520,25 +531,39 @@ static const char *write_output(const struct options *o,
     put_metres(a, sizeof a, u->easting, prec);
     put_metres(b, sizeof b, u->northing, prec);
     snprintf(out, size, "%.8s %.60s %.60s", zone, a, b);
-    return NULL;
+    return true;
   }
   case MODE_MGRS: {
     int32_t prec = imax(-1, imin(6, p) + 5);
     drdc_status_t st;
 
-    if (pos->geographic && !pos->rezoned) {
+    bool south_of_equator = (pos->lat.nas == 0) && pos->lat.negative &&
+                            (u->zone != DRDC_GEO_ZONE_UPS);
+
+    if (pos->geographic && !pos->rezoned && !south_of_equator) {
       /* the library's own MGRS of a geographic point: its digits come
-       * from 2^-36 m, not from the Q47.16 metres (latitude -0 is the
-       * equator, band N; GeoConvert writes the southern band's
-       * 9 999 999 m) */
+       * from 2^-36 m, not from the Q47.16 metres */
       st = drdc_geo_mgrs_encode(pos->lat.nas, pos->lon_calc, prec, out, size);
     } else {
+      drdc_geo_utm_t grid = *u;
+
       if (!pos->u_exact) {
         prec = imin(prec, MGRS_DIGITS_FROM_METRES_MAX);
       }
-      st = drdc_geo_mgrs_from_utm(u, prec, out, size);
+      if (south_of_equator) {
+        /* a latitude of -0 (or negative, under half a nas) is a point
+         * just south of the equator, as GeoConvert's sign bit makes it:
+         * band M, the northing 10 000 000 m less than the last digit
+         * resolves, which truncates to all nines */
+        grid.north = false;
+        grid.northing = SOUTH_SHIFT - 1;
+      }
+      st = drdc_geo_mgrs_from_utm(&grid, prec, out, size);
     }
-    return (st == DRDC_OK) ? NULL : status_reason(st);
+    if ((st == DRDC_E_EASTING) || (st == DRDC_E_NORTHING)) {
+      return geo_grid_mgrs_range_error(u, st, pos->why, sizeof pos->why);
+    }
+    return (st == DRDC_OK) ? true : fail(pos, "%s", drdc_status_name(st));
   }
   default: {
     int prec = imax(-5, imin(8, p));
@@ -554,45 +579,46 @@ static const char *write_output(const struct options *o,
     conv.negative = (pos->conv < 0) || (pos->lat.negative != west);
     conv.exact = false;
     conv.hemisphere = GEO_TEXT_NONE;
+    conv.too_large = false;
     put_degrees(a, sizeof a, &conv, prec + 5);
     geo_text_put_fixed(b, sizeof b, pos->k, Q58_ONE, prec + 7, false);
     break;
   }
   }
   snprintf(out, size, "%.60s %.60s", a, b);
-  return NULL;
+  return true;
 }
 
-/* One line -> its output text; returns false for an ERROR line. */
-static bool convert_line(char *line, const struct options *o, char *out,
-                         size_t size)
+/* One line -> its output text; returns false for an ERROR line. After
+ * the first line that converts, -S and -T hold its zone and hemisphere,
+ * as -z would. */
+static bool convert_line(char *line, struct options *o, char *out, size_t size)
 {
   char *w[4];
   int n = split(line, w, 3);
   struct position pos;
-  const char *why;
+  bool ok;
 
   memset(&pos, 0, sizeof pos);
   if (n == 1) {
-    why = read_mgrs(w[0], o, &pos);
+    ok = read_mgrs(w[0], o, &pos);
   } else if (n == 2) {
-    why = read_geographic(w[0], w[1], o, &pos);
+    ok = read_geographic(w[0], w[1], o, &pos);
   } else if (n == 3) {
-    why = read_utm(w, o, &pos);
+    ok = read_utm(w, &pos);
   } else {
-    why = "a position has 1, 2 or 3 words";
+    ok = fail(&pos, "Coordinate requires 1, 2, or 3 elements");
   }
-  if (why == NULL) {
-    why = output_zone(o, &pos);
+  ok = ok && output_zone(o, &pos) && write_output(o, &pos, out, size);
+  if (!ok) {
+    snprintf(out, size, "ERROR: %s", pos.why);
+  } else if (o->sticky) {
+    o->sticky = false;
+    o->zone = (int)pos.u.zone;
+    o->set_hemisphere = true;
+    o->north = pos.u.north;
   }
-  if (why == NULL) {
-    why = write_output(o, &pos, out, size);
-  }
-  if (why != NULL) {
-    snprintf(out, size, "ERROR: %s", why);
-    return false;
-  }
-  return true;
+  return ok;
 }
 
 /* -p's integer, as GeoConvert reads it. */
@@ -600,8 +626,13 @@ static bool read_int(const char *s, int *out)
 {
   char *end = NULL;
   long v = strtol(s, &end, 10);
+  bool digits = (end != s);
 
-  if ((*s == '\0') || (*end != '\0')) {
+  /* blanks around the number, as GeoConvert's stream reads it */
+  while (isspace((unsigned char)*end)) {
+    end++;
+  }
+  if (!digits || (*end != '\0')) {
     return false;
   }
   *out = (v < -100) ? -100 : ((v > 100) ? 100 : (int)v);
@@ -619,6 +650,28 @@ static int parse_options(int argc, char **argv, struct options *o)
     if ((strcmp(a, "--help") == 0) || (strcmp(a, "-h") == 0)) {
       fputs(usage, stdout);
       return 0;
+    } else if (strcmp(a, "--version") == 0) {
+      printf("drdc geo: libdrdc-fx version %s\n", DRDC_VERSION_STRING);
+      return 0;
+    } else if ((strcmp(a, "-S") == 0) || (strcmp(a, "-T") == 0)) {
+      o->zone = (a[1] == 'S') ? DRDC_GEO_ZONE_STANDARD : ZONE_UTM;
+      o->set_hemisphere = false;
+      o->sticky = true;
+    } else if ((strcmp(a, "--comment-delimiter") == 0) && has_value) {
+      o->comment = argv[++i];
+    } else if ((strcmp(a, "--input-file") == 0) && has_value) {
+      o->input_file = argv[++i];
+    } else if ((strcmp(a, "--input-string") == 0) && has_value) {
+      o->input_string = argv[++i];
+    } else if ((strcmp(a, "--output-file") == 0) && has_value) {
+      o->output_file = argv[++i];
+    } else if ((strcmp(a, "--line-separator") == 0) && has_value) {
+      i++;
+      if (strlen(argv[i]) != 1u) {
+        fputs("drdc geo: Line separator must be a single character\n", stderr);
+        return 2;
+      }
+      o->line_separator = argv[i][0];
     } else if (strcmp(a, "-g") == 0) {
       o->mode = MODE_GEO;
     } else if (strcmp(a, "-d") == 0) {
@@ -644,29 +697,37 @@ static int parse_options(int argc, char **argv, struct options *o)
     } else if (strcmp(a, "-s") == 0) {
       o->zone = DRDC_GEO_ZONE_STANDARD;
       o->set_hemisphere = false;
+      o->sticky = false;
     } else if (strcmp(a, "-t") == 0) {
       o->zone = ZONE_UTM;
       o->set_hemisphere = false;
+      o->sticky = false;
     } else if ((strcmp(a, "-z") == 0) && has_value) {
       int z = 0;
       bool north = true;
+      char why[120];
 
       i++;
-      if (decode_zone(argv[i], &z, &north) == NULL) {
+      if (geo_grid_read_zone(argv[i], &z, &north, why, sizeof why)) {
         o->set_hemisphere = true;
         o->north = north;
-      } else if (read_int(argv[i], &z) && (z >= 0) && (z <= 60)) {
-        o->set_hemisphere = false;
-      } else {
-        fprintf(stderr, "drdc geo: zone '%s' is not 0..60 or zone+hemisphere\n",
+      } else if (!read_int(argv[i], &z)) {
+        fprintf(stderr,
+                "drdc geo: Zone %s is not a number or zone+hemisphere\n",
                 argv[i]);
         return 2;
+      } else if ((z < 0) || (z > 60)) {
+        fprintf(stderr, "drdc geo: Zone %s not in [0, 60]\n", argv[i]);
+        return 2;
+      } else {
+        o->set_hemisphere = false;
       }
       o->zone = z;
+      o->sticky = false;
     } else if ((strcmp(a, "-p") == 0) && has_value) {
       i++;
       if (!read_int(argv[i], &o->prec)) {
-        fprintf(stderr, "drdc geo: -p needs an integer\n");
+        fprintf(stderr, "drdc geo: Precision %s is not a number\n", argv[i]);
         return 2;
       }
     } else {
@@ -674,47 +735,153 @@ static int parse_options(int argc, char **argv, struct options *o)
       return 2;
     }
   }
+  if ((o->input_file != NULL) && (o->input_string != NULL)) {
+    fputs("drdc geo: Cannot specify --input-string and --input-file "
+          "together\n",
+          stderr);
+    return 2;
+  }
   return -1;
 }
 
-int drdc_cmd_geo(int argc, char **argv)
+/* Convert one input line and write its output line (with the comment
+ * GeoConvert moves to its end); false for an ERROR line. */
+static bool put_line(char *line, size_t len, int got, struct options *o,
+                     FILE *out)
 {
-  struct options o = {MODE_GEO, 0,     ZONE_MATCH, false, true,
-                      false,    false, false,      '\0'};
-  int status;
+  const char *problem = drdc_tool_line_problem(got, line, len);
+  char *comment = NULL;
+  char text[240];
+  bool ok = false;
+
+  if (problem != NULL) {
+    snprintf(text, sizeof text, "ERROR: %s", problem);
+  } else {
+    if ((o->comment != NULL) && (*o->comment != '\0')) {
+      char *found = strstr(line, o->comment);
+
+      if (found != NULL) {
+        /* the line is converted without it; the delimiter and what
+         * follows are written after the output, one blank between */
+        size_t n = strlen(found) + 1u;
+
+        comment = malloc(n);
+        if (comment == NULL) {
+          fputs("drdc geo: out of memory\n", stderr);
+          exit(1);
+        }
+        memcpy(comment, found, n);
+        *found = '\0';
+      }
+    }
+    ok = convert_line(line, o, text, sizeof text);
+  }
+  if (comment != NULL) {
+    fprintf(out, "%s %s\n", text, comment);
+    free(comment);
+  } else {
+    fprintf(out, "%s\n", text);
+  }
+  fflush(out);
+  return ok;
+}
+
+/* --input-string: GeoConvert's lines are the pieces between line
+ * separators; nothing after the last separator is no line. */
+static int convert_string(const char *s, struct options *o, FILE *out)
+{
+  int failed = 0;
+  size_t n = strlen(s);
+  char *copy = malloc(n + 2u);
+  char *p;
+
+  if (copy == NULL) {
+    fputs("drdc geo: out of memory\n", stderr);
+    return 1;
+  }
+  /* a line after the last separator, unless it is empty */
+  memcpy(copy, s, n + 1u);
+  if ((n > 0u) && (copy[n - 1u] != o->line_separator)) {
+    copy[n] = o->line_separator;
+    copy[n + 1u] = '\0';
+  }
+  for (p = copy; *p != '\0';) {
+    char *end = strchr(p, o->line_separator);
+
+    *end = '\0';
+    if (!put_line(p, strlen(p), DRDC_TOOL_LINE_OK, o, out)) {
+      failed = 1;
+    }
+    p = end + 1;
+  }
+  free(copy);
+  return failed;
+}
+
+static int convert_stream(FILE *in, struct options *o, FILE *out)
+{
+  int failed = 0;
   char *line = NULL;
   size_t cap = 0;
   size_t len = 0;
   int got;
-  int failed = 0;
 
+  while ((got = drdc_tool_read_line(in, &line, &cap, &len)) !=
+         DRDC_TOOL_LINE_EOF) {
+    if (got == DRDC_TOOL_LINE_ERROR) {
+      fputs("drdc geo: cannot read the input\n", stderr);
+      failed = 1;
+      break;
+    }
+    if (!put_line(line, len, got, o, out)) {
+      failed = 1;
+    }
+  }
+  free(line);
+  return failed;
+}
+
+int drdc_cmd_geo(int argc, char **argv)
+{
+  struct options o;
+  int status;
+  FILE *in = stdin;
+  FILE *out = stdout;
+
+  memset(&o, 0, sizeof o);
+  o.mode = MODE_GEO;
+  o.zone = ZONE_MATCH;
+  o.north = true;
+  o.line_separator = ';';
   status = parse_options(argc, argv, &o);
   if (status >= 0) {
     return status;
   }
-  while ((got = drdc_tool_read_line(stdin, &line, &cap, &len)) !=
-         DRDC_TOOL_LINE_EOF) {
-    const char *problem;
-
-    if (got == DRDC_TOOL_LINE_ERROR) {
-      fputs("drdc geo: cannot read standard input\n", stderr);
-      failed = 1;
-      break;
+  if ((o.input_file != NULL) && (strcmp(o.input_file, "-") != 0)) {
+    in = fopen(o.input_file, "r");
+    if (in == NULL) {
+      fprintf(stderr, "drdc geo: Cannot open %s for reading\n", o.input_file);
+      return 2;
     }
-    problem = drdc_tool_line_problem(got, line, len);
-    if (problem != NULL) {
-      printf("ERROR: %s\n", problem);
-      failed = 1;
-    } else {
-      char out[160];
-
-      if (!convert_line(line, &o, out, sizeof out)) {
-        failed = 1;
-      }
-      printf("%s\n", out);
-    }
-    fflush(stdout);
   }
-  free(line);
-  return failed;
+  if ((o.output_file != NULL) && (strcmp(o.output_file, "-") != 0)) {
+    out = fopen(o.output_file, "w");
+    if (out == NULL) {
+      fprintf(stderr, "drdc geo: Cannot open %s for writing\n", o.output_file);
+      if (in != stdin) {
+        fclose(in);
+      }
+      return 2;
+    }
+  }
+  status = (o.input_string != NULL) ? convert_string(o.input_string, &o, out)
+                                    : convert_stream(in, &o, out);
+  if (in != stdin) {
+    fclose(in);
+  }
+  if ((out != stdout) && (fclose(out) != 0)) {
+    fprintf(stderr, "drdc geo: cannot write %s\n", o.output_file);
+    status = 1;
+  }
+  return status;
 }

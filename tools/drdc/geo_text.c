@@ -13,6 +13,12 @@
 
 __extension__ typedef unsigned __int128 u128;
 
+/* Significant digits of metres kept when reading (digits * 65536 fits
+ * 128 bits); later ones only tell whether the value is exact. */
+#define METRE_DIGITS_KEPT 33
+/* Largest metres read: GeoConvert reads any, Q47.16 holds 1.4e14 m and
+ * no UTM/UPS coordinate is near 1e12 m. */
+#define METRE_INTEGER_MAX ((u128)1000000000000u)
 /* Fraction digits kept when reading; later ones only tell whether the
  * value is exact and break a tie. */
 #define FRACTION_DIGITS_MAX 18
@@ -134,13 +140,26 @@ static bool is_sign(char c)
   return (c == '+') || (c == '-');
 }
 
+/* GeoConvert's names of the components in its messages; a fourth ':'
+ * component without digits is named by the separators' list. */
+static const char *const component_names[4] = {"degrees", "minutes", "seconds",
+                                               "D'\":"};
+/* Integer digits kept of a component; GeoConvert takes any, drdc refuses
+ * angles beyond GEO_TEXT_DEGREES_MAX after every other check. */
+#define COMPONENT_MAX INT64_C(1000000000000000)
+
 /* One piece of an angle (no interior sign), GeoConvert's InternalDecode:
- * [hemisphere][sign]components[hemisphere]. */
-static const char *read_piece(const char *s, size_t beg, size_t end,
-                              geo_text_angle_t *out)
+ * [hemisphere][sign]components[hemisphere]. On error, `why` gets
+ * GeoConvert's message, which quotes the piece without its hemisphere
+ * letters and sign (or the whole piece when nothing is left of it). */
+static bool read_piece(const char *s, size_t beg, size_t end,
+                       geo_text_angle_t *out, char *why, size_t why_size)
 {
+  size_t piece_beg = beg;
+  size_t piece_end = end;
   int sign = 1;
   int h;
+  char first_letter = '\0';
   int64_t whole[3] = {0, 0, 0};
   int64_t current = 0;
   u128 frac = 0;
@@ -156,16 +175,31 @@ static const char *read_piece(const char *s, size_t beg, size_t end,
                       GEO_TEXT_NAS_PER_SECOND};
   int64_t nas;
   bool exact = true;
+  int len;
+  int k_check;
 
   out->hemisphere = GEO_TEXT_NONE;
   if ((end > beg) && ((h = hemisphere_of(s[beg])) != 0)) {
     out->hemisphere = (enum geo_text_hemisphere)((h < 0) ? -h : h);
     sign = (h < 0) ? -1 : 1;
+    first_letter = s[beg]; /* quoted as given */
     beg++;
   }
   if ((end > beg) && ((h = hemisphere_of(s[end - 1u])) != 0)) {
-    if (out->hemisphere != GEO_TEXT_NONE) {
-      return "repeated or contradictory hemisphere letters";
+    char last_letter = s[end - 1u];
+
+    len = (int)(piece_end - piece_beg);
+    if (toupper((unsigned char)first_letter) ==
+        toupper((unsigned char)last_letter)) {
+      snprintf(why, why_size, "Repeated hemisphere indicators %c in %.*s",
+               first_letter, len, s + piece_beg);
+      return false;
+    }
+    if (first_letter != '\0') {
+      snprintf(why, why_size,
+               "Contradictory hemisphere indicators %c and %c in %.*s",
+               first_letter, last_letter, len, s + piece_beg);
+      return false;
     }
     out->hemisphere = (enum geo_text_hemisphere)((h < 0) ? -h : h);
     sign = (h < 0) ? -1 : 1;
@@ -175,8 +209,11 @@ static const char *read_piece(const char *s, size_t beg, size_t end,
     sign *= (s[beg] == '-') ? -1 : 1;
     beg++;
   }
+  len = (int)(end - beg);
   if (end == beg) {
-    return "empty or incomplete angle";
+    snprintf(why, why_size, "Empty or incomplete DMS string %.*s",
+             (int)(piece_end - piece_beg), s + piece_beg);
+    return false;
   }
   for (p = beg; p < end; p++) {
     char x = s[p];
@@ -193,16 +230,16 @@ static const char *read_piece(const char *s, size_t beg, size_t end,
           frac_above = true;
         }
       } else {
-        if (current > GEO_TEXT_DEGREES_MAX) {
-          return "angle too large";
-        }
-        current = (current * 10) + (x - '0');
+        current = (current < COMPONENT_MAX) ? ((current * 10) + (x - '0'))
+                                            : COMPONENT_MAX;
       }
       continue;
     }
     if (x == '.') {
       if (point) {
-        return "several decimal points";
+        snprintf(why, why_size, "Multiple decimal points in %.*s", len,
+                 s + beg);
+        return false;
       }
       point = true;
       digcount = 1;
@@ -220,18 +257,36 @@ static const char *read_piece(const char *s, size_t beg, size_t end,
       break;
     case ':':
       if ((p + 1u) == end) {
-        return "':' at the end of an angle";
+        snprintf(why, why_size, "Illegal for : to appear at the end of %.*s",
+                 len, s + beg);
+        return false;
       }
       k = npiece;
       break;
     default:
-      return is_sign(x) ? "sign inside an angle" : "illegal character";
+      snprintf(why, why_size, "Illegal character %c in DMS string %.*s", x, len,
+               s + beg);
+      return false;
+    }
+    if (k == (npiece - 1)) {
+      snprintf(why, why_size, "Repeated %s component in %.*s",
+               component_names[k], len, s + beg);
+      return false;
     }
     if (k < npiece) {
-      return "degrees, minutes and seconds out of order";
+      snprintf(why, why_size, "%s component follows %s component in %.*s",
+               component_names[k], component_names[npiece - 1], len, s + beg);
+      return false;
     }
-    if ((k > 2) || (ncurrent == 0)) {
-      return "missing number in an angle";
+    if (ncurrent == 0) {
+      snprintf(why, why_size, "Missing numbers in %s component of %.*s",
+               component_names[k], len, s + beg);
+      return false;
+    }
+    if (k > 2) {
+      snprintf(why, why_size, "Extra text following seconds in DMS string %.*s",
+               len, s + beg);
+      return false;
     }
     whole[k] = current;
     if (digcount > 0) {
@@ -246,10 +301,14 @@ static const char *read_piece(const char *s, size_t beg, size_t end,
   }
   if (strchr("Dd'\":", s[end - 1u]) == NULL) {
     if (npiece >= 3) {
-      return "extra text after the seconds";
+      snprintf(why, why_size, "Extra text following seconds in DMS string %.*s",
+               len, s + beg);
+      return false;
     }
     if (ncurrent == 0) {
-      return "missing number in an angle";
+      snprintf(why, why_size, "Missing numbers in trailing component of %.*s",
+               len, s + beg);
+      return false;
     }
     whole[npiece] = current;
     if (digcount > 0) {
@@ -257,13 +316,33 @@ static const char *read_piece(const char *s, size_t beg, size_t end,
     }
   }
   if (point && (digcount == 0)) {
-    return "decimal point before the last component";
+    snprintf(why, why_size, "Decimal point in non-terminal component of %.*s",
+             len, s + beg);
+    return false;
   }
-  if ((whole[1] >= 60) || (whole[2] >= 60)) {
-    return "minutes or seconds not in [0, 60)";
+  for (k_check = 1; k_check < 3; k_check++) {
+    if (whole[k_check] >= 60) {
+      /* GeoConvert quotes the component with its fraction */
+      int64_t v = whole[k_check] * units[k_check];
+      char number[32];
+      bool ignored;
+
+      if (frac_piece == k_check) {
+        v += (int64_t)divide_round_even(frac * (u128)(uint64_t)units[k_check],
+                                        pow10_u128(frac_digits), frac_above,
+                                        &ignored);
+      }
+      geo_text_put_general(number, sizeof number, v, units[k_check], false);
+      snprintf(why, why_size, "%s %s not in range [0, 60)",
+               (k_check == 1) ? "Minutes" : "Seconds", number);
+      return false;
+    }
   }
-  if (whole[0] > GEO_TEXT_DEGREES_MAX) {
-    return "angle too large";
+  out->too_large = (whole[0] > GEO_TEXT_DEGREES_MAX);
+  if (out->too_large) {
+    /* GeoConvert reads it; drdc cannot hold it (the caller says so
+     * after GeoConvert's own checks of the other word) */
+    whole[0] = 0;
   }
   nas = (whole[0] * units[0]) + (whole[1] * units[1]) + (whole[2] * units[2]);
   if (frac_piece >= 0) {
@@ -274,10 +353,11 @@ static const char *read_piece(const char *s, size_t beg, size_t end,
   out->nas = sign * nas;
   out->negative = (sign < 0);
   out->exact = exact;
-  return NULL;
+  return true;
 }
 
-const char *geo_text_read_angle(const char *text, geo_text_angle_t *out)
+bool geo_text_read_angle(const char *text, geo_text_angle_t *out, char *why,
+                         size_t why_size)
 {
   char s[TOKEN_MAX + 1];
   size_t i;
@@ -286,10 +366,11 @@ const char *geo_text_read_angle(const char *text, geo_text_angle_t *out)
   size_t p;
   size_t pb;
   int pieces = 0;
-  geo_text_angle_t sum = {0, true, true, GEO_TEXT_NONE};
+  geo_text_angle_t sum = {0, true, true, GEO_TEXT_NONE, false};
 
   if (strlen(text) > TOKEN_MAX) {
-    return "angle text too long";
+    snprintf(why, why_size, "angle text longer than %d bytes", TOKEN_MAX);
+    return false;
   }
   strcpy(s, text);
   for (i = 0; i < (sizeof aliases / sizeof aliases[0]); i++) {
@@ -305,7 +386,6 @@ const char *geo_text_read_angle(const char *text, geo_text_angle_t *out)
   for (p = beg; p < end; p = pb, pieces++) {
     size_t pa = p;
     geo_text_angle_t piece;
-    const char *why;
 
     if ((pieces == 0) && (hemisphere_of(s[pa]) != 0)) {
       pa++;
@@ -315,16 +395,17 @@ const char *geo_text_read_angle(const char *text, geo_text_angle_t *out)
     }
     for (pb = pa; (pb < end) && !is_sign(s[pb]); pb++) {
     }
-    why = read_piece(s, p, pb, &piece);
-    if (why != NULL) {
-      return why;
+    if (!read_piece(s, p, pb, &piece, why, why_size)) {
+      return false;
     }
     /* each piece and the sum stay within GEO_TEXT_DEGREES_MAX: no
      * overflow here nor when the sum is printed */
     sum.nas += piece.nas;
     if ((sum.nas > (GEO_TEXT_DEGREES_MAX * GEO_TEXT_NAS_PER_DEGREE)) ||
-        (sum.nas < -(GEO_TEXT_DEGREES_MAX * GEO_TEXT_NAS_PER_DEGREE))) {
-      return "angle too large";
+        (sum.nas < -(GEO_TEXT_DEGREES_MAX * GEO_TEXT_NAS_PER_DEGREE)) ||
+        piece.too_large) {
+      sum.too_large = true;
+      sum.nas = 0;
     }
     /* GeoConvert sums from -0.0: the sum is a negative zero only when
      * every piece is one */
@@ -334,60 +415,97 @@ const char *geo_text_read_angle(const char *text, geo_text_angle_t *out)
       sum.hemisphere = piece.hemisphere;
     } else if ((piece.hemisphere != GEO_TEXT_NONE) &&
                (piece.hemisphere != sum.hemisphere)) {
-      return "incompatible hemisphere letters";
+      snprintf(why, why_size, "Incompatible hemisphere specifier in %.*s",
+               (int)(end - beg), s + beg);
+      return false;
     }
   }
   if (pieces == 0) {
-    return "empty or incomplete angle";
+    snprintf(why, why_size, "Empty or incomplete DMS string %s", s);
+    return false;
   }
   if (sum.nas != 0) {
     sum.negative = (sum.nas < 0);
   }
   *out = sum;
-  return NULL;
+  return true;
 }
 
 bool geo_text_read_metres(const char *s, int64_t *q16, bool *exact)
 {
   bool neg = false;
-  int64_t ip = 0;
-  int ipd = 0;
-  u128 fp = 0;
-  int fd = 0;
-  bool above = false;
-  bool digits = false;
+  u128 digits = 0;    /* the significant digits kept, as an integer */
+  int kept = 0;       /* how many */
+  int scale = 0;      /* value = digits * 10^scale (before the exponent) */
+  bool above = false; /* nonzero digits dropped after those kept */
+  bool any = false;
+  bool point = false;
+  int exponent = 0;
   u128 v;
 
   if ((*s == '+') || (*s == '-')) {
     neg = (*s == '-');
     s++;
   }
-  while (isdigit((unsigned char)*s)) {
-    if (++ipd > 12) {
-      return false;
+  for (; isdigit((unsigned char)*s) || ((*s == '.') && !point); s++) {
+    if (*s == '.') {
+      point = true;
+      continue;
     }
-    ip = (ip * 10) + (*s - '0');
-    s++;
-    digits = true;
-  }
-  if (*s == '.') {
-    s++;
-    while (isdigit((unsigned char)*s)) {
-      if (fd < FRACTION_DIGITS_MAX) {
-        fp = (fp * 10u) + (u128)(unsigned)(*s - '0');
-        fd++;
-      } else if (*s != '0') {
-        above = true;
-      }
-      s++;
-      digits = true;
+    any = true;
+    if ((kept < METRE_DIGITS_KEPT) && ((kept > 0) || (*s != '0'))) {
+      digits = (digits * 10u) + (u128)(unsigned)(*s - '0');
+      kept++;
+      scale -= point ? 1 : 0;
+    } else if (kept == METRE_DIGITS_KEPT) {
+      scale += point ? 0 : 1; /* a dropped integer digit */
+      above = above || (*s != '0');
+    } else {
+      scale -= point ? 1 : 0; /* a leading zero after the point */
     }
   }
-  if ((*s != '\0') || !digits) {
+  if (!any) {
     return false;
   }
-  v = divide_round_even(fp * 65536u, pow10_u128(fd), above, exact);
-  v += (u128)ip * 65536u;
+  if ((*s == 'e') || (*s == 'E')) {
+    int sign = 1;
+
+    s++;
+    if ((*s == '+') || (*s == '-')) {
+      sign = (*s == '-') ? -1 : 1;
+      s++;
+    }
+    if (!isdigit((unsigned char)*s)) {
+      return false;
+    }
+    for (; isdigit((unsigned char)*s); s++) {
+      exponent = (exponent < 10000) ? ((exponent * 10) + (*s - '0')) : 10000;
+    }
+    exponent *= sign;
+  }
+  if (*s != '\0') {
+    return false;
+  }
+  scale += exponent;
+  if (digits == 0u) {
+    v = 0;
+    *exact = !above;
+  } else if (scale >= 0) {
+    /* an integer: at most METRE_INTEGER_MAX */
+    if ((scale > 12) || (digits * pow10_u128(scale) > METRE_INTEGER_MAX)) {
+      return false;
+    }
+    v = digits * pow10_u128(scale) * 65536u;
+    *exact = !above;
+  } else if (scale < -38) {
+    v = 0; /* below 2^-17 m: 10^-38 of 33 digits */
+    *exact = false;
+  } else {
+    v = divide_round_even(digits * 65536u, pow10_u128(-scale), above, exact);
+    if (v > (METRE_INTEGER_MAX * 65536u)) {
+      return false;
+    }
+  }
   *q16 = neg ? -(int64_t)v : (int64_t)v;
   return true;
 }
@@ -415,9 +533,9 @@ static void put_string(struct text *t, const char *s)
 }
 
 /* v in decimal with at least `digits` digits (zero-filled). */
-static void put_uint(struct text *t, uint64_t v, int digits)
+static void put_uint(struct text *t, u128 v, int digits)
 {
-  char d[24];
+  char d[48];
   int n = 0;
 
   do {
@@ -440,20 +558,20 @@ static void start(struct text *t, char *out, size_t size)
 }
 
 /* |value| * 10^decimals / unit rounded half to even. */
-static uint64_t scaled_magnitude(int64_t value, int64_t unit, int decimals)
+static u128 scaled_magnitude(int64_t value, int64_t unit, int decimals)
 {
   u128 mag = (value < 0) ? (u128)(-(value + 1)) + 1u : (u128)value;
   bool exact;
 
-  return (uint64_t)divide_round_even(mag * pow10_u128(decimals), (u128)unit,
-                                     false, &exact);
+  return divide_round_even(mag * pow10_u128(decimals), (u128)unit, false,
+                           &exact);
 }
 
 void geo_text_put_fixed(char *out, size_t size, int64_t value, int64_t unit,
                         int decimals, bool negative)
 {
-  uint64_t q = scaled_magnitude(value, unit, decimals);
-  uint64_t p = (uint64_t)pow10_u128(decimals);
+  u128 q = scaled_magnitude(value, unit, decimals);
+  u128 p = pow10_u128(decimals);
   struct text t;
 
   start(&t, out, size);
@@ -467,6 +585,134 @@ void geo_text_put_fixed(char *out, size_t size, int64_t value, int64_t unit,
   }
 }
 
+static int bit_length(u128 v)
+{
+  int n = 0;
+
+  while (v != 0u) {
+    v >>= 1;
+    n++;
+  }
+  return n;
+}
+
+/* mag / den (mag, den > 0, the quotient below 2^64) rounded to the
+ * nearest double, as *m / 2^*shift with 2^52 <= *m < 2^53: the number
+ * GeoConvert holds when it reads the value's text or divides by a power
+ * of ten, correctly rounded. mag * 2^shift stays below 2^110 for the
+ * quotients drdc geo quotes (>= 1 nas of a degree, 2^-16 m of a km). */
+static void nearest_double(u128 mag, u128 den, u128 *m, int *shift)
+{
+  u128 limit = (u128)1 << 53;
+  int s = 52 - (bit_length(mag) - bit_length(den));
+  u128 num;
+  u128 d;
+  u128 q;
+  bool exact;
+
+  for (;;) {
+    num = (s >= 0) ? (mag << s) : mag;
+    d = (s >= 0) ? den : (den << -s);
+    q = num / d;
+    if (q >= limit) {
+      s--;
+    } else if (q < (limit >> 1)) {
+      s++;
+    } else {
+      break;
+    }
+  }
+  q = divide_round_even(num, d, false, &exact);
+  if (q == limit) {
+    q >>= 1;
+    s--;
+  }
+  *m = q;
+  *shift = s;
+}
+
+void geo_text_put_general(char *out, size_t size, int64_t value, int64_t unit,
+                          bool negative)
+{
+  u128 mag = (value < 0) ? (u128)(-(value + 1)) + 1u : (u128)value;
+  u128 den = (u128)unit;
+  int shift;
+  int exponent = 0; /* 10^exponent <= mag / den < 10^(exponent + 1) */
+  u128 q;
+  u128 rest;
+  bool exact;
+  char digits[8];
+  int decimals;
+  int n;
+  struct text t;
+
+  start(&t, out, size);
+  if ((value < 0) || ((value == 0) && negative)) {
+    put_char(&t, '-');
+  }
+  if (mag == 0u) {
+    put_char(&t, '0');
+    return;
+  }
+  /* printf rounds the double's exact binary value, half to even */
+  nearest_double(mag, den, &mag, &shift);
+  den = (shift >= 0) ? ((u128)1 << shift) : 1u;
+  mag = (shift >= 0) ? mag : (mag << -shift);
+  while (mag >= (den * pow10_u128(exponent + 1))) {
+    exponent++;
+  }
+  while ((mag * pow10_u128(-exponent)) < den) {
+    exponent--;
+  }
+  /* the 6 significant digits, rounded half to even from the exact value */
+  if (exponent <= 5) {
+    q = divide_round_even(mag * pow10_u128(5 - exponent), den, false, &exact);
+  } else {
+    q = divide_round_even(mag, den * pow10_u128(exponent - 5), false, &exact);
+  }
+  if (q == 1000000u) {
+    q = 100000u;
+    exponent++;
+  }
+  for (n = 5, rest = q; n >= 0; n--) {
+    digits[n] = (char)('0' + (int)(rest % 10u));
+    rest /= 10u;
+  }
+  digits[6] = '\0';
+  if ((exponent < -4) || (exponent >= 6)) {
+    /* d.ddddde+XX without trailing zeros */
+    for (n = 6; (n > 1) && (digits[n - 1] == '0'); n--) {
+    }
+    put_char(&t, digits[0]);
+    if (n > 1) {
+      put_char(&t, '.');
+      for (decimals = 1; decimals < n; decimals++) {
+        put_char(&t, digits[decimals]);
+      }
+    }
+    put_char(&t, 'e');
+    put_char(&t, (exponent < 0) ? '-' : '+');
+    put_uint(&t, (u128)(unsigned)((exponent < 0) ? -exponent : exponent), 2);
+    return;
+  }
+  /* fixed: q / 10^decimals, trailing zeros of the fraction dropped */
+  {
+    uint64_t whole = (uint64_t)(q / pow10_u128(5 - exponent));
+    uint64_t fraction = (uint64_t)(q % pow10_u128(5 - exponent));
+
+    decimals = 5 - exponent;
+    while ((decimals > 0) && ((fraction % 10u) == 0u)) {
+      fraction /= 10u;
+      decimals--;
+    }
+    put_uint(&t, whole, 1);
+    if (decimals > 0) {
+      put_char(&t, '.');
+      put_uint(&t, fraction, decimals);
+    }
+  }
+}
+
 void geo_text_put_dms(char *out, size_t size, int64_t nas, bool negative,
                       int prec, enum geo_text_hemisphere which, char sep)
 {
@@ -475,9 +721,9 @@ void geo_text_put_dms(char *out, size_t size, int64_t nas, bool negative,
   int decimals = prec - (2 * last);
   const int64_t units[3] = {GEO_TEXT_NAS_PER_DEGREE, GEO_TEXT_NAS_PER_MINUTE,
                             GEO_TEXT_NAS_PER_SECOND};
-  uint64_t total = scaled_magnitude(nas, units[last], decimals);
-  uint64_t p = (uint64_t)pow10_u128(decimals);
-  uint64_t whole = total / p;
+  u128 total = scaled_magnitude(nas, units[last], decimals);
+  u128 p = pow10_u128(decimals);
+  u128 whole = total / p;
   int width = (int)which + 1; /* degree digits: 2 latitude, 3 longitude */
   bool south_or_west = (nas < 0) || ((nas == 0) && negative);
   struct text t;

@@ -16,8 +16,10 @@
 #define GEO_TEXT_NAS_PER_DEGREE INT64_C(3600000000000)
 #define GEO_TEXT_NAS_PER_MINUTE INT64_C(60000000000)
 #define GEO_TEXT_NAS_PER_SECOND INT64_C(1000000000)
-/** Largest |angle| read, degrees: its decimals at -p 9 fit 64 bits. */
-#define GEO_TEXT_DEGREES_MAX 100000
+/** Largest |angle| held, degrees: in nas, it and the sum of two pieces
+ *  fit int64. GeoConvert reads any; a larger angle is read (so that the
+ *  text's other errors come first) and marked too_large. */
+#define GEO_TEXT_DEGREES_MAX 1000000
 
 /** Which coordinate a hemisphere letter made of an angle. */
 enum geo_text_hemisphere {
@@ -33,6 +35,7 @@ typedef struct geo_text_angle {
                       ("-0", "0S"), as the sign bit of GeoConvert's double */
   bool exact;    /**< nas is the text's value exactly, no rounding */
   enum geo_text_hemisphere hemisphere; /**< from N, S, E or W, or NONE */
+  bool too_large; /**< |angle| beyond GEO_TEXT_DEGREES_MAX: nas is 0 */
 } geo_text_angle_t;
 
 /**
@@ -43,13 +46,17 @@ typedef struct geo_text_angle {
  * letter N S E W before or after; interior signs add pieces
  * ("39N+0:0:15"). No exponent, nan or inf.
  *
- * @return NULL and *out written, or the reason the text is not an angle.
+ * @param[out] why on failure, GeoConvert's message for the text (quoting
+ *        the offending piece as it does), cut at why_size.
+ * @return true and *out written, or false and *why written.
  */
-const char *geo_text_read_angle(const char *text, geo_text_angle_t *out);
+bool geo_text_read_angle(const char *text, geo_text_angle_t *out, char *why,
+                         size_t why_size);
 
 /**
- * Read a decimal number of metres, [+-]digits[.digits] (at most 12
- * integer digits), to Q47.16, rounded to nearest (ties to even).
+ * Read a decimal number of metres, [+-]digits[.digits][e[+-]digits] (at
+ * most 1e12 m), to Q47.16, rounded to nearest (ties to even) from its
+ * exact value.
  *
  * @param[out] exact true when no rounding happened.
  * @return true when the text is such a number.
@@ -65,6 +72,17 @@ bool geo_text_read_metres(const char *text, int64_t *q16, bool *exact);
  */
 void geo_text_put_fixed(char *out, size_t size, int64_t value, int64_t unit,
                         int decimals, bool negative);
+
+/**
+ * Write value / unit as printf("%g") writes the double nearest to it (as
+ * GeoConvert's error messages quote the numbers it read or divided):
+ * the quotient rounded to 53 significant bits, then to 6 significant
+ * digits from that binary value, half to even; trailing zeros dropped,
+ * an exponent (1e-05, 1.5e+06) below 1e-4 and from 1e6 on. A '-' as for
+ * geo_text_put_fixed(). unit > 0, |value| / unit >= 2^-64.
+ */
+void geo_text_put_general(char *out, size_t size, int64_t value, int64_t unit,
+                          bool negative);
 
 /**
  * Write an angle as GeoConvert's DMS::Encode with `prec` digits (0..15):
