@@ -72,6 +72,16 @@ PREPARE = {
                             "wine.py"), "--init"],
 }
 _prepared = set()
+
+
+def prepare(profile):
+    """Do once what PREPARE says the profile needs before its first image
+    runs (nothing for the others)."""
+    if profile in PREPARE and profile not in _prepared:
+        subprocess.run(PREPARE[profile], stdin=subprocess.DEVNULL,
+                       stdout=subprocess.DEVNULL, check=True)
+        _prepared.add(profile)
+
 # Boards whose exit status carries the number of failed tests. On ppc-e500
 # the reset request always ends QEMU with 0: the console is the verdict.
 EXIT_STATUS_MEANINGFUL = {"host": True, "ppc-e500": False, "arm-cm3": True,
@@ -143,10 +153,7 @@ def boot(profile, image, inactivity, timeout, max_bytes, echo=None, extra=()):
                          % (profile, ", ".join(PROFILES)))
     if not os.path.exists(image):
         return b"", None, "image not found: %s" % image
-    if profile in PREPARE and profile not in _prepared:
-        subprocess.run(PREPARE[profile], stdin=subprocess.DEVNULL,
-                       stdout=subprocess.DEVNULL, check=True)
-        _prepared.add(profile)
+    prepare(profile)
     cmd = command(profile, image, extra)
     proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, start_new_session=True)
