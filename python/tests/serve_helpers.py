@@ -100,3 +100,21 @@ def ensure_judge():
 def fast_limits():
     """Default limits, with a rate limit that a test's burst stays within."""
     return Limits(rate=10000.0, burst=10000.0)
+
+
+def main():
+    """A service with the stand-in judge when drdc.conformance is missing,
+    for the fuzz run of docs/service.md (a rate limit above the fuzzer's
+    pace: every request comes from 127.0.0.1)."""
+    import argparse
+    from drdc.serve.app import Limits
+    ap = argparse.ArgumentParser(description=main.__doc__)
+    ap.add_argument("--port", type=int, default=8080)
+    args = ap.parse_args()
+    ensure_judge()
+    web.run_app(make_app(Limits(rate=1e9, burst=1e9)), host="127.0.0.1",
+                port=args.port, access_log=None)
+
+
+if __name__ == "__main__":
+    main()

@@ -231,7 +231,7 @@ def test_body_and_batch_caps(srv):
     status, _, answer = srv.request(
         "POST", "/v1/eval", {"function": "time_utc_to_gps",
                              "inputs": {"sec": [0] * n}})
-    assert status == 413, answer
+    assert status == 422, answer
     assert "at most %d" % Limits().batch in answer["error"]["reason"]
     # the cap itself is accepted
     body = ok(srv, "time_utc_to_gps", {"sec": [0] * (n - 1)})

@@ -78,7 +78,8 @@ def _arguments(f, inputs, max_batch):
         where = "inputs." + a.name
         if isinstance(v, list) and a.kind in ("int", "text"):
             if len(v) > max_batch:
-                raise RequestError(413, "%s: %d elements, at most %d a "
+                # 422, not 413: the body may be small, the work is not
+                raise RequestError(422, "%s: %d elements, at most %d a "
                                    "request" % (where, len(v), max_batch))
             if n is not None and len(v) != n:
                 raise _bad("%s: %d elements, the other lists have %d"
