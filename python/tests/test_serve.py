@@ -16,6 +16,7 @@ import drdc
 from cvectors import TOP, load
 from drdc.serve.app import Limits
 from drdc.serve.functions import EXAMPLES, FUNCTIONS
+from drdc.serve.limits import TokenBuckets
 from serve_helpers import Server, ensure_judge, fast_limits, runner_log
 
 OPENAPI = os.path.join(TOP, "python", "openapi.json")
@@ -299,3 +300,32 @@ def test_module_refuses_root_without_the_flag():
         assert "refusing to run as root" in r.stderr
     else:
         assert r.returncode == 0
+
+
+def test_timeout_answers_503_json():
+    # 10 000 geo_to_utm take about 13 ms in the library alone
+    s = Server(Limits(rate=1e9, burst=1e9, timeout=0.001))
+    try:
+        status, _, answer = s.request("POST", "/v1/eval", {
+            "function": "geo_to_utm",
+            "inputs": {"lat_nas": list(range(10000)), "lon_nas": 0}})
+    finally:
+        s.stop()
+    assert status == 503, answer
+    assert answer["error"]["reason"] == "request took more than 0.001 s"
+
+
+def test_token_bucket_refills_and_forgets():
+    now = [0.0]
+    b = TokenBuckets(rate=2.0, burst=3.0, max_clients=4,
+                     clock=lambda: now[0])
+    assert [b.take("a")[0] for _ in range(4)] == [True, True, True, False]
+    assert b.take("a") == (False, 0.5)
+    now[0] += 0.5  # one token back
+    assert b.take("a") == (True, 0.0)
+    assert b.take("a")[0] is False
+    for c in "bcd":
+        b.take(c)
+    now[0] += 10.0  # every bucket full again: all of them may go
+    b.take("e")
+    assert set(b.buckets) == {"e"}
