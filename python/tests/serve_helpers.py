@@ -21,6 +21,11 @@ HOST_BUILD = os.environ.get("DRDC_HOST_BUILD", "")
 RUNNER = os.path.join(HOST_BUILD, "fw", "test-runner", "test-runner")
 
 
+class Chunks(list):
+    """A body sent in chunks, without a Content-Length (urllib sends an
+    iterable that way)."""
+
+
 class Server:
     def __init__(self, limits):
         self.limits = limits
@@ -54,7 +59,7 @@ class Server:
         data = body
         if isinstance(body, str):
             data = body.encode("utf-8")
-        elif body is not None and not isinstance(body, bytes):
+        elif body is not None and not isinstance(body, (bytes, Chunks)):
             data = json.dumps(body).encode()
             content_type = content_type or "application/json"
         h = dict(headers or {})

@@ -17,7 +17,8 @@ from cvectors import TOP, load
 from drdc.serve.app import Limits
 from drdc.serve.functions import EXAMPLES, FUNCTIONS
 from drdc.serve.limits import TokenBuckets
-from serve_helpers import Server, ensure_judge, fast_limits, runner_log
+from serve_helpers import (Chunks, Server, ensure_judge, fast_limits,
+                           runner_log)
 
 OPENAPI = os.path.join(TOP, "python", "openapi.json")
 
@@ -227,6 +228,11 @@ def test_body_and_batch_caps(srv):
         b"0, " * (1 << 19) + b'0], "lon_nas": 0}}'
     status, _, answer = srv.request("POST", "/v1/eval", big,
                                     "application/json")
+    assert status == 413 and answer["error"]["status"] == 413
+    # no Content-Length to refuse up front: the cap while reading
+    status, _, answer = srv.request("POST", "/v1/conformance",
+                                    Chunks([b"a" * (1 << 19)] * 3),
+                                    "text/plain")
     assert status == 413 and answer["error"]["status"] == 413
     n = Limits().batch + 1
     status, _, answer = srv.request(
