@@ -377,7 +377,7 @@ def configure(conf):
     everything = targets == list(TARGETS)
     # The checks' tools and Python packages only where ./waf check can run.
     groups = sorted({g for n in targets for g in TARGETS[n]["apt"]}
-                    | ({"check"} if everything else set()))
+                    | ({"check", "serve"} if everything else set()))
     try:
         found = deps.ensure_all(groups, python=everything)
     except deps.SetupError as e:
@@ -1002,6 +1002,36 @@ class RunBench(Build.BuildContext):
                           os.path.join(out, "bench", "report.json"),
                           "--docs", "docs"]) != 0:
             self.fatal("benchmark failed")
+
+
+def serve(ctx):
+    """run the gold-standard web service on 127.0.0.1:8080 (docs/service.md)"""
+    _build_all_then("run_serve", ["host"])
+
+
+class RunServe(Build.BuildContext):
+    """(internal) pip install ./python into the build, run drdc.serve"""
+    cmd = "run_serve"
+    variant = "host"
+
+    def execute(self):
+        self.restore()
+        if not self.all_envs:
+            self.load_envs()
+        _ensure_for(self, [])  # aiohttp and numpy
+        site = os.path.join(out, "python", "serve-site")
+        if _python(self, ["-m", "pip", "install", "--quiet", "--no-index",
+                          "--no-deps", "--disable-pip-version-check",
+                          "--root-user-action=ignore", "--upgrade",
+                          "--target", site,
+                          os.path.join(self.path.abspath(), "python")]) != 0:
+            self.fatal("pip install ./python failed")
+        env = {"PYTHONPATH": os.pathsep.join([site, self.env.PYTHONPATH])}
+        args = os.environ.get("DRDC_SERVE_ARGS", "").split()
+        try:
+            _python(self, ["-m", "drdc.serve"] + args, env)
+        except KeyboardInterrupt:
+            pass
 
 
 class RunChecks(Build.BuildContext):

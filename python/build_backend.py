@@ -127,7 +127,10 @@ def _metadata(version):
             "Summary: libdrdc-fx from Python: the firmware's exact integers\n"
             "License: BSD-2-Clause\n"
             "Requires-Python: >=3.9\n"
-            "Requires-Dist: numpy>=1.24\n" % (NAME, version))
+            "Requires-Dist: numpy>=1.24\n"
+            "Provides-Extra: serve\n"
+            "Requires-Dist: aiohttp>=3.9; extra == \"serve\"\n"
+            % (NAME, version))
 
 
 def _tag():
@@ -146,9 +149,12 @@ def build_wheel(wheel_directory, config_settings=None,
     tag = _tag()
     dist_info = "%s-%s.dist-info" % (NAME, version)
     files = {}
-    for path in sorted(glob.glob(os.path.join(HERE, NAME, "*.py"))):
-        with open(path, "rb") as f:
-            files["%s/%s" % (NAME, os.path.basename(path))] = f.read()
+    # the package, and the service's subpackage with its page
+    for pattern in ("*.py", "serve/*.py", "serve/*.html"):
+        for path in sorted(glob.glob(os.path.join(HERE, NAME, pattern))):
+            with open(path, "rb") as f:
+                files["%s/%s" % (NAME, os.path.relpath(
+                    path, os.path.join(HERE, NAME)))] = f.read()
     # the version of core/include/drdc/version.h, for drdc.__version__
     files[NAME + "/_version.py"] = (
         "# Written by python/build_backend.py from core/include/drdc/"

@@ -88,6 +88,9 @@ APT_GROUPS = {
         "device-tree-compiler": "1.6.1-4+b1",
     },
 }
+# the gold-standard service's check (python/tests/test_serve_page.py):
+# headless Chromium loads the page, as a person's browser would
+APT_GROUPS["serve"] = {"chromium": "156.0.8078.108-1~deb12u1"}
 # ./waf docs: the API reference and the error plots of docs/accuracy.md
 APT_GROUPS["docs"] = {p: APT_GROUPS["check"][p]
                       for p in ("doxygen", "geographiclib-tools")}
@@ -181,6 +184,28 @@ PYTHON_PACKAGES = {
         "9121e2c1fdb355232495be3194c8dfe87ccc2d5dee45947b78e68f499790d7a7",
     "pygments==2.21.0":
         "2363c69b61c4a97c838da3b130dcd6468f4848992b21a82f2a63ec34377137d9",
+    # the gold-standard service (python/drdc/serve/): aiohttp's server
+    # (body cap, timeouts), its client drives Chromium's DevTools
+    # websocket in the page's test and the load test; cp311 manylinux
+    # wheels and pure-Python ones (typing_extensions is pinned above)
+    "aiohttp==3.14.5":
+        "50a195903119008fe9cc68710535eb37f556ffffd6a7759afe70a2c145587045",
+    "aiohappyeyeballs==2.7.1":
+        "9243213661e29250eb41368e5daa826fc017156c3b8a11440826b2e3ed376472",
+    "aiosignal==1.4.0":
+        "053243f8b92b990551949e63930a839ff0cf0b0ebbe0597b0f3fb19e1a0fe82e",
+    "attrs==26.1.0":
+        "c647aa4a12dfbad9333ca4e71fe62ddc36f4e63b2d260a37a8b83d2f043ac309",
+    "frozenlist==1.8.0":
+        "2552f44204b744fba866e573be4c1f9048d6a324dfe14475103fd51613eb1d1f",
+    "idna==3.20":
+        "ab7ae7122974553370f0bdb919e1a960b2cd1bc1ef0276416d896db81c14582c",
+    "multidict==7.2.1":
+        "3b7542fad2706595c1b1853b46f2c3c4ae5cc5a6252b7225f294d607a29e1bdf",
+    "propcache==0.5.4":
+        "6e9368e87a3efc285e559131092c5db643eb8e56de4ee42064d5baec22ef2bb5",
+    "yarl==1.25.1":
+        "d5add7b4ca7afeea91d52e4d4e4db3b1fe9885b71f07054560d8c4296b7441a2",
 }
 
 DEB_SRC_LIST = "/etc/apt/sources.list.d/drdc-deb-src.sources"

@@ -1,0 +1,190 @@
+# SPDX-License-Identifier: BSD-2-Clause
+"""The service's page in headless Chromium (Debian's chromium, pinned in
+tools/deps.py's "serve" group), driven over the Chrome DevTools protocol
+with aiohttp's websocket client: load the page, upload the host
+test-runner's console log through the file input, click Judge and read
+the verdict the page shows; paste a changed log and see it differ; run
+a conversion and compare the page's numbers with the package's."""
+import asyncio
+import base64
+import json
+import os
+import shutil
+import subprocess
+import tempfile
+import time
+import urllib.request
+
+import aiohttp
+import pytest
+
+import drdc
+from serve_helpers import Server, ensure_judge, fast_limits, runner_log
+
+CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu",
+                  "--disable-quic", "--no-first-run",
+                  "--disable-background-networking",
+                  "--disable-component-update", "--disable-sync",
+                  "--remote-debugging-port=0"]
+
+
+def _chromium():
+    path = shutil.which("chromium")
+    if path is None:
+        if os.environ.get("DRDC_REQUIRE_HOST_TOOLS"):
+            pytest.fail("chromium is missing (tools/deps.py, group serve)")
+        pytest.skip("no chromium")
+    return path
+
+
+class Page:
+    """One page target over its DevTools websocket."""
+
+    def __init__(self, ws):
+        self.ws = ws
+        self.next_id = 0
+
+    async def call(self, method, **params):
+        self.next_id += 1
+        mine = self.next_id
+        await self.ws.send_str(json.dumps({"id": mine, "method": method,
+                                           "params": params}))
+        while True:
+            msg = json.loads((await self.ws.receive(timeout=60)).data)
+            if msg.get("id") == mine:
+                if "error" in msg:
+                    raise RuntimeError("%s: %s" % (method, msg["error"]))
+                return msg["result"]
+
+    async def js(self, expression):
+        r = await self.call("Runtime.evaluate", expression=expression,
+                            returnByValue=True, awaitPromise=True)
+        if "exceptionDetails" in r:
+            raise RuntimeError(r["exceptionDetails"])
+        return r["result"].get("value")
+
+    async def until(self, expression, seconds=30):
+        end = time.monotonic() + seconds
+        while time.monotonic() < end:
+            value = await self.js(expression)
+            if value:
+                return value
+            await asyncio.sleep(0.1)
+        raise AssertionError("page never showed: " + expression)
+
+
+def _devtools_port(profile, proc):
+    """The port Chromium chose, from the file it writes into its profile."""
+    path = os.path.join(profile, "DevToolsActivePort")
+    end = time.monotonic() + 60
+    while time.monotonic() < end:
+        if proc.poll() is not None:
+            raise RuntimeError("chromium exited with %d" % proc.returncode)
+        if os.path.exists(path):
+            lines = open(path).read().split()
+            if lines:
+                return int(lines[0])
+        time.sleep(0.1)
+    raise RuntimeError("chromium wrote no DevToolsActivePort")
+
+
+def _page_socket(port, url):
+    end = time.monotonic() + 30
+    while time.monotonic() < end:
+        with urllib.request.urlopen("http://127.0.0.1:%d/json/list" % port,
+                                    timeout=10) as r:
+            for t in json.load(r):
+                if t.get("type") == "page" and t["url"].startswith(url):
+                    return t["webSocketDebuggerUrl"]
+        time.sleep(0.1)
+    raise RuntimeError("no page target for " + url)
+
+
+async def _drive(ws_url, log_path, log_text):
+    async with aiohttp.ClientSession() as session:
+        async with session.ws_connect(ws_url, max_msg_size=0) as ws:
+            page = Page(ws)
+            await page.until("document.body && document.body.dataset.ready")
+            # upload: the file input, as a person choosing the log's file
+            doc = await page.call("DOM.getDocument")
+            node = await page.call("DOM.querySelector",
+                                   nodeId=doc["root"]["nodeId"],
+                                   selector="#log-file")
+            await page.call("DOM.setFileInputFiles", files=[log_path],
+                            nodeId=node["nodeId"])
+            await page.until("document.getElementById('log').value"
+                             ".includes('GOLDEN DIGEST')")
+            await page.js("document.getElementById('judge').click()")
+            uploaded = await page.until(
+                "(t => t !== '-' && t !== 'judging...' && t)"
+                "(document.getElementById('verdict').textContent)")
+            rows = await page.js("document.querySelectorAll('#modules tr')"
+                                 ".length")
+            # paste: a log whose digest differs
+            changed = log_text.replace("GOLDEN DIGEST: 0x6d842393",
+                                       "GOLDEN DIGEST: 0x00000000")
+            await page.js("document.getElementById('log').value = %s; "
+                          "document.getElementById('judge').click()"
+                          % json.dumps(changed))
+            pasted = await page.until(
+                "(t => t.startsWith('differs') && t)"
+                "(document.getElementById('verdict').textContent)")
+            # a conversion: the page's example of geo_to_utm
+            await page.js("document.getElementById('function').value = "
+                          "'geo_to_utm'; document.getElementById('function')"
+                          ".dispatchEvent(new Event('change')); "
+                          "document.getElementById('evaluate').click()")
+            result = await page.until(
+                "(t => t.startsWith('{') && t)"
+                "(document.getElementById('result').textContent)")
+            shot = os.environ.get("DRDC_SERVE_SCREENSHOT")
+            if shot:
+                png = await page.call("Page.captureScreenshot")
+                with open(shot, "wb") as f:
+                    f.write(base64.b64decode(png["data"]))
+            return uploaded, rows, pasted, json.loads(result)
+
+
+def test_page_in_headless_chromium():
+    chromium = _chromium()
+    log = runner_log()
+    if log is None:
+        pytest.skip("no host build (DRDC_HOST_BUILD)")
+    ensure_judge()
+    srv = Server(fast_limits())
+    work = tempfile.mkdtemp(prefix="drdc-serve-page-")
+    profile = os.path.join(work, "profile")
+    os.mkdir(profile)
+    log_path = os.path.join(work, "test-runner.log")
+    with open(log_path, "w") as f:
+        f.write(log)
+    proc = subprocess.Popen(
+        [chromium] + CHROMIUM_FLAGS + ["--user-data-dir=" + profile,
+                                       srv.url + "/"],
+        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        port = _devtools_port(profile, proc)
+        ws_url = _page_socket(port, srv.url)
+        uploaded, rows, pasted, result = asyncio.run(
+            asyncio.wait_for(_drive(ws_url, log_path, log), 120))
+    finally:
+        proc.terminate()
+        try:
+            proc.wait(30)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            proc.wait()
+        srv.stop()
+        shutil.rmtree(work, ignore_errors=True)
+    assert uploaded == ("conforms (digest 0x6d842393, expected "
+                        "0x6d842393)")
+    assert rows == 1 + len(drdc.conformance.reference_digests())
+    assert pasted.startswith("differs (digest 0x00000000")
+    want = drdc.geo_to_utm_array([180972000000000, 36000000000000],
+                                 [-400212000000000, 72000000000000])
+    assert result["outputs"]["easting_q47_16"] == \
+        want.easting_q47_16.tolist()
+    # geo.h's example: lat 10, lon 20 is 34n 390 399.2275 1 105 578.5892
+    assert result["outputs"]["zone"] == want.zone.tolist() == [12, 34]
+    assert round(result["outputs"]["easting_q47_16"][1] / 65536, 4) == \
+        390399.2275
