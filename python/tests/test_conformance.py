@@ -212,3 +212,16 @@ def test_mutated_logs_never_crash(broken_log):
         except ValueError:
             continue
         assert verdict["verdict"] in ("conforms", "differs", "incomplete")
+
+
+def test_reference_records_match_the_runner_tables():
+    # every record of every part carries its function, and the package
+    # counts the records golden-trace wrote into golden_expected.c
+    with open(os.path.join(TOP, "tests", "golden",
+                           "golden_expected.c")) as f:
+        counts = [int(n) for n in re.findall(r"\{(\d+)u, sizeof", f.read())]
+    assert len(counts) == 7
+    for part, count in enumerate(counts):
+        records, total = conformance._reference(part, 0, (1 << 32) - 1)
+        assert total == count == len(records)
+        assert not [i for i, r in records.items() if r[0] == "?"]
