@@ -52,15 +52,22 @@ static void golden_euler(golden_t *g, drdc_euler_t *e)
 }
 
 #if GOLDEN_TRACE
+static const char *const we_names[6] = {"lat_nas", "lon_nas", "height_q47_16",
+                                        "yaw",     "pitch",   "roll"};
+static const char *const ref_names[6] = {"ref.lat_nas",       "ref.lon_nas",
+                                         "ref.height_q47_16", "ref.yaw",
+                                         "ref.pitch",         "ref.roll"};
+
 /* The fields of a {We} pose as inputs of the current function. */
-static void golden_we(golden_t *g, const drdc_WePose_t *w)
+static void golden_we(golden_t *g, const char *const names[6],
+                      const drdc_WePose_t *w)
 {
-  golden_in(g, "lat_nas", w->latitude);
-  golden_in(g, "lon_nas", w->longitude);
-  golden_in(g, "height_q47_16", w->height);
-  golden_in(g, "yaw", w->e.yaw);
-  golden_in(g, "pitch", w->e.pitch);
-  golden_in(g, "roll", w->e.roll);
+  golden_in(g, names[0], w->latitude);
+  golden_in(g, names[1], w->longitude);
+  golden_in(g, names[2], w->height);
+  golden_in(g, names[3], w->e.yaw);
+  golden_in(g, names[4], w->e.pitch);
+  golden_in(g, names[5], w->e.roll);
 }
 
 /* The fields of an {le} pose as inputs of the current function. */
@@ -74,8 +81,8 @@ static void golden_le(golden_t *g, const drdc_lePose_t *le)
   golden_in(g, "roll", le->e.roll);
 }
 #else
-#define golden_we(g, w)  ((void)(g))
-#define golden_le(g, le) ((void)(g))
+#define golden_we(g, names, w) ((void)(g))
+#define golden_le(g, le)       ((void)(g))
 #endif
 
 static void fold_we(golden_t *g, const drdc_WePose_t *w)
@@ -125,7 +132,7 @@ static void golden_mgrs_poses(golden_t *g)
   }
   prec = (int32_t)(golden_next(g) % 13u) - 1;
   golden_fn(g, "drdc_pose_wemgrs_from_we");
-  golden_we(g, &we);
+  golden_we(g, we_names, &we);
   golden_in(g, "prec", prec);
   golden_i32(g, (int32_t)drdc_pose_wemgrs_from_we(&we, prec, &m));
   for (k = 0u; k < sizeof m.mgrs; k++) {
@@ -177,14 +184,14 @@ static void golden_local_poses(golden_t *g)
   golden_i32(g, (int32_t)drdc_pose_le_from_l(&l, &le_back));
   fold_le(g, &le_back);
   golden_fn(g, "drdc_pose_we_from_le");
-  golden_we(g, &ref);
+  golden_we(g, ref_names, &ref);
   golden_le(g, &le);
   golden_i32(g, (int32_t)drdc_pose_we_from_le(&ref, 0, &le, &we));
   fold_we(g, &we);
   le_back = le_blank;
   golden_fn(g, "drdc_pose_le_from_we");
-  golden_we(g, &we);
-  golden_in_text(g, "reference", "that of drdc_pose_we_from_le before");
+  golden_we(g, ref_names, &ref);
+  golden_we(g, we_names, &we);
   golden_i32(g, (int32_t)drdc_pose_le_from_we(&ref, 0, &we, &le_back));
   fold_le(g, &le_back);
 }
@@ -212,7 +219,7 @@ static void golden_jaus_bodies(golden_t *g)
   }
   golden_fn(g, "drdc_jaus_global_pose_pack");
   golden_in(g, "presence", gb.presence);
-  golden_we(g, &gb.pose);
+  golden_we(g, we_names, &gb.pose);
   golden_in(g, "form", (int64_t)form);
   golden_i32(g, (int32_t)drdc_jaus_global_pose_pack(&gb, form, buf, sizeof buf,
                                                     &length));
