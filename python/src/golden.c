@@ -38,6 +38,20 @@ const char *drdc_golden_part_name(unsigned part)
   return part < GOLDEN_PARTS ? golden_parts[part].name : NULL;
 }
 
+/* The conformance digest, as tests/golden/test_golden.c folds it: the
+ * CRC of the parts' digests. */
+uint32_t drdc_golden_digest(void)
+{
+  golden_t all;
+  unsigned k;
+
+  golden_start(&all, 0u);
+  for (k = 0u; k < GOLDEN_PARTS; k++) {
+    golden_u32(&all, golden_part_digest(golden_parts[k].run));
+  }
+  return ~all.crc;
+}
+
 static void in_range(void *context, const golden_t *g, uint64_t value,
                      unsigned bytes)
 {
