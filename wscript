@@ -498,9 +498,9 @@ def build_golden_trace(bld, ours, image, golden_geo):
     bld.program(source=["fw/golden-trace/main.c"] + parts,
                 target="fw/golden-trace/golden-trace", use="libdrdc",
                 cflags=ours, includes=["tests/golden"], install_path=None,
-                idx=300)
+                idx=400)
     image("fw/test-runner/test-runner-broken", [golden_geo],
-          "runner-suites libdrdc unity bsp", includes=["tests"], idx=301,
+          "runner-suites libdrdc unity bsp", includes=["tests"], idx=401,
           defines=["GOLDEN_BREAK_TO_UTM=1"])
 
 
