@@ -225,3 +225,31 @@ def test_reference_records_match_the_runner_tables():
         records, total = conformance._reference(part, 0, (1 << 32) - 1)
         assert total == count == len(records)
         assert not [i for i, r in records.items() if r[0] == "?"]
+
+
+def test_difference_within_a_later_block(host_log):
+    # a port whose orient part first differs at record 3500 (block 3):
+    # its trace is the host's records 3072..4095 with that one changed
+    first, end, wrong = 3072, 4096, 3500
+    part = list(conformance.reference_digests()).index("orient")
+    records, total = conformance._reference(part, first, end)
+    lines = ["golden digest of orient: 0x00000000",
+             "golden trace of orient: block 3 differs, records %d to %d "
+             "of %d" % (first, end, total)]
+    for index in range(first, end):
+        function, value, _ = records[index]
+        if index == wrong:
+            value = "0x%0*x" % (len(value) - 2, int(value, 16) ^ 1)
+        lines.append("golden trace of orient: %d %s %s"
+                     % (index, function, value))
+    lines.append("golden trace of orient: end")
+    log = host_log.replace("golden digest of orient: 0x13b49878",
+                           "\n".join(lines))
+    verdict = conformance.judge(log)
+    assert verdict["verdict"] == "differs"
+    orient = [m for m in verdict["modules"] if m["name"] == "orient"][0]
+    diff = orient["first_difference"]
+    assert diff["record"] == wrong
+    assert diff["function"] == records[wrong][0]
+    assert diff["input"] == records[wrong][2] != ""
+    assert int(diff["got"], 16) ^ int(diff["expected"], 16) == 1
