@@ -24,7 +24,7 @@ typedef struct golden_part {
 extern const golden_part_t golden_parts[GOLDEN_PARTS];
 
 /** Records per block: a differing part's trace prints the records of its
- *  first differing block, about 40 bytes each (see python/README.md). */
+ *  first differing block, 57 to 80 bytes each (python/README.md). */
 #define GOLDEN_BLOCK_RECORDS 1024u
 
 /** What the host computes for a part's records (golden_expected.c). */
