@@ -482,8 +482,26 @@ def build_golden_parts(bld, t, ours):
                     target="fw/golden-part/%s%s" % (part, t["ext"]),
                     use="libdrdc bsp", cflags=ours, idx=200 + k,
                     includes=["tests/golden"], install_path=None,
+                    # no trace labels: their strings would take RAM
                     defines=["GOLDEN_PART=" + part,
-                             'GOLDEN_NAME="%s"' % name])
+                             'GOLDEN_NAME="%s"' % name, "GOLDEN_TRACE=0"])
+
+
+def build_golden_trace(bld, ours, image, golden_geo):
+    """Host only: fw/golden-trace/golden-trace, the reference records of
+    the conformance digest (it writes tests/golden/golden_expected.c),
+    and fw/test-runner/test-runner-broken, a port with drdc_geo_to_utm
+    one LSB off (GOLDEN_BREAK_TO_UTM) whose log
+    python/tests/test_conformance.py judges."""
+    parts = [n for n in _glob(bld, "tests/golden/golden*.c")
+             if n.name != "golden_expected.c"]
+    bld.program(source=["fw/golden-trace/main.c"] + parts,
+                target="fw/golden-trace/golden-trace", use="libdrdc",
+                cflags=ours, includes=["tests/golden"], install_path=None,
+                idx=400)
+    image("fw/test-runner/test-runner-broken", [golden_geo],
+          "runner-suites libdrdc unity bsp", includes=["tests"], idx=401,
+          defines=["GOLDEN_BREAK_TO_UTM=1"])
 
 
 def build_library(bld, cflags):
@@ -812,9 +830,15 @@ def build(bld):
             bld.add_manual_dependency(node, ldscript)
         return tg
 
-    runner = image("fw/test-runner/test-runner",
-                   ["fw/test-runner/main.c"] + _suite_sources(bld),
-                   "libdrdc unity bsp", includes=["tests"])
+    # Everything of the runner but the golden part that a broken port
+    # changes (test-runner-broken, host only) is compiled once for both.
+    golden_geo = bld.path.find_node("tests/golden/golden_geo.c")
+    bld.objects(source=["fw/test-runner/main.c"]
+                + [n for n in _suite_sources(bld) if n != golden_geo],
+                target="runner-suites", cflags=ours, includes=["tests"],
+                use="libdrdc unity bsp")
+    runner = image("fw/test-runner/test-runner", [golden_geo],
+                   "runner-suites libdrdc unity bsp", includes=["tests"])
     # The runner's object files, one path a line, so the same image can be
     # linked against an installed libdrdc.a (tools/rtems_standin.py).
     runner.post()
@@ -844,6 +868,8 @@ def build(bld):
     if t.get("tool"):
         bld.program(source=_glob(bld, "tools/drdc/*.c"),
                     target="drdc" + t["ext"], use="libdrdc", cflags=ours)
+    if bld.variant == "host":
+        build_golden_trace(bld, ours, image, golden_geo)
     if t["qemu"] == "host" and not bld.variant.endswith("asan"):
         # the library's own results for the plots of docs/accuracy.md
         bld.program(source=["tools/accuracy/sample.c"],

@@ -44,7 +44,8 @@ CFLAGS = ["-std=c99", "-Wall", "-Wextra", "-Wconversion", "-Wsign-conversion",
           "-Wshadow", "-Wcast-align", "-Wstrict-prototypes", "-Wundef",
           "-O2", "-g", "-ffunction-sections", "-fdata-sections",
           "-fno-align-functions", "-D_POSIX_C_SOURCE=200809L", "-fPIC"]
-INCLUDES = ["fixed/internal", "fixed/include", "core/include"]
+INCLUDES = ["fixed/internal", "fixed/include", "core/include",
+            "tests/golden"]
 
 
 class BuildError(Exception):
@@ -66,12 +67,17 @@ def _footprint():
 
 
 def _sources():
-    """The library's sources (wscript's glob), then the array loops of
-    python/src/."""
+    """The library's sources (wscript's glob), then the array loops and
+    the golden reference of python/src/ with tests/golden's parts."""
     paths = []
     for folder in ("fixed", "core", "python/src"):
         paths += sorted(glob.glob(os.path.join(TOP, folder, "**", "*.c"),
                                   recursive=True))
+    # the conformance digest's parts, for drdc.conformance's reference
+    # records (python/src/golden.c); not the runner's test and tables
+    paths += [p for p in sorted(glob.glob(os.path.join(
+        TOP, "tests", "golden", "golden*.c")))
+        if os.path.basename(p) != "golden_expected.c"]
     return [os.path.relpath(p, TOP) for p in paths]
 
 
@@ -105,7 +111,8 @@ def build_library(out_path, work_dir):
         stem = os.path.basename(src)[:-2]
         obj = os.path.join(work_dir, "%03d_%s.o" % (k, stem))
         # the footprint policy's flags for the library; the loops for speed
-        kind = ("speed" if src.startswith("python" + os.sep)
+        kind = ("speed" if src.startswith(("python" + os.sep,
+                                           "tests" + os.sep))
                 else policy.optimise_kind(src))
         flags = CFLAGS + policy.OPTIMISE_FLAGS[kind]
         jobs.append((cc + flags + includes + ["-c", src, "-o", obj], obj))

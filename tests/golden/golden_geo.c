@@ -13,6 +13,14 @@
 
 #include "golden.h"
 
+/* 1 makes a deliberately broken port for the conformance engine's own
+ * test (python/tests/test_conformance.py): every UTM easting that
+ * drdc_geo_to_utm computes comes out one LSB east. Only the host
+ * variant's test-runner-broken sets it. */
+#ifndef GOLDEN_BREAK_TO_UTM
+#define GOLDEN_BREAK_TO_UTM 0
+#endif
+
 void golden_geo(golden_t *g)
 {
   int i;
@@ -31,14 +39,31 @@ void golden_geo(golden_t *g)
     char text[DRDC_GEO_MGRS_SIZE];
     size_t k;
 
-    golden_i32(g, (int32_t)drdc_geo_to_utm(lat, lon, DRDC_GEO_ZONE_STANDARD,
-                                           &utm, &convergence, &scale));
+    drdc_status_t status;
+    int32_t prec;
+
+    golden_fn(g, "drdc_geo_to_utm");
+    golden_in(g, "lat_nas", lat);
+    golden_in(g, "lon_nas", lon);
+    status = drdc_geo_to_utm(lat, lon, DRDC_GEO_ZONE_STANDARD, &utm,
+                             &convergence, &scale);
+#if GOLDEN_BREAK_TO_UTM
+    if (status == DRDC_OK) {
+      utm.easting += 1;
+    }
+#endif
+    golden_i32(g, (int32_t)status);
     golden_i32(g, utm.zone);
     golden_i32(g, utm.north ? 1 : 0);
     golden_i64(g, utm.easting);
     golden_i64(g, utm.northing);
     golden_i64(g, convergence);
     golden_i64(g, scale);
+    golden_fn(g, "drdc_geo_from_utm");
+    golden_in(g, "zone", utm.zone);
+    golden_in(g, "north", utm.north ? 1 : 0);
+    golden_in(g, "easting_q47_16", utm.easting);
+    golden_in(g, "northing_q47_16", utm.northing);
     golden_i32(
         g, (int32_t)drdc_geo_from_utm(&utm, &back_lat, &back_lon, NULL, NULL));
     golden_i64(g, back_lat);
@@ -46,15 +71,23 @@ void golden_geo(golden_t *g)
     for (k = 0u; k < sizeof text; k++) {
       text[k] = '\0';
     }
-    golden_i32(g, (int32_t)drdc_geo_mgrs_encode(
-                      lat, lon, (int32_t)(golden_next(g) % 13u) - 1, text,
-                      sizeof text));
+    prec = (int32_t)(golden_next(g) % 13u) - 1;
+    golden_fn(g, "drdc_geo_mgrs_encode");
+    golden_in(g, "lat_nas", lat);
+    golden_in(g, "lon_nas", lon);
+    golden_in(g, "prec", prec);
+    golden_i32(
+        g, (int32_t)drdc_geo_mgrs_encode(lat, lon, prec, text, sizeof text));
     for (k = 0u; k < sizeof text; k++) {
       golden_u32(g, (uint32_t)(unsigned char)text[k]);
     }
     p.lat = lat;
     p.lon = lon;
     p.height = (int64_t)(int32_t)golden_next(g) * 256;
+    golden_fn(g, "drdc_geo_to_ecef");
+    golden_in(g, "lat_nas", p.lat);
+    golden_in(g, "lon_nas", p.lon);
+    golden_in(g, "height_q47_16", p.height);
     golden_i32(g, (int32_t)drdc_geo_to_ecef(&p, &ecef));
     golden_i64(g, ecef.x);
     golden_i64(g, ecef.y);

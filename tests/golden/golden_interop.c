@@ -96,9 +96,19 @@ static void golden_expressions(golden_t *g)
     size_t at;
     size_t k;
 
+    golden_fn(g, "drdc_units_parse");
+    golden_in_text(g, "text", a);
     golden_i32(g, (int32_t)drdc_units_parse(a, n, &from));
+    golden_fn(g, "drdc_units_parse");
+    golden_in_text(g, "text", b);
     golden_i32(g, (int32_t)drdc_units_parse(b, length_of(b), &to));
+    golden_fn(g, "drdc_units_parse");
+    golden_in_text(g, "text", a);
     golden_expression(g, &from);
+    golden_fn(g, "drdc_units_convert_expr");
+    golden_in(g, "raw_q16", raw);
+    golden_in_text(g, "from", a);
+    golden_in_text(g, "to", b);
     golden_i32(
         g, (int32_t)drdc_units_convert_expr(raw, 16u, &from, 16u, &to, &out));
     golden_i64(g, out);
@@ -107,6 +117,10 @@ static void golden_expressions(golden_t *g)
     }
     at = (size_t)(golden_next(g) % k); /* one draw per statement, as above */
     text[at] = (char)(golden_next(g) & 0xFFu);
+    golden_fn(g, "drdc_units_parse");
+    golden_in_text(g, "text of", a);
+    golden_in(g, "byte at", (int64_t)at);
+    golden_in(g, "changed to", (unsigned char)text[at]);
     golden_i32(g, (int32_t)drdc_units_parse(text, k, &to));
     golden_expression(g, &to);
   }
@@ -118,8 +132,10 @@ void golden_interop(golden_t *g)
   int i;
 
   for (i = 0; i < 2048; i++) {
-    const drdc_unit_t *from = drdc_units_at((size_t)(golden_next(g) % count));
-    const drdc_unit_t *to = drdc_units_at((size_t)(golden_next(g) % count));
+    size_t from_index = (size_t)(golden_next(g) % count);
+    size_t to_index = (size_t)(golden_next(g) % count);
+    const drdc_unit_t *from = drdc_units_at(from_index);
+    const drdc_unit_t *to = drdc_units_at(to_index);
     int64_t raw = (int64_t)(int32_t)golden_next(g);
     int64_t out = 0;
     int64_t integer = 0;
@@ -130,12 +146,20 @@ void golden_interop(golden_t *g)
     size_t at;
     size_t k;
 
+    golden_fn(g, "drdc_units_convert");
+    golden_in(g, "raw_q16", raw);
+    golden_in(g, "from unit number", (int64_t)from_index);
+    golden_in(g, "to unit number", (int64_t)to_index);
     golden_i32(g, (int32_t)drdc_units_convert(raw, 16u, from, 16u, to, &out));
     golden_i64(g, out);
     /* one draw per statement: the order in which C evaluates the
      * arguments of a call differs between compilers and targets */
     type = (drdc_jaus_type_t)(golden_next(g) % 6u);
     form = (drdc_jaus_form_t)(golden_next(g) % 2u);
+    golden_fn(g, "drdc_jaus_scaled_encode");
+    golden_in(g, "value", raw);
+    golden_in(g, "type", (int64_t)type);
+    golden_in(g, "form", (int64_t)form);
     golden_i32(g, (int32_t)drdc_jaus_scaled_encode(raw, INT64_C(-2147483648),
                                                    INT64_C(2147483647), type,
                                                    form, &integer));
@@ -146,6 +170,9 @@ void golden_interop(golden_t *g)
     /* one byte replaced by any value, at any place */
     at = (size_t)(golden_next(g) % (sizeof seed - 1u));
     text[at] = (char)(golden_next(g) & 0xFFu);
+    golden_fn(g, "drdc_nmea_parse");
+    golden_in(g, "byte at", (int64_t)at);
+    golden_in(g, "changed to", (unsigned char)text[at]);
     golden_i32(g, (int32_t)drdc_nmea_parse(text, sizeof seed - 1u, &n));
     golden_i64(g, n.latitude);
     golden_i64(g, n.altitude);

@@ -51,6 +51,40 @@ static void golden_euler(golden_t *g, drdc_euler_t *e)
   e->roll = golden_next(g);
 }
 
+#if GOLDEN_TRACE
+static const char *const we_names[6] = {"lat_nas", "lon_nas", "height_q47_16",
+                                        "yaw",     "pitch",   "roll"};
+static const char *const ref_names[6] = {"ref.lat_nas",       "ref.lon_nas",
+                                         "ref.height_q47_16", "ref.yaw",
+                                         "ref.pitch",         "ref.roll"};
+
+/* The fields of a {We} pose as inputs of the current function. */
+static void golden_we(golden_t *g, const char *const names[6],
+                      const drdc_WePose_t *w)
+{
+  golden_in(g, names[0], w->latitude);
+  golden_in(g, names[1], w->longitude);
+  golden_in(g, names[2], w->height);
+  golden_in(g, names[3], w->e.yaw);
+  golden_in(g, names[4], w->e.pitch);
+  golden_in(g, names[5], w->e.roll);
+}
+
+/* The fields of an {le} pose as inputs of the current function. */
+static void golden_le(golden_t *g, const drdc_lePose_t *le)
+{
+  golden_in(g, "x", le->p.x);
+  golden_in(g, "y", le->p.y);
+  golden_in(g, "z", le->p.z);
+  golden_in(g, "yaw", le->e.yaw);
+  golden_in(g, "pitch", le->e.pitch);
+  golden_in(g, "roll", le->e.roll);
+}
+#else
+#define golden_we(g, names, w) ((void)(g))
+#define golden_le(g, le)       ((void)(g))
+#endif
+
 static void fold_we(golden_t *g, const drdc_WePose_t *w)
 {
   golden_i64(g, w->latitude);
@@ -84,6 +118,7 @@ static void golden_mgrs_poses(golden_t *g)
   drdc_WePose_t we = we_blank;
   drdc_WeMGRSPose_t m;
   drdc_WePose_t back = we_blank;
+  int32_t prec;
   size_t k;
 
   we.latitude = golden_lat(g);
@@ -95,8 +130,11 @@ static void golden_mgrs_poses(golden_t *g)
   for (k = 0u; k < sizeof m.mgrs; k++) {
     m.mgrs[k] = wmgrs_blank.mgrs[k];
   }
-  golden_i32(g, (int32_t)drdc_pose_wemgrs_from_we(
-                    &we, (int32_t)(golden_next(g) % 13u) - 1, &m));
+  prec = (int32_t)(golden_next(g) % 13u) - 1;
+  golden_fn(g, "drdc_pose_wemgrs_from_we");
+  golden_we(g, we_names, &we);
+  golden_in(g, "prec", prec);
+  golden_i32(g, (int32_t)drdc_pose_wemgrs_from_we(&we, prec, &m));
   for (k = 0u; k < sizeof m.mgrs; k++) {
     golden_u32(g, (uint32_t)(unsigned char)m.mgrs[k]);
   }
@@ -104,6 +142,9 @@ static void golden_mgrs_poses(golden_t *g)
   golden_u32(g, m.e.yaw);
   golden_u32(g, m.e.pitch);
   golden_u32(g, m.e.roll);
+  golden_fn(g, "drdc_pose_we_from_wemgrs");
+  golden_in_text(g, "mgrs", m.mgrs);
+  golden_in(g, "height_q47_16", m.height);
   golden_i32(g, (int32_t)drdc_pose_we_from_wemgrs(&m, &back));
   fold_we(g, &back);
 }
@@ -125,16 +166,32 @@ static void golden_local_poses(golden_t *g)
   le.p.y = (int32_t)golden_next(g) >> 4;
   le.p.z = (int32_t)golden_next(g) >> 8;
   golden_euler(g, &le.e);
+  golden_fn(g, "drdc_pose_l_from_le");
+  golden_le(g, &le);
   golden_i32(g, (int32_t)drdc_pose_l_from_le(&le, &l));
   golden_i32(g, l.q.s);
   golden_i32(g, l.q.x);
   golden_i32(g, l.q.y);
   golden_i32(g, l.q.z);
+  golden_fn(g, "drdc_pose_le_from_l");
+  golden_in(g, "x", l.p.x);
+  golden_in(g, "y", l.p.y);
+  golden_in(g, "z", l.p.z);
+  golden_in(g, "q.s", l.q.s);
+  golden_in(g, "q.x", l.q.x);
+  golden_in(g, "q.y", l.q.y);
+  golden_in(g, "q.z", l.q.z);
   golden_i32(g, (int32_t)drdc_pose_le_from_l(&l, &le_back));
   fold_le(g, &le_back);
+  golden_fn(g, "drdc_pose_we_from_le");
+  golden_we(g, ref_names, &ref);
+  golden_le(g, &le);
   golden_i32(g, (int32_t)drdc_pose_we_from_le(&ref, 0, &le, &we));
   fold_we(g, &we);
   le_back = le_blank;
+  golden_fn(g, "drdc_pose_le_from_we");
+  golden_we(g, ref_names, &ref);
+  golden_we(g, we_names, &we);
   golden_i32(g, (int32_t)drdc_pose_le_from_we(&ref, 0, &we, &le_back));
   fold_le(g, &le_back);
 }
@@ -160,6 +217,10 @@ static void golden_jaus_bodies(golden_t *g)
   for (k = 0u; k < sizeof buf; k++) {
     buf[k] = 0u;
   }
+  golden_fn(g, "drdc_jaus_global_pose_pack");
+  golden_in(g, "presence", gb.presence);
+  golden_we(g, we_names, &gb.pose);
+  golden_in(g, "form", (int64_t)form);
   golden_i32(g, (int32_t)drdc_jaus_global_pose_pack(&gb, form, buf, sizeof buf,
                                                     &length));
   golden_u32(g, (uint32_t)length);
@@ -177,6 +238,11 @@ static void golden_jaus_bodies(golden_t *g)
                               &length);
   }
   gb = global_blank;
+  golden_fn(g, "drdc_jaus_global_pose_unpack");
+  golden_in(g, "length", (int64_t)length);
+  golden_in(g, "byte 0", buf[0]);
+  golden_in(g, "byte 1", buf[1]);
+  golden_in(g, "form", (int64_t)form);
   golden_i32(g, (int32_t)drdc_jaus_global_pose_unpack(buf, length, form, &gb));
   golden_u32(g, gb.presence);
   fold_we(g, &gb.pose);
@@ -196,11 +262,18 @@ static void golden_jaus_bodies(golden_t *g)
     buf[k] = 0u;
   }
   length = 0u;
+  golden_fn(g, "drdc_jaus_local_pose_pack");
+  golden_in(g, "presence", lb.presence);
+  golden_le(g, &lb.pose);
+  golden_in(g, "form", (int64_t)form);
   golden_i32(g, (int32_t)drdc_jaus_local_pose_pack(&lb, form, buf, sizeof buf,
                                                    &length));
   golden_u32(g, (uint32_t)length);
   fold_bytes(g, buf, sizeof buf);
   lb = local_blank;
+  golden_fn(g, "drdc_jaus_local_pose_unpack");
+  golden_in(g, "length", (int64_t)length);
+  golden_in(g, "form", (int64_t)form);
   golden_i32(g, (int32_t)drdc_jaus_local_pose_unpack(buf, length, form, &lb));
   golden_u32(g, lb.presence);
   fold_le(g, &lb.pose);
