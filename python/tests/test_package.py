@@ -42,3 +42,18 @@ def test_byte_order_and_strides_do_not_change_the_bits():
     assert list(small.northing_q47_16) == [
         drdc.geo_to_utm(10, 0).northing_q47_16,
         drdc.geo_to_utm(-10, 0).northing_q47_16]
+
+
+def test_only_drdc_names_leave_the_shared_library():
+    """libdrdc.so also holds the golden parts for drdc.conformance; as
+    libdrdc.a, it exports nothing but drdc_ names (symbols of the C
+    library it imports are undefined, not listed)."""
+    import os
+    import subprocess
+    from drdc import _lib
+    out = subprocess.run(["nm", "-D", "--defined-only", _lib.LIBRARY],
+                         capture_output=True, text=True, check=True).stdout
+    names = [line.split()[-1] for line in out.splitlines() if line.strip()]
+    assert os.path.exists(_lib.LIBRARY)
+    assert any(n.startswith("drdc_") for n in names)
+    assert [n for n in names if not n.startswith("drdc_")] == []
