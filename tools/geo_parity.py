@@ -29,8 +29,10 @@ ERROR lines are byte-identical: every one of the random lines above, of
 BAD_INPUTS (check_errors()) and of fuzz_lines() (check_fuzz()), where
 one more rule is counted:
 
-  own-limit  drdc's 'angle beyond 1000000d in TOKEN': GeoConvert reads
-          angles of any size, drdc holds 1 000 000 degrees.
+  own-limit  drdc's own limits, where GeoConvert reads on: 'angle beyond
+          1000000d in TOKEN' (drdc holds 1 000 000 degrees), 'Cannot
+          decode TOKEN (beyond 1e12 m)', and a minutes or seconds
+          component of more than 15 digits, quoted as 1e+15.
 """
 import math
 import os
@@ -401,16 +403,59 @@ def fuzz_lines(seed, n=3000):
                  "%d" % rng.randint(-10000000, 20000000)]
         return " ".join(words if rng.random() < 0.7 else words[1:] + words[:1])
 
+    def long_digits():
+        return "".join(rng.choice("0123456789")
+                       for _ in range(rng.randint(10, 40)))
+
+    def long_like():
+        """Components and metres of many digits: the products a reader
+        forms of them must not overflow."""
+        kind = rng.randint(0, 3)
+        if kind == 0:
+            return "0d%s' 0" % long_digits()
+        if kind == 1:
+            return "0d0'%s.%s\" 0" % (long_digits(), long_digits())
+        if kind == 2:
+            return "%dn %se%d 4000000" % (rng.randint(1, 60), long_digits(),
+                                          rng.randint(-40, 12))
+        return "%s %s" % (long_digits(), long_digits())
+
     lines = []
     for _ in range(n):
         r = rng.random()
         lines.append(token() + " " + token() if r < 0.4 else
                      mgrs_like() if r < 0.75 else utm_like())
+    # drawn after the others, so those stay the same lines
+    lines += [long_like() for _ in range(n // 10)]
     return lines
+
+
+FUZZ_SEED = 7
+FUZZ_LINES = 3000  # then FUZZ_LINES // 10 lines of many digits
 
 
 FUZZ_OPTIONS = [[], ["-d"], ["-u"], ["-m"], ["-c"], ["-u", "-z", "31"],
                 ["-m", "-z", "0"], ["-m", "-t"], ["-u", "-z", "31s"], ["-w"]]
+
+
+OWN_COMPONENT = re.compile(r"ERROR: (Minutes|Seconds) 1e\+15 not in range "
+                           r"\[0, 60\)$")
+OWN_WANT_COMPONENT = re.compile(r"ERROR: (Minutes|Seconds) (\S+) not in range")
+
+
+def own_limit(got, want):
+    """drdc's own limits, each an error where GeoConvert reads on: angles
+    beyond 1 000 000 degrees; metres beyond 10^12 (GeoConvert then
+    reports the coordinate out of range); a DMS component read up to
+    10^15 and quoted as that, where GeoConvert quotes all its digits."""
+    if got.startswith("ERROR: angle beyond 1000000d in "):
+        return True
+    if got.startswith("ERROR: Cannot decode ") and got.endswith(
+            " (beyond 1e12 m)"):
+        return True
+    m, w = OWN_COMPONENT.match(got), OWN_WANT_COMPONENT.match(want)
+    return bool(m and w and m.group(1) == w.group(1)
+                and float(w.group(2)) >= 1e15)
 
 
 def check_fuzz():
@@ -418,19 +463,21 @@ def check_fuzz():
     'identical' and 'own-limit' (drdc's angles beyond 1 000 000 degrees,
     which GeoConvert reads), and the lines neither explains."""
     counts, bad = {}, []
-    lines = fuzz_lines(7)
+    lines = fuzz_lines(FUZZ_SEED, FUZZ_LINES)
     for args in FUZZ_OPTIONS:
-        for line, got, want in zip(lines, drdc(args, lines),
-                                   geoconvert(args, lines)):
+        for i, (line, got, want) in enumerate(zip(
+                lines, drdc(args, lines), geoconvert(args, lines))):
             if not (got.startswith("ERROR: ") or want.startswith("ERROR: ")):
                 continue
             rule = ("identical" if got == want else
-                    "own-limit" if got.startswith("ERROR: angle beyond "
-                                                  "1000000d in ") else None)
+                    "own-limit" if own_limit(got, want) else None)
             if rule is None:
                 bad.append((args, line, got, want))
             else:
-                counts[rule] = counts.get(rule, 0) + 1
+                # the lines of many digits, made to reach the limits,
+                # counted apart
+                key = rule if i < FUZZ_LINES else "long " + rule
+                counts[key] = counts.get(key, 0) + 1
     return counts, bad
 
 

@@ -48,5 +48,31 @@ class GoldenPartsOnAvr(unittest.TestCase):
             print("avr %-22s %s (host %s)" % (name, digest, want[name]))
 
 
+# the tables marked DRDC_FLASH_TABLE (fixed/internal/drdc/compiler.h)
+FLASH_TABLES = ("drdc__fx_sin_q31", "drdc__fx_atan_nodes",
+                "drdc__fx_sqrt_seed")
+
+
+class FlashTablesOnAvr(unittest.TestCase):
+    def test_flash_tables_are_where_lpm_reaches(self):
+        """pgm_read_*() is LPM, which reads the first 64 KiB of flash
+        only; the linker puts .progmem first, and the largest part links
+        115 KB: each table must still start and end below 0x10000."""
+        seen = 0
+        for part in PARTS:
+            image = os.path.join(BUILD, "avr", "fw", "golden-part",
+                                 part + ".elf")
+            out = subprocess.run(["avr-nm", "-S", image], check=True,
+                                 capture_output=True, text=True).stdout
+            for line in out.split("\n"):
+                fields = line.split()
+                if len(fields) == 4 and fields[3] in FLASH_TABLES:
+                    self.assertIn(fields[2], ("t", "T", "r", "R"), line)
+                    end = int(fields[0], 16) + int(fields[1], 16)
+                    self.assertLessEqual(end, 0x10000, (part, line))
+                    seen += 1
+        self.assertGreater(seen, 6)
+
+
 if __name__ == "__main__":
     unittest.main()

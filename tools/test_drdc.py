@@ -693,8 +693,11 @@ class GeoParity(unittest.TestCase):
         import geo_parity
         counts, bad = geo_parity.check_fuzz()
         self.assertEqual([], bad[:5])
-        # nearly all byte-identical; the rest is the one named own limit
+        # nearly all byte-identical; the rest is the named own limits,
+        # which the lines of many digits are made to reach
         self.assertGreater(counts["identical"], 100 * counts["own-limit"])
+        self.assertGreater(counts["long own-limit"], 1000)
+        self.assertGreater(counts["long identical"], 100)
 
     def test_own_limits_are_errors_of_their_own(self):
         # what GeoConvert reads and drdc refuses: nan, inf, metres beyond

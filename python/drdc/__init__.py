@@ -45,6 +45,8 @@ Example (the same numbers as ``echo 50.27 -111.17 | drdc geo -u -p 4``)::
                         drdc.degrees_to_nas("-111.17"))
     # Utm(zone=12, north=True, easting_q47_16=..., northing_q47_16=..., ...)
 """
+import re
+from decimal import Decimal
 from fractions import Fraction
 
 from ._status import (DrdcError, DrdcWarning, Status, is_error,  # noqa: F401
@@ -82,6 +84,9 @@ def _round_half_away(x):
     return q if x >= 0 else -q
 
 
+_DECIMAL_DEGREES = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)$")
+
+
 def degrees_to_nas(degrees):
     """Degrees -> nano-arcseconds (int), exactly: a decimal str ("50.27",
     up to 12 decimals exact, as drdc geo reads it), int, Decimal or
@@ -89,12 +94,27 @@ def degrees_to_nas(degrees):
     nas, ties away from zero."""
     if isinstance(degrees, bool):
         raise TypeError("degrees: a number or decimal text, not a bool")
+    if isinstance(degrees, str):
+        text = degrees.strip()
+        # plain decimals only: Fraction() would also take an exponent of
+        # any size ("1e100000000" takes minutes) and "a/b"
+        if len(text) > 40 or not _DECIMAL_DEGREES.match(text):
+            raise ValueError("degrees: %r is not a decimal number of at "
+                             "most 40 characters" % degrees)
+        degrees = text
+    elif isinstance(degrees, Decimal) and (
+            not degrees.is_finite() or abs(degrees.adjusted()) > 30):
+        # Fraction(Decimal("1e100000000")) would build 10^100000000
+        raise ValueError("degrees: %s is not a finite decimal within "
+                         "10^+-30" % degrees)
     try:
-        exact = Fraction(degrees.strip() if isinstance(degrees, str)
-                         else degrees)
+        exact = Fraction(degrees)
     except (ValueError, TypeError, OverflowError) as e:
         raise type(e)("degrees: %s" % e) from None
-    return _round_half_away(exact * NAS_PER_DEGREE)
+    nas = _round_half_away(exact * NAS_PER_DEGREE)
+    if not -2 ** 63 <= nas < 2 ** 63:
+        raise ValueError("degrees: %s is beyond int64 nas" % degrees)
+    return nas
 
 
 def nas_to_degrees(nas):

@@ -128,6 +128,9 @@ static drdc_status_t convert_count(int32_t which, int64_t sec, int32_t nsec,
   drdc_time_t utc_out = {0, 0};
   drdc_time_count_t count_out = {0, 0};
 
+  /* 0 outputs on every error, an unknown `which` too */
+  *out_sec = 0;
+  *out_nsec = 0;
   switch (which) {
   case BATCH_UTC_TO_TAI:
     st = drdc_time_utc_to_tai(NULL, &utc, &count_out);

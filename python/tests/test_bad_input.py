@@ -135,3 +135,23 @@ def test_degrees_to_nas_is_exact():
         drdc.degrees_to_nas("north")
     with pytest.raises(TypeError):
         drdc.degrees_to_nas(True)
+
+
+def test_degrees_to_nas_refuses_huge_text_at_once():
+    """Only plain decimals: an exponent would make Fraction build a power
+    of ten of that many digits (1e100000000 took minutes)."""
+    import time
+    from decimal import Decimal
+    t0 = time.monotonic()
+    for bad in ["1e100000000", "1/3", "1" * 41, "0x10", "--1", "1.2.3", ""]:
+        with pytest.raises(ValueError):
+            drdc.degrees_to_nas(bad)
+    for bad in [Decimal("1e100000000"), Decimal("NaN"), Decimal("-Infinity")]:
+        with pytest.raises(ValueError):
+            drdc.degrees_to_nas(bad)
+    assert time.monotonic() - t0 < 1.0
+    # beyond int64 nas (2.56e9 degrees) is refused, not wrapped
+    with pytest.raises(ValueError):
+        drdc.degrees_to_nas("2600000000")
+    assert drdc.degrees_to_nas("+.5") == DEG // 2
+    assert drdc.degrees_to_nas(Decimal("-1.25")) == -(5 * DEG) // 4

@@ -33,7 +33,10 @@ def test_byte_order_and_strides_do_not_change_the_bits():
     swapped = drdc.geo_to_utm_array(lat.astype(">i8"), lon.astype(">i8"))
     wide = np.zeros((lat.size, 3), np.int64)
     wide[:, 1] = lon
-    strided = drdc.geo_to_utm_array(lat[::-1][::-1], wide[:, 1])
+    wide[:, 2] = lat
+    # columns of a row-major array: a stride of 24 bytes each
+    assert wide[:, 2].strides == (24,)
+    strided = drdc.geo_to_utm_array(wide[:, 2], wide[:, 1])
     for a, b, c in zip(native, swapped, strided):
         assert (a == b).all() and (a == c).all()
     # narrow integer types widen: 10 nas from the equator, as int8

@@ -322,17 +322,26 @@ static bool read_piece(const char *s, size_t beg, size_t end,
   }
   for (k_check = 1; k_check < 3; k_check++) {
     if (whole[k_check] >= 60) {
-      /* GeoConvert quotes the component with its fraction */
-      int64_t v = whole[k_check] * units[k_check];
+      /* GeoConvert quotes the component with its fraction, to 6
+       * significant digits (%g). In nas it fits int64_t up to about 1.5e8
+       * minutes or 9.2e9 seconds; a larger component is quoted whole, in
+       * its own unit: at 9 digits and more the fraction cannot reach the
+       * sixth (a half-way tie aside). */
       char number[32];
       bool ignored;
 
-      if (frac_piece == k_check) {
-        v += (int64_t)divide_round_even(frac * (u128)(uint64_t)units[k_check],
-                                        pow10_u128(frac_digits), frac_above,
-                                        &ignored);
+      if (whole[k_check] > (INT64_MAX / units[k_check]) - 1) {
+        geo_text_put_general(number, sizeof number, whole[k_check], 1, false);
+      } else {
+        int64_t v = whole[k_check] * units[k_check];
+
+        if (frac_piece == k_check) {
+          v += (int64_t)divide_round_even(frac * (u128)(uint64_t)units[k_check],
+                                          pow10_u128(frac_digits), frac_above,
+                                          &ignored);
+        }
+        geo_text_put_general(number, sizeof number, v, units[k_check], false);
       }
-      geo_text_put_general(number, sizeof number, v, units[k_check], false);
       snprintf(why, why_size, "%s %s not in range [0, 60)",
                (k_check == 1) ? "Minutes" : "Seconds", number);
       return false;
@@ -492,7 +501,9 @@ bool geo_text_read_metres(const char *s, int64_t *q16, bool *exact)
     *exact = !above;
   } else if (scale >= 0) {
     /* an integer: at most METRE_INTEGER_MAX */
-    if ((scale > 12) || (digits * pow10_u128(scale) > METRE_INTEGER_MAX)) {
+    /* compared before the product, which could leave 128 bits (33
+     * digits times 10^12) */
+    if ((scale > 12) || (digits > METRE_INTEGER_MAX / pow10_u128(scale))) {
       return false;
     }
     v = digits * pow10_u128(scale) * 65536u;
