@@ -666,12 +666,14 @@ public:
     return result<Quat>::of(
         [&](Quat &out) { return drdc_quat_mul(&q_, &b.q_, &out.q_); });
   }
-  /** Conjugate (drdc_quat_conj): the inverse of a unit quaternion. */
-  Quat conj() const
+  /** Conjugate (drdc_quat_conj): the inverse of a unit quaternion;
+   *  DRDC_E_OVERFLOW when a vector part is INT32_MIN, whose negation does
+   *  not fit Q1.30. */
+  result<Quat> conj() const
   {
     Quat out;
-    (void)drdc_quat_conj(&q_, &out.q_);
-    return out;
+    const status s = drdc_quat_conj(&q_, &out.q_);
+    return make_result(s, out);
   }
   /** Unit length again (drdc_quat_normalize); DRDC_E_DOMAIN for zero. */
   result<Quat> normalized() const

@@ -91,12 +91,36 @@ void test_conj_and_product_equal_the_c_calls()
     const int32_t expected_conj[4] = {conj.s, conj.x, conj.y, conj.z};
     const int32_t expected_product[4] = {product.s, product.x, product.y,
                                          product.z};
-    assert_quat(expected_conj, w.conj());
-    assert_quat(c, w.conj().conj());
+    const drdc::result<drdc::Quat> wc = w.conj();
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, wc.code());
+    assert_quat(expected_conj, wc.value());
+    const drdc::result<drdc::Quat> back = wc.value().conj();
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, back.code());
+    assert_quat(c, back.value());
     const drdc::result<drdc::Quat> p = w * w.conj();
     TEST_ASSERT_TRUE(p.ok());
     assert_quat(expected_product, p.value());
   }
+}
+
+/* A vector part of INT32_MIN (-2.0) has no negation in Q1.30: the
+ * conjugate is DRDC_E_OVERFLOW (drdc_quat_conj), not a quaternion, and a
+ * product with it passes the error on. */
+void test_conj_of_int32_min_is_an_overflow()
+{
+  const drdc::Quat bad[3] = {drdc::Quat(0, INT32_MIN, 0, 0),
+                             drdc::Quat(0, 0, INT32_MIN, 0),
+                             drdc::Quat(0, 0, 0, INT32_MIN)};
+  for (size_t i = 0u; i < COUNT(bad); ++i) {
+    const drdc::result<drdc::Quat> c = bad[i].conj();
+    TEST_ASSERT_FALSE(c.ok());
+    TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, c.code());
+    TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, (drdc::Quat() * c).code());
+  }
+  /* INT32_MIN as the scalar part is fine: only x, y, z are negated */
+  const drdc::result<drdc::Quat> s = drdc::Quat(INT32_MIN, 1, 0, 0).conj();
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, s.code());
+  TEST_ASSERT_TRUE(s.value() == drdc::Quat(INT32_MIN, -1, 0, 0));
 }
 
 /* Euler -> quaternion -> Euler through the wrappers equal the C calls;
@@ -530,6 +554,7 @@ void suite_cxx(void)
   RUN_TEST(test_quat_product_matches_the_exact_vectors);
   RUN_TEST(test_quat_chain_keeps_the_first_error);
   RUN_TEST(test_conj_and_product_equal_the_c_calls);
+  RUN_TEST(test_conj_of_int32_min_is_an_overflow);
   RUN_TEST(test_euler_conversions_equal_the_c_calls);
   RUN_TEST(test_degree_literals_round_exactly);
   RUN_TEST(test_metre_literals_round_exactly);
