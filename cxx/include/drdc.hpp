@@ -825,11 +825,25 @@ public:
   /** The difference; DRDC_E_OVERFLOW beyond int64_t seconds. */
   result<Duration> operator-(Duration o) const
   {
-    const result<Duration> minus_o = -o;
-    if (!minus_o.ok()) {
-      return minus_o;
+    /* subtracted directly: -o overflows for INT64_MIN s although the
+     * difference may fit */
+    const bool borrow = nsec_ < o.nsec_;
+    int64_t sec = 0;
+    bool fits = false;
+    if (!borrow) {
+      fits = sub(sec_, o.sec_, &sec);
+    } else if (sec_ > o.sec_) {
+      /* sec_ > INT64_MIN, so sec_ - 1 fits; the difference is >= 0 and
+       * might only fit with the borrow taken first */
+      fits = sub(sec_ - 1, o.sec_, &sec);
+    } else {
+      /* the difference is <= 0: if it overflows, one less does too */
+      fits = sub(sec_, o.sec_, &sec) && sub(sec, 1, &sec);
     }
-    return *this + minus_o.value();
+    if (!fits) {
+      return result<Duration>(DRDC_E_OVERFLOW);
+    }
+    return Duration(sec, nsec_ - o.nsec_ + (borrow ? ns_per_second : 0));
   }
   /** The negated span; DRDC_E_OVERFLOW for INT64_MIN whole seconds. */
   result<Duration> operator-() const
@@ -884,6 +898,16 @@ private:
       return false;
     }
     *out = a + b;
+    return true;
+  }
+  /* a - b into *out when it fits int64_t */
+  static bool sub(int64_t a, int64_t b, int64_t *out)
+  {
+    if (((b < 0) && (a > (INT64_MAX + b))) ||
+        ((b > 0) && (a < (INT64_MIN + b)))) {
+      return false;
+    }
+    *out = a - b;
     return true;
   }
   constexpr Duration(int64_t s, int64_t ns) : sec_(s), nsec_(ns)

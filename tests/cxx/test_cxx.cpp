@@ -517,6 +517,46 @@ void test_durations()
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, (drdc::Duration::seconds(INT64_MIN) -
                                           drdc::Duration::nanoseconds(1))
                                              .code());
+  /* differences at the edges of int64_t seconds, subtracted directly:
+   * -1 s - (-2^63 s) = 2^63 - 1 s fits, 0 s - (-2^63 s) = 2^63 s does
+   * not */
+  const drdc::result<drdc::Duration> top =
+      drdc::Duration::seconds(-1) - drdc::Duration::seconds(INT64_MIN);
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, top.code());
+  TEST_ASSERT_EQUAL_INT64(INT64_MAX, top.value().sec());
+  TEST_ASSERT_EQUAL_INT32(0, top.value().nsec());
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_OVERFLOW,
+      (drdc::Duration() - drdc::Duration::seconds(INT64_MIN)).code());
+  /* 0 - (-2^63 s + 1 ns) = 2^63 s - 1 ns = (2^63 - 1) s + 999 999 999 ns,
+   * only with the borrow taken before the seconds */
+  const drdc::result<drdc::Duration> top_ns =
+      drdc::Duration() - drdc::Duration::of(INT64_MIN, 1).value();
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, top_ns.code());
+  TEST_ASSERT_EQUAL_INT64(INT64_MAX, top_ns.value().sec());
+  TEST_ASSERT_EQUAL_INT32(999999999, top_ns.value().nsec());
+  /* (-2^63 s + 1 ns) - 1 ns = -2^63 s fits; 1 ns less does not */
+  const drdc::result<drdc::Duration> bottom =
+      drdc::Duration::of(INT64_MIN, 1).value() - drdc::Duration::nanoseconds(1);
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, bottom.code());
+  TEST_ASSERT_EQUAL_INT64(INT64_MIN, bottom.value().sec());
+  TEST_ASSERT_EQUAL_INT32(0, bottom.value().nsec());
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        (drdc::Duration::of(INT64_MIN, 1).value() -
+                         drdc::Duration::nanoseconds(2))
+                            .code());
+  /* 2^63 - 1 s - (-1 ns) = 2^63 - 1 s + 1 ns fits; from the last
+   * nanosecond of that second it does not */
+  const drdc::result<drdc::Duration> top_plus =
+      drdc::Duration::seconds(INT64_MAX) - drdc::Duration::nanoseconds(-1);
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, top_plus.code());
+  TEST_ASSERT_EQUAL_INT64(INT64_MAX, top_plus.value().sec());
+  TEST_ASSERT_EQUAL_INT32(1, top_plus.value().nsec());
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        (drdc::Duration::of(INT64_MAX, 999999999).value() -
+                         drdc::Duration::nanoseconds(-1))
+                            .code());
+
   TEST_ASSERT_EQUAL_INT(DRDC_E_NANOSECOND,
                         drdc::Duration::of(0, 1000000000).code());
   TEST_ASSERT_EQUAL_INT(DRDC_E_NANOSECOND, drdc::Duration::of(0, -1).code());
