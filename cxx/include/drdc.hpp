@@ -243,17 +243,29 @@ struct decimal {
   uint64_t digits; /**< the literal's digits without the point */
   unsigned scale;  /**< digits after the point */
   bool ok;         /**< digits and '.' only, at most 19 digits */
+  bool octal;      /**< a leading 0 followed by a digit before the point */
 };
 
 /** The characters of a numeric literal, as the literal operator template
- *  receives them: decimal digits, one '.', digit separators. Hexadecimal,
- *  octal-looking prefixes and exponents are refused. */
+ *  receives them: decimal digits, one '.', digit separators. Hexadecimal
+ *  prefixes and exponents are refused, and so is a leading 0 followed by
+ *  a digit before the point: C++ reads `010` as octal 8 but `010.5` as
+ *  decimal, so a reader of `010_m` cannot tell whether 8 m or 10 m is
+ *  meant; refusing both spares the reader the rule. */
 template <char... C> constexpr decimal parse()
 {
   const char text[] = {C..., '\0'};
-  decimal d{0u, 0u, true};
+  decimal d{0u, 0u, true, false};
   bool point = false;
   unsigned count = 0u;
+  /* the first character after a leading '0' (separators skipped) */
+  if (text[0] == '0') {
+    const char *p = text + 1;
+    while (*p == '\'') {
+      ++p;
+    }
+    d.octal = (*p >= '0') && (*p <= '9');
+  }
   for (const char *p = text; *p != '\0'; ++p) {
     if (*p == '\'') {
       continue;
@@ -320,6 +332,8 @@ template <typename U, bool Negative, char... C> struct literal {
   static constexpr detail::decimal value = detail::parse<C...>();
   static_assert(value.ok, "drdc literal: decimal digits and one '.' only, "
                           "at most 19 digits, no exponent");
+  static_assert(!value.octal, "drdc literal: no leading 0 before a digit "
+                              "(C++ reads 010 as octal 8)");
   /** The same literal negated: `-1.5_m`. */
   constexpr literal<U, !Negative, C...> operator-() const
   {
