@@ -228,8 +228,10 @@ constexpr u128 div_round(u128 n, u128 d)
       q.lo |= 1u;
     }
   }
-  /* round up when 2 r >= d */
-  if (!less(twice_plus(r, 0u), d) && (r.hi >> 63) == 0u) {
+  /* round up when 2 r >= d; r < d, so when r has bit 127 set, 2 r
+   * exceeds 128 bits and is certainly >= d (twice_plus would drop that
+   * bit and compare a wrong, smaller value) */
+  if (((r.hi >> 63) != 0u) || !less(twice_plus(r, 0u), d)) {
     q.lo += 1u;
     if (q.lo == 0u) {
       q.hi += 1u;

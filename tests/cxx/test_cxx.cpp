@@ -207,6 +207,39 @@ void test_metre_literals_round_exactly()
   TEST_ASSERT_EQUAL_INT32(98304, near.value().q15_16());
 }
 
+void assert_u128(uint64_t hi, uint64_t lo, drdc::detail::u128 v)
+{
+  TEST_ASSERT_EQUAL_UINT64(hi, v.hi);
+  TEST_ASSERT_EQUAL_UINT64(lo, v.lo);
+}
+
+/* The literals' rounding division, worked out by hand, including
+ * divisors above 2^127 (no literal reaches them, the function must not
+ * care): there the remainder can have bit 127 set, and then twice it is
+ * at least 2^128 > d, so the quotient rounds up. */
+void test_div_round_rounds_half_away_from_zero()
+{
+  using drdc::detail::div_round;
+  using drdc::detail::u128;
+  const uint64_t top = uint64_t{1} << 63;
+  /* 7 / 2 = 3.5 -> 4; 5 / 3 = 1.67 -> 2; 4 / 3 = 1.33 -> 1 */
+  assert_u128(0u, 4u, div_round(u128{0u, 7u}, u128{0u, 2u}));
+  assert_u128(0u, 2u, div_round(u128{0u, 5u}, u128{0u, 3u}));
+  assert_u128(0u, 1u, div_round(u128{0u, 4u}, u128{0u, 3u}));
+  /* 2^127 / (2^128 - 1) is a little above 1/2: 1 */
+  assert_u128(0u, 1u, div_round(u128{top, 0u}, u128{UINT64_MAX, UINT64_MAX}));
+  /* 2^127 / (2^127 + 1) is a little below 1: 1 */
+  assert_u128(0u, 1u, div_round(u128{top, 0u}, u128{top, 1u}));
+  /* (2^127 - 1) / (2^128 - 1) is a little below 1/2: 0 */
+  assert_u128(
+      0u, 0u,
+      div_round(u128{top - 1u, UINT64_MAX}, u128{UINT64_MAX, UINT64_MAX}));
+  /* (2^128 - 1) / (2^128 - 1) = 1 exactly */
+  assert_u128(
+      0u, 1u,
+      div_round(u128{UINT64_MAX, UINT64_MAX}, u128{UINT64_MAX, UINT64_MAX}));
+}
+
 /* The literals agree with the C NMEA parser on the same decimal text
  * (nmea.h: degrees and minutes exact in nas, heights rounded to Q.16). */
 void test_literals_agree_with_the_nmea_parser()
@@ -598,6 +631,7 @@ void suite_cxx(void)
   RUN_TEST(test_euler_conversions_equal_the_c_calls);
   RUN_TEST(test_degree_literals_round_exactly);
   RUN_TEST(test_metre_literals_round_exactly);
+  RUN_TEST(test_div_round_rounds_half_away_from_zero);
   RUN_TEST(test_literals_agree_with_the_nmea_parser);
   RUN_TEST(test_mgrs_pose_matches_geoconvert);
   RUN_TEST(test_poses_equal_the_c_calls);
