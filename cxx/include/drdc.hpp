@@ -1013,7 +1013,9 @@ public:
     const drdc_time_count_t in{later.value().sec(), later.value().nsec()};
     drdc_time_t out{0, 0};
     const status s = drdc_time_tai_to_utc(leap, &in, &out);
-    return make_result(s, UtcTime(out));
+    /* the result rests on this instant's TAI-UTC too: its warning
+     * (DRDC_W_LEAP_EXPIRED) holds when the way back reports none */
+    return make_result((s == DRDC_OK) ? tai_now.code() : s, UtcTime(out));
   }
   /** plus(d) with the built-in leap-second table. */
   result<UtcTime> operator+(Duration d) const
@@ -1040,7 +1042,13 @@ public:
     if (!b.ok()) {
       return b;
     }
-    return a.value() - b.value();
+    const result<Duration> d = a.value() - b.value();
+    if (!d.ok()) {
+      return d;
+    }
+    /* the span rests on both instants' TAI-UTC: a warning on either one
+     * (DRDC_W_LEAP_EXPIRED) holds for it */
+    return result<Duration>(d.value(), a.warning() ? a.code() : b.code());
   }
   /** Equal in every field. */
   constexpr bool operator==(const UtcTime &o) const

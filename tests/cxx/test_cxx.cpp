@@ -601,6 +601,39 @@ void test_durations()
   TEST_ASSERT_FALSE((t - drdc::Duration::seconds(INT64_MIN)).ok());
 }
 
+/* An instant on the built-in table's expiry day, 2027-06-28 00:00:00
+ * UTC (20 997 days after 1970-01-01: 57 years with 14 leap days, then
+ * 178 days into 2027), converts with DRDC_W_LEAP_EXPIRED; a span or a sum
+ * that starts there keeps the warning even when it ends before the
+ * expiry. No leap second lies between the two instants (the last is
+ * 2017-01-01), so the span is one day exactly. */
+void test_leap_expiry_warning_carries()
+{
+  const int64_t expiry = INT64_C(20997) * 86400;
+  const drdc::UtcTime late(drdc_time_t{expiry, 0});
+  const drdc::UtcTime early(drdc_time_t{expiry - 86400, 0});
+  TEST_ASSERT_EQUAL_INT(DRDC_W_LEAP_EXPIRED, late.tai().code());
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, early.tai().code());
+
+  const drdc::result<drdc::Duration> span = late - early;
+  TEST_ASSERT_EQUAL_INT(DRDC_W_LEAP_EXPIRED, span.code());
+  TEST_ASSERT_TRUE(span.value() == drdc::Duration::seconds(86400));
+  const drdc::result<drdc::Duration> back = early - late;
+  TEST_ASSERT_EQUAL_INT(DRDC_W_LEAP_EXPIRED, back.code());
+  TEST_ASSERT_TRUE(back.value() == drdc::Duration::seconds(-86400));
+  const drdc::result<drdc::Duration> none = early - early;
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, none.code());
+
+  const drdc::result<drdc::UtcTime> day_before =
+      late - drdc::Duration::seconds(86400);
+  TEST_ASSERT_EQUAL_INT(DRDC_W_LEAP_EXPIRED, day_before.code());
+  TEST_ASSERT_TRUE(day_before.value() == early);
+  const drdc::result<drdc::UtcTime> plus =
+      late.plus(drdc::Duration::seconds(-1));
+  TEST_ASSERT_EQUAL_INT(DRDC_W_LEAP_EXPIRED, plus.code());
+  TEST_ASSERT_EQUAL_INT64(expiry - 1, plus.value().c().sec);
+}
+
 #if defined(__cpp_exceptions)
 /* Where the compiler has exceptions, value_or_throw() throws the status. */
 void test_value_or_throw_throws_the_status()
@@ -641,6 +674,7 @@ void suite_cxx(void)
   RUN_TEST(test_time_points_across_a_leap_second);
   RUN_TEST(test_gps_time);
   RUN_TEST(test_durations);
+  RUN_TEST(test_leap_expiry_warning_carries);
 #if defined(__cpp_exceptions)
   RUN_TEST(test_value_or_throw_throws_the_status);
 #endif
