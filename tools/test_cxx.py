@@ -142,12 +142,16 @@ class CompileTime(unittest.TestCase):
         "drdc::Angle a = 0x10_deg; (void)a;": "no exponent",
         "drdc::Angle a = 12345678901234567890_deg; (void)a;": "19 digits",
         "drdc::GeoAngle a = 9999999_deg; (void)a;": "range of drdc_nas_t",
+        "drdc::LocalLength x = 010_m; (void)x;": "octal",
+        "drdc::Angle a = 0'7.5_deg; (void)a;": "octal",
     }
 
     def test_bad_literals_do_not_compile(self):
         for name, compiler in host_compilers():
             ok = compile_snippet(compiler, "  drdc::LocalLength x = -32768_m;"
-                                 " (void)x;")
+                                 " drdc::Length h = 0.5_m;"
+                                 " drdc::Length z = 0_m;"
+                                 " (void)x; (void)h; (void)z;")
             self.assertEqual(0, ok.returncode, ok.stderr)
             for body, message in self.BAD_LITERALS.items():
                 r = compile_snippet(compiler, "  " + body)

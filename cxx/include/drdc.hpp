@@ -228,8 +228,10 @@ constexpr u128 div_round(u128 n, u128 d)
       q.lo |= 1u;
     }
   }
-  /* round up when 2 r >= d */
-  if (!less(twice_plus(r, 0u), d) && (r.hi >> 63) == 0u) {
+  /* round up when 2 r >= d; r < d, so when r has bit 127 set, 2 r
+   * exceeds 128 bits and is certainly >= d (twice_plus would drop that
+   * bit and compare a wrong, smaller value) */
+  if (((r.hi >> 63) != 0u) || !less(twice_plus(r, 0u), d)) {
     q.lo += 1u;
     if (q.lo == 0u) {
       q.hi += 1u;
@@ -243,17 +245,29 @@ struct decimal {
   uint64_t digits; /**< the literal's digits without the point */
   unsigned scale;  /**< digits after the point */
   bool ok;         /**< digits and '.' only, at most 19 digits */
+  bool octal;      /**< a leading 0 followed by a digit before the point */
 };
 
 /** The characters of a numeric literal, as the literal operator template
- *  receives them: decimal digits, one '.', digit separators. Hexadecimal,
- *  octal-looking prefixes and exponents are refused. */
+ *  receives them: decimal digits, one '.', digit separators. Hexadecimal
+ *  prefixes and exponents are refused, and so is a leading 0 followed by
+ *  a digit before the point: C++ reads `010` as octal 8 but `010.5` as
+ *  decimal, so a reader of `010_m` cannot tell whether 8 m or 10 m is
+ *  meant; refusing both spares the reader the rule. */
 template <char... C> constexpr decimal parse()
 {
   const char text[] = {C..., '\0'};
-  decimal d{0u, 0u, true};
+  decimal d{0u, 0u, true, false};
   bool point = false;
   unsigned count = 0u;
+  /* the first character after a leading '0' (separators skipped) */
+  if (text[0] == '0') {
+    const char *p = text + 1;
+    while (*p == '\'') {
+      ++p;
+    }
+    d.octal = (*p >= '0') && (*p <= '9');
+  }
   for (const char *p = text; *p != '\0'; ++p) {
     if (*p == '\'') {
       continue;
@@ -320,6 +334,8 @@ template <typename U, bool Negative, char... C> struct literal {
   static constexpr detail::decimal value = detail::parse<C...>();
   static_assert(value.ok, "drdc literal: decimal digits and one '.' only, "
                           "at most 19 digits, no exponent");
+  static_assert(!value.octal, "drdc literal: no leading 0 before a digit "
+                              "(C++ reads 010 as octal 8)");
   /** The same literal negated: `-1.5_m`. */
   constexpr literal<U, !Negative, C...> operator-() const
   {
@@ -666,12 +682,14 @@ public:
     return result<Quat>::of(
         [&](Quat &out) { return drdc_quat_mul(&q_, &b.q_, &out.q_); });
   }
-  /** Conjugate (drdc_quat_conj): the inverse of a unit quaternion. */
-  Quat conj() const
+  /** Conjugate (drdc_quat_conj): the inverse of a unit quaternion;
+   *  DRDC_E_OVERFLOW when a vector part is INT32_MIN, whose negation does
+   *  not fit Q1.30. */
+  result<Quat> conj() const
   {
     Quat out;
-    (void)drdc_quat_conj(&q_, &out.q_);
-    return out;
+    const status s = drdc_quat_conj(&q_, &out.q_);
+    return make_result(s, out);
   }
   /** Unit length again (drdc_quat_normalize); DRDC_E_DOMAIN for zero. */
   result<Quat> normalized() const
@@ -823,11 +841,25 @@ public:
   /** The difference; DRDC_E_OVERFLOW beyond int64_t seconds. */
   result<Duration> operator-(Duration o) const
   {
-    const result<Duration> minus_o = -o;
-    if (!minus_o.ok()) {
-      return minus_o;
+    /* subtracted directly: -o overflows for INT64_MIN s although the
+     * difference may fit */
+    const bool borrow = nsec_ < o.nsec_;
+    int64_t sec = 0;
+    bool fits = false;
+    if (!borrow) {
+      fits = sub(sec_, o.sec_, &sec);
+    } else if (sec_ > o.sec_) {
+      /* sec_ > INT64_MIN, so sec_ - 1 fits; the difference is >= 0 and
+       * might only fit with the borrow taken first */
+      fits = sub(sec_ - 1, o.sec_, &sec);
+    } else {
+      /* the difference is <= 0: if it overflows, one less does too */
+      fits = sub(sec_, o.sec_, &sec) && sub(sec, 1, &sec);
     }
-    return *this + minus_o.value();
+    if (!fits) {
+      return result<Duration>(DRDC_E_OVERFLOW);
+    }
+    return Duration(sec, nsec_ - o.nsec_ + (borrow ? ns_per_second : 0));
   }
   /** The negated span; DRDC_E_OVERFLOW for INT64_MIN whole seconds. */
   result<Duration> operator-() const
@@ -882,6 +914,16 @@ private:
       return false;
     }
     *out = a + b;
+    return true;
+  }
+  /* a - b into *out when it fits int64_t */
+  static bool sub(int64_t a, int64_t b, int64_t *out)
+  {
+    if (((b < 0) && (a > (INT64_MAX + b))) ||
+        ((b > 0) && (a < (INT64_MIN + b)))) {
+      return false;
+    }
+    *out = a - b;
     return true;
   }
   constexpr Duration(int64_t s, int64_t ns) : sec_(s), nsec_(ns)
@@ -971,7 +1013,9 @@ public:
     const drdc_time_count_t in{later.value().sec(), later.value().nsec()};
     drdc_time_t out{0, 0};
     const status s = drdc_time_tai_to_utc(leap, &in, &out);
-    return make_result(s, UtcTime(out));
+    /* the result rests on this instant's TAI-UTC too: its warning
+     * (DRDC_W_LEAP_EXPIRED) holds when the way back reports none */
+    return make_result((s == DRDC_OK) ? tai_now.code() : s, UtcTime(out));
   }
   /** plus(d) with the built-in leap-second table. */
   result<UtcTime> operator+(Duration d) const
@@ -998,7 +1042,13 @@ public:
     if (!b.ok()) {
       return b;
     }
-    return a.value() - b.value();
+    const result<Duration> d = a.value() - b.value();
+    if (!d.ok()) {
+      return d;
+    }
+    /* the span rests on both instants' TAI-UTC: a warning on either one
+     * (DRDC_W_LEAP_EXPIRED) holds for it */
+    return result<Duration>(d.value(), a.warning() ? a.code() : b.code());
   }
   /** Equal in every field. */
   constexpr bool operator==(const UtcTime &o) const

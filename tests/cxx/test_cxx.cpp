@@ -91,12 +91,36 @@ void test_conj_and_product_equal_the_c_calls()
     const int32_t expected_conj[4] = {conj.s, conj.x, conj.y, conj.z};
     const int32_t expected_product[4] = {product.s, product.x, product.y,
                                          product.z};
-    assert_quat(expected_conj, w.conj());
-    assert_quat(c, w.conj().conj());
+    const drdc::result<drdc::Quat> wc = w.conj();
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, wc.code());
+    assert_quat(expected_conj, wc.value());
+    const drdc::result<drdc::Quat> back = wc.value().conj();
+    TEST_ASSERT_EQUAL_INT(DRDC_OK, back.code());
+    assert_quat(c, back.value());
     const drdc::result<drdc::Quat> p = w * w.conj();
     TEST_ASSERT_TRUE(p.ok());
     assert_quat(expected_product, p.value());
   }
+}
+
+/* A vector part of INT32_MIN (-2.0) has no negation in Q1.30: the
+ * conjugate is DRDC_E_OVERFLOW (drdc_quat_conj), not a quaternion, and a
+ * product with it passes the error on. */
+void test_conj_of_int32_min_is_an_overflow()
+{
+  const drdc::Quat bad[3] = {drdc::Quat(0, INT32_MIN, 0, 0),
+                             drdc::Quat(0, 0, INT32_MIN, 0),
+                             drdc::Quat(0, 0, 0, INT32_MIN)};
+  for (size_t i = 0u; i < COUNT(bad); ++i) {
+    const drdc::result<drdc::Quat> c = bad[i].conj();
+    TEST_ASSERT_FALSE(c.ok());
+    TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, c.code());
+    TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, (drdc::Quat() * c).code());
+  }
+  /* INT32_MIN as the scalar part is fine: only x, y, z are negated */
+  const drdc::result<drdc::Quat> s = drdc::Quat(INT32_MIN, 1, 0, 0).conj();
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, s.code());
+  TEST_ASSERT_TRUE(s.value() == drdc::Quat(INT32_MIN, -1, 0, 0));
 }
 
 /* Euler -> quaternion -> Euler through the wrappers equal the C calls;
@@ -181,6 +205,39 @@ void test_metre_literals_round_exactly()
   const drdc::result<drdc::LocalLength> near = drdc::to_local(1.5_m);
   TEST_ASSERT_TRUE(near.ok());
   TEST_ASSERT_EQUAL_INT32(98304, near.value().q15_16());
+}
+
+void assert_u128(uint64_t hi, uint64_t lo, drdc::detail::u128 v)
+{
+  TEST_ASSERT_EQUAL_UINT64(hi, v.hi);
+  TEST_ASSERT_EQUAL_UINT64(lo, v.lo);
+}
+
+/* The literals' rounding division, worked out by hand, including
+ * divisors above 2^127 (no literal reaches them, the function must not
+ * care): there the remainder can have bit 127 set, and then twice it is
+ * at least 2^128 > d, so the quotient rounds up. */
+void test_div_round_rounds_half_away_from_zero()
+{
+  using drdc::detail::div_round;
+  using drdc::detail::u128;
+  const uint64_t top = uint64_t{1} << 63;
+  /* 7 / 2 = 3.5 -> 4; 5 / 3 = 1.67 -> 2; 4 / 3 = 1.33 -> 1 */
+  assert_u128(0u, 4u, div_round(u128{0u, 7u}, u128{0u, 2u}));
+  assert_u128(0u, 2u, div_round(u128{0u, 5u}, u128{0u, 3u}));
+  assert_u128(0u, 1u, div_round(u128{0u, 4u}, u128{0u, 3u}));
+  /* 2^127 / (2^128 - 1) is a little above 1/2: 1 */
+  assert_u128(0u, 1u, div_round(u128{top, 0u}, u128{UINT64_MAX, UINT64_MAX}));
+  /* 2^127 / (2^127 + 1) is a little below 1: 1 */
+  assert_u128(0u, 1u, div_round(u128{top, 0u}, u128{top, 1u}));
+  /* (2^127 - 1) / (2^128 - 1) is a little below 1/2: 0 */
+  assert_u128(
+      0u, 0u,
+      div_round(u128{top - 1u, UINT64_MAX}, u128{UINT64_MAX, UINT64_MAX}));
+  /* (2^128 - 1) / (2^128 - 1) = 1 exactly */
+  assert_u128(
+      0u, 1u,
+      div_round(u128{UINT64_MAX, UINT64_MAX}, u128{UINT64_MAX, UINT64_MAX}));
 }
 
 /* The literals agree with the C NMEA parser on the same decimal text
@@ -493,6 +550,46 @@ void test_durations()
   TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW, (drdc::Duration::seconds(INT64_MIN) -
                                           drdc::Duration::nanoseconds(1))
                                              .code());
+  /* differences at the edges of int64_t seconds, subtracted directly:
+   * -1 s - (-2^63 s) = 2^63 - 1 s fits, 0 s - (-2^63 s) = 2^63 s does
+   * not */
+  const drdc::result<drdc::Duration> top =
+      drdc::Duration::seconds(-1) - drdc::Duration::seconds(INT64_MIN);
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, top.code());
+  TEST_ASSERT_EQUAL_INT64(INT64_MAX, top.value().sec());
+  TEST_ASSERT_EQUAL_INT32(0, top.value().nsec());
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_OVERFLOW,
+      (drdc::Duration() - drdc::Duration::seconds(INT64_MIN)).code());
+  /* 0 - (-2^63 s + 1 ns) = 2^63 s - 1 ns = (2^63 - 1) s + 999 999 999 ns,
+   * only with the borrow taken before the seconds */
+  const drdc::result<drdc::Duration> top_ns =
+      drdc::Duration() - drdc::Duration::of(INT64_MIN, 1).value();
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, top_ns.code());
+  TEST_ASSERT_EQUAL_INT64(INT64_MAX, top_ns.value().sec());
+  TEST_ASSERT_EQUAL_INT32(999999999, top_ns.value().nsec());
+  /* (-2^63 s + 1 ns) - 1 ns = -2^63 s fits; 1 ns less does not */
+  const drdc::result<drdc::Duration> bottom =
+      drdc::Duration::of(INT64_MIN, 1).value() - drdc::Duration::nanoseconds(1);
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, bottom.code());
+  TEST_ASSERT_EQUAL_INT64(INT64_MIN, bottom.value().sec());
+  TEST_ASSERT_EQUAL_INT32(0, bottom.value().nsec());
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        (drdc::Duration::of(INT64_MIN, 1).value() -
+                         drdc::Duration::nanoseconds(2))
+                            .code());
+  /* 2^63 - 1 s - (-1 ns) = 2^63 - 1 s + 1 ns fits; from the last
+   * nanosecond of that second it does not */
+  const drdc::result<drdc::Duration> top_plus =
+      drdc::Duration::seconds(INT64_MAX) - drdc::Duration::nanoseconds(-1);
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, top_plus.code());
+  TEST_ASSERT_EQUAL_INT64(INT64_MAX, top_plus.value().sec());
+  TEST_ASSERT_EQUAL_INT32(1, top_plus.value().nsec());
+  TEST_ASSERT_EQUAL_INT(DRDC_E_OVERFLOW,
+                        (drdc::Duration::of(INT64_MAX, 999999999).value() -
+                         drdc::Duration::nanoseconds(-1))
+                            .code());
+
   TEST_ASSERT_EQUAL_INT(DRDC_E_NANOSECOND,
                         drdc::Duration::of(0, 1000000000).code());
   TEST_ASSERT_EQUAL_INT(DRDC_E_NANOSECOND, drdc::Duration::of(0, -1).code());
@@ -502,6 +599,39 @@ void test_durations()
   const drdc::UtcTime t(drdc_time_t{0, 0});
   TEST_ASSERT_FALSE((t + drdc::Duration::seconds(INT64_MAX)).ok());
   TEST_ASSERT_FALSE((t - drdc::Duration::seconds(INT64_MIN)).ok());
+}
+
+/* An instant on the built-in table's expiry day, 2027-06-28 00:00:00
+ * UTC (20 997 days after 1970-01-01: 57 years with 14 leap days, then
+ * 178 days into 2027), converts with DRDC_W_LEAP_EXPIRED; a span or a sum
+ * that starts there keeps the warning even when it ends before the
+ * expiry. No leap second lies between the two instants (the last is
+ * 2017-01-01), so the span is one day exactly. */
+void test_leap_expiry_warning_carries()
+{
+  const int64_t expiry = INT64_C(20997) * 86400;
+  const drdc::UtcTime late(drdc_time_t{expiry, 0});
+  const drdc::UtcTime early(drdc_time_t{expiry - 86400, 0});
+  TEST_ASSERT_EQUAL_INT(DRDC_W_LEAP_EXPIRED, late.tai().code());
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, early.tai().code());
+
+  const drdc::result<drdc::Duration> span = late - early;
+  TEST_ASSERT_EQUAL_INT(DRDC_W_LEAP_EXPIRED, span.code());
+  TEST_ASSERT_TRUE(span.value() == drdc::Duration::seconds(86400));
+  const drdc::result<drdc::Duration> back = early - late;
+  TEST_ASSERT_EQUAL_INT(DRDC_W_LEAP_EXPIRED, back.code());
+  TEST_ASSERT_TRUE(back.value() == drdc::Duration::seconds(-86400));
+  const drdc::result<drdc::Duration> none = early - early;
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, none.code());
+
+  const drdc::result<drdc::UtcTime> day_before =
+      late - drdc::Duration::seconds(86400);
+  TEST_ASSERT_EQUAL_INT(DRDC_W_LEAP_EXPIRED, day_before.code());
+  TEST_ASSERT_TRUE(day_before.value() == early);
+  const drdc::result<drdc::UtcTime> plus =
+      late.plus(drdc::Duration::seconds(-1));
+  TEST_ASSERT_EQUAL_INT(DRDC_W_LEAP_EXPIRED, plus.code());
+  TEST_ASSERT_EQUAL_INT64(expiry - 1, plus.value().c().sec);
 }
 
 #if defined(__cpp_exceptions)
@@ -530,9 +660,11 @@ void suite_cxx(void)
   RUN_TEST(test_quat_product_matches_the_exact_vectors);
   RUN_TEST(test_quat_chain_keeps_the_first_error);
   RUN_TEST(test_conj_and_product_equal_the_c_calls);
+  RUN_TEST(test_conj_of_int32_min_is_an_overflow);
   RUN_TEST(test_euler_conversions_equal_the_c_calls);
   RUN_TEST(test_degree_literals_round_exactly);
   RUN_TEST(test_metre_literals_round_exactly);
+  RUN_TEST(test_div_round_rounds_half_away_from_zero);
   RUN_TEST(test_literals_agree_with_the_nmea_parser);
   RUN_TEST(test_mgrs_pose_matches_geoconvert);
   RUN_TEST(test_poses_equal_the_c_calls);
@@ -542,6 +674,7 @@ void suite_cxx(void)
   RUN_TEST(test_time_points_across_a_leap_second);
   RUN_TEST(test_gps_time);
   RUN_TEST(test_durations);
+  RUN_TEST(test_leap_expiry_warning_carries);
 #if defined(__cpp_exceptions)
   RUN_TEST(test_value_or_throw_throws_the_status);
 #endif
