@@ -3,18 +3,15 @@
 (its own event loop), and a small HTTP client over urllib: every test
 talks real HTTP to it."""
 import asyncio
-import importlib
 import json
 import os
 import subprocess
-import sys
 import threading
 import urllib.error
 import urllib.request
 
 from aiohttp import web
 
-import drdc
 from drdc.serve.app import Limits, make_app
 
 HOST_BUILD = os.environ.get("DRDC_HOST_BUILD", "")
@@ -85,38 +82,19 @@ def runner_log():
                           timeout=300).stdout
 
 
-def ensure_judge():
-    """drdc.conformance, or the tests' stand-in (serve_standin.py) with
-    the digest parts of the host runner's own log when it is missing."""
-    try:
-        importlib.import_module("drdc.conformance")
-        return
-    except ImportError:
-        pass
-    import re
-    import serve_standin
-    log = runner_log() or ""
-    parts = dict(re.findall(r"golden digest of (.+?): (0x[0-9a-f]{8})", log))
-    standin = serve_standin.make(parts)
-    sys.modules["drdc.conformance"] = standin
-    drdc.conformance = standin
-
-
 def fast_limits():
     """Default limits, with a rate limit that a test's burst stays within."""
     return Limits(rate=10000.0, burst=10000.0)
 
 
 def main():
-    """A service with the stand-in judge when drdc.conformance is missing,
-    for the fuzz run of docs/service.md (a rate limit above the fuzzer's
-    pace: every request comes from 127.0.0.1)."""
+    """A service for the fuzz run of docs/service.md (a rate limit above
+    the fuzzer's pace: every request comes from 127.0.0.1)."""
     import argparse
     from drdc.serve.app import Limits
     ap = argparse.ArgumentParser(description=main.__doc__)
     ap.add_argument("--port", type=int, default=8080)
     args = ap.parse_args()
-    ensure_judge()
     web.run_app(make_app(Limits(rate=1e9, burst=1e9)), host="127.0.0.1",
                 port=args.port, access_log=None)
 

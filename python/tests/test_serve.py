@@ -17,15 +17,13 @@ from cvectors import TOP, load
 from drdc.serve.app import Limits
 from drdc.serve.functions import EXAMPLES, FUNCTIONS
 from drdc.serve.limits import TokenBuckets
-from serve_helpers import (Chunks, Server, ensure_judge, fast_limits,
-                           runner_log)
+from serve_helpers import RUNNER, Chunks, Server, fast_limits, runner_log
 
 OPENAPI = os.path.join(TOP, "python", "openapi.json")
 
 
 @pytest.fixture(scope="module")
 def srv():
-    ensure_judge()
     s = Server(fast_limits())
     yield s
     s.stop()
@@ -293,6 +291,30 @@ def test_conformance_verdicts(srv):
     status, _, v = srv.request("POST", "/v1/conformance", changed,
                                "text/plain")
     assert status == 200 and v["verdict"] == "differs"
+
+
+def test_conformance_names_a_planted_lsb(srv):
+    """The port of test-runner-broken (GOLDEN_BREAK_TO_UTM: the easting
+    of drdc_geo_to_utm one LSB up) through the service: the geo module
+    differs, and the first difference is that function at its first
+    accepted input, the record test_conformance.py works out on its own
+    from the golden generator."""
+    path = RUNNER + "-broken"
+    if not os.path.exists(path):
+        pytest.skip("no host build (DRDC_HOST_BUILD)")
+    log = subprocess.run([path], capture_output=True, text=True,
+                         timeout=300).stdout
+    status, _, v = srv.request("POST", "/v1/conformance", log, "text/plain")
+    assert status == 200, v
+    assert v["verdict"] == "differs"
+    differs = [m for m in v["modules"] if m["verdict"] == "differs"]
+    assert [m["name"] for m in differs] == ["geo"]
+    first = differs[0]["first_difference"]
+    assert first["function"] == "drdc_geo_to_utm"
+    assert first["record"] == 3
+    assert first["input"].startswith(
+        "lat_nas=57877737200000, lon_nas=-898800195000000")
+    assert int(first["got"], 16) == int(first["expected"], 16) + 1
 
 
 def test_page_is_self_contained(srv):

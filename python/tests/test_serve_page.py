@@ -19,7 +19,7 @@ import aiohttp
 import pytest
 
 import drdc
-from serve_helpers import Server, ensure_judge, fast_limits, runner_log
+from serve_helpers import Server, fast_limits, runner_log
 
 CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu",
                   "--disable-quic", "--no-first-run",
@@ -150,7 +150,6 @@ def test_page_in_headless_chromium():
     log = runner_log()
     if log is None:
         pytest.skip("no host build (DRDC_HOST_BUILD)")
-    ensure_judge()
     srv = Server(fast_limits())
     work = tempfile.mkdtemp(prefix="drdc-serve-page-")
     profile = os.path.join(work, "profile")
