@@ -127,6 +127,19 @@ def _fields(body):
     return fields
 
 
+def _defines(text):
+    """{name: int} of the #define lines of C text (comments removed) whose
+    value is a constant, each able to use those before it; include guards
+    and function-like macros are left out."""
+    found = {}
+    for name, value in _DEFINE.findall(text):
+        try:
+            found[name] = _constant(value, found)
+        except ValueError:
+            pass
+    return found
+
+
 @functools.lru_cache(maxsize=None)
 def load(rel):
     """Everything a vectors header defines: {"defines": {name: int},
@@ -135,12 +148,7 @@ def load(rel):
     int or a list."""
     with open(os.path.join(TOP, rel)) as f:
         text = _COMMENT.sub(" ", f.read())
-    defines = {}
-    for name, value in _DEFINE.findall(text):
-        try:
-            defines[name] = _constant(value, defines)
-        except ValueError:
-            pass  # include guards and the like
+    defines = _defines(text)
     structs = {n: _fields(b) for n, b in _STRUCT.findall(text)}
 
     def resolve(v):
@@ -170,11 +178,4 @@ def tolerances(rel):
     """{name: int} of the #define lines of a C test file whose value is a
     constant: the bounds its Unity assertions use."""
     with open(os.path.join(TOP, rel)) as f:
-        text = _COMMENT.sub(" ", f.read())
-    found = {}
-    for name, value in _DEFINE.findall(text):
-        try:
-            found[name] = _constant(value, found)
-        except ValueError:
-            pass  # function-like macros
-    return found
+        return _defines(_COMMENT.sub(" ", f.read()))
