@@ -65,14 +65,16 @@ INTEGER_HELPERS = {
     "_%sgpr_%d%s" % (op, reg, tail) for op in ("save", "rest")
     for reg in range(14, 32) for tail in ("", "_x")
 }
-# AVR (8-bit registers): libgcc's 32- and 64-bit multiply, divide, add,
+# AVR (8-bit registers): libgcc's 32- and 64-bit multiply (avr-gcc 14
+# also calls __usmulhisi3, unsigned by signed 16 x 16 -> 32), divide, add,
 # subtract, negate and compare, its switch-table jump, and the start-up's
 # copy of .data into RAM, which every object with initialised or constant
 # data references (constants live in RAM on AVR unless placed in flash).
 INTEGER_HELPERS |= {
     "__mulsi3", "__divmodsi4", "__udivmodsi4", "__mulsidi3", "__umulsidi3",
-    "__mulohisi3", "__muluhisi3", "__umulhisi3", "__mulhisi3", "__adddi3",
-    "__adddi3_s8", "__subdi3", "__subdi3_s8", "__negdi2", "__cmpdi2_s8",
+    "__mulohisi3", "__muluhisi3", "__umulhisi3", "__mulhisi3", "__usmulhisi3",
+    "__adddi3", "__adddi3_s8", "__subdi3", "__subdi3_s8", "__negdi2",
+    "__cmpdi2_s8",
     "__tablejump2__", "__do_copy_data", "__do_clear_bss",
 }
 # Thumb-1 (Cortex-M0) switch tables: libgcc's case-table dispatchers.

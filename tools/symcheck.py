@@ -11,17 +11,21 @@ clash with it.
 
 The compiler may add its own external names for the library's objects,
 which are judged by the name of the object they stand for:
-AddressSanitizer's ODR indicators (__odr_asan.<object>), and on Windows
-x86-64 mingw-w64 GCC's pointers to data of other objects
-(.refptr.<object>: a COMDAT pointer each object that reads the data
-shares, which the linker's pseudo-relocations fill in).
+AddressSanitizer's ODR indicators (GCC's __odr_asan.<object>, clang's
+__odr_asan_gen_<object>), and on Windows x86-64 mingw-w64 GCC's pointers
+to data of other objects (.refptr.<object>: a COMDAT pointer each object
+that reads the data shares, which the linker's pseudo-relocations fill
+in). clang's AddressSanitizer (19 and later) also defines one name of its
+own in every object, ___asan_globals_registered: a hidden flag its
+module constructor sets, which stands for no object of the library.
 """
 import os
 import subprocess
 import sys
 
 PREFIX = "drdc_"
-INSTRUMENTATION = ("__odr_asan.", ".refptr.")
+INSTRUMENTATION = ("__odr_asan.", "__odr_asan_gen_", ".refptr.")
+SANITIZER_NAMES = {"___asan_globals_registered"}
 
 
 def defined_externals(nm, path):
@@ -40,6 +44,8 @@ def defined_externals(nm, path):
 def foreign(nm, path):
     bad = []
     for member, name in defined_externals(nm, path):
+        if name in SANITIZER_NAMES:
+            continue
         bare = name
         for p in INSTRUMENTATION:
             if bare.startswith(p):
