@@ -75,7 +75,13 @@ def unpack(archive):
     os.makedirs(WORK)
     print("rtems: unpacking %s" % archive, flush=True)
     with tarfile.open(archive) as tar:
-        tar.extractall(WORK)
+        # Python 3.12 and later (Debian 13) check each member against the
+        # folder ("data" filter) and warn without one; 3.11.2 (Debian 12)
+        # has no filter, and the archive is the project's own
+        if hasattr(tarfile, "data_filter"):
+            tar.extractall(WORK, filter="data")
+        else:
+            tar.extractall(WORK)
     open(stamp, "w").close()
     return prefix
 
