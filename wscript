@@ -14,6 +14,7 @@ import os
 import re
 import subprocess
 import sys
+import time
 
 from waflib import Build, Configure, Context, Errors, Logs, Options
 
@@ -33,11 +34,12 @@ Configure.autoconfig = "clobber"
 WARNINGS = ["-std=c99", "-Wall", "-Wextra", "-Wconversion",
             "-Wsign-conversion", "-Wshadow", "-Wcast-align",
             "-Wstrict-prototypes", "-Wundef"]
-# Warnings are errors where the compiler is one the project pins and tries
-# (every target of TARGETS, with Debian 12's gcc 12 and clang 14) and where
-# configure is asked to (--werror: ./waf check's real RTEMS 6 build, gcc
-# 13.3). Another compiler (a user's RTEMS tool suite) may warn where these
-# do not: its build warns but completes.
+# Warnings are errors where the compiler is one the project tries (every
+# target of TARGETS, with the compilers of Debian 12 and 13: gcc 12 and 14,
+# clang 14 and 19, avr-gcc 5 and 14) and where configure is asked to
+# (--werror: ./waf check's real RTEMS 6 build, gcc 13.3). Another compiler
+# (a user's RTEMS tool suite) may warn where these do not: its build warns
+# but completes.
 # Code generation of every file, ours and third-party.
 CODEGEN = ["-O2", "-g", "-ffunction-sections", "-fdata-sections"]
 # Every library file, on top of CODEGEN: no padding to align function
@@ -70,7 +72,12 @@ SANITIZE = ["-fsanitize=address,undefined", "-fno-sanitize-recover=all",
 #   intcheck   instruction set of tools/intcheck.py, or None to skip
 #   soft_float_libm  the toolchain has soft-float double and a libm: the
 #              benchmark image times double-precision baselines
-#   apt        groups of Debian packages the target needs (tools/deps.py)
+#   apt        groups of Debian packages the target builds with
+#              (tools/deps.py APT_GROUPS)
+#   apt_run    groups of Debian packages that run its images (QEMU, Wine,
+#              simavr), set up by ./waf demo, check and bench
+#   check_only set up and built by ./waf check (and configure
+#              --with-targets naming it), not by a plain ./waf configure
 #   library_arch  flags for the library's objects only (default none)
 #   abi        flags an application must compile with to link the library
 #              (in the installed drdc-<target>.pc); None: a test build
@@ -96,7 +103,7 @@ PPC_BARE_METAL = {
     "libs": ["gcc"],
     "hard_float": ["-mhard-float"], "intcheck": "ppc",
     # Debian's PowerPC libgcc is hard-float: no soft-float routines
-    "soft_float_libm": False, "apt": ["ppc-e500"],
+    "soft_float_libm": False, "apt": ["ppc"], "apt_run": ["qemu-ppc"],
     # freestanding: the compiler's <stdint.h>, <stddef.h>, <stdbool.h>;
     # the board's own <limits.h> (the compiler's wants a C library's
     # below it) and <string.h> (the four functions of its mem.c)
@@ -108,7 +115,7 @@ ARM_NEWLIB = {
     "cross": "arm-none-eabi-", "bsp": "arm-cm3", "qemu": "arm-cm3",
     "ext": ".elf",
     "link": ["--specs=rdimon.specs", "-nostartfiles", "-Wl,--gc-sections"],
-    "libs": [], "intcheck": "arm", "apt": ["arm-cm3"],
+    "libs": [], "intcheck": "arm", "apt": ["arm"], "apt_run": ["qemu-arm"],
     # the compiler's own, then newlib's (nano.specs puts newlib nano's
     # first with -isystem, which -nostdinc keeps)
     "headers": ["gcc:include", "gcc:include-fixed",
@@ -124,23 +131,27 @@ TARGETS = {
         "cross": "", "bsp": "host", "qemu": "host", "ext": "",
         "arch": ["-D_POSIX_C_SOURCE=200809L"],
         "link": [], "libs": [], "hard_float": [], "intcheck": "x86-64",
-        "soft_float_libm": False, "apt": ["host"], "abi": [], "tool": True,
+        "soft_float_libm": False, "apt": ["host"], "apt_run": [], "abi": [],
+        "tool": True,
     },
     "host-asan": {
         "cross": "", "bsp": "host", "qemu": "host", "ext": "",
         "arch": ["-D_POSIX_C_SOURCE=200809L"] + SANITIZE,
         "link": SANITIZE, "libs": [], "hard_float": None, "intcheck": None,
-        "soft_float_libm": False, "apt": ["host"], "abi": None,
+        "soft_float_libm": False, "apt": ["host"], "apt_run": [],
+        "abi": None,
     },
+    # libFuzzer with ASan and UBSan, by the release's clang (14 on Debian
+    # 12, 19 on 13)
     "host-fuzz": {
-        "cross": "", "compiler": "clang-14", "bsp": "host", "qemu": None,
-        "ext": "", "images": False, "fuzz": True,
+        "cross": "", "compiler": "clang", "bsp": "host", "qemu": None,
+        "ext": "", "images": False, "fuzz": True, "check_only": True,
         "arch": ["-D_POSIX_C_SOURCE=200809L",
                  "-fsanitize=fuzzer-no-link,address,undefined",
                  "-fno-sanitize-recover=all", "-fno-omit-frame-pointer"],
         "link": ["-fsanitize=fuzzer,address,undefined"], "libs": [],
         "hard_float": None, "intcheck": None, "soft_float_libm": False,
-        "apt": ["host", "host-fuzz"], "abi": None,
+        "apt": ["host", "clang"], "apt_run": [], "abi": None,
     },
     "ppc-e500": dict(
         PPC_BARE_METAL,
@@ -209,17 +220,19 @@ TARGETS = {
         # division; an application of the library: libgcc only
         "libs": ["c", "gcc"], "library_libs": ["gcc"],
         "hard_float": ["-march=rv32imafdc", "-mabi=ilp32d"],
-        "intcheck": "riscv", "soft_float_libm": False, "apt": ["riscv32"],
+        "intcheck": "riscv", "soft_float_libm": False, "apt": ["riscv"],
+        "apt_run": ["qemu-riscv"],
         "headers": ["gcc:include", "gcc:include-fixed",
                     "/usr/lib/picolibc/riscv64-unknown-elf/include"],
         "hosted_bait": ["features.h", "argp.h"],
         "abi": ["-march=rv32imac", "-mabi=ilp32"],
     },
-    # AVR ATmega2560 (8-bit core, 16-bit int), avr-gcc 5.4 and avr-libc:
-    # where integer code hides its width assumptions (1 << 20, builtins
-    # that take an unsigned int). The library only, warning-free with
-    # -Werror; each part of the conformance digest runs alone under
-    # simavr (fw/golden-part, tools/test_avr.py).
+    # AVR ATmega2560 (8-bit core, 16-bit int), avr-gcc (5.4 on Debian 12,
+    # 14.2 on 13) and avr-libc: where integer code hides its width
+    # assumptions (1 << 20, builtins that take an unsigned int). The
+    # library only, warning-free with -Werror; each part of the
+    # conformance digest runs alone under simavr (fw/golden-part,
+    # tools/test_avr.py).
     "avr": {
         "cross": "avr-", "bsp": "avr", "qemu": None, "ext": ".elf",
         "images": False, "golden_parts": True,
@@ -227,7 +240,7 @@ TARGETS = {
         # those loops rolled, same results
         "arch": ["-mmcu=atmega2560", "-Wno-unknown-pragmas"],
         "link": ["-Wl,--gc-sections"], "libs": [], "hard_float": None, "intcheck": "avr",
-        "soft_float_libm": False, "apt": ["avr"],
+        "soft_float_libm": False, "apt": ["avr"], "apt_run": ["simavr"],
         "headers": ["gcc:include", "gcc:include-fixed", "/usr/lib/avr/include"],
         "hosted_bait": ["features.h", "argp.h"],
         "abi": None,
@@ -246,7 +259,8 @@ TARGETS["win64"] = {
     "arch": ["-D__USE_MINGW_ANSI_STDIO=1"],
     # one self-contained .exe: libgcc linked in, no libgcc_s DLL
     "link": ["-static"], "libs": [], "hard_float": [], "intcheck": "x86-64",
-    "soft_float_libm": False, "apt": ["win64"], "abi": [],
+    "soft_float_libm": False, "apt": ["mingw"], "apt_run": ["wine"],
+    "abi": [],
 }
 # --- end of Windows (win64) --------------------------------------------
 
@@ -285,8 +299,9 @@ def options(opt):
     _tools_module("waf_rtems").options(opt)
     opt.add_option("--with-targets", dest="with_targets", default=None,
                    help="configure: the targets to set up and build, comma "
-                   "separated (default: all of %s; ./waf check needs all, "
-                   "./waf demo %s)" % (", ".join(TARGETS), DEFAULT_TARGET))
+                   "separated (default: %s; ./waf check adds every other, "
+                   "./waf demo %s)" % (", ".join(_default_targets()),
+                                       DEFAULT_TARGET))
     opt.add_option("--werror", action="store_true", default=False,
                    dest="werror", help="configure: warnings are errors in "
                    "RTEMS BSP builds too (always in the targets' builds)")
@@ -317,9 +332,14 @@ def init(ctx):
     _register_variant_commands(cache.RTEMS_VARIANTS or [])
 
 
+def _default_targets():
+    """What a plain ./waf configure sets up: all but the check-only."""
+    return [n for n, t in TARGETS.items() if not t.get("check_only")]
+
+
 def _selected_targets(conf):
     if conf.options.with_targets is None:
-        return list(TARGETS)  # also those a later wscript adds
+        return _default_targets()
     names = [n for n in conf.options.with_targets.split(",") if n]
     unknown = [n for n in names if n not in TARGETS]
     if unknown or not names:
@@ -370,18 +390,34 @@ def _check_hermetic(conf, name, t):
         conf.end_msg("none, as it must be")
 
 
-def configure(conf):
+# The upstream sources the images build with: Unity and libfixmath.
+SOURCES = ("unity", "libfixmath")
+
+
+def _setup(ctx, groups, python=False):
+    """Install what a command needs (tools/deps.py): the Debian packages of
+    groups, the upstream sources and, if python, the Python packages. Not
+    root: stop with the one command that installs all of it."""
     deps = _tools_module("deps")
+    try:
+        return deps.ensure(sorted(set(groups)), SOURCES, python)
+    except deps.SetupError as e:
+        ctx.fatal(str(e))
+
+
+def _apt_groups(targets, run=False):
+    """The Debian package groups that build (and, if run, run) targets."""
+    return [g for n in targets
+            for g in TARGETS[n]["apt"] + (TARGETS[n]["apt_run"] if run else [])]
+
+
+def configure(conf):
     prefix = os.path.abspath(conf.options.prefix)
     targets = _selected_targets(conf)
-    everything = targets == list(TARGETS)
-    # The checks' tools and Python packages only where ./waf check can run.
-    groups = sorted({g for n in targets for g in TARGETS[n]["apt"]}
-                    | ({"check", "serve"} if everything else set()))
-    try:
-        found = deps.ensure_all(groups, python=everything)
-    except deps.SetupError as e:
-        conf.fatal(str(e))
+    # pkg-config reads an RTEMS BSP's flags
+    found = _setup(conf, _apt_groups(targets)
+                   + (["rtems"] if conf.options.rtems else []))
+    versions = _tools_module("toolchains")
     for name in targets:
         t = TARGETS[name]
         conf.setenv(name)
@@ -392,6 +428,11 @@ def configure(conf):
             conf.find_program(t["cross"] + tool, var=var)
         conf.env.AS = conf.env.CC
         conf.load(("clang" if compiler.startswith("clang") else "gcc") + " gas")
+        # what this target's results were computed with, in the build log
+        # and in ./waf check's summary
+        conf.env.CC_RELEASE = versions.compiler(conf.env.CC)
+        conf.msg("Compiler of %s" % name, "%s %s" % (
+            os.path.basename(conf.env.CC[0]), conf.env.CC_RELEASE))
         # the table's "ext" names the programs (waf would add .exe for
         # Windows by itself)
         conf.env.cprogram_PATTERN = "%s"
@@ -413,7 +454,6 @@ def configure(conf):
         conf.env.WERROR = True
         conf.env.UNITY = found["unity"]
         conf.env.LIBFIXMATH = found["libfixmath"]
-        conf.env.PYTHONPATH = found["python"] or ""
         # Install layout: one library directory and one pkg-config name a
         # target, so that targets installed into one prefix never clobber
         # each other; the headers are the same for all.
@@ -446,7 +486,8 @@ def configure(conf):
     conf.env.WERROR = conf.options.werror
     conf.env.UNITY = found["unity"]
     conf.env.LIBFIXMATH = found["libfixmath"]
-    conf.env.PYTHONPATH = found["python"] or ""
+    for what, version in versions.runners():
+        conf.msg(what, version)
     conf.env.RTEMS_VARIANTS = _tools_module("waf_rtems").configure(
         conf, CODEGEN)
 
@@ -596,7 +637,7 @@ def _qemu_linkcmds(task):
 #   bench      the wrapper's quaternion product beside the C call, timed
 #              under QEMU -icount (tools/test_cxx.py)
 CXX_TARGETS = {
-    "host": {"compilers": ["g++", "clang++-14"], "flags": [],
+    "host": {"compilers": ["g++", "clang++"], "flags": [],
              "bench": False},
     # the same under ASan and UBSan (the target's flags)
     "host-asan": {"compilers": ["g++"], "flags": [], "bench": False},
@@ -632,7 +673,7 @@ def configure_cxx(conf, name, t):
     conf.env.CXX_EXT = t["ext"]
     if t["cross"]:
         conf.env.LINK_CXX = conf.env.CC
-    # the further compilers come with other targets' packages (clang-14:
+    # the further compilers come with other targets' packages (clang:
     # host-fuzz), so a tree configured for the host alone may lack them;
     # ./waf check configures every target and tools/test_cxx.py demands
     # them all
@@ -647,7 +688,7 @@ def build_cxx(bld, t):
     """Per C++ compiler of the target: fw/cxx-runner/cxx-runner (the Unity
     tests of drdc.hpp) and fw/demo-cxx/demo-cxx (the C++ demo); the
     further compilers' images get the compiler's name as a suffix
-    (cxx-runner-clang++-14). On a bench target also fw/bench-cxx."""
+    (cxx-runner-clang++). On a bench target also fw/bench-cxx."""
     spec = CXX_TARGETS.get(bld.variant)
     if spec is None:
         return
@@ -910,18 +951,53 @@ def _run_now(commands):
         Scripting.run_command(cmd)
 
 
-def _build_all_then(then, targets):
+def _configured():
+    """(options, targets) of the last configure; (None, []) before the
+    first."""
+    from waflib import ConfigSet
+    try:
+        lock = ConfigSet.ConfigSet(os.path.join(Context.top_dir,
+                                                Options.lockfile))
+        cache = ConfigSet.ConfigSet(os.path.join(lock.out_dir, "c4che",
+                                                 "_cache.py"))
+    except (EnvironmentError, AttributeError):
+        return None, []
+    return lock.options, list(cache.TARGETS or [])
+
+
+def _configure_with(targets):
+    """Configure where the last configure left out any of targets (or none
+    ran), adding them to its targets and keeping its other options."""
+    options, have = _configured()
+    if options is not None and set(targets) <= set(have):
+        return
+    saved = Options.options.__dict__
+    Options.options.__dict__ = dict(options or saved)
+    Options.options.with_targets = ",".join(
+        n for n in TARGETS if n in set(targets) | set(have))
+    try:
+        _run_now(["configure"])
+    finally:
+        Options.options.__dict__ = saved
+
+
+def _command(ctx, targets, then, groups=(), python=False):
+    """Set up what a command needs (the packages that build and run
+    targets, groups, and if python the Python packages), configure
+    targets where needed, build them, then run the command `then`."""
+    _setup(ctx, _apt_groups(targets, run=True) + list(groups), python)
+    _configure_with(targets)
     _run_now(["build_" + n for n in targets] + [then])
 
 
 def check(ctx):
     """build every target, then run every check and test suite"""
-    _build_all_then("run_checks", list(TARGETS))
+    _command(ctx, list(TARGETS), "run_checks", ["check"], python=True)
 
 
 def demo(ctx):
     """build the default target and run the demo firmware under QEMU"""
-    _build_all_then("run_demo", [DEFAULT_TARGET])
+    _command(ctx, [DEFAULT_TARGET], "run_demo")
 
 
 # Targets with a deterministic counter under QEMU -icount (tools/bench.py).
@@ -930,23 +1006,17 @@ BENCH_TARGETS = ["ppc-e500", "arm-cm3", "riscv32"]
 
 def bench(ctx):
     """benchmark and footprint: build/bench/report.json, docs/performance.*"""
-    _build_all_then("run_bench", BENCH_TARGETS)
+    _command(ctx, BENCH_TARGETS, "run_bench", python=True)
 
 
-def _ensure_for(ctx, groups):
-    """The Debian packages of groups and the Python packages, for commands
-    that need them whatever configure set up."""
-    deps = _tools_module("deps")
-    try:
-        deps.ensure_apt(groups)
-        ctx.env.PYTHONPATH = deps.ensure_python()
-    except deps.SetupError as e:
-        ctx.fatal(str(e))
+def _python_path(ctx):
+    """The folder of the pinned Python packages, installed if missing."""
+    return _setup(ctx, [], python=True)["python"]
 
 
 def _python(ctx, args, extra_env=None, **kw):
     env = dict(os.environ)
-    env["PYTHONPATH"] = ctx.env.PYTHONPATH or ""
+    env["PYTHONPATH"] = getattr(ctx, "python_path", "")
     env.update(extra_env or {})
     return subprocess.call([sys.executable] + args, cwd=ctx.path.abspath(),
                            env=env, **kw)
@@ -969,21 +1039,20 @@ class RunDemo(Build.BuildContext):
 
 def docs(ctx):
     """API reference (Doxygen) and the error plots of docs/accuracy.md"""
-    _build_all_then("run_docs", ["host"])
+    _command(ctx, ["host"], "run_docs", ["docs"], python=True)
 
 
 class RunDocs(Build.BuildContext):
     """(internal) Doxygen into build/docs/html, plots into docs/img"""
     cmd = "run_docs"
-    variant = "host"
+    variant = ""
 
     def execute(self):
         self.restore()
         if not self.all_envs:
             self.load_envs()
-        # Doxygen, TransverseMercatorProj and matplotlib, also where
-        # configure set up the host target alone
-        _ensure_for(self, ["docs"])
+        # matplotlib for the plots
+        self.python_path = _python_path(self)
         if subprocess.call(["doxygen", "docs/Doxyfile"],
                            cwd=self.path.abspath()) != 0:
             self.fatal("Doxygen found undocumented or badly documented "
@@ -997,13 +1066,13 @@ class RunDocs(Build.BuildContext):
 
 def fuzz(ctx):
     """run every libFuzzer target for --seconds each (tests/fuzz/)"""
-    _build_all_then("run_fuzz", ["host-fuzz"])
+    _command(ctx, ["host-fuzz"], "run_fuzz")
 
 
 class RunFuzz(Build.BuildContext):
     """(internal) run the fuzzers"""
     cmd = "run_fuzz"
-    variant = "host"
+    variant = ""
 
     def execute(self):
         self.restore()
@@ -1017,13 +1086,13 @@ class RunFuzz(Build.BuildContext):
 class RunBench(Build.BuildContext):
     """(internal) run the benchmark images and write the reports"""
     cmd = "run_bench"
-    variant = "host"
+    variant = ""
 
     def execute(self):
         self.restore()
         if not self.all_envs:
             self.load_envs()
-        _ensure_for(self, [])  # matplotlib, for the chart
+        self.python_path = _python_path(self)  # matplotlib, for the chart
         if _python(self, ["tools/bench.py", "--build", out, "--out",
                           os.path.join(out, "bench", "report.json"),
                           "--docs", "docs"]) != 0:
@@ -1032,19 +1101,19 @@ class RunBench(Build.BuildContext):
 
 def serve(ctx):
     """run the gold-standard web service on 127.0.0.1:8080 (docs/service.md)"""
-    _build_all_then("run_serve", ["host"])
+    _command(ctx, ["host"], "run_serve", python=True)
 
 
 class RunServe(Build.BuildContext):
     """(internal) pip install ./python into the build, run drdc.serve"""
     cmd = "run_serve"
-    variant = "host"
+    variant = ""
 
     def execute(self):
         self.restore()
         if not self.all_envs:
             self.load_envs()
-        _ensure_for(self, [])  # aiohttp and numpy
+        self.python_path = _python_path(self)  # aiohttp and numpy
         site = os.path.join(out, "python", "serve-site")
         if _python(self, ["-m", "pip", "install", "--quiet", "--no-index",
                           "--no-deps", "--disable-pip-version-check",
@@ -1052,7 +1121,7 @@ class RunServe(Build.BuildContext):
                           "--target", site,
                           os.path.join(self.path.abspath(), "python")]) != 0:
             self.fatal("pip install ./python failed")
-        env = {"PYTHONPATH": os.pathsep.join([site, self.env.PYTHONPATH])}
+        env = {"PYTHONPATH": os.pathsep.join([site, self.python_path])}
         args = os.environ.get("DRDC_SERVE_ARGS", "").split()
         try:
             _python(self, ["-m", "drdc.serve"] + args, env)
@@ -1063,14 +1132,17 @@ class RunServe(Build.BuildContext):
 class RunChecks(Build.BuildContext):
     """(internal) run the checks and the Unity suites of every target"""
     cmd = "run_checks"
-    variant = "host"
+    variant = ""
 
     def execute(self):
         self.restore()
         if not self.all_envs:
             self.load_envs()
         top_env = self.all_envs[""]
+        self.python_path = _python_path(self)
         steps = [
+            ("set-up: no Debian version pin, README's package tables true",
+             ["-m", "unittest", "-q", "tools.test_setup"]),
             ("reference vectors regenerate identically",
              ["tests/ref/generate.py", "--check"]),
             ("integer-only check of core/ and fixed/",
@@ -1123,8 +1195,10 @@ class RunChecks(Build.BuildContext):
         # each step: title, arguments of Python, and maybe its environment
         for title, args, *env in steps:
             Logs.pprint("CYAN", "== " + title)
+            start = time.monotonic()
             if _python(self, args, *env) != 0:
                 self.fatal("check failed: " + title)
+            Logs.pprint("CYAN", "   (%.0f s)" % (time.monotonic() - start))
         Logs.pprint("CYAN", "== Unity suites on every target")
         images = ["%s=%s:%s" % (n, t["qemu"], os.path.join(
             out, n, "fw/test-runner/test-runner" + t["ext"]))
@@ -1140,8 +1214,12 @@ class RunChecks(Build.BuildContext):
         if os.path.exists(real):
             with open(real) as f:
                 images.append("rtems=rtems-qoriq_e500:" + f.read().strip())
+        # what the results were computed with, in the summary
+        note = _tools_module("toolchains").summary(
+            [self.all_envs[n] for n in top_env.TARGETS])
         failed = _python(self, ["qemu/harness.py", "run", "--junit-dir",
-                                os.path.join(out, "reports")] + images)
+                                os.path.join(out, "reports"),
+                                "--note", note] + images)
         if failed:
             self.fatal("test suites failed")
         # The harness's "N passed, M failed" stays the last line: CI reads

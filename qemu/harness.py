@@ -316,6 +316,8 @@ def cmd_run(args):
     elif digests:
         d, names = next(iter(digests.items()))
         print("PASS conformance digest %s on all %d images" % (d, len(names)))
+    if args.note:
+        print(args.note)
     print("%d passed, %d failed" % (passed, failed))
     return 0 if failed == 0 else 1
 
@@ -350,6 +352,8 @@ def main(argv=None):
     sub = ap.add_subparsers(dest="command", required=True)
     r = sub.add_parser("run", help="judge Unity test images")
     r.add_argument("--junit-dir", help="write NAME.xml and NAME.log here")
+    r.add_argument("--note", help="a line to print before the last (what "
+                   "the images were built and run with)")
     r.add_argument("images", nargs="+", metavar="[LABEL=]PROFILE:IMAGE",
                    help="LABEL names the image in reports (default PROFILE)")
     s = sub.add_parser("show", help="stream the console of one image")

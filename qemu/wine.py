@@ -15,7 +15,7 @@ no menu entries (winemenubuilder disabled). Standard input, output and
 error are the program's own, untouched: the harness and the tool tests see
 exactly the bytes the program writes.
 
-Debian 12's wine64 package has no `wine` command (that is in the `wine`
+Debian's wine64 package (12 and 13) has no `wine` command (that is in the `wine`
 package, with the 32-bit loader and desktop integration); its loader is
 /usr/lib/wine/wine64 and its server /usr/lib/wine/wineserver64.
 
@@ -54,7 +54,7 @@ def _find(name):
     path = shutil.which(name)
     if path is None:
         sys.exit("wine.py: no %s; Debian's wine64 package has it "
-                 "(tools/deps.py, APT group win64)" % name)
+                 "(tools/deps.py, APT group wine)" % name)
     return path
 
 

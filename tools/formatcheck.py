@@ -7,6 +7,11 @@
 
 Every tracked .c, .h, .cpp and .hpp file is checked except generated ones (their
 first lines say "do not edit"): their generators own their layout.
+
+The layout is clang-format 14.0.6's, from its wheel on PyPI (pinned by
+SHA-256 in tools/deps.py, a static binary), so every machine and Debian
+release lays the sources out alike; run with PYTHONPATH=.deps/python as
+./waf check does.
 """
 import argparse
 import os
@@ -15,7 +20,25 @@ import subprocess
 import sys
 
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-CLANG_FORMAT = "clang-format-14"
+CLANG_VERSION = "14.0.6"
+
+
+def clang_format():
+    """The binary of the pinned clang-format wheel."""
+    try:
+        import clang_format as wheel
+    except ImportError:
+        sys.exit("formatcheck: no clang_format package on PYTHONPATH "
+                 "(tools/deps.py installs it into .deps/python)")
+    path = os.path.join(os.path.dirname(wheel.__file__), "data", "bin",
+                        "clang-format")
+    version = subprocess.run([path, "--version"], check=True,
+                             capture_output=True, text=True).stdout
+    if CLANG_VERSION not in version:
+        sys.exit("formatcheck: %s is not clang-format %s: %s"
+                 % (path, CLANG_VERSION, version.strip()))
+    return path
+
 GENERATED = re.compile(r"do not edit|edit that file, not this one", re.I)
 
 
@@ -30,8 +53,8 @@ def sources():
             yield path
 
 
-def formatted(path):
-    return subprocess.run([CLANG_FORMAT, "--style=file", path], cwd=TOP,
+def formatted(binary, path):
+    return subprocess.run([binary, "--style=file", path], cwd=TOP,
                           check=True, capture_output=True,
                           text=True).stdout
 
@@ -41,19 +64,21 @@ def main():
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--fix", action="store_true", help="format in place")
     args = ap.parse_args()
+    binary = clang_format()
     paths = list(sources())
     if args.fix:
-        subprocess.run([CLANG_FORMAT, "--style=file", "-i"] + paths, cwd=TOP,
+        subprocess.run([binary, "--style=file", "-i"] + paths, cwd=TOP,
                        check=True)
         print("formatcheck: formatted %d files" % len(paths))
         return 0
     differ = []
     for path in paths:
         with open(os.path.join(TOP, path), encoding="utf-8") as f:
-            if f.read() != formatted(path):
+            if f.read() != formatted(binary, path):
                 differ.append(path)
     for path in differ:
-        print("formatcheck: %s differs from %s's layout" % (path, CLANG_FORMAT))
+        print("formatcheck: %s differs from clang-format %s's layout"
+              % (path, CLANG_VERSION))
     if differ:
         print("formatcheck: run tools/formatcheck.py --fix")
         return 1
