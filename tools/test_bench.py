@@ -1,14 +1,17 @@
 # SPDX-License-Identifier: BSD-2-Clause
 """Tests of the benchmark guard of tools/bench.py (run by ./waf check)."""
 import copy
+import io
 import json
 import os
 import tempfile
 import unittest
+from unittest import mock
 
 from tools import bench, footprint
 
 REPORT = {
+    "toolchain": {"arm-cm3": "arm-none-eabi-gcc 12.2.1"},
     "functions": [{"function": "drdc_f", "target": "arm-cm3", "instructions": 100.0}],
     "footprint": {"arm-cm3": {"library": {"text": 1000, "rodata": 100, "data": 0,
                                           "bss": 0},
@@ -73,6 +76,24 @@ class Guard(unittest.TestCase):
         new["footprint"]["arm-cm3"]["stack"]["drdc_f"] = {
             "bytes": None, "recursion": "drdc_f -> drdc_f"}
         self.assertFalse(self.check(new))
+
+    def test_another_compiler_is_reported_not_guarded(self):
+        new = copy.deepcopy(REPORT)
+        new["toolchain"]["arm-cm3"] = "arm-none-eabi-gcc 14.2.1"
+        new["functions"][0]["instructions"] = 130.0
+        new["footprint"]["arm-cm3"]["stack"]["drdc_f"]["bytes"] = 520
+        with mock.patch("sys.stdout", io.StringIO()) as out:
+            self.assertTrue(self.check(new))
+        text = out.getvalue()
+        self.assertIn("Reported, not guarded", text)
+        self.assertIn("reported: drdc_f on arm-cm3: 130.0 instructions", text)
+        self.assertIn("reported: drdc_f on arm-cm3: worst-case stack 520", text)
+
+    def test_the_same_compiler_is_guarded(self):
+        new = copy.deepcopy(REPORT)
+        new["functions"][0]["instructions"] = 130.0
+        with mock.patch("sys.stdout", io.StringIO()):
+            self.assertFalse(self.check(new))
 
 
 class BaselineCheck(unittest.TestCase):
