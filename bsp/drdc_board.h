@@ -32,7 +32,7 @@ void bsp_ticks_start(void);
 /** Ticks of the counter, increasing modulo bsp_ticks_mask + 1: the
  *  time base on ppc-e500, SysTick at the core clock on arm-cm3. Under QEMU
  *  -icount shift=0 the count follows executed instructions, so it repeats
- *  exactly from run to run; tools/bench.py converts ticks to instructions
+ *  exactly from run to run; tools/gates/bench.py converts ticks to instructions
  *  with bsp_spin(). Subtract two readings modulo the mask. */
 uint32_t bsp_ticks(void);
 

@@ -3,7 +3,7 @@
  * @file
  * @ingroup drdc_fixed_sqrt
  * @brief Seeds of the Q15.16 square root (generated: do not edit; run
- *        fixed/gen_tables.py).
+ *        tools/generate.py).
  */
 #include "sqrt_impl.h"
 

@@ -3,7 +3,7 @@
  * @file
  * @ingroup drdc_fixed_trig
  * @brief Constant tables of the trig functions (generated: do not edit;
- *        run fixed/gen_tables.py). Values from mpmath at 100 digits,
+ *        run tools/generate.py). Values from mpmath at 100 digits,
  *        rounded to nearest.
  */
 #include "trig_impl.h"

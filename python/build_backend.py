@@ -6,7 +6,7 @@ and the array loops of python/src/ with the host C compiler into
 drdc/libdrdc.so, and packs that beside the Python modules into a wheel.
 The library's sources, include directories and flags are those of
 wscript's host variant (the same glob, the footprint policy's -O2/-Os
-per module from tools/footprint.py, -fPIC added for a shared library),
+per module from waftools/targets.py, -fPIC added for a shared library),
 so the package computes what build/host/drdc computes.
 
 Why a backend of our own instead of setuptools: it needs no package, so
@@ -59,8 +59,10 @@ def _version():
 
 
 def _footprint():
+    """The footprint policy: the table of targets' optimise_kind() and
+    OPTIMISE_FLAGS."""
     spec = importlib.util.spec_from_file_location(
-        "footprint", os.path.join(TOP, "tools", "footprint.py"))
+        "targets", os.path.join(TOP, "waftools", "targets.py"))
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module

@@ -9,7 +9,7 @@ the host build's tools.
 
 pip runs without an index (--no-index): the package's build backend needs
 no package and its one dependency, numpy, comes from PYTHONPATH
-(.deps/python, pinned in tools/deps.py) as pytest does, so the step
+(.deps/python, pinned in waftools/deps.py) as pytest does, so the step
 downloads nothing.
 """
 import argparse

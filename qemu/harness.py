@@ -17,7 +17,8 @@ expected exit status. Hang (no output for --inactivity seconds), overrun of
 
 The run ends with the line "N passed, M failed": N and M count Unity tests
 across all images; an image that fails for another reason (crash, hang...)
-adds one failure of its own. Standard library only.
+adds one failure of its own. Standard library only, and the table of
+machines (waftools/targets.py).
 """
 import argparse
 import os
@@ -30,63 +31,33 @@ import sys
 import time
 from xml.sax.saxutils import escape, quoteattr
 
-# Machine profiles: the command that boots an image. mpc8544ds: -nic
-# none, no network card, whose option ROM (Debian's ipxe-qemu) the images
-# never use. The MPS2 boards' LAN9118 is part of the board and needs no
-# ROM; -nic none there would only leave it without a peer (a warning on
-# every run), so they keep QEMU's default.
-PROFILES = {
-    "host": ["{image}"],
-    "ppc-e500": ["qemu-system-ppc", "-M", "mpc8544ds", "-nographic",
-                 "-nic", "none", "-no-reboot", "-kernel", "{image}"],
-    "arm-cm3": ["qemu-system-arm", "-M", "mps2-an385", "-nographic",
-                "-semihosting-config", "enable=on,target=native",
-                "-kernel", "{image}"],
-    # the same board with a Cortex-M4F
-    "arm-cm4f": ["qemu-system-arm", "-M", "mps2-an386", "-nographic",
-                 "-semihosting-config", "enable=on,target=native",
-                 "-kernel", "{image}"],
-    # QEMU virt, RV32, no firmware: the ELF image runs in machine mode
-    "riscv32": ["qemu-system-riscv32", "-M", "virt", "-bios", "none",
-                "-nographic", "-net", "none", "-kernel", "{image}"],
-    # A Windows program (the win64 target) under Wine, in a prefix of its
-    # own (qemu/wine.py)
-    "wine64": [sys.executable,
-               os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                            "wine.py"), "{image}"],
-    # An RTEMS 6 qoriq_e500 application linked for QEMU (wscript's
-    # RTEMS_QEMU): its work area reaches 512 MiB and QEMU puts the device
-    # tree after RAM, so 1 GiB; the device tree beside the image is QEMU's
-    # own with the CPU's bus-frequency set, without which the RTEMS clock
-    # never ticks (tools/rtems_qemu.py makes it).
-    "rtems-qoriq_e500": ["qemu-system-ppc", "-M", "mpc8544ds", "-m", "1024",
-                         "-nographic", "-nic", "none", "-no-reboot",
-                         "-dtb", "{image}.dtb", "-kernel", "{image}"],
-}
-# What a profile needs done once before its first image is timed: Wine
-# makes its prefix (8 s and more on first use), which the inactivity limit
-# must not count.
-PREPARE = {
-    "wine64": [sys.executable,
-               os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                            "wine.py"), "--init"],
-}
+# The machines that boot images (a profile is a machine's name): their
+# commands, packages and exit-status rule are rows of the one table of
+# targets, waftools/targets.py MACHINES.
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+from waftools.targets import MACHINES  # noqa: E402
+
+PROFILES = sorted(MACHINES)
+
+
+def _expand(args, image=""):
+    return [a.format(image=image, python=sys.executable, qemu=HERE)
+            for a in args]
+
+
 _prepared = set()
 
 
 def prepare(profile):
-    """Do once what PREPARE says the profile needs before its first image
-    runs (nothing for the others)."""
-    if profile in PREPARE and profile not in _prepared:
-        subprocess.run(PREPARE[profile], stdin=subprocess.DEVNULL,
+    """Do once what the machine's "prepare" says it needs before its
+    first image runs (nothing for the others)."""
+    if "prepare" in MACHINES[profile] and profile not in _prepared:
+        subprocess.run(_expand(MACHINES[profile]["prepare"]),
+                       stdin=subprocess.DEVNULL,
                        stdout=subprocess.DEVNULL, check=True)
         _prepared.add(profile)
 
-# Boards whose exit status carries the number of failed tests. On ppc-e500
-# the reset request always ends QEMU with 0: the console is the verdict.
-EXIT_STATUS_MEANINGFUL = {"host": True, "ppc-e500": False, "arm-cm3": True,
-                          "arm-cm4f": True, "riscv32": True,
-                          "rtems-qoriq_e500": False, "wine64": True}
 
 BEGIN_RE = re.compile(r"^\*\*\* BEGIN OF TEST (.+) \*\*\*$")
 END_RE = re.compile(r"^\*\*\* END OF TEST (.+) \*\*\*$")
@@ -140,7 +111,7 @@ class Verdict:
 
 def command(profile, image, extra=()):
     """The command line that boots image on profile."""
-    cmd = [a.format(image=os.path.abspath(image)) for a in PROFILES[profile]]
+    cmd = _expand(MACHINES[profile]["command"], os.path.abspath(image))
     cmd[1:1] = list(extra)
     return cmd
 
@@ -243,7 +214,7 @@ def judge(profile, image, data, status, killed, label=None):
             v.reasons.append("test failures: %d" % failures)
         elif summary_result == "OK" and end is None:
             v.reasons.append("no END OF TEST marker after a passing summary")
-    if not killed and EXIT_STATUS_MEANINGFUL[profile]:
+    if not killed and MACHINES[profile]["exit_status"]:
         expected = v.count("FAIL")
         if status != expected:
             v.reasons.append("exit status %s, expected %d" % (status, expected))
@@ -357,7 +328,7 @@ def main(argv=None):
     r.add_argument("images", nargs="+", metavar="[LABEL=]PROFILE:IMAGE",
                    help="LABEL names the image in reports (default PROFILE)")
     s = sub.add_parser("show", help="stream the console of one image")
-    s.add_argument("profile", choices=sorted(PROFILES))
+    s.add_argument("profile", choices=PROFILES)
     s.add_argument("image")
     args = ap.parse_args(argv)
     return cmd_run(args) if args.command == "run" else cmd_show(args)

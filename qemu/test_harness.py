@@ -12,11 +12,14 @@ import time
 import unittest
 
 from qemu import harness
+from waftools.targets import TARGETS as ALL_TARGETS
+from waftools.targets import with_role
 
 BUILD = os.environ.get("DRDC_BUILD", "build")
-TARGETS = {"host": ("host", ""), "ppc-e500": ("ppc-e500", ".elf"),
-           "arm-cm3": ("arm-cm3", ".elf"), "riscv32": ("riscv32", ".elf"),
-           "win64": ("wine64", ".exe")}
+# target: (its machine, the ending of its programs), for each target whose
+# row says selftest
+TARGETS = {n: (ALL_TARGETS[n]["machine"], ALL_TARGETS[n]["ext"])
+           for n in with_role("selftest")}
 # Short limits so the hang tests take seconds; each verdict must come
 # within the limit plus a small margin.
 INACTIVITY = 2.0

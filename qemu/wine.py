@@ -54,7 +54,7 @@ def _find(name):
     path = shutil.which(name)
     if path is None:
         sys.exit("wine.py: no %s; Debian's wine64 package has it "
-                 "(tools/deps.py, APT group wine)" % name)
+                 "(the wine64 machine of waftools/targets.py)" % name)
     return path
 
 

@@ -8,7 +8,7 @@
  *
  * chi = gd(atanh(sin phi) - e atanh(e sin phi)) (Karney 2011).
  * chi - phi = sum c_j sin(2 j phi) and phi - chi = sum d_j sin(2 j chi),
- * 8 terms each, with the coefficients that gen_geo_consts.py computes
+ * 8 terms each, with the coefficients that tools/tables/geo_consts.py computes
  * from the exact functions (a discrete sine transform at 60 digits):
  * their truncation is far below 2^-58, and the roundings of the
  * recurrence add a few LSB.

@@ -4,7 +4,7 @@
  * @ingroup drdc_geo
  * @brief Series coefficients of core/geo: conformal latitude
  *        and Krueger's alpha and beta (generated: do not edit;
- *        run core/geo/gen_geo_consts.py). mpmath at 60 digits, rounded
+ *        run tools/generate.py). mpmath at 60 digits, rounded
  *        to nearest; Q5.58 unless named otherwise.
  */
 

@@ -3,7 +3,7 @@
  * @file
  * @ingroup drdc_geo
  * @brief WGS-84, UTM and UPS constants of core/geo (generated: do not edit;
- *        run core/geo/gen_geo_consts.py). mpmath at 60 digits, rounded
+ *        run tools/generate.py). mpmath at 60 digits, rounded
  *        to nearest; Q5.58 unless named otherwise.
  */
 

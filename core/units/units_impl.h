@@ -82,7 +82,7 @@ drdc_status_t drdc__units_prepare(unsigned from_frac,
                                   int64_t *a, units_rat_t *factor);
 
 /** One unit: indices into the tables of core/units/table.c (generated
- *  by core/units/gen_table.py); its name is the row's string in the
+ *  by tools/tables/units_table.py); its name is the row's string in the
  *  names, in row order. Four bytes a unit instead of a pointer and four
  *  int64_t. */
 struct drdc_unit {

@@ -6,9 +6,9 @@
  * one image, the same loop and the same operands.
  *
  * Prints fw/bench's lines (BENCH-CALIBRATE, BENCH <impl> <name> ...), so
- * tools/bench.py's reader turns ticks into instructions per call under
- * QEMU -icount; tools/test_cxx.py demands the wrapper within 5 % of the C
- * call.
+ * tools/gates/bench.py's reader turns ticks into instructions per call
+ * under QEMU -icount; tests/integration/test_cxx.py demands the wrapper
+ * within 5 % of the C call.
  */
 #include <drdc.hpp>
 

@@ -22,7 +22,7 @@
  *   soft-float addition;
  * - bench_check_baselines() compares every baseline's outputs with the
  *   library's on all the inputs before timing and prints the worst
- *   difference against the library's documented accuracy; tools/bench.py
+ *   difference against the library's documented accuracy; tools/gates/bench.py
  *   fails when one is beyond it.
  */
 #include "operands.h"

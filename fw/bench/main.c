@@ -2,7 +2,7 @@
 /**
  * @file
  * @brief Benchmark image: times every case with the board's tick counter
- *        and prints raw counts; tools/bench.py (run under QEMU -icount
+ *        and prints raw counts; tools/gates/bench.py (run under QEMU -icount
  *        shift=0) turns them into instructions per call and the report.
  */
 #include "bench.h"

@@ -4,8 +4,8 @@
  * @brief The pose-node demo of fw/demo written in C++ with drdc.hpp.
  *
  * The same scripted NMEA sentences and IMU quaternions in, the same text
- * out, byte for byte (tools/test_cxx.py compares them on every target
- * that builds it): UTC and GPS time, {W}, {We}, the JAUS scaled position
+ * out, byte for byte (tests/integration/test_cxx.py compares them on every
+ * target that builds it): UTC and GPS time, {W}, {We}, the JAUS scaled position
  * and Report Global Pose body, the GNSS heading, {We-UTM}, MGRS and {l}.
  * Value classes and drdc::result instead of structs and status checks; no
  * heap, exceptions or RTTI, so it builds for a Cortex-M3 with

@@ -5,7 +5,7 @@
  *        (GOLDEN_PART, GOLDEN_NAME): for a part whose memory holds one
  *        module's tables at a time, not the whole test runner (AVR). It
  *        prints the line the test runner prints for that part, so the
- *        two compare as text (tools/test_avr.py).
+ *        two compare as text (tests/integration/test_avr.py).
  */
 #include "console.h"
 #include "drdc_board.h"

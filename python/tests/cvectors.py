@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: BSD-2-Clause
 """Reads the committed reference vectors (tests/<module>/vectors_*.h, C
-headers written by tests/ref/generate.py from independent oracles) and
+headers written by tools/generate.py from independent oracles) and
 the tolerances of the Unity suites (#define lines of tests/<module>/
 test_*.c), so that the Python tests assert the very expected values and
 bounds the C suites assert, without copying a number.

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: BSD-2-Clause
 """The service's page in headless Chromium (Debian's chromium, from
-tools/deps.py's "check" group), driven over the Chrome DevTools protocol
+waftools/deps.py's "check" group), driven over the Chrome DevTools protocol
 with aiohttp's websocket client: load the page, upload the host
 test-runner's console log through the file input, click Judge and read
 the verdict the page shows; paste a changed log and see it differ; run
@@ -32,7 +32,7 @@ def _chromium():
     path = shutil.which("chromium")
     if path is None:
         if os.environ.get("DRDC_REQUIRE_HOST_TOOLS"):
-            pytest.fail("chromium is missing (tools/deps.py, group check)")
+            pytest.fail("chromium is missing (waftools/deps.py, group check)")
         pytest.skip("no chromium")
     return path
 

@@ -54,7 +54,7 @@ typedef drdc_status_t (*op64_fn)(int64_t a, int64_t b, int64_t *out);
  * and leave the sentinel, then the _sat form, which must return
  * `sat_status` and write the case's limit; every assertion names the
  * case. The caller passes the statuses so that each test function names
- * the function and the status it tests: that is how tools/badinput.py
+ * the function and the status it tests: that is how tools/gates/badinput.py
  * finds the test of a row of docs/bad-input.md. */
 static void expect_beyond32(op32_fn plain, drdc_status_t plain_status,
                             op32_fn sat, drdc_status_t sat_status,

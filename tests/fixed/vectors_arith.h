@@ -3,7 +3,7 @@
  * fixed/ multiply, divide and multiply-divide (Python fractions), rounded
  * to nearest with ties away from zero; `over` marks a result outside the
  * output format, whose row then holds the saturated value.
- * Do not edit; run tests/ref/generate.py. */
+ * Do not edit; run tools/generate.py. */
 #ifndef VECTORS_ARITH_H
 #define VECTORS_ARITH_H
 

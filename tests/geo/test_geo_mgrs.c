@@ -218,7 +218,7 @@ static void test_mgrs_from_utm_negative_northing(void)
   TEST_ASSERT_EQUAL_STRING("38NNF0000000000", text);
 }
 
-/* Regression (issue 6): a point whose Q47.16 easting rounds up onto a
+/* Regression: a point whose Q47.16 easting rounds up onto a
  * 1 m boundary GeographicLib's value lies below: the digits truncate the
  * coordinate before its rounding, as GeoConvert's do. GeoConvert -u -p 9
  * gives easting 660073.999993416 m, drdc_geo_to_utm() 660074 m exactly;

@@ -1,10 +1,10 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /**
  * @file
- * @brief A host program outside the tree: built by tools/test_install.py
- *        from an installed prefix alone (pkg-config drdc-host), it prints
- *        the UTM position of each "LAT LON" line (whole nanoarcseconds)
- *        in millimetres, for comparison with the drdc tool's output.
+ * @brief A host program outside the tree: built by
+ * tests/integration/test_install.py from an installed prefix alone (pkg-config
+ * drdc-host), it prints the UTM position of each "LAT LON" line (whole
+ * nanoarcseconds) in millimetres, for comparison with the drdc tool's output.
  */
 #include <inttypes.h>
 #include <stdio.h>

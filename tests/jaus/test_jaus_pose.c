@@ -679,9 +679,9 @@ static void test_drdc_jaus_local_pose_unpack_bad_input(void)
 }
 
 /* A local X, Y or Z beyond Q15.16 is the last check of unpacking (the
- * body is decoded twice since the stack work of issue 8: check, then
- * store): a later field's decoding error and a bad time stamp come
- * first, and the body stays as it was. */
+ * body is decoded twice, to keep the stack shallow: check, then store):
+ * a later field's decoding error and a bad time stamp come first, and
+ * the body stays as it was. */
 static void test_local_overflow_is_the_last_check(void)
 {
   /* RA 3.x X = -2^30 (-50 000 m) and roll = -32768 (not an RA 3.x value) */

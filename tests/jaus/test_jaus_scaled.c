@@ -25,7 +25,7 @@ typedef drdc_status_t (*scaled_fn)(int64_t in, int64_t min, int64_t max,
  * `range_status` and leaves its output, the _sat form `sat_status`; in
  * range both give DRDC_OK and the plain form the model's value, which
  * the _sat form writes either way. The tests pass the statuses so that
- * each names the function and status it tests (tools/badinput.py). */
+ * each names the function and status it tests (tools/gates/badinput.py). */
 static void expect_model(const struct jaus_vector *vectors, size_t n,
                          scaled_fn plain, drdc_status_t range_status,
                          scaled_fn sat, drdc_status_t sat_status)

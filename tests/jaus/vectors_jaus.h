@@ -3,7 +3,7 @@
  * AS6009) from an exact Fraction model of the standards' formulas.
  * `clamped` 1: the input is out of range, the plain function gives
  * DRDC_E_RANGE and the _sat function `out` with DRDC_W_SATURATED.
- * Do not edit; run tests/ref/generate.py. */
+ * Do not edit; run tools/generate.py. */
 #ifndef VECTORS_JAUS_H
 #define VECTORS_JAUS_H
 

@@ -8,7 +8,7 @@
  *        and named boundary conditions.
  *
  * Tolerances are the measured maxima (docs/accuracy.md), never wider than
- * issue 5's targets: Euler -> quaternion and products within 4 LSB per
+ * the goals: Euler -> quaternion and products within 4 LSB per
  * part, quaternion -> Euler within 1e-7 degree (1.19 binary-angle units,
  * 19 of the 1/16 units of the tables) away from gimbal lock, |q| - 1
  * within 2 LSB after normalisation.

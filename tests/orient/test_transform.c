@@ -6,8 +6,8 @@
  *        7-link arm with prismatic joints (oracle checks), identities of
  *        compose/invert/apply (consistency checks), named bad inputs.
  *
- * Issue 5's bounds: position under 10 um, rotation within 8 LSB per
- * element; the tolerances below are the measured maxima.
+ * The goals: position under 10 um, rotation within 8 LSB per element;
+ * the tolerances below are the measured maxima.
  */
 #include <drdc/orient_kinematics.h>
 #include <drdc/orient_transform.h>

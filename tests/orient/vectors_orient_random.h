@@ -4,7 +4,7 @@
  * 0x1D2C3B4A; pitch within +-89 degrees) -> quaternion (Q1.30, rounded), and
  * the Euler angles of that exact integer quaternion as the difference
  * from the input in 1/16 binary-angle units. Host and PowerPC only (the
- * Cortex-M3 flash cannot hold it). Do not edit; run tests/ref/generate.py.
+ * Cortex-M3 flash cannot hold it). Do not edit; run tools/generate.py.
  */
 #ifndef VECTORS_ORIENT_RANDOM_H
 #define VECTORS_ORIENT_RANDOM_H

@@ -306,7 +306,7 @@ def generate():
  * struct.pack('<...'). Raw values: latitude/longitude nas, altitude
  * Q47.16 m, X/Y/Z and Position RMS Q15.16 m, roll/pitch/yaw signed binary
  * angles (-2^31..2^31), Attitude RMS binary angle. Do not edit; run
- * tests/ref/generate.py. */
+ * tools/generate.py. */
 #ifndef VECTORS_JAUS_POSE_H
 #define VECTORS_JAUS_POSE_H
 

@@ -548,7 +548,7 @@ def generate():
  * published formats, with their fields located by pynmeagps and the
  * values Python's fractions.Fraction reads from their text, and every
  * malformation with its status.
- * Do not edit; run tests/ref/generate.py. */
+ * Do not edit; run tools/generate.py. */
 #ifndef VECTORS_NMEA_H
 #define VECTORS_NMEA_H
 

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: BSD-2-Clause
 """Unit conversion vectors. Oracle: GNU units 2.22 (Debian package `units`,
-pinned in tools/deps.py), run as `units -t -d 15` (15 significant digits),
+pinned in waftools/deps.py), run as `units -t -d 15` (15 significant digits),
 never this project's factors: only the unit names and dimensions are read
 from core/units/units.txt (the source of the table core/units/table.c).
 
@@ -30,7 +30,7 @@ GNU_TEMPERATURE = {"degC": "tempC", "tempC": "tempC", "degF": "tempF",
 def table():
     """(name, dimension, has offset) of every unit, in table order."""
     spec = importlib.util.spec_from_file_location(
-        "units_gen_table", os.path.join(TOP, "core", "units", "gen_table.py"))
+        "units_gen_table", os.path.join(TOP, "tools", "tables", "units_table.py"))
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return [(name, dims, onum != 0)
@@ -41,7 +41,7 @@ def table_factors():
     """{name: the table's factor}, only to keep the random formats inside
     what drdc_units_convert() documents (never as an expected value)."""
     spec = importlib.util.spec_from_file_location(
-        "units_gen_table", os.path.join(TOP, "core", "units", "gen_table.py"))
+        "units_gen_table", os.path.join(TOP, "tools", "tables", "units_table.py"))
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return {name: Fraction(num, den)
@@ -204,7 +204,7 @@ def generate():
  * core/units/table.c to and from its SI unit, from GNU units 2.22
  * (`units -t -d 15`, tempC(x)/tempF(x) for temperatures). `expect` is GNU
  * units' printed value x 2^to_frac rounded to nearest.
- * Do not edit; run tests/ref/generate.py. */
+ * Do not edit; run tools/generate.py. */
 #ifndef VECTORS_UNITS_H
 #define VECTORS_UNITS_H
 

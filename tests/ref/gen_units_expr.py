@@ -84,7 +84,7 @@ BASE = ["m", "kg", "s", "K", "bit", "A"]
 def table_names():
     import importlib.util
     spec = importlib.util.spec_from_file_location(
-        "units_gen_table", os.path.join(TOP, "core", "units", "gen_table.py"))
+        "units_gen_table", os.path.join(TOP, "tools", "tables", "units_table.py"))
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return {row[1] for row in module.read()}
@@ -300,7 +300,7 @@ def generate():
  * way are kept) and %d pairs a ratio beyond what the formats reach: left
  * out. `expect` is raw x factor x
  * 2^(to_frac - from_frac) rounded to nearest.
- * Do not edit; run tests/ref/generate.py. */
+ * Do not edit; run tools/generate.py. */
 #ifndef VECTORS_UNITS_EXPR_H
 #define VECTORS_UNITS_EXPR_H
 

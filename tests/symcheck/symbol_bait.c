@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-2-Clause */
 /**
  * @file
- * @brief Bait for tools/symcheck.py: an object that exports a name
+ * @brief Bait for tools/gates/symcheck.py: an object that exports a name
  *        without the drdc_ prefix (one that an application could define
  *        too), which the symbol check must reject on every target. Never
  *        linked into anything.

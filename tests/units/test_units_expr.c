@@ -104,8 +104,8 @@ static void test_random_expressions_match_gnu_units_and_pint(void)
   TEST_ASSERT_TRUE(worst <= 1000);
 }
 
-/* The issue's examples, exactly: 100 km/h = 250/9 m/s; 1 N m =
- * 0.737562149277265 ft lbf; 2 kWh = 7 200 000 J. */
+/* The worked examples of unit expressions, exactly: 100 km/h = 250/9
+ * m/s; 1 N m = 0.737562149277265 ft lbf; 2 kWh = 7 200 000 J. */
 static void test_examples(void)
 {
   /* 250/9 x 2^32 = 119304647111.1 */

@@ -3,7 +3,7 @@
  * core/units/table.c to and from its SI unit, from GNU units 2.22
  * (`units -t -d 15`, tempC(x)/tempF(x) for temperatures). `expect` is GNU
  * units' printed value x 2^to_frac rounded to nearest.
- * Do not edit; run tests/ref/generate.py. */
+ * Do not edit; run tools/generate.py. */
 #ifndef VECTORS_UNITS_H
 #define VECTORS_UNITS_H
 

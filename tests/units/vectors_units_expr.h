@@ -7,7 +7,7 @@
  * way are kept) and 26 pairs a ratio beyond what the formats reach: left
  * out. `expect` is raw x factor x
  * 2^(to_frac - from_frac) rounded to nearest.
- * Do not edit; run tests/ref/generate.py. */
+ * Do not edit; run tools/generate.py. */
 #ifndef VECTORS_UNITS_EXPR_H
 #define VECTORS_UNITS_EXPR_H
 

@@ -24,9 +24,9 @@
  * Method: a 257-entry quarter-wave sine table (Q0.31) with a cubic
  * Taylor correction for sin/cos; a 129-point table of atan on [0, 1] with
  * its first three derivatives for atan2/asin/acos (tables generated from
- * mpmath by fixed/gen_tables.py, 3 KiB of const data in all). Quadrants
- * and octants are reduced exactly, so the symmetries sin(-a) = -sin(a),
- * sin(pi - a) = sin(a), cos(a) = sin(pi/2 - a), atan2(-y, x) =
+ * mpmath by tools/tables/fixed_tables.py, 3 KiB of const data in all).
+ * Quadrants and octants are reduced exactly, so the symmetries sin(-a) =
+ * -sin(a), sin(pi - a) = sin(a), cos(a) = sin(pi/2 - a), atan2(-y, x) =
  * -atan2(y, x), atan2(x, y) = pi/2 - atan2(y, x) hold bit for bit.
  *
  * Errors are measured against mpmath at 50 digits rounded to nearest

@@ -6,7 +6,7 @@
  *
  * The library is C99 built by GCC (every target) and clang (the fuzz
  * build); both take these GNU attributes. A function carries one only
- * where a budget of tools/footprint.py (stack depth, linked flash) or a
+ * where a budget of waftools/targets.py (stack depth, linked flash) or a
  * speed goal of docs/performance.md fails without it; the line above it
  * says which.
  */

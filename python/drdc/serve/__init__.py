@@ -6,4 +6,4 @@ conformance verdict of a test-runner log over HTTP (docs/service.md).
 
 Endpoints: GET / (the page), GET /openapi.json, GET /v1/functions,
 POST /v1/eval, POST /v1/conformance. Needs aiohttp (pinned in
-tools/deps.py) besides numpy."""
+waftools/deps.py) besides numpy."""
