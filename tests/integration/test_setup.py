@@ -4,7 +4,8 @@
 - no exact Debian version anywhere in the set-up code: a pin that the
   archive withdraws at its next point release stops every new machine;
 - README's tables of Debian packages per target and per command say
-  what set-up installs;
+  what set-up installs, and docs/contributing.md's list of the check's
+  steps follows waftools/checks.py;
 - a user who is not root gets one apt-get command with every missing
   package; a package older than a feature needs stops set-up with its
   name, the version found and the one needed; an upstream tarball that
@@ -121,6 +122,33 @@ class ReadmeTables(unittest.TestCase):
             self.assertEqual(1, len(row), command)
             self.assertEqual(deps.packages(groups=groups),
                              sorted(self.commands[row[0]][0]), command)
+
+
+def check_list():
+    """The numbered items of docs/contributing.md's "What ./waf check
+    runs", each as one string."""
+    with open(os.path.join(TOP, "docs", "contributing.md")) as f:
+        text = f.read()
+    section = text.split("## What `./waf check` runs", 1)[1].split("\n## ", 1)[0]
+    items = []
+    for line in section.splitlines():
+        if re.match(r"^\d+\. ", line):
+            items.append(line)
+        elif items and line.startswith("   "):
+            items[-1] += " " + line.strip()
+    return items
+
+
+class CheckSteps(unittest.TestCase):
+    def test_the_list_follows_the_steps(self):
+        sys.path.insert(0, os.path.join(TOP, ".deps", "waf"))  # waflib
+        from waftools import checks
+        items = check_list()
+        self.assertEqual(len(checks.STEPS), len(items))
+        for k, ((title, args, _), item) in enumerate(zip(checks.STEPS, items)):
+            self.assertTrue(item.startswith("%d. " % (k + 1)), item)
+            for path in checks.files(args):
+                self.assertIn("`%s" % path, item, title)
 
 
 class NotRoot(unittest.TestCase):
