@@ -13,6 +13,7 @@
 
 #include "commands.h"
 #include "lines.h"
+#include "reasons.h"
 
 static const char usage[] =
     "usage: drdc nmea [--strict] [--raw] [--keep-going]\n"
@@ -56,42 +57,6 @@ typedef struct nmea_options {
   int raw;
   int keep_going; /* lines that give ERROR leave the exit status 0 */
 } nmea_options_t;
-
-static const char *reason(drdc_status_t st)
-{
-  switch (st) {
-  case DRDC_E_SYNTAX:
-    return "malformed sentence or field";
-  case DRDC_E_CHARACTER:
-    return "character outside printable ASCII";
-  case DRDC_E_TRUNCATED:
-    return "sentence ends before its checksum";
-  case DRDC_E_OVERLONG:
-    return "sentence too long";
-  case DRDC_E_TRAILING:
-    return "text after the checksum";
-  case DRDC_E_CHECKSUM:
-    return "checksum does not match";
-  case DRDC_E_SENTENCE:
-    return "sentence type or talker not decoded";
-  case DRDC_E_NO_FIX:
-    return "the receiver reports no fix";
-  case DRDC_E_MISSING_FIELD:
-    return "required field empty or missing";
-  case DRDC_E_HOUR:
-  case DRDC_E_MINUTE:
-  case DRDC_E_SECOND:
-    return "time or angle field out of range";
-  case DRDC_E_DAY:
-  case DRDC_E_MONTH:
-  case DRDC_E_YEAR:
-    return "date field out of range";
-  case DRDC_E_RANGE:
-    return "value out of range";
-  default:
-    return "cannot decode";
-  }
-}
 
 static const char *type_name(drdc_nmea_type_t t)
 {
@@ -296,7 +261,8 @@ int drdc_cmd_nmea(int argc, char **argv)
      * inside the line is the parser's to judge */
     st = drdc_nmea_parse_with(line, len, o.flags, &n);
     if (st != DRDC_OK) {
-      printf("ERROR: %s (%s)\n", reason(st), drdc_status_name(st));
+      printf("ERROR: %s (%s)\n", drdc_tool_nmea_reason(st),
+             drdc_status_name(st));
       failed |= !o.keep_going;
       continue;
     }
