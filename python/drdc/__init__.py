@@ -55,19 +55,33 @@ from ._geo import (ZONE_STANDARD, ZONE_UPS, MGRS_PREC_MIN,  # noqa: F401
                    MGRS_PREC_MAX, geo_utm_zone, geo_tm_forward, geo_to_utm,
                    geo_from_utm, geo_mgrs_encode, geo_mgrs_from_utm,
                    geo_mgrs_decode, geo_to_utm_array, geo_from_utm_array,
-                   geo_mgrs_encode_array, geo_mgrs_decode_array)
+                   geo_utm_zone_array, geo_tm_forward_array,
+                   geo_mgrs_encode_array, geo_mgrs_from_utm_array,
+                   geo_mgrs_decode_array)
 from ._time import (time_from_civil, time_to_civil,  # noqa: F401
                     time_utc_to_gps, time_gps_to_utc, time_utc_to_tai,
                     time_tai_to_utc, time_utc_to_unix, time_unix_to_utc,
                     time_utc_to_gps_array, time_gps_to_utc_array,
                     time_utc_to_tai_array, time_tai_to_utc_array,
-                    time_utc_to_unix_array, time_unix_to_utc_array)
+                    time_utc_to_unix_array, time_unix_to_utc_array,
+                    time_from_civil_array, time_to_civil_array,
+                    time_iso8601_format, time_iso8601_parse,
+                    time_iso8601_parse_array, time_jaus_pack,
+                    time_jaus_pack_array, time_jaus_to_utc,
+                    time_jaus_to_utc_array)
 from ._orient import (quat_from_euler, euler_from_quat,  # noqa: F401
                       quat_from_euler_array, euler_from_quat_array)
 from ._units import (units_convert, units_convert_expr,  # noqa: F401
                      units_convert_array, units_convert_expr_array)
+from ._format import (format_fixed_array, format_q47_16_array,  # noqa: F401
+                      format_q15_16_array, format_nas_degrees_array,
+                      format_bam32_degrees_array, format_utc_array,
+                      status_name_array)
 from ._version import VERSION as __version__
 
+
+# drdc_time_iso8601_format's array twin is the formatter of UTC arrays
+time_iso8601_format_array = format_utc_array
 
 NAS_PER_DEGREE = 3600000000000  # DRDC_NAS_PER_DEGREE
 Q47_16_ONE = 1 << 16            # 1 m in Q47.16 (and Q15.16)

@@ -131,6 +131,27 @@ PROTOTYPES.update({
                                              P(UnitsExpr), ctypes.c_uint,
                                              P(UnitsExpr), _a, _a]),
 })
+_i32 = ctypes.c_int32
+_u32 = ctypes.c_uint32
+PROTOTYPES.update({
+    # batch_geo.c
+    "drdc_batch_geo_utm_zone": (None, [_n] + [_a] * 4),
+    "drdc_batch_geo_tm_forward": (None, [_n] + [_a] * 7),
+    "drdc_batch_geo_mgrs_encode": (None, [_n] + [_a] * 5),
+    "drdc_batch_geo_mgrs_from_utm": (None, [_n] + [_a] * 7),
+    "drdc_batch_geo_mgrs_decode": (None, [_n, _a, _n] + [_a] * 7),
+    # batch_time.c
+    "drdc_batch_time_from_civil": (None, [_n] + [_a] * 4),
+    "drdc_batch_time_to_civil": (None, [_n] + [_a] * 4),
+    "drdc_batch_time_iso8601_format": (None, [_n, _a, _a, _i32, _a, _a]),
+    "drdc_batch_time_iso8601_parse": (None, [_n, _a, _n] + [_a] * 4),
+    "drdc_batch_time_jaus_pack": (None, [_n] + [_a] * 4),
+    "drdc_batch_time_jaus_to_utc": (None, [_n] + [_a] * 6),
+    # batch_format.c
+    "drdc_batch_format_fixed": (None, [_n, _a, _u32, _i32, _a, _n, _a]),
+    "drdc_batch_format_nas_degrees": (None, [_n, _a, _i32, _a, _a]),
+    "drdc_batch_format_bam32_degrees": (None, [_n, _a, _i32, _a, _a]),
+})
 # drdc_batch_time_count's conversions, in batch.c's order
 COUNT_CONVERSIONS = ("utc_to_tai", "tai_to_utc", "utc_to_unix",
                      "unix_to_utc")

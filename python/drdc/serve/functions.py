@@ -101,7 +101,8 @@ FUNCTIONS = [
         "the forward values at the unrounded point",
         lambda a: drdc.geo_from_utm_array(a["zone"], a["north"],
                                           a["easting_q47_16"],
-                                          a["northing_q47_16"])),
+                                          a["northing_q47_16"],
+                                          with_scale=True)),
     Function(
         "geo_mgrs_encode", "drdc_geo_mgrs_encode", MGRS_H,
         "MGRS of a point (as GeoConvert -m), prec digits per coordinate",
