@@ -77,9 +77,23 @@ from ._format import (format_fixed_array, format_q47_16_array,  # noqa: F401
                       format_q15_16_array, format_nas_degrees_array,
                       format_bam32_degrees_array, format_utc_array,
                       status_name_array)
+from ._pose import (FUNCTIONS as _POSE_FUNCTIONS,  # noqa: F401
+                    POSES as _POSES)
+from ._jaus import (jaus_scaled_encode, jaus_scaled_decode,  # noqa: F401
+                    jaus_scaled_encode_array, jaus_scaled_decode_array,
+                    jaus_scaled_range, jaus_scaled_range_array,
+                    jaus_pose_size, jaus_pose_size_array,
+                    jaus_global_pose_pack, jaus_global_pose_pack_array,
+                    jaus_global_pose_unpack, jaus_global_pose_unpack_array,
+                    jaus_local_pose_pack, jaus_local_pose_pack_array,
+                    jaus_local_pose_unpack, jaus_local_pose_unpack_array,
+                    JAUS_INT8, JAUS_UINT8, JAUS_INT16, JAUS_UINT16,
+                    JAUS_INT32, JAUS_UINT32, FORM_RA3, FORM_AS6009)
 from ._version import VERSION as __version__
 
 
+# the pose conversions of geo_pose.h (drdc/_pose.py), by name
+globals().update(_POSE_FUNCTIONS)
 # drdc_time_iso8601_format's array twin is the formatter of UTC arrays
 time_iso8601_format_array = format_utc_array
 

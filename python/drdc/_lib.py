@@ -151,6 +151,15 @@ PROTOTYPES.update({
     "drdc_batch_format_fixed": (None, [_n, _a, _u32, _i32, _a, _n, _a]),
     "drdc_batch_format_nas_degrees": (None, [_n, _a, _i32, _a, _a]),
     "drdc_batch_format_bam32_degrees": (None, [_n, _a, _i32, _a, _a]),
+    # batch_pose.c
+    "drdc_batch_pose": (None, [_i32, _n, _a, _n, _a, _n, _a, _n, _a, _a]),
+    # batch_jaus.c
+    "drdc_batch_jaus_scaled": (None, [_i32, _n] + [_a] * 7),
+    "drdc_batch_jaus_scaled_range": (None, [_n] + [_a] * 5),
+    "drdc_batch_jaus_pose_size": (None, [_n] + [_a] * 3),
+    "drdc_batch_jaus_pose_pack": (None, [_i32, _n, _a, _i32, _a, _a, _a]),
+    "drdc_batch_jaus_pose_unpack": (None, [_i32, _n, _a, _n, _a, _i32, _a,
+                                           _a]),
 })
 # drdc_batch_time_count's conversions, in batch.c's order
 COUNT_CONVERSIONS = ("utc_to_tai", "tai_to_utc", "utc_to_unix",

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 import drdc
-from drdc import _format, _geo, _orient, _time, _units
+from drdc import _format, _geo, _jaus, _orient, _pose, _time, _units
 from cvectors import load, tolerances
 
 DEG = drdc.NAS_PER_DEGREE
@@ -85,8 +85,16 @@ TWINS = [
     ("format_nas_degrees_array", (LAT,)),
     ("format_bam32_degrees_array", (SEC,)),
     ("format_utc_array", (SEC,)),
+    ("pose_wutm_from_w_array", (LON, LAT, SEC, 1 << 30, 0, 0, 0)),
+    ("pose_wmgrs_from_w_array", (LON, LAT, SEC, 1 << 30, 0, 0, 0)),
+    ("pose_le_from_l_array", (SEC % 1000, 0, 0, 1 << 30, 0, 0, 0)),
+    ("pose_bam_from_convergence_array", (LAT // 1000,)),
+    ("jaus_scaled_encode_array", (LAT, -90 * DEG, 90 * DEG,
+                                  drdc.JAUS_INT32, drdc.FORM_AS6009)),
+    ("jaus_global_pose_pack_array", (0x7F, LON, LAT, SEC, SEC, SEC, SEC, 0,
+                                     0, 0)),
 ]
-MODULES = [_format, _geo, _orient, _time, _units]
+MODULES = [_format, _geo, _jaus, _orient, _pose, _time, _units]
 
 
 @pytest.mark.parametrize("name,args", TWINS, ids=[t[0] for t in TWINS])
