@@ -45,7 +45,7 @@ CFLAGS = ["-std=c99", "-Wall", "-Wextra", "-Wconversion", "-Wsign-conversion",
           "-O2", "-g", "-ffunction-sections", "-fdata-sections",
           "-fno-align-functions", "-D_POSIX_C_SOURCE=200809L", "-fPIC"]
 INCLUDES = ["fixed/internal", "fixed/include", "core/include",
-            "tests/golden"]
+            "tests/golden", "tools/drdc"]
 
 
 class BuildError(Exception):
@@ -73,6 +73,8 @@ def _sources():
     for folder in ("fixed", "core", "python/src"):
         paths += sorted(glob.glob(os.path.join(TOP, folder, "**", "*.c"),
                                   recursive=True))
+    # the reasons `drdc nmea` and `drdc time` print, for DrdcError
+    paths.append(os.path.join(TOP, "tools", "drdc", "reasons.c"))
     # the conformance digest's parts, for drdc.conformance's reference
     # records (python/src/golden.c); not the runner's test and tables
     paths += [p for p in sorted(glob.glob(os.path.join(
@@ -110,9 +112,11 @@ def build_library(out_path, work_dir):
     for k, src in enumerate(_sources()):
         stem = os.path.basename(src)[:-2]
         obj = os.path.join(work_dir, "%03d_%s.o" % (k, stem))
-        # the footprint policy's flags for the library; the loops for speed
+        # the footprint policy's flags for the library; the loops (and the
+        # tool's reasons) for speed
         kind = ("speed" if src.startswith(("python" + os.sep,
-                                           "tests" + os.sep))
+                                           "tests" + os.sep,
+                                           "tools" + os.sep))
                 else policy.optimise_kind(src))
         flags = CFLAGS + policy.OPTIMISE_FLAGS[kind]
         if src.startswith("tests" + os.sep):
@@ -124,6 +128,32 @@ def build_library(out_path, work_dir):
     with concurrent.futures.ThreadPoolExecutor(os.cpu_count() or 1) as pool:
         list(pool.map(_run, [cmd for cmd, _ in jobs]))
     _run(cc + ["-shared", "-o", out_path] + [obj for _, obj in jobs])
+
+
+def _status_texts():
+    """{value: meaning} of every status, from the comments of
+    fixed/include/drdc/status.h (DrdcError's reason where `drdc` has no
+    words of its own for a function)."""
+    with open(os.path.join(TOP, "fixed/include/drdc/status.h")) as f:
+        text = f.read()
+    body = text[text.index("typedef enum drdc_status {"):
+                text.index("} drdc_status_t;")]
+    texts, pending, last = {}, None, None
+    for m in re.finditer(r"/\*\*(<?)(.*?)\*/|\b(DRDC_\w+)\s*=\s*(\d+)",
+                         body, re.S):
+        if m.group(3):
+            last = int(m.group(4)) if m.group(3) != "DRDC_STATUS_COUNT" \
+                else None
+            if pending is not None and last is not None:
+                texts[last] = pending
+            pending = None
+            continue
+        words = " ".join(w for w in m.group(2).split() if w != "*")
+        if m.group(1) and last is not None:
+            texts[last] = words
+        elif not m.group(1):
+            pending = words
+    return texts
 
 
 def _record_line(arcname, data):
@@ -171,6 +201,11 @@ def build_wheel(wheel_directory, config_settings=None,
     files[NAME + "/_version.py"] = (
         "# Written by python/build_backend.py from core/include/drdc/"
         "version.h.\nVERSION = %r\n" % version).encode()
+    files[NAME + "/_status_text.py"] = (
+        "# Written by python/build_backend.py from fixed/include/drdc/"
+        "status.h.\nSTATUS_TEXT = {\n%s}\n" % "".join(
+            "    %d: %r,\n" % kv for kv in sorted(_status_texts().items()))
+    ).encode()
     with tempfile.TemporaryDirectory() as work:
         lib = os.path.join(work, "libdrdc.so")
         build_library(lib, work)

@@ -25,9 +25,10 @@ accuracy.
 **Statuses.**
 
 - Scalar functions return a namedtuple (or an int or str) and raise
-  ``DrdcError`` (``.code``, ``.name``, ``.function``) for a DRDC_E_*
-  status; for a DRDC_W_* status (a leap-second table past its expiry) they
-  return the result and issue a ``DrdcWarning`` (warnings module).
+  ``DrdcError`` (``.reason`` in words, ``.name``, ``.code`` = ``.number``,
+  ``.function``) for a DRDC_E_* status; for a DRDC_W_* status (a
+  leap-second table past its expiry) they return the result and issue a
+  ``DrdcWarning`` (warnings module).
 - Array functions (``*_array``) take numpy integer arrays (broadcast
   together) and return a namedtuple of arrays of the broadcast shape with
   a ``status`` array (int32, ``Status`` values): where an element's
@@ -50,7 +51,7 @@ from decimal import Decimal
 from fractions import Fraction
 
 from ._status import (DrdcError, DrdcWarning, Status, is_error,  # noqa: F401
-                      status_name)
+                      status_name, reason)
 from ._geo import (ZONE_STANDARD, ZONE_UPS, MGRS_PREC_MIN,  # noqa: F401
                    MGRS_PREC_MAX, geo_utm_zone, geo_tm_forward, geo_to_utm,
                    geo_from_utm, geo_mgrs_encode, geo_mgrs_from_utm,

@@ -131,6 +131,7 @@ PROTOTYPES.update({
                                              P(UnitsExpr), ctypes.c_uint,
                                              P(UnitsExpr), _a, _a]),
 })
+_c = ctypes.c_char_p
 _i32 = ctypes.c_int32
 _u32 = ctypes.c_uint32
 PROTOTYPES.update({
@@ -160,6 +161,9 @@ PROTOTYPES.update({
     "drdc_batch_jaus_pose_pack": (None, [_i32, _n, _a, _i32, _a, _a, _a]),
     "drdc_batch_jaus_pose_unpack": (None, [_i32, _n, _a, _n, _a, _i32, _a,
                                            _a]),
+    # tools/drdc/reasons.c: the tool's words for a status
+    "drdc_tool_nmea_reason": (_c, [status_t]),
+    "drdc_tool_time_reason": (_c, [status_t]),
 })
 # drdc_batch_time_count's conversions, in batch.c's order
 COUNT_CONVERSIONS = ("utc_to_tai", "tai_to_utc", "utc_to_unix",
