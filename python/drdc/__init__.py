@@ -90,6 +90,7 @@ from ._jaus import (jaus_scaled_encode, jaus_scaled_decode,  # noqa: F401
                     jaus_local_pose_unpack, jaus_local_pose_unpack_array,
                     JAUS_INT8, JAUS_UINT8, JAUS_INT16, JAUS_UINT16,
                     JAUS_INT32, JAUS_UINT32, FORM_RA3, FORM_AS6009)
+from . import nmea  # noqa: F401  (drdc.nmea)
 from ._version import VERSION as __version__
 
 

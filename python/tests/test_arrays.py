@@ -32,6 +32,8 @@ def test_every_scalar_function_has_an_array_twin():
                      if n + "_array" not in public)
     assert missing == []
     assert "status_name_array" in public
+    # the modules' too
+    assert {"parse_array", "parse_bytes"} <= set(vars(drdc.nmea))
 
 
 class Counting:
@@ -94,7 +96,7 @@ TWINS = [
     ("jaus_global_pose_pack_array", (0x7F, LON, LAT, SEC, SEC, SEC, SEC, 0,
                                      0, 0)),
 ]
-MODULES = [_format, _geo, _jaus, _orient, _pose, _time, _units]
+MODULES = [_format, _geo, _jaus, _orient, _pose, _time, _units, drdc.nmea]
 
 
 @pytest.mark.parametrize("name,args", TWINS, ids=[t[0] for t in TWINS])
