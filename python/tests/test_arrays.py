@@ -95,6 +95,7 @@ TWINS = [
                                   drdc.JAUS_INT32, drdc.FORM_AS6009)),
     ("jaus_global_pose_pack_array", (0x7F, LON, LAT, SEC, SEC, SEC, SEC, 0,
                                      0, 0)),
+    ("ddmm_to_nas_array", (np.array(["3854.5087"] * N), np.array(["N"] * N))),
 ]
 MODULES = [_format, _geo, _jaus, _orient, _pose, _time, _units, drdc.nmea]
 

@@ -358,6 +358,42 @@ def test_read_log_gives_columns_or_a_data_frame(tmp_path):
             assert (frame[name].to_numpy() == getattr(arrays, name)).all()
 
 
+def test_ddmm_to_nas_reads_as_the_parser():
+    # 38 degrees 54.5087 minutes, exactly: pynmeagps's model of a field
+    assert drdc.ddmm_to_nas("3854.5087", "N") == gen_nmea.angle("3854.5087",
+                                                                "N")
+    for text, h in (("4807.038", "S"), ("01131.000", "W"),
+                    ("17959.9999999999", "E"), ("0000.0001", "S"),
+                    ("9000.0000", "N"), ("18000", "E")):
+        assert drdc.ddmm_to_nas(text, h) == gen_nmea.angle(text, h), text
+    r = drdc.ddmm_to_nas_array(np.array(["3854.5087", "03858.587325"]),
+                               np.array(["N", "E"]))
+    assert r.status.tolist() == [0, 0]
+    assert r.nas.tolist() == [gen_nmea.angle("3854.5087", "N"),
+                              gen_nmea.angle("03858.587325", "E")]
+    for text, h, status in (("3860.0", "N", "DRDC_E_MINUTE"),
+                            ("9000.0001", "N", "DRDC_E_RANGE"),
+                            ("18000.0001", "W", "DRDC_E_RANGE"),
+                            ("38.5", "N", "DRDC_E_SYNTAX"),
+                            ("3854.5087", "X", "DRDC_E_SYNTAX"),
+                            ("3854.50870000001", "N", "DRDC_E_SYNTAX"),
+                            ("38,54", "N", "DRDC_E_SYNTAX"),
+                            ("12345.6", "N", "DRDC_E_SYNTAX")):
+        with pytest.raises(drdc.DrdcError) as e:
+            drdc.ddmm_to_nas(text, h)
+        assert e.value.name == status, text
+    # degrees_to_nas refuses the same text, read as degrees
+    with pytest.raises(ValueError, match="ddmm_to_nas"):
+        drdc.degrees_to_nas("3854.5087")
+    with pytest.raises(ValueError, match="ddmm_to_nas"):
+        drdc.degrees_to_nas("-11131.000")
+    # ... but not degrees within range, nor text that is no ddmm
+    assert drdc.degrees_to_nas("0054.5") == 54 * drdc.NAS_PER_DEGREE \
+        + drdc.NAS_PER_DEGREE // 2
+    assert drdc.degrees_to_nas("539.9") > 0
+    assert drdc.degrees_to_nas("99999") == 99999 * drdc.NAS_PER_DEGREE
+
+
 def test_parse_array_runs_at_the_tools_pace():
     """parse_array at least 70 % of `drdc nmea`'s sentences a second on
     the committed logs, repeated to 200 000 lines: the best of five runs
