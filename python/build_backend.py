@@ -28,6 +28,7 @@ import os
 import re
 import shlex
 import shutil
+import stat
 import subprocess
 import sysconfig
 import tempfile
@@ -100,8 +101,9 @@ def _run(cmd):
     return r.stderr
 
 
-def build_library(out_path, work_dir):
-    """Compile core/ and fixed/ into the shared library out_path."""
+def build_library(out_path, tool_path, work_dir):
+    """Compile core/ and fixed/ into the shared library out_path, and the
+    host tool tools/drdc/ with the same objects into tool_path."""
     if not os.path.isdir(os.path.join(TOP, "core")):
         raise BuildError("no core/ beside python/ (%s): build the package "
                          "from a checkout of libdrdc-fx" % TOP)
@@ -125,9 +127,31 @@ def build_library(out_path, work_dir):
             # only drdc_ names leave libdrdc.so as they leave libdrdc.a
             flags = flags + ["-fvisibility=hidden"]
         jobs.append((cc + flags + includes + ["-c", src, "-o", obj], obj))
+    # the host tool drdc: its own files, linked with the library's
+    tool = []
+    for k, src in enumerate(sorted(glob.glob(os.path.join(
+            TOP, "tools", "drdc", "*.c")))):
+        src = os.path.relpath(src, TOP)
+        obj = os.path.join(work_dir, "tool_%03d_%s.o"
+                           % (k, os.path.basename(src)[:-2]))
+        jobs.append((cc + CFLAGS + policy.OPTIMISE_FLAGS["speed"] + includes
+                     + ["-c", src, "-o", obj], obj))
+        tool.append(obj)
     with concurrent.futures.ThreadPoolExecutor(os.cpu_count() or 1) as pool:
         list(pool.map(_run, [cmd for cmd, _ in jobs]))
-    _run(cc + ["-shared", "-o", out_path] + [obj for _, obj in jobs])
+    library = [obj for _, obj in jobs if obj not in tool]
+    _run(cc + ["-shared", "-o", out_path] + library)
+    # the tool links the library's own objects, as build/host/drdc links
+    # libdrdc.a: the same code, so the same bits (python/src's loops and
+    # the golden parts are not part of it)
+    core = [obj for (cmd, obj) in jobs if obj not in tool
+            and _source_of(cmd).startswith(("core" + os.sep,
+                                            "fixed" + os.sep))]
+    _run(cc + ["-o", tool_path] + tool + core)
+
+
+def _source_of(cmd):
+    return cmd[cmd.index("-c") + 1]
 
 
 def _status_texts():
@@ -208,10 +232,16 @@ def build_wheel(wheel_directory, config_settings=None,
     ).encode()
     with tempfile.TemporaryDirectory() as work:
         lib = os.path.join(work, "libdrdc.so")
-        build_library(lib, work)
+        tool = os.path.join(work, "drdc")
+        build_library(lib, tool, work)
         with open(lib, "rb") as f:
             files[NAME + "/libdrdc.so"] = f.read()
+        with open(tool, "rb") as f:
+            files[NAME + "/bin/drdc"] = f.read()
     files[dist_info + "/METADATA"] = _metadata(version).encode()
+    # `drdc` on PATH: a console script that runs drdc/bin/drdc
+    files[dist_info + "/entry_points.txt"] = (
+        "[console_scripts]\ndrdc = drdc._cli:main\n").encode()
     files[dist_info + "/WHEEL"] = (
         "Wheel-Version: 1.0\nGenerator: drdc build_backend\n"
         "Root-Is-Purelib: false\nTag: %s\n" % tag).encode()
@@ -224,9 +254,11 @@ def build_wheel(wheel_directory, config_settings=None,
                          zipfile.ZIP_DEFLATED) as whl:
         for arcname, data in files.items():
             info = zipfile.ZipInfo(arcname, date_time=(1980, 1, 1, 0, 0, 0))
-            # the shared library must stay executable once unpacked
-            info.external_attr = (0o755 if arcname.endswith(".so")
-                                  else 0o644) << 16
+            # the shared library and the tool must stay executable: pip
+            # keeps the executable bits of a regular file's mode only
+            info.external_attr = (stat.S_IFREG | (
+                0o755 if arcname.endswith(".so") or
+                arcname.endswith("/bin/drdc") else 0o644)) << 16
             info.compress_type = zipfile.ZIP_DEFLATED
             whl.writestr(info, data)
     return name
