@@ -338,6 +338,31 @@ def test_module_refuses_root_without_the_flag():
         assert r.returncode == 0
 
 
+def test_module_without_aiohttp_says_what_to_install(tmp_path):
+    """The package alone, as `pip install ./python` leaves it: numpy but
+    no aiohttp on the path. python -m drdc.serve names the extra to
+    install, in one message and no traceback."""
+    import numpy
+    import drdc
+    for module in (numpy, drdc):
+        folder = os.path.dirname(module.__file__)
+        os.symlink(folder, tmp_path / os.path.basename(folder))
+    libs = os.path.join(os.path.dirname(os.path.dirname(numpy.__file__)),
+                        "numpy.libs")
+    if os.path.isdir(libs):
+        os.symlink(libs, tmp_path / "numpy.libs")
+    env = dict(os.environ, PYTHONPATH=str(tmp_path))
+    probe = subprocess.run([sys.executable, "-c", "import aiohttp"],
+                           env=env, capture_output=True, cwd=tmp_path)
+    assert probe.returncode != 0  # the path has no aiohttp indeed
+    r = subprocess.run([sys.executable, "-m", "drdc.serve", "--port", "0"],
+                       capture_output=True, text=True, env=env, timeout=60,
+                       cwd=tmp_path)
+    assert r.returncode == 1
+    assert "pip install 'drdc[serve]'" in r.stderr
+    assert "Traceback" not in r.stderr and r.stdout == ""
+
+
 def test_timeout_answers_503_json():
     # 10 000 geo_to_utm take about 13 ms in the library alone
     s = Server(Limits(rate=1e9, burst=1e9, timeout=0.001))
