@@ -173,6 +173,25 @@ def degrees_to_nas(degrees):
     return nas
 
 
+def degrees_to_bam32(degrees):
+    """Degrees -> a binary angle (int, uint32: 2^32 per turn, wrapped to
+    one turn), exactly as degrees_to_nas() reads the value, rounded to
+    the nearest unit, ties away from zero."""
+    exact = _exact(degrees, "degrees")
+    return _round_half_away(exact * BAM32_PER_TURN / 360) % BAM32_PER_TURN
+
+
+def metres_to_q47_16(metres):
+    """Metres -> Q47.16 (int64, 2^16 per metre), exactly as
+    degrees_to_nas() reads the value, rounded to the nearest 1/65536 m,
+    ties away from zero."""
+    exact = _exact(metres, "metres")
+    q = _round_half_away(exact * Q47_16_ONE)
+    if not -2 ** 63 <= q < 2 ** 63:
+        raise ValueError("metres: %s is beyond Q47.16" % metres)
+    return q
+
+
 def nas_to_degrees(nas):
     """Nano-arcseconds -> degrees as an exact Fraction (float(...) of it
     for plotting)."""

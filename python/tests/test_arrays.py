@@ -19,7 +19,8 @@ from cvectors import load, tolerances
 DEG = drdc.NAS_PER_DEGREE
 # helpers of the package that are no function of the library: text
 # conversions in Python's exact arithmetic, and the status helpers
-NOT_LIBRARY = {"degrees_to_nas", "nas_to_degrees", "is_error", "reason",
+NOT_LIBRARY = {"degrees_to_nas", "degrees_to_bam32", "metres_to_q47_16",
+               "nas_to_degrees", "is_error", "reason",
                "status_name"}
 
 
