@@ -196,6 +196,12 @@ def _metadata(version):
             "Requires-Dist: numpy>=1.24\n"
             "Provides-Extra: serve\n"
             "Requires-Dist: aiohttp>=3.9; extra == \"serve\"\n"
+            "Provides-Extra: pandas\n"
+            "Requires-Dist: pandas>=2.0; extra == \"pandas\"\n"
+            "Provides-Extra: dask\n"
+            "Requires-Dist: pandas>=2.0; extra == \"dask\"\n"
+            "Requires-Dist: dask>=2024.1; extra == \"dask\"\n"
+            "Requires-Dist: distributed>=2024.1; extra == \"dask\"\n"
             % (NAME, version))
 
 
