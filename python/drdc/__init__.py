@@ -39,6 +39,12 @@ accuracy.
   parameter's type (int64, int32, ...) raises ValueError, so nothing
   wraps on its way into C.
 
+**Modules beyond the functions:** ``drdc.nmea`` (sentences, lines and
+whole receiver logs, UTC stitched in C), the pose types and JAUS bodies
+as array functions (``pose_*``, ``jaus_*``), decimal text of the
+integers as arrays (``format_*_array``, ``status_name_array``) and the
+``drdc`` command (drdc/bin/drdc, the host tool).
+
 Example (the same numbers as ``echo 50.27 -111.17 | drdc geo -u -p 4``)::
 
     import drdc
