@@ -28,6 +28,7 @@ import os
 import re
 import shlex
 import shutil
+import stat
 import subprocess
 import sysconfig
 import tempfile
@@ -45,7 +46,7 @@ CFLAGS = ["-std=c99", "-Wall", "-Wextra", "-Wconversion", "-Wsign-conversion",
           "-O2", "-g", "-ffunction-sections", "-fdata-sections",
           "-fno-align-functions", "-D_POSIX_C_SOURCE=200809L", "-fPIC"]
 INCLUDES = ["fixed/internal", "fixed/include", "core/include",
-            "tests/golden"]
+            "tests/golden", "tools/drdc"]
 
 
 class BuildError(Exception):
@@ -75,6 +76,8 @@ def _sources():
     for folder in ("fixed", "core", "python/src"):
         paths += sorted(glob.glob(os.path.join(TOP, folder, "**", "*.c"),
                                   recursive=True))
+    # the reasons `drdc nmea` and `drdc time` print, for DrdcError
+    paths.append(os.path.join(TOP, "tools", "drdc", "reasons.c"))
     # the conformance digest's parts, for drdc.conformance's reference
     # records (python/src/golden.c); not the runner's test and tables
     paths += [p for p in sorted(glob.glob(os.path.join(
@@ -100,8 +103,9 @@ def _run(cmd):
     return r.stderr
 
 
-def build_library(out_path, work_dir):
-    """Compile core/ and fixed/ into the shared library out_path."""
+def build_library(out_path, tool_path, work_dir):
+    """Compile core/ and fixed/ into the shared library out_path, and the
+    host tool tools/drdc/ with the same objects into tool_path."""
     if not os.path.isdir(os.path.join(TOP, "core")):
         raise BuildError("no core/ beside python/ (%s): build the package "
                          "from a checkout of libdrdc-fx" % TOP)
@@ -112,9 +116,11 @@ def build_library(out_path, work_dir):
     for k, src in enumerate(_sources()):
         stem = os.path.basename(src)[:-2]
         obj = os.path.join(work_dir, "%03d_%s.o" % (k, stem))
-        # the footprint policy's flags for the library; the loops for speed
+        # the footprint policy's flags for the library; the loops (and the
+        # tool's reasons) for speed
         kind = ("speed" if src.startswith(("python" + os.sep,
-                                           "tests" + os.sep))
+                                           "tests" + os.sep,
+                                           "tools" + os.sep))
                 else policy.optimise_kind(src))
         flags = CFLAGS + policy.OPTIMISE_FLAGS[kind]
         if src.startswith("tests" + os.sep):
@@ -123,9 +129,57 @@ def build_library(out_path, work_dir):
             # only drdc_ names leave libdrdc.so as they leave libdrdc.a
             flags = flags + ["-fvisibility=hidden"]
         jobs.append((cc + flags + includes + ["-c", src, "-o", obj], obj))
+    # the host tool drdc: its own files, linked with the library's
+    tool = []
+    for k, src in enumerate(sorted(glob.glob(os.path.join(
+            TOP, "tools", "drdc", "*.c")))):
+        src = os.path.relpath(src, TOP)
+        obj = os.path.join(work_dir, "tool_%03d_%s.o"
+                           % (k, os.path.basename(src)[:-2]))
+        jobs.append((cc + CFLAGS + policy.OPTIMISE_FLAGS["speed"] + includes
+                     + ["-c", src, "-o", obj], obj))
+        tool.append(obj)
     with concurrent.futures.ThreadPoolExecutor(os.cpu_count() or 1) as pool:
         list(pool.map(_run, [cmd for cmd, _ in jobs]))
-    _run(cc + ["-shared", "-o", out_path] + [obj for _, obj in jobs])
+    library = [obj for _, obj in jobs if obj not in tool]
+    _run(cc + ["-shared", "-o", out_path] + library)
+    # the tool links the library's own objects, as build/host/drdc links
+    # libdrdc.a: the same code, so the same bits (python/src's loops and
+    # the golden parts are not part of it)
+    core = [obj for (cmd, obj) in jobs if obj not in tool
+            and _source_of(cmd).startswith(("core" + os.sep,
+                                            "fixed" + os.sep))]
+    _run(cc + ["-o", tool_path] + tool + core)
+
+
+def _source_of(cmd):
+    return cmd[cmd.index("-c") + 1]
+
+
+def _status_texts():
+    """{value: meaning} of every status, from the comments of
+    fixed/include/drdc/status.h (DrdcError's reason where `drdc` has no
+    words of its own for a function)."""
+    with open(os.path.join(TOP, "fixed/include/drdc/status.h")) as f:
+        text = f.read()
+    body = text[text.index("typedef enum drdc_status {"):
+                text.index("} drdc_status_t;")]
+    texts, pending, last = {}, None, None
+    for m in re.finditer(r"/\*\*(<?)(.*?)\*/|\b(DRDC_\w+)\s*=\s*(\d+)",
+                         body, re.S):
+        if m.group(3):
+            last = int(m.group(4)) if m.group(3) != "DRDC_STATUS_COUNT" \
+                else None
+            if pending is not None and last is not None:
+                texts[last] = pending
+            pending = None
+            continue
+        words = " ".join(w for w in m.group(2).split() if w != "*")
+        if m.group(1) and last is not None:
+            texts[last] = words
+        elif not m.group(1):
+            pending = words
+    return texts
 
 
 def _record_line(arcname, data):
@@ -144,6 +198,12 @@ def _metadata(version):
             "Requires-Dist: numpy>=1.24\n"
             "Provides-Extra: serve\n"
             "Requires-Dist: aiohttp>=3.9; extra == \"serve\"\n"
+            "Provides-Extra: pandas\n"
+            "Requires-Dist: pandas>=2.0; extra == \"pandas\"\n"
+            "Provides-Extra: dask\n"
+            "Requires-Dist: pandas>=2.0; extra == \"dask\"\n"
+            "Requires-Dist: dask>=2024.1; extra == \"dask\"\n"
+            "Requires-Dist: distributed>=2024.1; extra == \"dask\"\n"
             % (NAME, version))
 
 
@@ -173,12 +233,23 @@ def build_wheel(wheel_directory, config_settings=None,
     files[NAME + "/_version.py"] = (
         "# Written by python/build_backend.py from core/include/drdc/"
         "version.h.\nVERSION = %r\n" % version).encode()
+    files[NAME + "/_status_text.py"] = (
+        "# Written by python/build_backend.py from fixed/include/drdc/"
+        "status.h.\nSTATUS_TEXT = {\n%s}\n" % "".join(
+            "    %d: %r,\n" % kv for kv in sorted(_status_texts().items()))
+    ).encode()
     with tempfile.TemporaryDirectory() as work:
         lib = os.path.join(work, "libdrdc.so")
-        build_library(lib, work)
+        tool = os.path.join(work, "drdc")
+        build_library(lib, tool, work)
         with open(lib, "rb") as f:
             files[NAME + "/libdrdc.so"] = f.read()
+        with open(tool, "rb") as f:
+            files[NAME + "/bin/drdc"] = f.read()
     files[dist_info + "/METADATA"] = _metadata(version).encode()
+    # `drdc` on PATH: a console script that runs drdc/bin/drdc
+    files[dist_info + "/entry_points.txt"] = (
+        "[console_scripts]\ndrdc = drdc._cli:main\n").encode()
     files[dist_info + "/WHEEL"] = (
         "Wheel-Version: 1.0\nGenerator: drdc build_backend\n"
         "Root-Is-Purelib: false\nTag: %s\n" % tag).encode()
@@ -191,9 +262,11 @@ def build_wheel(wheel_directory, config_settings=None,
                          zipfile.ZIP_DEFLATED) as whl:
         for arcname, data in files.items():
             info = zipfile.ZipInfo(arcname, date_time=(1980, 1, 1, 0, 0, 0))
-            # the shared library must stay executable once unpacked
-            info.external_attr = (0o755 if arcname.endswith(".so")
-                                  else 0o644) << 16
+            # the shared library and the tool must stay executable: pip
+            # keeps the executable bits of a regular file's mode only
+            info.external_attr = (stat.S_IFREG | (
+                0o755 if arcname.endswith(".so") or
+                arcname.endswith("/bin/drdc") else 0o644)) << 16
             info.compress_type = zipfile.ZIP_DEFLATED
             whl.writestr(info, data)
     return name

@@ -217,6 +217,56 @@ PYTHON_PACKAGES = {
     "yarl==1.25.1": [
         "d5add7b4ca7afeea91d52e4d4e4db3b1fe9885b71f07054560d8c4296b7441a2",
         "be80550d9bfe83d9b62398a37081a90434e6df2d978ec345c3d2820de6beddab"],
+    # drdc.nmea.read_log's DataFrame (pandas; python-dateutil and tzdata
+    # are above) and the fleet-of-logs recipe on dask.distributed
+    # (python/tests/test_dask.py)
+    "pandas==3.1.2": [
+        "430246ff24c68d22e83a00976928095bee4bf82885ce5123ef71baa0f303dbbd",
+        "8b019b0f4875226840cd5ccaed037214f3498f11a28429b62e0d484686ca194f"],
+    "dask==2026.11.0": [
+        "3d826d9448c6834ccd1e0a9c932caa249e5a138aee254db791a0153c0a357f6d"],
+    "distributed==2026.11.0": [
+        "327299fa26b0759bb484de5accc65c09af57c23ba210f0af145d8894a488f474"],
+    "click==8.5.1": [
+        "8bb5376d2006950386f8c6427613334a2acadc5f559cb80e638d00b4df957e37"],
+    "cloudpickle==3.1.3": [
+        "1654f4f18e416447210a63c5c25a135d65a292156aa5fa519dfa4baf7726dddb"],
+    "fsspec==2026.9.0": [
+        "8dd6e646e99ea382bd85f97a45e6b526a442d79423a7dc673f1e2756d05fcb5f"],
+    # dask's on CPython 3.11 (the standard library's from 3.12 on)
+    "importlib_metadata==8.7.0": [
+        "e5dd1551894c77868a30651cef00984d50e1002d06942a7101d34870c5f02afd"],
+    "zipp==4.1.2": [
+        "b30cb6cd253122169c47de245ca24a86bac2a5d3802ba15bf7ba6414eb9e144d"],
+    "jinja2==3.1.6": [
+        "85ece4451f492d0c13c5dd7c13a64681a86afae63a5f347908daf103ce6d2f67"],
+    "markupsafe==3.0.4": [
+        "6da83a088f8ef93b2d483a8232a4dbf4d69d3d8496b568a03c56becac43e1808",
+        "434139499bb20b502ed3baa1f169e618f924a97e7a777fea1a49446d80106cf6"],
+    "locket==1.0.0": [
+        "b6c819a722f7b6bd955b80781788e4a66a55628b858d347536b7e81325a3a5e3"],
+    "msgpack==1.2.4": [
+        "a45ceb5f199d5e388f28b550ba881096a3740d4bda10e661d77f59d9a2e8187a",
+        "7fabd415c41e62006c6641fcdf5b3e866f581c4e11c58328c0d0f69584b9577d"],
+    "partd==1.4.2": [
+        "978e4ac767ec4ba5b86c6eaa52e5a2a3bc748a2ca839e8cc798f1cc6ce6efb0f"],
+    # abi3: one wheel for both CPythons
+    "psutil==7.2.2": [
+        "076a2d2f923fd4821644f5ba89f059523da90dc9014e85f8e45a5774ca5bc6f9"],
+    "pyyaml==6.0.4": [
+        "622aa875fa6533f25fedcffe23079357d65a690d462200afed5d8e9d0e01ebee",
+        "50588147ab2c6a59b5f990a4905db80899a6c2bd197e046a6201f1e67587e794"],
+    "sortedcontainers==2.4.0": [
+        "a163dcaede0f1c021485e957a39245190e74249897e2ae4b2aa38595db237ee0"],
+    "tblib==3.2.2": [
+        "26bdccf339bcce6a88b2b5432c988b266ebbe63a4e593f6b578b1d2e723d2b76"],
+    "toolz==1.2.0": [
+        "890f820b1cb8152785aaf9386d8707770110809035800985ca65cb24ce1120ef"],
+    # abi3 from CPython 3.11: one wheel for both
+    "tornado==6.6.1": [
+        "1b6ff57cc69b339f8feb9e7b567b0e0eacb16bfaf234159496623ef7a67ba640"],
+    "zict==3.0.0": [
+        "5796e36bd0e0cc8cf0fbc1ace6a68912611c1dbd74750a3f3026b9b9d6a327ae"],
 }
 
 DEB_SRC_LIST = "/etc/apt/sources.list.d/drdc-deb-src.sources"

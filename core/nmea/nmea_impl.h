@@ -171,4 +171,8 @@ drdc_status_t drdc__nmea_hdt(const nmea_frame_t *fr, drdc_nmea_t *n);
 drdc_status_t drdc__nmea_ths(const nmea_frame_t *fr, drdc_nmea_t *n);
 drdc_status_t drdc__nmea_gsa(const nmea_frame_t *fr, drdc_nmea_t *n);
 
+/** An RMC's time of day and date only, whatever its status and mode (for
+ *  drdc_nmea_parse_date()): the status letter must still be A or V. */
+drdc_status_t drdc__nmea_rmc_date(const nmea_frame_t *fr, drdc_nmea_t *n);
+
 #endif /* DRDC_NMEA_IMPL_H */

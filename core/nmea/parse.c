@@ -2,9 +2,9 @@
 /**
  * @file
  * @ingroup drdc_nmea
- * @brief drdc_nmea_parse() and drdc_nmea_parse_with(): frame the
- *        sentence, check that every field decodes, then decode it into
- *        the caller's record.
+ * @brief drdc_nmea_parse(), drdc_nmea_parse_with() and
+ *        drdc_nmea_parse_date(): frame the sentence, check that every
+ *        field decodes, then decode it into the caller's record.
  */
 #include "nmea_impl.h"
 
@@ -109,6 +109,29 @@ static drdc_status_t decode_sentence(const nmea_frame_t *fr, drdc_nmea_t *n)
   return st;
 }
 
+/* What one parse decodes: the whole sentence, or the date only. */
+typedef enum parse_what { PARSE_SENTENCE = 0, PARSE_DATE = 1 } parse_what_t;
+
+/* The date-bearing part of an RMC or ZDA; any other sentence has none
+ * (DRDC_E_SENTENCE). A ZDA is all date: its whole decoder runs. */
+static drdc_status_t decode_date(const nmea_frame_t *fr, drdc_nmea_t *n)
+{
+  drdc_status_t st;
+
+  switch (fr->type) {
+  case DRDC_NMEA_RMC:
+    st = drdc__nmea_rmc_date(fr, n);
+    break;
+  case DRDC_NMEA_ZDA:
+    st = drdc__nmea_zda(fr, n);
+    break;
+  default:
+    st = DRDC_E_SENTENCE;
+    break;
+  }
+  return st;
+}
+
 /*
  * Two passes over the framed sentence instead of a scratch record: the
  * first checks every field (the decoders write nothing with NULL), the
@@ -117,8 +140,8 @@ static drdc_status_t decode_sentence(const nmea_frame_t *fr, drdc_nmea_t *n)
  * too. The record is written only on success without a second
  * drdc_nmea_t on the stack, for about twice the decoding cycles.
  */
-drdc_status_t drdc_nmea_parse_with(const char *text, size_t length,
-                                   uint32_t flags, drdc_nmea_t *out)
+static drdc_status_t parse(const char *text, size_t length, uint32_t flags,
+                           parse_what_t what, drdc_nmea_t *out)
 {
   nmea_frame_t fr;
   drdc_nmea_t *n = NULL;
@@ -141,12 +164,24 @@ drdc_status_t drdc_nmea_parse_with(const char *text, size_t length,
       out->talker[1] = text[2];
       n = out;
     }
-    st = decode_sentence(&fr, n);
+    st = (what == PARSE_DATE) ? decode_date(&fr, n) : decode_sentence(&fr, n);
   }
   return st;
 }
 
+drdc_status_t drdc_nmea_parse_with(const char *text, size_t length,
+                                   uint32_t flags, drdc_nmea_t *out)
+{
+  return parse(text, length, flags, PARSE_SENTENCE, out);
+}
+
 drdc_status_t drdc_nmea_parse(const char *text, size_t length, drdc_nmea_t *out)
 {
-  return drdc_nmea_parse_with(text, length, 0u, out);
+  return parse(text, length, 0u, PARSE_SENTENCE, out);
+}
+
+drdc_status_t drdc_nmea_parse_date(const char *text, size_t length,
+                                   uint32_t flags, drdc_nmea_t *out)
+{
+  return parse(text, length, flags, PARSE_DATE, out);
 }

@@ -32,6 +32,9 @@ UtmArrays = namedtuple("UtmArrays", Utm._fields + ("status",))
 GeographicArrays = namedtuple("GeographicArrays",
                               Geographic._fields + ("status",))
 MgrsArrays = namedtuple("MgrsArrays", "text status")
+ZoneArrays = namedtuple("ZoneArrays", "zone status")
+TransverseMercatorArrays = namedtuple(
+    "TransverseMercatorArrays", TransverseMercator._fields + ("status",))
 MgrsDecodeArrays = namedtuple("MgrsDecodeArrays", UtmPosition._fields
                               + ("prec", "status"))
 
@@ -86,14 +89,20 @@ def geo_to_utm(lat_nas, lon_nas, zone=ZONE_STANDARD):
                scale.value)
 
 
-def geo_from_utm(zone, north, easting_q47_16, northing_q47_16):
-    """drdc_geo_from_utm: UTM/UPS (zone 0) -> geographic, with the meridian
-    convergence and the point scale."""
+def geo_from_utm(zone, north, easting_q47_16, northing_q47_16,
+                 with_scale=False):
+    """drdc_geo_from_utm: UTM/UPS (zone 0) -> geographic. The meridian
+    convergence and the point scale only when asked (with_scale=True;
+    else None, and the library skips computing them, a third of the
+    time)."""
     u = _utm_in(zone, north, easting_q47_16, northing_q47_16)
     lat, lon, conv, scale = _I64(), _I64(), _I64(), _I64()
-    check(lib.drdc_geo_from_utm(ctypes.byref(u), ctypes.byref(lat),
-                                ctypes.byref(lon), ctypes.byref(conv),
-                                ctypes.byref(scale)), "drdc_geo_from_utm")
+    check(lib.drdc_geo_from_utm(
+        ctypes.byref(u), ctypes.byref(lat), ctypes.byref(lon),
+        ctypes.byref(conv) if with_scale else None,
+        ctypes.byref(scale) if with_scale else None), "drdc_geo_from_utm")
+    if not with_scale:
+        return Geographic(lat.value, lon.value, None, None)
     return Geographic(lat.value, lon.value, conv.value, scale.value)
 
 
@@ -162,79 +171,157 @@ def geo_to_utm_array(lat_nas, lon_nas, zone=ZONE_STANDARD):
                         status)))
 
 
-def geo_from_utm_array(zone, north, easting_q47_16, northing_q47_16):
-    """drdc_geo_from_utm over arrays (broadcast together; north: bool or
-    0/1): GeographicArrays of lat_nas, lon_nas, convergence_nas,
-    scale_q5_58 (int64) and status (int32)."""
+def _utm_arrays(zone, north, easting_q47_16, northing_q47_16, *more):
     north = np.asarray(north)
     if north.dtype.kind == "b":
         north = north.astype(np.int32)
-    (zones, norths, es, ns), shape = _check.broadcast(
+    return _check.broadcast(
         _check.integer_array(zone, "zone", _check.INT32, np.int32),
         _check.integer_array(north, "north", (0, 1), np.int32),
         _check.integer_array(easting_q47_16, "easting_q47_16", _check.INT64,
                              np.int64),
         _check.integer_array(northing_q47_16, "northing_q47_16",
-                             _check.INT64, np.int64))
+                             _check.INT64, np.int64), *more)
+
+
+def geo_from_utm_array(zone, north, easting_q47_16, northing_q47_16,
+                       with_scale=False):
+    """drdc_geo_from_utm over arrays (broadcast together; north: bool or
+    0/1): GeographicArrays of lat_nas, lon_nas (int64) and status (int32);
+    convergence_nas and scale_q5_58 (int64) only with with_scale=True,
+    else None (the library then skips computing them)."""
+    (zones, norths, es, ns), shape = _utm_arrays(zone, north, easting_q47_16,
+                                                 northing_q47_16)
     n = zones.size
-    outs = [np.zeros(n, np.int64) for _ in range(4)]
+    lat, lon = np.zeros(n, np.int64), np.zeros(n, np.int64)
+    conv = np.zeros(n, np.int64) if with_scale else None
+    scale = np.zeros(n, np.int64) if with_scale else None
     status = np.zeros(n, np.int32)
-    lib.drdc_batch_geo_from_utm(n, *(a.ctypes.data for a in (
-        [zones, norths, es, ns] + outs + [status])))
-    return GeographicArrays(*(a.reshape(shape) for a in outs + [status]))
+    lib.drdc_batch_geo_from_utm(
+        n, zones.ctypes.data, norths.ctypes.data, es.ctypes.data,
+        ns.ctypes.data, lat.ctypes.data, lon.ctypes.data,
+        conv.ctypes.data if with_scale else None,
+        scale.ctypes.data if with_scale else None, status.ctypes.data)
+    return GeographicArrays(*(None if a is None else a.reshape(shape)
+                              for a in (lat, lon, conv, scale, status)))
+
+
+def geo_utm_zone_array(lat_nas, lon_nas):
+    """drdc_geo_utm_zone over arrays: ZoneArrays of zone (int32, 1..60, 0
+    for UPS) and status."""
+    (lat, lon), shape = _check.broadcast(
+        _check.integer_array(lat_nas, "lat_nas", _check.INT64, np.int64),
+        _check.integer_array(lon_nas, "lon_nas", _check.INT64, np.int64))
+    zone = np.zeros(lat.size, np.int32)
+    status = np.zeros(lat.size, np.int32)
+    lib.drdc_batch_geo_utm_zone(lat.size, lat.ctypes.data, lon.ctypes.data,
+                                zone.ctypes.data, status.ctypes.data)
+    return ZoneArrays(zone.reshape(shape), status.reshape(shape))
+
+
+def geo_tm_forward_array(lat_nas, dlon_nas):
+    """drdc_geo_tm_forward over arrays: TransverseMercatorArrays of
+    x_q47_16, y_q47_16, convergence_nas, scale_q5_58 and status."""
+    (lat, dlon), shape = _check.broadcast(
+        _check.integer_array(lat_nas, "lat_nas", _check.INT64, np.int64),
+        _check.integer_array(dlon_nas, "dlon_nas", _check.INT64, np.int64))
+    outs = [np.zeros(lat.size, np.int64) for _ in range(4)]
+    status = np.zeros(lat.size, np.int32)
+    lib.drdc_batch_geo_tm_forward(lat.size, lat.ctypes.data,
+                                  dlon.ctypes.data,
+                                  *(a.ctypes.data for a in outs + [status]))
+    return TransverseMercatorArrays(*(a.reshape(shape)
+                                      for a in outs + [status]))
+
+
+def _mgrs_text(rows, shape):
+    return rows.astype(np.str_).reshape(shape)
 
 
 def geo_mgrs_encode_array(lat_nas, lon_nas, prec=5):
-    """drdc_geo_mgrs_encode over arrays: MgrsArrays of text (numpy str
-    array, "" where the status is an error) and status (int32)."""
+    """drdc_geo_mgrs_encode over arrays, the loop in C: MgrsArrays of text
+    (numpy str array, "" where the status is an error) and status
+    (int32)."""
     (lat, lon, precs), shape = _check.broadcast(
         _check.integer_array(lat_nas, "lat_nas", _check.INT64, np.int64),
         _check.integer_array(lon_nas, "lon_nas", _check.INT64, np.int64),
         _check.integer_array(prec, "prec", _check.INT32, np.int32))
-    n = lat.size
-    text = np.zeros(n, "U%d" % (MGRS_SIZE - 1))
-    status = np.zeros(n, np.int32)
-    buf = ctypes.create_string_buffer(MGRS_SIZE)
-    f = lib.drdc_geo_mgrs_encode
-    for i, (la, lo, p) in enumerate(zip(lat.tolist(), lon.tolist(),
-                                        precs.tolist())):
-        st = f(la, lo, p, buf, MGRS_SIZE)
-        status[i] = st
-        if st == 0:
-            text[i] = buf.value.decode("ascii")
-    return MgrsArrays(text.reshape(shape), status.reshape(shape))
+    rows = np.zeros(lat.size, "S%d" % MGRS_SIZE)
+    status = np.zeros(lat.size, np.int32)
+    lib.drdc_batch_geo_mgrs_encode(lat.size, lat.ctypes.data,
+                                   lon.ctypes.data, precs.ctypes.data,
+                                   rows.ctypes.data, status.ctypes.data)
+    return MgrsArrays(_mgrs_text(rows, shape), status.reshape(shape))
+
+
+def geo_mgrs_from_utm_array(zone, north, easting_q47_16, northing_q47_16,
+                            prec=5):
+    """drdc_geo_mgrs_from_utm over arrays (broadcast together), the loop in
+    C: MgrsArrays of text and status."""
+    (zones, norths, es, ns, precs), shape = _utm_arrays(
+        zone, north, easting_q47_16, northing_q47_16,
+        _check.integer_array(prec, "prec", _check.INT32, np.int32))
+    rows = np.zeros(zones.size, "S%d" % MGRS_SIZE)
+    status = np.zeros(zones.size, np.int32)
+    lib.drdc_batch_geo_mgrs_from_utm(
+        zones.size, zones.ctypes.data, norths.ctypes.data, es.ctypes.data,
+        ns.ctypes.data, precs.ctypes.data, rows.ctypes.data,
+        status.ctypes.data)
+    return MgrsArrays(_mgrs_text(rows, shape), status.reshape(shape))
+
+
+def text_rows(text, name):
+    """An array of str as NUL-padded ASCII rows for C, and a mask of the
+    elements C could not read as the text they are (beyond ASCII, or
+    holding a NUL): (rows, width, bad, shape)."""
+    texts = np.asarray(text)
+    if texts.dtype.kind != "U":
+        raise TypeError("%s: an array of str, not dtype %s"
+                        % (name, texts.dtype))
+    shape = texts.shape
+    flat = texts.ravel()
+    try:
+        rows = flat.astype("S")
+        bad = np.zeros(flat.size, bool)
+    except UnicodeEncodeError:
+        bad = np.array([not t.isascii() for t in flat.tolist()], bool)
+        rows = np.where(bad, "", flat).astype("S")
+    if flat.size and flat.dtype.itemsize:
+        # a NUL inside a text: fewer non-zero code points than characters
+        # (numpy keeps no NUL at a text's end)
+        codes = np.ascontiguousarray(flat).view(np.uint32).reshape(
+            flat.size, -1)
+        nul = np.count_nonzero(codes, axis=1) != np.char.str_len(flat)
+        bad |= nul
+        rows = np.where(nul, b"", rows)
+    width = max(rows.dtype.itemsize, 1)
+    rows = np.ascontiguousarray(rows.astype("S%d" % width))
+    return rows, width, bad, shape
 
 
 def geo_mgrs_decode_array(text):
-    """drdc_geo_mgrs_decode over an array of str (any shape): MgrsDecodeArrays
-    of the cell's centre (zone int32, north bool, easting_q47_16,
-    northing_q47_16 int64), prec (int32) and status (int32; a text that is
-    not ASCII, or holds a NUL, is DRDC_E_MGRS)."""
-    texts = np.asarray(text)
-    if texts.dtype.kind != "U":
-        raise TypeError("text: an array of str, not dtype %s" % texts.dtype)
-    shape = texts.shape
-    flat = texts.ravel().tolist()
-    n = len(flat)
+    """drdc_geo_mgrs_decode over an array of str (any shape), the loop in C:
+    MgrsDecodeArrays of the cell's centre (zone int32, north bool,
+    easting_q47_16, northing_q47_16 int64), prec (int32) and status
+    (int32; a text that is not ASCII, or holds a NUL, is DRDC_E_MGRS)."""
+    rows, width, bad, shape = text_rows(text, "text")
+    n = rows.size
     zone = np.zeros(n, np.int32)
-    north = np.zeros(n, np.bool_)
+    north = np.zeros(n, np.uint8)
     e = np.zeros(n, np.int64)
     nn = np.zeros(n, np.int64)
     prec = np.zeros(n, np.int32)
     status = np.zeros(n, np.int32)
-    corner, centre, p = GeoUtm(), GeoUtm(), ctypes.c_int32()
-    refs = [ctypes.byref(x) for x in (corner, centre, p)]
-    f = lib.drdc_geo_mgrs_decode
-    for i, t in enumerate(flat):
-        if not t.isascii() or "\0" in t:
-            # C could not read it as the text it is: malformed MGRS
-            status[i] = Status.DRDC_E_MGRS
-            continue
-        st = f(t.encode("ascii"), *refs)
-        status[i] = st
-        if st == 0:
-            zone[i], north[i], e[i], nn[i] = (centre.zone, centre.north,
-                                              centre.easting, centre.northing)
-            prec[i] = p.value
+    scratch = ctypes.create_string_buffer(width + 1)
+    lib.drdc_batch_geo_mgrs_decode(
+        n, rows.ctypes.data, width, scratch, zone.ctypes.data,
+        north.ctypes.data, e.ctypes.data, nn.ctypes.data, prec.ctypes.data,
+        status.ctypes.data)
+    if bad.any():
+        # C could not read it as the text it is: malformed MGRS
+        status[bad] = Status.DRDC_E_MGRS
+        for a in (zone, north, e, nn, prec):
+            a[bad] = 0
     return MgrsDecodeArrays(*(a.reshape(shape) for a in
-                              (zone, north, e, nn, prec, status)))
+                              (zone, north.astype(np.bool_), e, nn, prec,
+                               status)))

@@ -69,6 +69,53 @@ class UnitsExpr(ctypes.Structure):
                 ("rounded", ctypes.c_uint8)]
 
 
+class NmeaTod(ctypes.Structure):
+    """drdc_nmea_tod_t (nmea.h)"""
+    _fields_ = [(n, ctypes.c_int32) for n in
+                ("hour", "minute", "second", "nsec")]
+
+
+class Nmea(ctypes.Structure):
+    """drdc_nmea_t (nmea.h)"""
+    _fields_ = [("type", ctypes.c_int), ("talker", ctypes.c_char * 3),
+                ("has", ctypes.c_uint32), ("beyond", ctypes.c_uint32),
+                ("time", NmeaTod),
+                ("latitude", nas_t), ("longitude", nas_t),
+                ("altitude", q47_16_t), ("separation", q47_16_t),
+                ("quality", ctypes.c_int32), ("satellites", ctypes.c_int32),
+                ("hdop", ctypes.c_int32), ("pdop", ctypes.c_int32),
+                ("vdop", ctypes.c_int32), ("speed", ctypes.c_int32),
+                ("course", bam32_t), ("course_magnetic", bam32_t),
+                ("heading", bam32_t), ("mode", ctypes.c_char * 8),
+                ("fix_type", ctypes.c_int32), ("system_id", ctypes.c_int32),
+                ("satellite_ids", ctypes.c_uint16 * 12),
+                ("year", ctypes.c_int32), ("month", ctypes.c_int32),
+                ("day", ctypes.c_int32), ("zone_hours", ctypes.c_int32),
+                ("zone_minutes", ctypes.c_int32), ("rms", ctypes.c_int32),
+                ("sigma_major", ctypes.c_int32),
+                ("sigma_minor", ctypes.c_int32), ("orientation", bam32_t),
+                ("sigma_latitude", ctypes.c_int32),
+                ("sigma_longitude", ctypes.c_int32),
+                ("sigma_altitude", ctypes.c_int32)]
+
+
+_COLUMN_POINTERS = [
+    "status", "type", "talker", "has", "beyond", "hour", "minute", "second",
+    "nsec", "latitude", "longitude", "altitude", "separation", "quality",
+    "satellites", "hdop", "pdop", "vdop", "speed", "course",
+    "course_magnetic", "heading", "mode", "fix_type", "system_id",
+    "satellite_ids", "year", "month", "day", "zone_hours", "zone_minutes",
+    "rms", "sigma_major", "sigma_minor", "orientation", "sigma_latitude",
+    "sigma_longitude", "sigma_altitude", "utc_sec", "utc_nsec",
+    "utc_status"]
+
+
+class NmeaColumns(ctypes.Structure):
+    """drdc_batch_nmea_columns_t (python/src/batch_nmea.c): the data
+    address of each output column, in the C structure's order"""
+    _fields_ = [(n, ctypes.c_void_p) for n in _COLUMN_POINTERS]
+
+
 P = ctypes.POINTER
 _void_p = ctypes.c_void_p  # const drdc_unit_t * and const leap state *
 
@@ -97,6 +144,12 @@ PROTOTYPES = {
     "drdc_time_gps_to_utc": (status_t, [_void_p, P(TimeGps), P(Time)]),
     "drdc_time_utc_to_unix": (status_t, [_void_p, P(Time), P(TimeCount)]),
     "drdc_time_unix_to_utc": (status_t, [P(TimeCount), P(Time)]),
+    # nmea.h
+    "drdc_nmea_parse_with": (status_t, [ctypes.c_char_p, ctypes.c_size_t,
+                                        ctypes.c_uint32, P(Nmea)]),
+    "drdc_nmea_parse_date": (status_t, [ctypes.c_char_p, ctypes.c_size_t,
+                                        ctypes.c_uint32, P(Nmea)]),
+    "drdc_nmea_utc": (status_t, [_void_p, P(Nmea), P(Nmea), P(Time)]),
     # orient.h
     "drdc_quat_from_euler": (status_t, [P(Euler), P(Quat)]),
     "drdc_euler_from_quat": (status_t, [P(Quat), P(Euler)]),
@@ -130,6 +183,44 @@ PROTOTYPES.update({
     "drdc_batch_units_convert_expr": (None, [_n, _a, ctypes.c_uint,
                                              P(UnitsExpr), ctypes.c_uint,
                                              P(UnitsExpr), _a, _a]),
+})
+_c = ctypes.c_char_p
+_i32 = ctypes.c_int32
+_u32 = ctypes.c_uint32
+PROTOTYPES.update({
+    # batch_geo.c
+    "drdc_batch_geo_utm_zone": (None, [_n] + [_a] * 4),
+    "drdc_batch_geo_tm_forward": (None, [_n] + [_a] * 7),
+    "drdc_batch_geo_mgrs_encode": (None, [_n] + [_a] * 5),
+    "drdc_batch_geo_mgrs_from_utm": (None, [_n] + [_a] * 7),
+    "drdc_batch_geo_mgrs_decode": (None, [_n, _a, _n] + [_a] * 7),
+    # batch_time.c
+    "drdc_batch_time_from_civil": (None, [_n] + [_a] * 4),
+    "drdc_batch_time_to_civil": (None, [_n] + [_a] * 4),
+    "drdc_batch_time_iso8601_format": (None, [_n, _a, _a, _i32, _a, _a]),
+    "drdc_batch_time_iso8601_parse": (None, [_n, _a, _n] + [_a] * 4),
+    "drdc_batch_time_jaus_pack": (None, [_n] + [_a] * 4),
+    "drdc_batch_time_jaus_to_utc": (None, [_n] + [_a] * 6),
+    # batch_format.c
+    "drdc_batch_format_fixed": (None, [_n, _a, _u32, _i32, _a, _n, _a]),
+    "drdc_batch_format_nas_degrees": (None, [_n, _a, _i32, _a, _a]),
+    "drdc_batch_format_bam32_degrees": (None, [_n, _a, _i32, _a, _a]),
+    # batch_pose.c
+    "drdc_batch_pose": (None, [_i32, _n, _a, _n, _a, _n, _a, _n, _a, _a]),
+    # batch_jaus.c
+    "drdc_batch_jaus_scaled": (None, [_i32, _n] + [_a] * 7),
+    "drdc_batch_jaus_scaled_range": (None, [_n] + [_a] * 5),
+    "drdc_batch_jaus_pose_size": (None, [_n] + [_a] * 3),
+    "drdc_batch_jaus_pose_pack": (None, [_i32, _n, _a, _i32, _a, _a, _a]),
+    "drdc_batch_jaus_pose_unpack": (None, [_i32, _n, _a, _n, _a, _i32, _a,
+                                           _a]),
+    # batch_nmea.c
+    "drdc_batch_line_count": (ctypes.c_size_t, [_a, _n]),
+    "drdc_batch_line_bounds": (None, [_a, _n, _n, _a, _a]),
+    "drdc_batch_nmea_parse": (None, [_a, _n, _a, _a, _u32, _a]),
+    # tools/drdc/reasons.c: the tool's words for a status
+    "drdc_tool_nmea_reason": (_c, [status_t]),
+    "drdc_tool_time_reason": (_c, [status_t]),
 })
 # drdc_batch_time_count's conversions, in batch.c's order
 COUNT_CONVERSIONS = ("utc_to_tai", "tai_to_utc", "utc_to_unix",

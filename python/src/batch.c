@@ -43,6 +43,8 @@ void drdc_batch_geo_to_utm(size_t n, const int64_t *lat, const int64_t *lon,
   }
 }
 
+/* convergence and scale NULL: the library then skips computing them (a
+ * third of the reverse projection's time) */
 void drdc_batch_geo_from_utm(size_t n, const int32_t *zone,
                              const int32_t *north, const int64_t *easting,
                              const int64_t *northing, int64_t *lat,
@@ -62,11 +64,17 @@ void drdc_batch_geo_from_utm(size_t n, const int32_t *zone,
     u.north = (north[i] != 0);
     u.easting = easting[i];
     u.northing = northing[i];
-    status[i] = (int32_t)drdc_geo_from_utm(&u, &la, &lo, &c, &k);
+    status[i] = (int32_t)drdc_geo_from_utm(&u, &la, &lo,
+                                           (convergence != NULL) ? &c : NULL,
+                                           (scale != NULL) ? &k : NULL);
     lat[i] = la;
     lon[i] = lo;
-    convergence[i] = c;
-    scale[i] = k;
+    if (convergence != NULL) {
+      convergence[i] = c;
+    }
+    if (scale != NULL) {
+      scale[i] = k;
+    }
   }
 }
 

@@ -8,7 +8,8 @@ bounds the C suites assert, without copying a number.
 The headers' C subset: #define NAME value; struct definitions whose
 fields are integers, strings or arrays of them; static const arrays of
 those structures or of integers, initialised with integer literals
-(INT64_C(...), 10u), string literals, macros and drdc_status_t names."""
+(INT64_C(...), 10u), string literals, macros, drdc_status_t names and
+the enumerators of the public headers."""
 import functools
 import os
 import re
@@ -52,6 +53,23 @@ def status_codes():
                                              text)}
 
 
+@functools.lru_cache(maxsize=None)
+def enum_constants():
+    """Every enumerator of the public headers with a value
+    (DRDC_JAUS_FORM_RA3 = 0, DRDC_NMEA_GGA = 0, ...), read from
+    core/include/drdc/ and fixed/include/drdc/."""
+    found = {}
+    for folder in ("core/include/drdc", "fixed/include/drdc"):
+        path = os.path.join(TOP, folder)
+        for name in sorted(os.listdir(path)):
+            with open(os.path.join(path, name)) as f:
+                text = _COMMENT.sub(" ", f.read())
+            for body in re.findall(r"\benum\s+\w*\s*\{([^}]*)\}", text):
+                for n, v in re.findall(r"\b(DRDC_\w+)\s*=\s*(\d+)", body):
+                    found[n] = int(v)
+    return found
+
+
 def _constant(text, defines):
     """The integer of a #define value or an identifier."""
     text = text.strip()
@@ -71,6 +89,8 @@ def _constant(text, defines):
     codes = status_codes()
     if text in codes:
         return codes[text]
+    if text in enum_constants():
+        return enum_constants()[text]
     raise ValueError("not a constant: %r" % text)
 
 

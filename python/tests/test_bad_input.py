@@ -2,10 +2,14 @@
 """Bad input never crashes, hangs or wraps: non-integers are refused with
 TypeError, values beyond the C type with ValueError, values the library
 refuses with DrdcError (scalars) or a status (arrays)."""
+import os
+import subprocess
+
 import numpy as np
 import pytest
 
 import drdc
+from cvectors import TOP
 
 DEG = drdc.NAS_PER_DEGREE
 
@@ -155,3 +159,27 @@ def test_degrees_to_nas_refuses_huge_text_at_once():
         drdc.degrees_to_nas("2600000000")
     assert drdc.degrees_to_nas("+.5") == DEG // 2
     assert drdc.degrees_to_nas(Decimal("-1.25")) == -(5 * DEG) // 4
+
+
+def test_errors_carry_the_reason_drdc_prints():
+    """DrdcError: the words `drdc time` prints on its ERROR line for the
+    same refusal, the status's name and number; for functions whose
+    `drdc` messages quote the input, the status's meaning as status.h
+    says it."""
+    from test_host_tool import tool
+    r = subprocess.run([tool("drdc"), "time", "--from", "utc", "--to", "gps"],
+                       input="2017-02-30T00:00:00Z\n", capture_output=True,
+                       text=True)
+    with pytest.raises(drdc.DrdcError) as e:
+        drdc.time_from_civil(2017, 2, 30)
+    assert r.stdout.strip() == "ERROR: %s (%s)" % (e.value.reason,
+                                                   e.value.name)
+    assert (e.value.name, e.value.number) == ("DRDC_E_DAY",
+                                              int(drdc.Status.DRDC_E_DAY))
+    assert str(e.value) == "drdc_time_from_civil: %s (DRDC_E_DAY, %d)" % (
+        e.value.reason, e.value.number)
+    with pytest.raises(drdc.DrdcError) as e:
+        drdc.geo_to_utm(91 * DEG, 0)
+    assert e.value.reason == "a latitude outside [-90, 90] degrees"
+    with open(os.path.join(TOP, "fixed/include/drdc/status.h")) as f:
+        assert "/**< a latitude outside [-90, 90] degrees */" in f.read()

@@ -46,8 +46,17 @@ def test_utm_forward_and_reverse_arrays(table, rev, forced, with_scale):
 
     g = drdc.geo_from_utm_array(column(rows, "zone"), column(rows, "north"),
                                 column(rows, "easting"),
-                                column(rows, "northing"))
+                                column(rows, "northing"),
+                                with_scale=with_scale)
     assert (g.status == 0).all()
+    # convergence and scale only when asked for: the same position
+    plain = drdc.geo_from_utm_array(column(rows, "zone"),
+                                    column(rows, "north"),
+                                    column(rows, "easting"),
+                                    column(rows, "northing"))
+    assert plain.convergence_nas is None and plain.scale_q5_58 is None
+    assert (plain.lat_nas == g.lat_nas).all()
+    assert (plain.lon_nas == g.lon_nas).all()
     assert np.abs(g.lat_nas - column(back, "lat")).max() <= TOL["LATLON_TOL"]
     assert lon_dist(g.lon_nas, column(back, "lon")).max() \
         <= TOL["LATLON_TOL"]

@@ -65,6 +65,53 @@ def test_every_example_equals_the_package(srv, f):
         assert body["outputs"][o.name] == getattr(want, o.name).tolist()
 
 
+def test_quantities_typed_are_converted_exactly(srv):
+    body = ok(srv, "geo_to_utm", {"lat_nas": [{"degrees": "50.27"}, 0],
+                                  "lon_nas": {"degrees": "-111.17"}})
+    u = drdc.geo_to_utm_array([drdc.degrees_to_nas("50.27"), 0],
+                              drdc.degrees_to_nas("-111.17"))
+    assert body["outputs"]["easting_q47_16"] == u.easting_q47_16.tolist()
+    assert body["exact"]["scale_q5_58"] == [str(v) for v in u.scale_q5_58]
+    assert body["display"]["easting_q47_16"] == [
+        t + " m" for t in drdc.format_q47_16_array(u.easting_q47_16)]
+    assert body["display"]["convergence_nas"][0] == \
+        drdc.format_nas_degrees_array(u.convergence_nas[0]).item() + " deg"
+    # a UTC time typed carries its nanoseconds into nsec
+    body = ok(srv, "time_utc_to_gps",
+              {"sec": [{"utc": "2016-12-31T23:59:60.5Z"},
+                       {"utc": "2017-01-01T00:00:00Z"}]})
+    t = drdc.time_iso8601_parse_array(np.array(["2016-12-31T23:59:60.5Z",
+                                                "2017-01-01T00:00:00Z"]))
+    g = drdc.time_utc_to_gps_array(t.sec, t.nsec)
+    assert body["outputs"]["tow"] == g.tow.tolist()
+    assert body["outputs"]["nsec"] == g.nsec.tolist() == [500000000, 0]
+    body = ok(srv, "geo_from_utm", {"zone": 12, "north": 1,
+                                    "easting_q47_16": {"metres": "487884.5"},
+                                    "northing_q47_16": {"metres": "5568665"}})
+    assert body["status_name"] == ["DRDC_OK"]
+    body = ok(srv, "units_convert", {"raw": [65536], "from_frac": 16,
+                                     "from_unit": "ft", "to_frac": 16,
+                                     "to_unit": "m"})
+    v = drdc.units_convert(65536, 16, "ft", 16, "m")
+    assert body["display"]["value"] == [
+        drdc.format_q47_16_array(v).item() + " m"]
+    # refused: not decimal text, a quantity the argument does not take,
+    # a time the library refuses, nsec beside a utc
+    for function, inputs in (
+            ("geo_to_utm", {"lat_nas": {"degrees": "1e3"}, "lon_nas": 0}),
+            ("geo_to_utm", {"lat_nas": {"degrees": 50.27}, "lon_nas": 0}),
+            ("geo_to_utm", {"lat_nas": {"metres": "5"}, "lon_nas": 0}),
+            ("geo_to_utm", {"lat_nas": 0, "lon_nas": 0,
+                            "zone": {"degrees": "5"}}),
+            ("time_utc_to_gps", {"sec": {"utc": "2017-02-30T00:00:00Z"}}),
+            ("time_utc_to_gps", {"sec": {"utc": "2017-01-01T00:00:00Z"},
+                                 "nsec": 5})):
+        status, _, answer = srv.request("POST", "/v1/eval", {
+            "function": function, "inputs": inputs})
+        assert status == 400, (inputs, answer)
+        assert answer["error"]["reason"]
+
+
 def test_geo_to_utm_equals_the_geographiclib_vectors(srv):
     rows = load("tests/geo/vectors_geo.h")["geo_random_vectors"][:200]
     body = ok(srv, "geo_to_utm", {"lat_nas": [r["lat"] for r in rows],
@@ -336,6 +383,31 @@ def test_module_refuses_root_without_the_flag():
         assert "refusing to run as root" in r.stderr
     else:
         assert r.returncode == 0
+
+
+def test_module_without_aiohttp_says_what_to_install(tmp_path):
+    """The package alone, as `pip install ./python` leaves it: numpy but
+    no aiohttp on the path. python -m drdc.serve names the extra to
+    install, in one message and no traceback."""
+    import numpy
+    import drdc
+    for module in (numpy, drdc):
+        folder = os.path.dirname(module.__file__)
+        os.symlink(folder, tmp_path / os.path.basename(folder))
+    libs = os.path.join(os.path.dirname(os.path.dirname(numpy.__file__)),
+                        "numpy.libs")
+    if os.path.isdir(libs):
+        os.symlink(libs, tmp_path / "numpy.libs")
+    env = dict(os.environ, PYTHONPATH=str(tmp_path))
+    probe = subprocess.run([sys.executable, "-c", "import aiohttp"],
+                           env=env, capture_output=True, cwd=tmp_path)
+    assert probe.returncode != 0  # the path has no aiohttp indeed
+    r = subprocess.run([sys.executable, "-m", "drdc.serve", "--port", "0"],
+                       capture_output=True, text=True, env=env, timeout=60,
+                       cwd=tmp_path)
+    assert r.returncode == 1
+    assert "pip install 'drdc[serve]'" in r.stderr
+    assert "Traceback" not in r.stderr and r.stdout == ""
 
 
 def test_timeout_answers_503_json():

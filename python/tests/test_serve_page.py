@@ -3,8 +3,10 @@
 waftools/deps.py's "check" group), driven over the Chrome DevTools protocol
 with aiohttp's websocket client: load the page, upload the host
 test-runner's console log through the file input, click Judge and read
-the verdict the page shows; paste a changed log and see it differ; run
-a conversion and compare the page's numbers with the package's."""
+the verdict the page shows; paste a changed log and see it differ; type
+degrees, metres and ISO times into conversions and compare what the
+page shows, quantities with their units and the exact integers, with
+the package's."""
 import asyncio
 import base64
 import json
@@ -129,20 +131,38 @@ async def _drive(ws_url, log_path, log_text):
             pasted = await page.until(
                 "(t => t.startsWith('differs') && t)"
                 "(document.getElementById('verdict').textContent)")
-            # a conversion: the page's example of geo_to_utm
-            await page.js("document.getElementById('function').value = "
-                          "'geo_to_utm'; document.getElementById('function')"
-                          ".dispatchEvent(new Event('change')); "
-                          "document.getElementById('evaluate').click()")
-            result = await page.until(
-                "(t => t.startsWith('{') && t)"
-                "(document.getElementById('result').textContent)")
+            # conversions typed as a person types them: degrees, metres,
+            # an ISO time, or the integers themselves
+            conversions = {}
+            for name, fields in CONVERSIONS:
+                await page.js("document.getElementById('function').value = "
+                              "%s; document.getElementById('function')"
+                              ".dispatchEvent(new Event('change'))"
+                              % json.dumps(name))
+                for arg, (text, unit) in fields.items():
+                    await page.js(
+                        "document.getElementById('in-%s').value = %s; "
+                        "document.getElementById('unit-%s').value = %s"
+                        % (arg, json.dumps(text), arg, json.dumps(unit)))
+                await page.js("document.getElementById('outputs')"
+                              ".textContent = ''; document.getElementById("
+                              "'result').textContent = ''; document."
+                              "getElementById('evaluate').click()")
+                await page.until(
+                    "(t => (t.startsWith('{') || t.startsWith('error')) "
+                    "&& t)(document.getElementById('result').textContent)")
+                conversions[name] = await page.js(
+                    "[...document.querySelectorAll('#outputs tr')].slice(1)"
+                    ".map(r => [r.dataset.output, r.cells[2].textContent, "
+                    "r.cells[3].textContent, r.cells[4].textContent])")
+                conversions[name + " error"] = await page.js(
+                    "document.getElementById('result').className")
             shot = os.environ.get("DRDC_SERVE_SCREENSHOT")
             if shot:
                 png = await page.call("Page.captureScreenshot")
                 with open(shot, "wb") as f:
                     f.write(base64.b64decode(png["data"]))
-            return uploaded, rows, pasted, json.loads(result)
+            return uploaded, rows, pasted, conversions
 
 
 def test_page_in_headless_chromium():
@@ -179,11 +199,55 @@ def test_page_in_headless_chromium():
                         "0x6d842393)")
     assert rows == 1 + len(drdc.conformance.reference_digests())
     assert pasted.startswith("differs (digest 0x00000000")
-    want = drdc.geo_to_utm_array([180972000000000, 36000000000000],
-                                 [-400212000000000, 72000000000000])
-    assert result["outputs"]["easting_q47_16"] == \
-        want.easting_q47_16.tolist()
-    # geo.h's example: lat 10, lon 20 is 34n 390 399.2275 1 105 578.5892
-    assert result["outputs"]["zone"] == want.zone.tolist() == [12, 34]
-    assert round(result["outputs"]["easting_q47_16"][1] / 65536, 4) == \
-        390399.2275
+    # degrees typed: converted exactly as degrees_to_nas does, and each
+    # output shown with its unit beside the exact integer
+    u = drdc.geo_to_utm(drdc.degrees_to_nas("50.27"),
+                        drdc.degrees_to_nas("-111.17"))
+    rows = {r[0]: r[1:] for r in result["geo_to_utm"]}
+    assert result["geo_to_utm error"] == ""
+    assert rows["zone"] == ["12", "12", "DRDC_OK"]
+    assert rows["easting_q47_16"] == [
+        drdc.format_q47_16_array(u.easting_q47_16).item() + " m",
+        str(u.easting_q47_16), "DRDC_OK"]
+    assert rows["convergence_nas"][1] == str(u.convergence_nas)
+    assert rows["convergence_nas"][0] == drdc.format_nas_degrees_array(
+        u.convergence_nas).item() + " deg"
+    # integers beyond 2^53 stay exact on the page (a JavaScript number
+    # would round them)
+    assert rows["scale_q5_58"][1] == str(u.scale_q5_58)
+    assert u.scale_q5_58 > 1 << 53
+    # metres typed
+    g = drdc.geo_from_utm(12, True, drdc.metres_to_q47_16("487884.969"),
+                          drdc.metres_to_q47_16("5568665.062"),
+                          with_scale=True)
+    rows = {r[0]: r[1:] for r in result["geo_from_utm"]}
+    assert rows["lat_nas"][:2] == [
+        drdc.format_nas_degrees_array(g.lat_nas).item() + " deg",
+        str(g.lat_nas)]
+    assert rows["scale_q5_58"][1] == str(g.scale_q5_58)
+    # an ISO 8601 time typed, the leap second's half
+    t = drdc.time_iso8601_parse("2016-12-31T23:59:60.5Z")
+    gps = drdc.time_utc_to_gps(*t)
+    rows = {r[0]: r[1:] for r in result["time_utc_to_gps"]}
+    assert [rows["week"][1], rows["tow"][1], rows["nsec"][1]] == [
+        str(gps.week), str(gps.tow), str(gps.nsec)]
+    rows = {r[0]: r[1:] for r in result["time_gps_to_utc"]}
+    assert rows["sec"][0] == "2016-12-31T23:59:60.500000000Z"
+    assert rows["sec"][1] == str(t.sec)
+    # a typing error is an error line, not a wrong number
+    assert result["time_unix_to_utc error"] == "error"
+
+
+CONVERSIONS = [
+    ("geo_to_utm", {"lat_nas": ("50.27", "degrees"),
+                    "lon_nas": ("-111.17", "degrees")}),
+    ("geo_from_utm", {"zone": ("12", "integer"), "north": ("1", "integer"),
+                      "easting_q47_16": ("487884.969", "metres"),
+                      "northing_q47_16": ("5568665.062", "metres")}),
+    ("time_utc_to_gps", {"sec": ("2016-12-31T23:59:60.5Z", "utc"),
+                         "nsec": ("", "integer")}),
+    ("time_gps_to_utc", {"week": ("1930", "integer"),
+                         "tow": ("17", "integer"),
+                         "nsec": ("500000000", "integer")}),
+    ("time_unix_to_utc", {"sec": ("12.5", "integer")}),
+]

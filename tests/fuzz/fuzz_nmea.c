@@ -5,7 +5,8 @@
  *        exactly their length (ASan reports any read past it). A sentence
  *        accepted must carry a matching checksum, and its values must lie
  *        in their documented ranges; a rejected one leaves the output
- *        alone. Host only.
+ *        alone. drdc_nmea_parse_date() likewise, on the same bytes. Host
+ *        only.
  */
 #include <stdint.h>
 #include <stdlib.h>
@@ -67,6 +68,32 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     for (i = 0; i < sizeof n; i++) {
       if (p[i] != 0xA5) {
         abort(); /* an error must leave the output alone */
+      }
+    }
+  }
+  /* the date of an RMC or ZDA, whatever its fix: in range, and the
+   * same as the full parse's wherever that decodes the sentence */
+  {
+    drdc_nmea_t d;
+    const unsigned char *p = (const unsigned char *)&d;
+    size_t i;
+
+    memset(&d, 0xA5, sizeof d);
+    if (drdc_nmea_parse_date(text, size, 0u, &d) == DRDC_OK) {
+      if ((d.type != DRDC_NMEA_RMC && d.type != DRDC_NMEA_ZDA) ||
+          !checksum_matches(text, size) || d.month < 1 || d.month > 12 ||
+          d.day < 1 || d.day > 31 || d.time.hour < 0 || d.time.hour > 23 ||
+          d.time.second > 60 ||
+          (st == DRDC_OK &&
+           (d.year != n.year || d.month != n.month || d.day != n.day ||
+            memcmp(&d.time, &n.time, sizeof d.time) != 0))) {
+        abort();
+      }
+    } else {
+      for (i = 0; i < sizeof d; i++) {
+        if (p[i] != 0xA5) {
+          abort();
+        }
       }
     }
   }

@@ -222,10 +222,33 @@ class NmeaCommand(unittest.TestCase):
                     decoded += 1
         self.assertGreater(decoded, 2500)
 
+    def test_keep_going_exits_0_on_a_real_log(self):
+        # a real log holds sentences without a fix and sentences not
+        # decoded here: --keep-going writes the same lines and exits 0, so
+        # subprocess.run(check=True) works; without it the status is 1
+        path = os.path.join(TOP, "tests", "nmea", "logs", "nmea-0.8.0",
+                            "nmea1-first-3000.log")
+        with open(path, "rb") as f:
+            data = f.read()
+        plain = nmea(data=data)
+        going = subprocess.run(DRDC + ["nmea", "--keep-going"], input=data,
+                               capture_output=True, check=True)
+        self.assertEqual(1, plain.returncode)
+        self.assertEqual(plain.stdout, going.stdout)
+        self.assertIn(b"ERROR: ", going.stdout)
+        self.assertIn(b"type=GGA", going.stdout)
+        # still 2 for a usage error, whatever else is given
+        self.assertEqual(2, nmea("--keep-going", "--bogus").returncode)
+        # with --strict and --raw as well
+        r = nmea("--keep-going", "--strict", "--raw", data=data)
+        self.assertEqual(0, r.returncode)
+        self.assertEqual(nmea("--strict", "--raw", data=data).stdout, r.stdout)
+
     def test_help_and_usage(self):
         r = nmea("--help")
         self.assertEqual(0, r.returncode)
-        for word in (b"--strict", b"--raw", b"key=value", b"beyond"):
+        for word in (b"--strict", b"--raw", b"--keep-going", b"key=value",
+                     b"beyond", b"Exit status"):
             self.assertIn(word, r.stdout)
         r = nmea("--bogus")
         self.assertEqual(2, r.returncode)

@@ -4,8 +4,9 @@
  * @brief NMEA 0183: a corpus of sentences against Python's Fraction
  *        reading of the same text, every malformation with its status,
  *        every prefix of every sentence parsed from a buffer that ends
- *        where the text ends (ASan catches any over-read), and UTC
- *        stitching across midnight and a leap second.
+ *        where the text ends (ASan catches any over-read), UTC
+ *        stitching across midnight and a leap second, and the dates
+ *        drdc_nmea_parse_date() keeps of RMCs without a fix.
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -396,6 +397,157 @@ static void test_nmea_utc_dated_time_out_of_range_is_refused(void)
   TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_nmea_utc(NULL, &dated, &gga, &t));
 }
 
+/* Every field other than the type, talker, time of day and date (and a
+ * ZDA's zone) is 0 in a record of drdc_nmea_parse_date(). */
+static void assert_date_only(const drdc_nmea_t *n, const char *text)
+{
+  size_t k;
+
+  TEST_ASSERT_EQUAL_INT64_MESSAGE(0, n->latitude, text);
+  TEST_ASSERT_EQUAL_INT64_MESSAGE(0, n->longitude, text);
+  TEST_ASSERT_EQUAL_INT64(0, n->altitude);
+  TEST_ASSERT_EQUAL_INT64(0, n->separation);
+  TEST_ASSERT_EQUAL_INT32(0, n->quality);
+  TEST_ASSERT_EQUAL_INT32(0, n->satellites);
+  TEST_ASSERT_EQUAL_INT32(0, n->hdop);
+  TEST_ASSERT_EQUAL_INT32(0, n->speed);
+  TEST_ASSERT_EQUAL_UINT32(0u, n->course);
+  TEST_ASSERT_EQUAL_UINT32(0u, n->heading);
+  TEST_ASSERT_EQUAL_UINT32(0u, n->beyond);
+  for (k = 0u; k < sizeof(n->mode); k++) {
+    TEST_ASSERT_EQUAL_CHAR_MESSAGE('\0', n->mode[k], text);
+  }
+}
+
+/* The time of day and date of RMCs without a fix (status V, mode N), of
+ * valid RMCs and of ZDAs, against pynmeagps's reading of the text. */
+static void test_drdc_nmea_parse_date_keeps_the_date(void)
+{
+  size_t i;
+
+  for (i = 0u; i < COUNT(nmea_date_vectors); i++) {
+    const struct nmea_date_vector *v = &nmea_date_vectors[i];
+    drdc_nmea_t n;
+    drdc_nmea_t full;
+
+    sentinel(&n);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(
+        DRDC_OK, drdc_nmea_parse_date(v->text, v->length, v->flags, &n),
+        v->text);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(v->type, n.type, v->text);
+    TEST_ASSERT_EQUAL_STRING(v->talker, n.talker);
+    TEST_ASSERT_EQUAL_HEX32_MESSAGE(v->has, n.has, v->text);
+    TEST_ASSERT_EQUAL_INT32(v->tod[0], n.time.hour);
+    TEST_ASSERT_EQUAL_INT32(v->tod[1], n.time.minute);
+    TEST_ASSERT_EQUAL_INT32(v->tod[2], n.time.second);
+    TEST_ASSERT_EQUAL_INT32(v->tod[3], n.time.nsec);
+    TEST_ASSERT_EQUAL_INT32_MESSAGE(v->date[0], n.year, v->text);
+    TEST_ASSERT_EQUAL_INT32(v->date[1], n.month);
+    TEST_ASSERT_EQUAL_INT32(v->date[2], n.day);
+    TEST_ASSERT_EQUAL_INT32(v->date[3], n.zone_hours);
+    TEST_ASSERT_EQUAL_INT32(v->date[4], n.zone_minutes);
+    assert_date_only(&n, v->text);
+    /* a ZDA is all date: the same record as drdc_nmea_parse()'s; an RMC
+     * with a fix has that record's time and date */
+    sentinel(&full);
+    if (drdc_nmea_parse_with(v->text, v->length, v->flags, &full) == DRDC_OK) {
+      if (v->type == DRDC_NMEA_ZDA) {
+        TEST_ASSERT_EQUAL_MEMORY_MESSAGE(&full, &n, sizeof n, v->text);
+      }
+      TEST_ASSERT_EQUAL_MEMORY(&full.time, &n.time, sizeof n.time);
+      TEST_ASSERT_EQUAL_INT32(full.year, n.year);
+      TEST_ASSERT_EQUAL_INT32(full.month, n.month);
+      TEST_ASSERT_EQUAL_INT32(full.day, n.day);
+    } else {
+      /* only an RMC without a fix is refused by the full parse */
+      TEST_ASSERT_EQUAL_INT_MESSAGE(
+          DRDC_E_NO_FIX,
+          drdc_nmea_parse_with(v->text, v->length, v->flags, &full), v->text);
+    }
+  }
+}
+
+/* Every refusal of drdc_nmea_parse_date() gives its status and leaves
+ * the output as it was; the test names every status it documents. */
+static void test_drdc_nmea_parse_date_bad_input(void)
+{
+  static const drdc_status_t documented[] = {
+      DRDC_E_RANGE,         DRDC_E_SYNTAX,   DRDC_E_CHARACTER, DRDC_E_TRUNCATED,
+      DRDC_E_OVERLONG,      DRDC_E_TRAILING, DRDC_E_CHECKSUM,  DRDC_E_SENTENCE,
+      DRDC_E_MISSING_FIELD, DRDC_E_HOUR,     DRDC_E_MINUTE,    DRDC_E_SECOND,
+      DRDC_E_DAY,           DRDC_E_MONTH,    DRDC_E_YEAR,
+  };
+  drdc_nmea_t n;
+  size_t i;
+  size_t k;
+
+  for (i = 0u; i < COUNT(nmea_bad_date_vectors); i++) {
+    const struct nmea_bad_vector *v = &nmea_bad_date_vectors[i];
+
+    sentinel(&n);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(
+        v->status, drdc_nmea_parse_date(v->text, v->length, v->flags, &n),
+        v->text);
+    TEST_ASSERT_TRUE(unchanged(&n));
+  }
+  for (k = 0u; k < COUNT(documented); k++) {
+    int seen = 0;
+
+    for (i = 0u; i < COUNT(nmea_bad_date_vectors); i++) {
+      if (nmea_bad_date_vectors[i].status == documented[k]) {
+        seen = 1;
+      }
+    }
+    TEST_ASSERT_TRUE_MESSAGE(seen, drdc_status_name(documented[k]));
+  }
+  sentinel(&n);
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_nmea_parse_date(NULL, 10u, 0u, &n));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_NULL, drdc_nmea_parse_date(nmea_date_vectors[0].text,
+                                        nmea_date_vectors[0].length, 0u, NULL));
+  TEST_ASSERT_TRUE(unchanged(&n));
+  /* every prefix from the end of a buffer: no read past `length` */
+  for (i = 0u; i < COUNT(nmea_date_vectors); i++) {
+    const struct nmea_date_vector *v = &nmea_date_vectors[i];
+    char buffer[BUFFER];
+    size_t len;
+
+    for (len = 0u; len <= v->length; len++) {
+      char *start = &buffer[BUFFER - len];
+
+      for (k = 0u; k < len; k++) {
+        start[k] = v->text[k];
+      }
+      sentinel(&n);
+      if (drdc_nmea_parse_date(start, len, 0u, &n) != DRDC_OK) {
+        TEST_ASSERT_TRUE(unchanged(&n));
+      }
+    }
+  }
+}
+
+/* A fix dated by an RMC without a fix or a ZDA, across midnight both
+ * ways and half a day apart, against Python's calendar. */
+static void test_nmea_utc_on_the_date_of_an_rmc_without_a_fix(void)
+{
+  size_t i;
+
+  for (i = 0u; i < COUNT(nmea_stitch_vectors); i++) {
+    const struct nmea_stitch_vector *v = &nmea_stitch_vectors[i];
+    drdc_nmea_t dated;
+    drdc_nmea_t fix;
+    drdc_time_t t = {0, 0};
+
+    TEST_ASSERT_EQUAL_INT(
+        DRDC_OK, drdc_nmea_parse_date(v->dated, v->dated_length, 0u, &dated));
+    parse_ok(v->text, v->length, &fix);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(
+        DRDC_OK, drdc_nmea_utc(NULL, &dated, &fix, &t), v->text);
+    TEST_ASSERT_EQUAL_INT64_MESSAGE(v->sec, t.sec, v->text);
+    TEST_ASSERT_EQUAL_INT32(v->nsec, t.nsec);
+  }
+}
+
 void suite_nmea(void)
 {
   UnitySetTestFile(__FILE__);
@@ -407,4 +559,7 @@ void suite_nmea(void)
   RUN_TEST(test_drdc_nmea_utc_bad_input);
   RUN_TEST(test_nmea_utc_extreme_time_fields_do_not_overflow);
   RUN_TEST(test_nmea_utc_dated_time_out_of_range_is_refused);
+  RUN_TEST(test_drdc_nmea_parse_date_keeps_the_date);
+  RUN_TEST(test_drdc_nmea_parse_date_bad_input);
+  RUN_TEST(test_nmea_utc_on_the_date_of_an_rmc_without_a_fix);
 }

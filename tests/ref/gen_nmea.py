@@ -13,6 +13,8 @@ receivers with 7 to 10, GLONASS, Galileo and BeiDou talkers, gyrocompass
 and dual-antenna heading), checksums computed here. Each malformation
 carries the status it must give, in the default mode and in strict
 mode."""
+import calendar
+import datetime
 from fractions import Fraction
 
 from pynmeagps import NMEAReader, VALCKSUM
@@ -508,6 +510,121 @@ def bad():
     return rows
 
 
+# drdc_nmea_parse_date(): RMC and ZDA sentences, with a fix or without;
+# each keeps its time of day and date.
+DATE_CORPUS = [
+    # a receiver that lost its fix keeps its clock: status V, mode N
+    ("GPRMC,235959.00,V,,,,,,,311216,,,N", 0),
+    ("GNRMC,181604.00,V,,,,,,,120918,,,N,V", 0),
+    # status V with the last position still in the sentence
+    ("GPRMC,083559.00,V,4717.11437,N,00833.91522,E,0.004,77.52,091202,,,N", 0),
+    # status A with mode N, and valid fixes
+    ("GPRMC,083559.00,A,4717.11437,N,00833.91522,E,0.004,77.52,091202,,,N", 0),
+    ("GPRMC,002153.000,A,3342.6618,N,11751.3858,W,0.36,117.08,171122,,,A", 0),
+    ("GPRMC,161229.487,A,3723.2475,N,12158.3416,W,0.13,309.62,120598,,", 1),
+    ("GPRMC,010203.04,V,,,,,,,010180,,", 1),
+    ("GPRMC,092750.000,V,,,,,,,280511", 0),
+    # ZDA: with and without the local zone, a leap second
+    ("GNZDA,181604.00,12,09,2018,00,00", 1),
+    ("GPZDA,201530.00,04,07,2002", 0),
+    ("GPZDA,235960.50,31,12,2016,-05,30", 1),
+]
+
+
+def date_model(s):
+    """Expected record of drdc_nmea_parse_date(): type, talker, time of
+    day and date (and a ZDA's zone), as pynmeagps names the fields."""
+    msg, f, _ = named_fields(s)
+    r = dict(type="DRDC_NMEA_" + msg.msgID, talker=msg.talker,
+             has=HAS["TIME"] | HAS["DATE"], time=tod(f["time"]), zh=0, zm=0)
+    if msg.msgID == "RMC":
+        d = f["date"]
+        r["day"], r["month"], yy = int(d[:2]), int(d[2:4]), int(d[4:])
+        r["year"] = yy + (2000 if yy < 80 else 1900)
+        # the decoder's own date (a datetime.date) agrees
+        assert msg.date == datetime.date(r["year"], r["month"], r["day"]), s
+    else:
+        r["day"], r["month"], r["year"] = (int(f["day"]), int(f["month"]),
+                                           int(f["year"]))
+        if f["ltzh"]:
+            r["zh"], r["zm"] = int(f["ltzh"]), int(f["ltzn"])
+            r["has"] |= HAS["ZONE"]
+    return r
+
+
+def bad_dates():
+    """(text, status, flags) of drdc_nmea_parse_date()'s refusals."""
+    v = sentence(DATE_CORPUS[0][0])
+    return [
+        (sentence(CORPUS[0]), "DRDC_E_SENTENCE", 0),
+        (sentence("GPGSV,3,1,11,10,63,137,17,07,61,098,15,05,59,290,20,08,54,157,30"),
+         "DRDC_E_SENTENCE", 0),
+        (sentence("GPRMC,,V,,,,,,,,,,N"), "DRDC_E_MISSING_FIELD", 0),
+        (sentence("GPRMC,235959.00,V,,,,,,,,,,N"), "DRDC_E_MISSING_FIELD", 0),
+        (sentence("GPRMC,235959.00,,,,,,,,311216,,,N"), "DRDC_E_MISSING_FIELD", 0),
+        (sentence("GPRMC,235959.00,V,,,,,,"), "DRDC_E_MISSING_FIELD", 0),
+        (sentence("GPZDA,201530.00,04,,2002"), "DRDC_E_MISSING_FIELD", 0),
+        (sentence("GPRMC,092750.000,V,,,,,,,280511"), "DRDC_E_MISSING_FIELD", 1),
+        (sentence("GPRMC,235959.00,X,,,,,,,311216,,,N"), "DRDC_E_SYNTAX", 0),
+        (sentence("GPRMC,235959.00,VV,,,,,,,311216,,,N"), "DRDC_E_SYNTAX", 0),
+        (sentence("GPRMC,2359.00,V,,,,,,,311216,,,N"), "DRDC_E_SYNTAX", 0),
+        (sentence("GPRMC,235959.00,V,,,,,,,31126,,,N"), "DRDC_E_SYNTAX", 0),
+        (v[1:], "DRDC_E_SYNTAX", 0),
+        (v.replace("311216", "31\x0116"), "DRDC_E_CHARACTER", 0),
+        (v[:20], "DRDC_E_TRUNCATED", 0),
+        ("$" + DATE_CORPUS[0][0] + "," * 100, "DRDC_E_OVERLONG", 0),
+        (sentence("GPZDA,201530.00,04,07,2002" + ",00" * 29), "DRDC_E_OVERLONG", 1),
+        (v.rstrip("\r\n") + "x", "DRDC_E_TRAILING", 0),
+        (v[:v.index("*") + 1] + "%02X" % (int(v[v.index("*") + 1:][:2], 16) ^ 1)
+         + "\r\n", "DRDC_E_CHECKSUM", 0),
+        (sentence("GPRMC,245959.00,V,,,,,,,311216,,,N"), "DRDC_E_HOUR", 0),
+        (sentence("GPRMC,236059.00,V,,,,,,,311216,,,N"), "DRDC_E_MINUTE", 0),
+        (sentence("GPZDA,201530.00,04,07,2002,01,60"), "DRDC_E_MINUTE", 0),
+        (sentence("GPRMC,235961.00,V,,,,,,,311216,,,N"), "DRDC_E_SECOND", 0),
+        (sentence("GPRMC,235959.00,V,,,,,,,321216,,,N"), "DRDC_E_DAY", 0),
+        (sentence("GPZDA,201530.00,00,07,2002"), "DRDC_E_DAY", 0),
+        (sentence("GPRMC,235959.00,V,,,,,,,311316,,,N"), "DRDC_E_MONTH", 0),
+        (sentence("GPZDA,201530.00,04,13,2002"), "DRDC_E_MONTH", 0),
+        (sentence("GPZDA,201530.00,04,07,0000"), "DRDC_E_YEAR", 0),
+        (sentence("GPZDA,201530.00,04,07,2002,14,00"), "DRDC_E_RANGE", 0),
+        (v, "DRDC_E_RANGE", 2),
+    ]
+
+
+def _civil_seconds(year, month, day, tod_fields):
+    h, m, sec, ns = tod_fields
+    return calendar.timegm((year, month, day, h, m, sec, 0, 0, 0)), ns
+
+
+# drdc_nmea_utc() of a fix on the date of an RMC without a fix: the
+# sentence's time of day on the day (the date, the day before or after)
+# nearest to the dated sentence's time, by Python's calendar.
+STITCH = [
+    ("GPRMC,235959.00,V,,,,,,,311216,,,N",
+     "GPGGA,000001.00,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,"),
+    ("GPRMC,000002.50,V,,,,,,,010117,,,N",
+     "GPGGA,235959.25,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,"),
+    ("GNRMC,181604.00,V,,,,,,,120918,,,N,V",
+     "GNGGA,181605.00,4717.11399,N,00833.91590,E,1,08,1.01,499.6,M,48.0,M,,"),
+    ("GNZDA,181604.00,12,09,2018,00,00",
+     "GNGGA,061603.00,4717.11399,N,00833.91590,E,1,08,1.01,499.6,M,48.0,M,,"),
+]
+
+
+def stitch_model(dated, s):
+    d = date_model(sentence(dated))
+    _, f, _ = named_fields(sentence(s))
+    day = datetime.date(d["year"], d["month"], d["day"])
+    anchor, _ = _civil_seconds(d["year"], d["month"], d["day"], d["time"])
+    best = None
+    for k in (-1, 0, 1):
+        c = day + datetime.timedelta(days=k)
+        t, ns = _civil_seconds(c.year, c.month, c.day, tod(f["time"]))
+        if best is None or abs(t - anchor) < abs(best[0] - anchor):
+            best = (t, ns)
+    return best
+
+
 def c_string(s):
     out = []
     for ch in s:
@@ -543,11 +660,30 @@ def generate():
                r["day"], r["zh"], r["zm"], ", ".join("%d" % s32(g) for g in r["gst"])))
     bads = ["  { %s, %d, %s, 0x%Xu }," % (c_string(t), len(t.encode("latin-1")), st, fl)
             for t, st, fl in bad()]
+    dates = []
+    for body, flags in DATE_CORPUS:
+        t = sentence(body)
+        r = date_model(t)
+        dates.append("  { %s, %d, 0x%Xu, %s, \"%s\", 0x%05Xu, { %d, %d, %d, %d },\n"
+                     "    { %d, %d, %d, %d, %d } }," % (
+                         c_string(t), len(t.encode("latin-1")), flags, r["type"],
+                         r["talker"], r["has"], *r["time"], r["year"], r["month"],
+                         r["day"], r["zh"], r["zm"]))
+    bad_date_rows = ["  { %s, %d, %s, 0x%Xu }," % (c_string(t), len(t.encode("latin-1")),
+                                                    st, fl)
+                     for t, st, fl in bad_dates()]
+    stitches = []
+    for dated, fix in STITCH:
+        sec, ns = stitch_model(dated, fix)
+        a, b = sentence(dated), sentence(fix)
+        stitches.append("  { %s, %d, %s, %d, INT64_C(%d), %d }," % (
+            c_string(a), len(a), c_string(b), len(b), sec, ns))
     text = """/* SPDX-License-Identifier: BSD-2-Clause */
 /* Generated by tests/ref/gen_nmea.py: NMEA 0183 sentences written from the
  * published formats, with their fields located by pynmeagps and the
  * values Python's fractions.Fraction reads from their text, and every
- * malformation with its status.
+ * malformation with its status; the dates drdc_nmea_parse_date() keeps
+ * and UTC instants stitched by Python's calendar.
  * Do not edit; run tools/generate.py. */
 #ifndef VECTORS_NMEA_H
 #define VECTORS_NMEA_H
@@ -598,6 +734,41 @@ static const struct nmea_bad_vector nmea_bad_vectors[] = {
 %s
 };
 
+/* drdc_nmea_parse_date(): the time of day and date it keeps */
+struct nmea_date_vector {
+  const char *text;
+  size_t length;
+  uint32_t flags;
+  drdc_nmea_type_t type;
+  const char *talker;
+  uint32_t has;
+  int32_t tod[4];  /* hour, minute, second, nsec */
+  int32_t date[5]; /* year, month, day, zone hours, zone minutes */
+};
+
+static const struct nmea_date_vector nmea_date_vectors[] = {
+%s
+};
+
+static const struct nmea_bad_vector nmea_bad_date_vectors[] = {
+%s
+};
+
+/* drdc_nmea_utc() of `text` on the date of `dated` (Python's calendar) */
+struct nmea_stitch_vector {
+  const char *dated;
+  size_t dated_length;
+  const char *text;
+  size_t length;
+  int64_t sec;
+  int32_t nsec;
+};
+
+static const struct nmea_stitch_vector nmea_stitch_vectors[] = {
+%s
+};
+
 #endif
-""" % ("\n".join(good), "\n".join(bads))
+""" % ("\n".join(good), "\n".join(bads), "\n".join(dates),
+       "\n".join(bad_date_rows), "\n".join(stitches))
     return {"tests/nmea/vectors_nmea.h": text}

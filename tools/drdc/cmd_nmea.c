@@ -13,14 +13,19 @@
 
 #include "commands.h"
 #include "lines.h"
+#include "reasons.h"
 
 static const char usage[] =
-    "usage: drdc nmea [--strict] [--raw]\n"
+    "usage: drdc nmea [--strict] [--raw] [--keep-going]\n"
     "\n"
     "Reads one NMEA 0183 sentence per line on standard input (GGA, RMC,\n"
     "GNS, GLL, VTG, HDT, THS, GSA, ZDA, GST from any talker) and writes one\n"
     "line per input line: the decoded fields as space-separated key=value\n"
-    "pairs, or 'ERROR: <reason> (<status>)'; the exit status is then 1.\n"
+    "pairs, or 'ERROR: <reason> (<status>)'.\n"
+    "\n"
+    "Exit status: 0 every line decoded (with --keep-going: every line\n"
+    "read, whether it decoded or gave ERROR); 1 a line gave ERROR, or\n"
+    "standard input could not be read; 2 a usage error.\n"
     "\n"
     "Keys, in this order, each only when the sentence carries it:\n"
     "  type talker time date zone lat lon quality mode fix satellites ids\n"
@@ -41,48 +46,17 @@ static const char usage[] =
     "            the layout, GGA quality required\n"
     "  --raw     the library's integers instead of decimals: lat and lon\n"
     "            in nano-arcseconds, metres, speed and DOPs in Q15.16 or\n"
-    "            Q47.16, angles as 2^32 per turn, time's fraction in ns\n";
+    "            Q47.16, angles as 2^32 per turn, time's fraction in ns\n"
+    "  --keep-going\n"
+    "            a line that gives ERROR does not make the exit status 1:\n"
+    "            real receiver logs hold sentences without a fix and\n"
+    "            sentences not decoded here on every other line\n";
 
 typedef struct nmea_options {
   uint32_t flags; /* of drdc_nmea_parse_with() */
   int raw;
+  int keep_going; /* lines that give ERROR leave the exit status 0 */
 } nmea_options_t;
-
-static const char *reason(drdc_status_t st)
-{
-  switch (st) {
-  case DRDC_E_SYNTAX:
-    return "malformed sentence or field";
-  case DRDC_E_CHARACTER:
-    return "character outside printable ASCII";
-  case DRDC_E_TRUNCATED:
-    return "sentence ends before its checksum";
-  case DRDC_E_OVERLONG:
-    return "sentence too long";
-  case DRDC_E_TRAILING:
-    return "text after the checksum";
-  case DRDC_E_CHECKSUM:
-    return "checksum does not match";
-  case DRDC_E_SENTENCE:
-    return "sentence type or talker not decoded";
-  case DRDC_E_NO_FIX:
-    return "the receiver reports no fix";
-  case DRDC_E_MISSING_FIELD:
-    return "required field empty or missing";
-  case DRDC_E_HOUR:
-  case DRDC_E_MINUTE:
-  case DRDC_E_SECOND:
-    return "time or angle field out of range";
-  case DRDC_E_DAY:
-  case DRDC_E_MONTH:
-  case DRDC_E_YEAR:
-    return "date field out of range";
-  case DRDC_E_RANGE:
-    return "value out of range";
-  default:
-    return "cannot decode";
-  }
-}
 
 static const char *type_name(drdc_nmea_type_t t)
 {
@@ -242,7 +216,7 @@ static void put_record(const nmea_options_t *o, const drdc_nmea_t *n)
 
 int drdc_cmd_nmea(int argc, char **argv)
 {
-  nmea_options_t o = {0u, 0};
+  nmea_options_t o = {0u, 0, 0};
   char *line = NULL;
   size_t cap = 0;
   size_t len = 0;
@@ -258,6 +232,8 @@ int drdc_cmd_nmea(int argc, char **argv)
       o.flags = DRDC_NMEA_STRICT;
     } else if (strcmp(argv[i], "--raw") == 0) {
       o.raw = 1;
+    } else if (strcmp(argv[i], "--keep-going") == 0) {
+      o.keep_going = 1;
     } else {
       fprintf(stderr, "drdc nmea: unexpected argument '%s'\n", argv[i]);
       fputs(usage, stderr);
@@ -278,15 +254,16 @@ int drdc_cmd_nmea(int argc, char **argv)
      * command */
     if (drdc_tool_line_problem(got, line, len) != NULL) {
       printf("ERROR: %s\n", drdc_tool_line_problem(got, line, len));
-      failed = 1;
+      failed |= !o.keep_going;
       continue;
     }
     /* the reader took the line end off (LF or CR LF); any other byte
      * inside the line is the parser's to judge */
     st = drdc_nmea_parse_with(line, len, o.flags, &n);
     if (st != DRDC_OK) {
-      printf("ERROR: %s (%s)\n", reason(st), drdc_status_name(st));
-      failed = 1;
+      printf("ERROR: %s (%s)\n", drdc_tool_nmea_reason(st),
+             drdc_status_name(st));
+      failed |= !o.keep_going;
       continue;
     }
     put_record(&o, &n);

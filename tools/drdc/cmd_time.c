@@ -14,6 +14,7 @@
 
 #include "commands.h"
 #include "lines.h"
+#include "reasons.h"
 
 enum scale { SCALE_UTC, SCALE_GPS, SCALE_UNIX, SCALE_RTEMS, SCALE_TAI };
 
@@ -36,39 +37,6 @@ static const char usage[] =
     "'ERROR: <reason>'; the exit status is then 1. Instants past the\n"
     "built-in leap-second table's expiry are converted with the last known\n"
     "offset and a warning on standard error.\n";
-
-/* What each status means on a line of this command. */
-static const char *reason(drdc_status_t st)
-{
-  switch (st) {
-  case DRDC_E_RANGE:
-    return "outside the supported range";
-  case DRDC_E_YEAR:
-    return "year outside 0001..9999";
-  case DRDC_E_MONTH:
-    return "month outside 01..12";
-  case DRDC_E_DAY:
-    return "day outside the month";
-  case DRDC_E_HOUR:
-    return "hour outside 00..23";
-  case DRDC_E_MINUTE:
-    return "minute outside 00..59";
-  case DRDC_E_SECOND:
-    return "second outside 00..59, or 60 on a day without a leap second";
-  case DRDC_E_NANOSECOND:
-    return "fraction of a second out of range";
-  case DRDC_E_WEEK:
-    return "GPS week negative or too large";
-  case DRDC_E_TIME_OF_WEEK:
-    return "time of week outside [0, 604800)";
-  case DRDC_E_SYNTAX:
-    return "malformed time";
-  case DRDC_E_TRAILING:
-    return "unexpected text after the time";
-  default:
-    return "conversion failed";
-  }
-}
 
 static int scale_of(const char *name)
 {
@@ -332,7 +300,8 @@ int drdc_cmd_time(int argc, char **argv)
       }
     }
     if (drdc_status_is_error(st)) {
-      printf("ERROR: %s (%s)\n", reason(st), drdc_status_name(st));
+      printf("ERROR: %s (%s)\n", drdc_tool_time_reason(st),
+             drdc_status_name(st));
       failed = 1;
       continue;
     }

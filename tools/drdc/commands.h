@@ -25,9 +25,11 @@ int drdc_cmd_units(int argc, char **argv);
  *  all lines converted, 1 some line failed, 2 usage error. */
 int drdc_cmd_geo(int argc, char **argv);
 
-/** `drdc nmea [--strict] [--raw]`: decode NMEA 0183 sentences, one per
- *  line (tools/drdc/cmd_nmea.c). argv[0] is "nmea". Returns the exit
- *  status: 0 all lines decoded, 1 some line gave ERROR, 2 usage error. */
+/** `drdc nmea [--strict] [--raw] [--keep-going]`: decode NMEA 0183
+ *  sentences, one per line (tools/drdc/cmd_nmea.c). argv[0] is "nmea".
+ *  Returns the exit status: 0 all lines decoded (with --keep-going: all
+ *  lines read), 1 some line gave ERROR or the input could not be read, 2
+ *  usage error. */
 int drdc_cmd_nmea(int argc, char **argv);
 
 #endif /* DRDC_TOOL_COMMANDS_H */

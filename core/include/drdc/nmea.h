@@ -5,7 +5,7 @@
  * @brief NMEA 0183 input: GGA, RMC, GNS, GLL, VTG, HDT, THS, GSA, ZDA and
  *        GST sentences from any talker, checksum verified, parsed with
  *        integers only into the library's representations, and UTC
- *        stitched from RMC/ZDA dates.
+ *        stitched from RMC/ZDA dates (those of RMCs without a fix too).
  */
 #ifndef DRDC_NMEA_H
 #define DRDC_NMEA_H
@@ -342,6 +342,84 @@ drdc_status_t drdc_nmea_parse_with(const char *text, size_t length,
                                    uint32_t flags, drdc_nmea_t *out);
 
 /**
+ * The date and time of day of an RMC or ZDA sentence, whatever fix it
+ * reports, for dating other sentences with drdc_nmea_utc().
+ *
+ * drdc_nmea_parse() refuses an RMC whose status is V or mode N
+ * (DRDC_E_NO_FIX), and with it the date the sentence carries; a receiver
+ * that has lost its fix, or one that sends only such RMCs, would leave
+ * its GGA fixes without a date. This function keeps that date: the
+ * receiver's clock, which it keeps across short outages (before the
+ * first fix of a cold start some receivers send a default date, so a log
+ * is better dated by its valid RMCs and ZDAs where it has them).
+ *
+ * The record written is the one drdc_nmea_parse() writes, restricted to
+ * the type, the talker, the time of day and the date: RMC: `time`,
+ * `year`, `month`, `day`, `has` = DRDC_NMEA_HAS_TIME | DRDC_NMEA_HAS_DATE;
+ * ZDA: the whole ZDA record (its local zone too), as drdc_nmea_parse()
+ * writes it. Every other field is 0. Of an RMC only the time, the status
+ * letter (A or V, for its syntax) and the date are read; its position,
+ * speed, course and mode are not (the checksum covers them).
+ *
+ * @param text   the sentence from `$`, CR LF optional; not necessarily
+ *               NUL-terminated
+ * @param length number of characters of `text`; exactly these are read
+ * @param flags  0, or DRDC_NMEA_STRICT (82 characters, every field of the
+ *               sentence's NMEA 0183 layout present)
+ * @param[out] out the time of day and date; unchanged on error
+ * @retval DRDC_OK written
+ * @retval DRDC_E_NULL `text` or `out` is NULL
+ * @retval DRDC_E_RANGE `flags` has a bit other than DRDC_NMEA_STRICT;
+ *         ZDA zone hours beyond 13
+ * @retval DRDC_E_SYNTAX no `$` first, a malformed checksum digit, time of
+ *         day or date; RMC: a status other than A or V
+ * @retval DRDC_E_CHARACTER a character outside printable ASCII before
+ *         the checksum
+ * @retval DRDC_E_TRUNCATED the text ends before `*hh`
+ * @retval DRDC_E_OVERLONG more than 126 characters up to the checksum
+ *         (strict: 80)
+ * @retval DRDC_E_TRAILING characters after the checksum other than CR LF
+ * @retval DRDC_E_CHECKSUM the checksum does not match
+ * @retval DRDC_E_SENTENCE neither an RMC nor a ZDA (a GGA carries no
+ *         date), or not a sentence drdc_nmea_parse() knows at all
+ * @retval DRDC_E_MISSING_FIELD the time of day, the status (RMC), the day,
+ *         month or year is empty, or the sentence ends before its date
+ *         (strict: before the end of its layout); a receiver's RMC before
+ *         its clock is set (`$GPRMC,,V,,,,,,,,,,N`)
+ * @retval DRDC_E_HOUR hour of the time above 23
+ * @retval DRDC_E_MINUTE minute of the time, or ZDA zone minutes, 60 or
+ *         more
+ * @retval DRDC_E_SECOND second of the time above 60
+ * @retval DRDC_E_DAY day outside 1..31
+ * @retval DRDC_E_MONTH month outside 1..12
+ * @retval DRDC_E_YEAR ZDA year below DRDC_YEAR_MIN
+ *
+ * Accuracy: exact (the time of day to the nanosecond, as
+ * drdc_nmea_parse()). Checked against pynmeagps's reading of the same
+ * sentences (tests/ref/gen_nmea.py, tests/nmea/test_nmea.c).
+ *
+ * Dating a stream in firmware: keep the last date seen and stitch each
+ * fix to it.
+ * @code
+ * drdc_nmea_t date;  // the last RMC or ZDA date
+ * int dated = 0;
+ * // for each received sentence s of n characters:
+ * drdc_nmea_t fix;
+ * drdc_time_t utc;
+ * if (drdc_nmea_parse_date(s, n, 0u, &fix) == DRDC_OK) {
+ *   date = fix;
+ *   dated = 1;
+ * }
+ * if ((drdc_nmea_parse(s, n, &fix) == DRDC_OK) && (dated != 0) &&
+ *     (drdc_nmea_utc(NULL, &date, &fix, &utc) == DRDC_OK)) {
+ *   // fix at utc
+ * }
+ * @endcode
+ */
+drdc_status_t drdc_nmea_parse_date(const char *text, size_t length,
+                                   uint32_t flags, drdc_nmea_t *out);
+
+/**
  * UTC instant of a sentence's time of day on the date of an RMC or ZDA
  * sentence.
  *
@@ -352,7 +430,8 @@ drdc_status_t drdc_nmea_parse_with(const char *text, size_t length,
  * date an RMC or ZDA itself.
  *
  * @param leap  leap state (validates second 60), NULL for the built-in one
- * @param dated an RMC or ZDA sentence (has DRDC_NMEA_HAS_DATE)
+ * @param dated an RMC or ZDA sentence (has DRDC_NMEA_HAS_DATE), from
+ *              drdc_nmea_parse() or drdc_nmea_parse_date()
  * @param s     any sentence (its time of day)
  * @param[out] utc the instant; unchanged on error
  * @retval DRDC_OK written

@@ -12,13 +12,36 @@ import logging
 import os
 import sys
 
-from aiohttp import web
+MISSING = ("drdc.serve needs aiohttp, which is not installed: pip install "
+           "'drdc[serve]' (the serve extra of the drdc package), or, where "
+           "the package was installed with --target, aiohttp into the same "
+           "place")
 
-from .app import Limits, make_app
-from .openapi import document
+
+def _missing_aiohttp(e):
+    """Whether an ImportError is aiohttp's absence (not a defect of ours):
+    the message of the extra to install instead of a traceback."""
+    return isinstance(e, ImportError) and (e.name or "").split(".")[0] in (
+        "aiohttp", "multidict", "yarl", "frozenlist", "aiosignal",
+        "propcache", "aiohappyeyeballs", "attr", "idna")
 
 
 def main(argv=None):
+    try:
+        return _main(argv)
+    except ImportError as e:
+        if not _missing_aiohttp(e):
+            raise
+        print("%s (%s)" % (MISSING, e), file=sys.stderr)
+        return 1
+
+
+def _main(argv=None):
+    from aiohttp import web
+
+    from .app import Limits, make_app
+    from .openapi import document
+
     d = Limits()
     ap = argparse.ArgumentParser(prog="python -m drdc.serve",
                                  description=__doc__,

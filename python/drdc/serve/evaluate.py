@@ -7,7 +7,7 @@ form the package would have to refuse with an unplanned exception."""
 import numpy as np
 
 import drdc
-from .functions import BY_NAME, RANGES
+from .functions import BY_NAME, DISPLAYS, RANGES, quantity
 
 TEXT_MAX = 64  # characters of one text value: MGRS needs 27, units less
 
@@ -50,10 +50,55 @@ def _text(v, where):
     return v
 
 
+def _quantity(arg, v, where):
+    """{"degrees": "50.27"} (or "metres", "utc") as the argument's
+    integer, converted exactly; a utc gives (sec, nsec)."""
+    q = quantity(arg) if arg.kind == "int" else None
+    if q is None:
+        raise _bad("%s: an integer (the fixed-point format), not an object"
+                   % where)
+    name, unit, convert = q
+    if set(v) != {name}:
+        raise _bad("%s: {\"%s\": text} (%s), the only quantity this "
+                   "argument takes" % (where, name, unit))
+    text = _text(v[name], "%s.%s" % (where, name))
+    try:
+        value = convert(text)
+    except drdc.DrdcError as e:
+        raise _bad("%s.%s: %r is refused: %s (%s)" % (where, name, text,
+                                                     e.reason, e.name))
+    except (ValueError, TypeError) as e:
+        raise _bad("%s.%s: %s" % (where, name, e))
+    if name == "utc":
+        return tuple(value)
+    return _integer(value, where, arg.ctype)
+
+
 def _element(arg, v, where):
+    if isinstance(v, dict):
+        return _quantity(arg, v, where)
     if arg.kind in ("int", "scalar-int"):
         return _integer(v, where, arg.ctype)
     return _text(v, where)
+
+
+def _split_utc(f, inputs, values):
+    """A sec given as {"utc": ...} carries its nanoseconds: they become
+    the nsec argument, which the request must then leave out."""
+    sec = values.get("sec")
+    elements = sec if isinstance(sec, list) else [sec]
+    if not any(isinstance(x, tuple) for x in elements):
+        return
+    if "nsec" in inputs:
+        raise _bad("inputs.nsec: a sec given as utc carries its "
+                   "nanoseconds; leave nsec out")
+    if not all(isinstance(x, tuple) for x in elements):
+        raise _bad("inputs.sec: every element utc, or none")
+    if isinstance(sec, list):
+        values["sec"] = [x[0] for x in sec]
+        values["nsec"] = [x[1] for x in sec]
+    else:
+        values["sec"], values["nsec"] = sec
 
 
 def _arguments(f, inputs, max_batch):
@@ -89,6 +134,7 @@ def _arguments(f, inputs, max_batch):
                               for i, x in enumerate(v)]
         else:
             values[a.name] = _element(a, v, where)
+    _split_utc(f, inputs, values)
     return values, (1 if n is None else n)
 
 
@@ -134,4 +180,31 @@ def evaluate(body, max_batch):
     status = [int(s) for s in result.status.tolist()]
     return {"function": name, "count": n, "outputs": outputs,
             "status": status,
-            "status_name": [drdc.status_name(s) for s in status]}
+            "status_name": [drdc.status_name(s) for s in status],
+            "display": _display(f, arrays, result, status),
+            "exact": {o.name: [str(x) for x in outputs[o.name]]
+                      for o in f.outputs if o.ctype not in ("string",
+                                                             "bool")}}
+
+
+def _display(f, arrays, result, status):
+    """Each output a person reads as a quantity, as exact decimal text
+    with its unit ("487884.96875 m"; None where the element's status is an
+    error), by the output's format; a unit conversion's value in its
+    unit."""
+    shown = {}
+    raw = {o.name: getattr(result, o.name) for o in f.outputs}
+    for o in f.outputs:
+        if f.name in ("units_convert", "units_convert_expr"):
+            frac = arrays["to_frac"]
+            unit = arrays.get("to_unit", arrays.get("to_expr"))
+            text = drdc.format_fixed_array(raw[o.name], frac,
+                                           None if frac <= 18 else 18)
+            texts = [t + " " + unit for t in text.tolist()]
+        elif o.format in DISPLAYS:
+            texts = DISPLAYS[o.format](raw[o.name], raw)
+        else:
+            continue
+        shown[o.name] = [None if drdc.is_error(s) else t
+                         for s, t in zip(status, texts)]
+    return shown

@@ -101,7 +101,8 @@ FUNCTIONS = [
         "the forward values at the unrounded point",
         lambda a: drdc.geo_from_utm_array(a["zone"], a["north"],
                                           a["easting_q47_16"],
-                                          a["northing_q47_16"])),
+                                          a["northing_q47_16"],
+                                          with_scale=True)),
     Function(
         "geo_mgrs_encode", "drdc_geo_mgrs_encode", MGRS_H,
         "MGRS of a point (as GeoConvert -m), prec digits per coordinate",
@@ -264,6 +265,49 @@ EXAMPLES = {
 }
 
 
+# What a person may type instead of an input's integer: the quantity's
+# name (the key of {"degrees": "50.27"}), its unit, and how the text
+# becomes the integer (exactly, as the package's degrees_to_nas() does).
+# A "utc" sec also sets the nsec beside it.
+QUANTITIES = {
+    NAS: ("degrees", "deg", drdc.degrees_to_nas),
+    NAS + ", [-90, 90] degrees": ("degrees", "deg", drdc.degrees_to_nas),
+    BAM32: ("degrees", "deg", drdc.degrees_to_bam32),
+    Q47_16: ("metres", "m", drdc.metres_to_q47_16),
+    SEC: ("utc", "ISO 8601 UTC", drdc.time_iso8601_parse),
+}
+
+
+def _fixed(frac, decimals, unit=""):
+    def show(a, outputs):
+        text = drdc.format_fixed_array(a, frac, decimals)
+        return [t + unit for t in text.tolist()]
+    return show
+
+
+def _utc(a, outputs):
+    return drdc.format_utc_array(a, outputs["nsec"]).text.tolist()
+
+
+# How an output is shown to a person beside its integer: exact decimal
+# text with its unit, by the output's format (drdc's formatters).
+DISPLAYS = {
+    NAS: lambda a, o: [t + " deg" for t in
+                       drdc.format_nas_degrees_array(a).tolist()],
+    Q47_16: _fixed(16, None, " m"),
+    Q5_58: _fixed(58, 18),
+    Q1_30: _fixed(30, 10),
+    BAM32_OUT: lambda a, o: [t + " deg" for t in
+                             drdc.format_bam32_degrees_array(a).tolist()],
+    SEC: _utc,
+}
+
+
+def quantity(arg):
+    """(name, unit, convert) of what may stand for an input, or None."""
+    return QUANTITIES.get(arg.format)
+
+
 def describe(f):
     """The JSON description of one function (GET /v1/functions)."""
     return {
@@ -275,7 +319,10 @@ def describe(f):
                          "format": a.format,
                          "per_element": a.kind in ("int", "text")},
                         **({"default": a.default}
-                           if a.default is not None else {}))
+                           if a.default is not None else {}),
+                        **({"quantity": {"name": quantity(a)[0],
+                                         "unit": quantity(a)[1]}}
+                           if quantity(a) else {}))
                    for a in f.inputs],
         "outputs": [{"name": o.name, "type": o.ctype, "format": o.format}
                     for o in f.outputs]

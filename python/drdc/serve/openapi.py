@@ -3,7 +3,7 @@
 so that it cannot drift from what /v1/eval accepts. python/openapi.json
 is this document with the default limits (`python -m drdc.serve
 --openapi > python/openapi.json` writes it; a test compares)."""
-from .functions import EXAMPLES, FUNCTIONS, RANGES
+from .functions import EXAMPLES, FUNCTIONS, RANGES, quantity
 
 
 def _error():
@@ -30,6 +30,14 @@ def _input_schema(arg, batch):
         return dict(_integer(arg.ctype), description=arg.format)
     else:
         one = _integer(arg.ctype)
+        q = quantity(arg)
+        if q is not None:
+            # the quantity a person types, converted exactly
+            one = {"oneOf": [one, {
+                "type": "object", "additionalProperties": False,
+                "required": [q[0]],
+                "properties": {q[0]: {"type": "string", "maxLength": 64,
+                                      "description": q[1]}}}]}
     return {"description": arg.format + " (one value for every element, "
             "or a list)",
             "oneOf": [one, {"type": "array", "items": one,
@@ -134,7 +142,7 @@ def document(limits):
             "EvalResult": {
                 "type": "object",
                 "required": ["function", "count", "outputs", "status",
-                             "status_name"],
+                             "status_name", "display", "exact"],
                 "properties": {
                     "function": {"type": "string"},
                     "count": {"type": "integer"},
@@ -143,7 +151,21 @@ def document(limits):
                     "status": {"type": "array",
                                "items": {"type": "integer"}},
                     "status_name": {"type": "array",
-                                    "items": {"type": "string"}}}},
+                                    "items": {"type": "string"}},
+                    "display": {
+                        "type": "object",
+                        "description": "outputs that are quantities, as "
+                                       "exact decimal text with their unit "
+                                       "(null where the status is an "
+                                       "error)",
+                        "additionalProperties": {"type": "array"}},
+                    "exact": {
+                        "type": "object",
+                        "description": "every integer output as decimal "
+                                       "text (for clients whose numbers "
+                                       "are doubles)",
+                        "additionalProperties": {
+                            "type": "array", "items": {"type": "string"}}}}},
             "Functions": {
                 "type": "object", "required": ["functions"],
                 "properties": {"functions": {
