@@ -490,6 +490,44 @@ class UnitsCommand(unittest.TestCase):
             self.assertLessEqual(abs(float(got) - float(ref)),
                                  1e-12 * abs(float(ref)), case[0])
 
+    def test_products_written_with_blanks(self):
+        """A blank between units joins a product where one cut of the
+        words into FROM and TO gives one dimension on both sides, against
+        GNU units 2.22 (asked with FROM and TO apart); where two cuts do,
+        an error that says how to write it."""
+        import shutil
+        cases = [("1 N m ft lbf", "1 N m", "ft lbf"),
+                 ("2 kg m/s2 lbf", "2 kg m/s2", "lbf"),
+                 ("3 N m ft*lbf", "3 N m", "ft*lbf"),
+                 ("4 ft*lbf N m", "4 ft*lbf", "N m"),
+                 ("5 kW hr MJ", "5 kW hr", "MJ"),
+                 ("6 lbf ft N m", "6 lbf ft", "N m"),
+                 ("7 mi km", "7 mi", "km"),
+                 ("8 kg m s^-2 dyne", "8 kg m s^-2", "dyne")]
+        code, out = units(*[c[0] for c in cases])
+        self.assertEqual(0, code, out)
+        self.assertEqual("0.737562149277265", out[0])
+        if shutil.which("units") is not None:
+            sys.path.insert(0, os.path.join(TOP, "tests", "ref"))
+            import gen_units
+            want = gen_units.units_batch([(c[1], c[2]) for c in cases])
+            for case, got, ref in zip(cases, out, want):
+                self.assertLessEqual(abs(float(got) - float(ref)),
+                                     1e-12 * abs(float(ref)), case[0])
+        # two cuts fit: m/s | s ft/s^2 and m/s s | ft/s^2
+        code, out = units("1 m/s s ft/s^2", "1 rad rad rad", "1 kg m s",
+                          "1 m/s*s ft/s^2")
+        self.assertEqual(1, code)
+        for line in out[:2]:
+            self.assertTrue(line.startswith("ERROR: the units split into "
+                                            "FROM and TO in more than one "
+                                            "way"), line)
+        # no cut fits: the first two words and their own error
+        self.assertEqual("ERROR: unexpected text after the units "
+                         "(DRDC_E_TRAILING)", out[2])
+        self.assertEqual("ERROR: m/s*s and ft/s^2 measure different "
+                         "quantities (DRDC_E_DIMENSION)", out[3])
+
     def test_expression_errors(self):
         code, out = units("1 degC/s K/s", "1 m/ m", "1 dB 1", "1 km/h kg",
                           "1 (((((m))))) m", "1 lightyear^3/nm^3 m^3/m^3")
