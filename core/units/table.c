@@ -15,7 +15,7 @@
  *
  * Compact storage: every name once in units_names (row order), each
  * distinct dimension, factor number and offset once, and four bytes
- * per unit (222 units, 888 bytes of rows).
+ * per unit (254 units, 1016 bytes of rows).
  */
 
 /* Number of factor numbers below 2^32 (units_small). */
@@ -56,16 +56,22 @@ static const drdc_unit_t units_table[] = {
   { 18u, 20u, 0u, UNITS_FLAGS(0u, 0u) }, /* yard: 1143 / 1250 */
   /* 5280 ft = 1609.344 m */
   { 46u, 8u, 0u, UNITS_FLAGS(0u, 0u) }, /* mile: 201168 / 125 */
+  /* mile (GNU units' abbreviation) */
+  { 46u, 8u, 0u, UNITS_FLAGS(0u, 0u) }, /* mi: 201168 / 125 */
   /* international nautical mile, 1852 m exactly */
   { 22u, 0u, 0u, UNITS_FLAGS(0u, 0u) }, /* nmi: 1852 / 1 */
   /* nmi */
   { 22u, 0u, 0u, UNITS_FLAGS(0u, 0u) }, /* nauticalmile: 1852 / 1 */
+  /* nmi (GNU units' spelling of the Unix units) */
+  { 22u, 0u, 0u, UNITS_FLAGS(0u, 0u) }, /* nmile: 1852 / 1 */
   /* 6 ft */
   { 18u, 14u, 0u, UNITS_FLAGS(0u, 0u) }, /* fathom: 1143 / 625 */
   /* 40 rod = 660 ft */
   { 38u, 8u, 0u, UNITS_FLAGS(0u, 0u) }, /* furlong: 25146 / 125 */
   /* 66 ft */
   { 32u, 14u, 0u, UNITS_FLAGS(0u, 0u) }, /* chain: 12573 / 625 */
+  /* chain (GNU units' abbreviation) */
+  { 32u, 14u, 0u, UNITS_FLAGS(0u, 0u) }, /* ch: 12573 / 625 */
   /* 0.001 inch */
   { 9u, 58u, 0u, UNITS_FLAGS(0u, 0u) }, /* mil: 127 / 5000000 */
   /* astronomical unit, 149 597 870 700 m exactly (IAU 2012) */
@@ -74,6 +80,8 @@ static const drdc_unit_t units_table[] = {
   { 73u, 0u, 0u, UNITS_FLAGS(0u, 0u) }, /* lightsecond: 299792458 / 1 */
   /* c x julianyear (365.25 d) */
   { 110u, 0u, 0u, UNITS_FLAGS(0u, 0u) }, /* lightyear: 9460730472580800 / 1 */
+  /* lightyear (GNU units' abbreviation) */
+  { 110u, 0u, 0u, UNITS_FLAGS(0u, 0u) }, /* ly: 9460730472580800 / 1 */
   /* US survey foot, 1200/3937 m exactly */
   { 19u, 26u, 0u, UNITS_FLAGS(0u, 0u) }, /* surveyfoot: 1200 / 3937 */
   /* m (GNU units spelling) */
@@ -115,6 +123,8 @@ static const drdc_unit_t units_table[] = {
   { 0u, 0u, 2u, UNITS_FLAGS(0u, 0u) }, /* m^3: 1 / 1 */
   /* (10^-2 m)^3 */
   { 0u, 51u, 2u, UNITS_FLAGS(0u, 0u) }, /* cm^3: 1 / 1000000 */
+  /* cm^3 (GNU units' abbreviation) */
+  { 0u, 51u, 2u, UNITS_FLAGS(0u, 0u) }, /* cc: 1 / 1000000 */
   /* inch^3 */
   { 56u, 95u, 2u, UNITS_FLAGS(0u, 0u) }, /* in^3: 2048383 / 125000000000 */
   /* ft^3 */
@@ -135,8 +145,12 @@ static const drdc_unit_t units_table[] = {
   { 76u, 95u, 2u, UNITS_FLAGS(0u, 0u) }, /* gal: 473176473 / 125000000000 */
   /* 1/4 gallon */
   { 76u, 99u, 2u, UNITS_FLAGS(0u, 0u) }, /* quart: 473176473 / 500000000000 */
+  /* quart (GNU units' abbreviation) */
+  { 76u, 99u, 2u, UNITS_FLAGS(0u, 0u) }, /* qt: 473176473 / 500000000000 */
   /* 1/2 quart */
   { 76u, 101u, 2u, UNITS_FLAGS(0u, 0u) }, /* pint: 473176473 / 1000000000000 */
+  /* pint (GNU units' and pint's abbreviation; the name wins over p + t) */
+  { 76u, 101u, 2u, UNITS_FLAGS(0u, 0u) }, /* pt: 473176473 / 1000000000000 */
   /* US cup, 1/2 pint */
   { 76u, 102u, 2u, UNITS_FLAGS(0u, 0u) }, /* cup: 473176473 / 2000000000000 */
   /* US fluid ounce, 1/128 gallon */
@@ -144,9 +158,20 @@ static const drdc_unit_t units_table[] = {
   /* US tablespoon, 1/2 floz */
   /* tablespoon: 473176473 / 32000000000000 */
   { 76u, 108u, 2u, UNITS_FLAGS(0u, 0u) },
+  /* tablespoon (GNU units' abbreviation) */
+  { 76u, 108u, 2u, UNITS_FLAGS(0u, 0u) }, /* tbsp: 473176473 / 32000000000000 */
+  /* tablespoon (GNU units' abbreviation) */
+  /* tblsp: 473176473 / 32000000000000 */
+  { 76u, 108u, 2u, UNITS_FLAGS(0u, 0u) },
+  /* tablespoon (GNU units' abbreviation) */
+  { 76u, 108u, 2u, UNITS_FLAGS(0u, 0u) }, /* tbl: 473176473 / 32000000000000 */
+  /* tablespoon (GNU units' abbreviation) */
+  { 76u, 108u, 2u, UNITS_FLAGS(0u, 0u) }, /* Tb: 473176473 / 32000000000000 */
   /* US teaspoon, 1/3 tablespoon */
   /* teaspoon: 157725491 / 32000000000000 */
   { 71u, 108u, 2u, UNITS_FLAGS(0u, 0u) },
+  /* teaspoon (GNU units' abbreviation) */
+  { 71u, 108u, 2u, UNITS_FLAGS(0u, 0u) }, /* tsp: 157725491 / 32000000000000 */
   /* British gallon, 4.54609 liter exactly */
   { 48u, 68u, 2u, UNITS_FLAGS(0u, 0u) }, /* brgallon: 454609 / 100000000 */
   /* petroleum barrel, 42 gallon */
@@ -160,6 +185,8 @@ static const drdc_unit_t units_table[] = {
   { 0u, 17u, 3u, UNITS_FLAGS(0u, 1u) }, /* g: 1 / 1000 */
   /* g */
   { 0u, 17u, 3u, UNITS_FLAGS(0u, 1u) }, /* gram: 1 / 1000 */
+  /* g (GNU units' abbreviation) */
+  { 0u, 17u, 3u, UNITS_FLAGS(0u, 0u) }, /* gm: 1 / 1000 */
   /* 10^-6 kg */
   { 0u, 51u, 3u, UNITS_FLAGS(0u, 0u) }, /* mg: 1 / 1000000 */
   /* 10^3 kg */
@@ -170,10 +197,14 @@ static const drdc_unit_t units_table[] = {
   { 64u, 68u, 3u, UNITS_FLAGS(0u, 0u) }, /* lb: 45359237 / 100000000 */
   /* lb */
   { 64u, 68u, 3u, UNITS_FLAGS(0u, 0u) }, /* pound: 45359237 / 100000000 */
+  /* lb, pound mass (GNU units' abbreviation) */
+  { 64u, 68u, 3u, UNITS_FLAGS(0u, 0u) }, /* lbm: 45359237 / 100000000 */
   /* 1/16 lb */
   { 64u, 82u, 3u, UNITS_FLAGS(0u, 0u) }, /* oz: 45359237 / 1600000000 */
   /* 1/7000 lb */
   { 59u, 94u, 3u, UNITS_FLAGS(0u, 0u) }, /* grain: 6479891 / 100000000000 */
+  /* grain (GNU units' abbreviation) */
+  { 59u, 94u, 3u, UNITS_FLAGS(0u, 0u) }, /* gr: 6479891 / 100000000000 */
   /* 14 lb */
   { 75u, 65u, 3u, UNITS_FLAGS(0u, 0u) }, /* stone: 317514659 / 50000000 */
   /* US short ton, 2000 lb (GNU units' default) */
@@ -184,8 +215,12 @@ static const drdc_unit_t units_table[] = {
   { 75u, 47u, 3u, UNITS_FLAGS(0u, 0u) }, /* longton: 317514659 / 312500 */
   /* 480 grain */
   { 61u, 78u, 3u, UNITS_FLAGS(0u, 0u) }, /* troyounce: 19439673 / 625000000 */
+  /* troyounce (GNU units' abbreviation) */
+  { 61u, 78u, 3u, UNITS_FLAGS(0u, 0u) }, /* ozt: 19439673 / 625000000 */
   /* metric carat, 200 mg */
   { 0u, 28u, 3u, UNITS_FLAGS(0u, 0u) }, /* carat: 1 / 5000 */
+  /* carat (GNU units' and pint's abbreviation; the name wins over c + t) */
+  { 0u, 28u, 3u, UNITS_FLAGS(0u, 0u) }, /* ct: 1 / 5000 */
   /* lbf s^2 / ft */
   /* slug: 8896443230521 / 609600000000 */
   { 104u, 100u, 3u, UNITS_FLAGS(0u, 0u) },
@@ -214,14 +249,22 @@ static const drdc_unit_t units_table[] = {
   { 25u, 0u, 4u, UNITS_FLAGS(0u, 0u) }, /* h: 3600 / 1 */
   /* 86400 s */
   { 41u, 0u, 4u, UNITS_FLAGS(0u, 0u) }, /* day: 86400 / 1 */
+  /* day, the SI-accepted symbol (GNU units' d) */
+  { 41u, 0u, 4u, UNITS_FLAGS(0u, 0u) }, /* d: 86400 / 1 */
+  /* day (GNU units' da) */
+  { 41u, 0u, 4u, UNITS_FLAGS(0u, 0u) }, /* da: 86400 / 1 */
   /* 7 day */
   { 50u, 0u, 4u, UNITS_FLAGS(0u, 0u) }, /* week: 604800 / 1 */
+  /* week (GNU units' abbreviation) */
+  { 50u, 0u, 4u, UNITS_FLAGS(0u, 0u) }, /* wk: 604800 / 1 */
   /* 14 day */
   { 52u, 0u, 4u, UNITS_FLAGS(0u, 0u) }, /* fortnight: 1209600 / 1 */
   /* 365.25 day */
   { 63u, 0u, 4u, UNITS_FLAGS(0u, 0u) }, /* julianyear: 31557600 / 1 */
   /* GNU units' year: tropicalyear, 365.242198781 day */
   { 105u, 47u, 4u, UNITS_FLAGS(0u, 0u) }, /* year: 9861539367087 / 312500 */
+  /* year (GNU units' abbreviation) */
+  { 105u, 47u, 4u, UNITS_FLAGS(0u, 0u) }, /* yr: 9861539367087 / 312500 */
   /* speed */
   /* SI */
   { 0u, 0u, 5u, UNITS_FLAGS(0u, 0u) }, /* m/s: 1 / 1 */
@@ -245,6 +288,8 @@ static const drdc_unit_t units_table[] = {
   { 9u, 37u, 5u, UNITS_FLAGS(0u, 0u) }, /* ft/min: 127 / 25000 */
   /* ft/min */
   { 9u, 37u, 5u, UNITS_FLAGS(0u, 0u) }, /* fpm: 127 / 25000 */
+  /* ft/min, linear feet per minute (GNU units' abbreviation) */
+  { 9u, 37u, 5u, UNITS_FLAGS(0u, 0u) }, /* lfm: 127 / 25000 */
   /* speed of light, 299 792 458 m/s exactly */
   { 73u, 0u, 5u, UNITS_FLAGS(0u, 0u) }, /* c: 299792458 / 1 */
   /* acceleration */
@@ -290,6 +335,8 @@ static const drdc_unit_t units_table[] = {
   { 77u, 67u, 7u, UNITS_FLAGS(0u, 0u) }, /* turn: 491701844 / 78256779 */
   /* turn */
   { 77u, 67u, 7u, UNITS_FLAGS(0u, 0u) }, /* revolution: 491701844 / 78256779 */
+  /* turn (GNU units' abbreviation) */
+  { 77u, 67u, 7u, UNITS_FLAGS(0u, 0u) }, /* rev: 491701844 / 78256779 */
   /* 2 pi radian */
   { 77u, 67u, 7u, UNITS_FLAGS(0u, 0u) }, /* circle: 491701844 / 78256779 */
   /* 10^-3 radian */
@@ -313,6 +360,8 @@ static const drdc_unit_t units_table[] = {
   { 0u, 0u, 8u, UNITS_FLAGS(0u, 1u) }, /* Hz: 1 / 1 */
   /* Hz */
   { 0u, 0u, 8u, UNITS_FLAGS(0u, 1u) }, /* hertz: 1 / 1 */
+  /* Hz (GNU units' spelling of the Unix units) */
+  { 0u, 0u, 8u, UNITS_FLAGS(0u, 0u) }, /* hz: 1 / 1 */
   /* 10^3 Hz */
   { 17u, 0u, 8u, UNITS_FLAGS(0u, 0u) }, /* kHz: 1000 / 1 */
   /* 10^6 Hz */
@@ -328,6 +377,8 @@ static const drdc_unit_t units_table[] = {
   { 17u, 0u, 9u, UNITS_FLAGS(0u, 0u) }, /* kN: 1000 / 1 */
   /* g cm/s^2 */
   { 0u, 42u, 9u, UNITS_FLAGS(0u, 0u) }, /* dyne: 1 / 100000 */
+  /* dyne (GNU units' abbreviation) */
+  { 0u, 42u, 9u, UNITS_FLAGS(0u, 0u) }, /* dyn: 1 / 100000 */
   /* lb x gravity = 4.4482216152605 N exactly */
   /* lbf: 8896443230521 / 2000000000000 */
   { 104u, 102u, 9u, UNITS_FLAGS(0u, 0u) },
@@ -340,11 +391,15 @@ static const drdc_unit_t units_table[] = {
   /* lb ft/s^2 */
   /* poundal: 17281869297 / 125000000000 */
   { 89u, 95u, 9u, UNITS_FLAGS(0u, 0u) },
+  /* poundal (GNU units' abbreviation) */
+  { 89u, 95u, 9u, UNITS_FLAGS(0u, 0u) }, /* pdl: 17281869297 / 125000000000 */
   /* pressure */
   /* SI (N/m^2) */
   { 0u, 0u, 10u, UNITS_FLAGS(0u, 1u) }, /* Pa: 1 / 1 */
   /* Pa */
   { 0u, 0u, 10u, UNITS_FLAGS(0u, 1u) }, /* pascal: 1 / 1 */
+  /* Pa (GNU units' spelling of the Unix units) */
+  { 0u, 0u, 10u, UNITS_FLAGS(0u, 0u) }, /* pa: 1 / 1 */
   /* 10^2 Pa */
   { 7u, 0u, 10u, UNITS_FLAGS(0u, 0u) }, /* hPa: 100 / 1 */
   /* 10^3 Pa */
@@ -363,6 +418,9 @@ static const drdc_unit_t units_table[] = {
   { 45u, 1u, 10u, UNITS_FLAGS(0u, 0u) }, /* at: 196133 / 2 */
   /* lbf/in^2 */
   { 104u, 81u, 10u, UNITS_FLAGS(0u, 0u) }, /* psi: 8896443230521 / 1290320000 */
+  /* psi, absolute (GNU units' abbreviation) */
+  /* psia: 8896443230521 / 1290320000 */
+  { 104u, 81u, 10u, UNITS_FLAGS(0u, 0u) },
   /* 1000 psi */
   { 104u, 53u, 10u, UNITS_FLAGS(0u, 0u) }, /* ksi: 8896443230521 / 1290320 */
   /* atm/760 */
@@ -381,6 +439,8 @@ static const drdc_unit_t units_table[] = {
   /* as the nearest 1/n, relative error 4e-20 (the exact 1602176634/10^28 */
   /* has no 63-bit form) */
   { 0u, 113u, 11u, UNITS_FLAGS(0u, 1u) }, /* eV: 1 / 6241509074460762608 */
+  /* eV (GNU units' spelling of the Unix units); no prefixes */
+  { 0u, 113u, 11u, UNITS_FLAGS(0u, 0u) }, /* ev: 1 / 6241509074460762608 */
   /* 10^3 J */
   { 17u, 0u, 11u, UNITS_FLAGS(0u, 0u) }, /* kJ: 1000 / 1 */
   /* 10^6 J */
@@ -430,6 +490,8 @@ static const drdc_unit_t units_table[] = {
   { 0u, 0u, 13u, UNITS_FLAGS(0u, 1u) }, /* K: 1 / 1 */
   /* K */
   { 0u, 0u, 13u, UNITS_FLAGS(0u, 0u) }, /* tempK: 1 / 1 */
+  /* K (GNU units' degK) */
+  { 0u, 0u, 13u, UNITS_FLAGS(0u, 0u) }, /* degK: 1 / 1 */
   /* temperature: K = degC + 273.15 */
   { 0u, 0u, 13u, UNITS_FLAGS(1u, 0u) }, /* degC: 1 / 1, offset 5463 / 20 */
   /* degC */
@@ -447,6 +509,8 @@ static const drdc_unit_t units_table[] = {
   { 0u, 0u, 14u, UNITS_FLAGS(0u, 1u) }, /* bit: 1 / 1 */
   /* 8 bit */
   { 3u, 0u, 14u, UNITS_FLAGS(0u, 1u) }, /* byte: 8 / 1 */
+  /* byte (GNU units' and the IEC's symbol); no prefixes, so dB stays no unit */
+  { 3u, 0u, 14u, UNITS_FLAGS(0u, 0u) }, /* B: 8 / 1 */
   /* data rate */
   /* bit/s */
   { 0u, 0u, 15u, UNITS_FLAGS(0u, 0u) }, /* bps: 1 / 1 */
@@ -471,6 +535,8 @@ static const drdc_unit_t units_table[] = {
   { 0u, 0u, 17u, UNITS_FLAGS(0u, 1u) }, /* C: 1 / 1 */
   /* C */
   { 0u, 0u, 17u, UNITS_FLAGS(0u, 1u) }, /* coulomb: 1 / 1 */
+  /* C (GNU units' spelling of the Unix units) */
+  { 0u, 0u, 17u, UNITS_FLAGS(0u, 0u) }, /* coul: 1 / 1 */
   /* ampere hour, 3600 C */
   { 25u, 0u, 17u, UNITS_FLAGS(0u, 1u) }, /* Ah: 3600 / 1 */
   /* 10^-3 Ah */
@@ -525,34 +591,38 @@ const char *drdc__units_names_first(void)
   /* The names, NUL-terminated, in row order. */
   static const char units_names[] =
     "m\0" "km\0" "cm\0" "mm\0" "um\0" "nm\0" "micron\0" "angstrom\0" "inch\0"
-    "in\0" "ft\0" "foot\0" "yd\0" "yard\0" "mile\0" "nmi\0" "nauticalmile\0"
-    "fathom\0" "furlong\0" "chain\0" "mil\0" "au\0" "lightsecond\0"
-    "lightyear\0" "surveyfoot\0" "meter\0" "metre\0" "parsec\0" "pc\0" "m^2\0"
-    "km^2\0" "cm^2\0" "mm^2\0" "in^2\0" "ft^2\0" "yd^2\0" "mile^2\0"
-    "hectare\0" "are\0" "acre\0" "ha\0" "m^3\0" "cm^3\0" "in^3\0" "ft^3\0"
-    "liter\0" "L\0" "litre\0" "l\0" "ml\0" "gallon\0" "gal\0" "quart\0"
-    "pint\0" "cup\0" "floz\0" "tablespoon\0" "teaspoon\0" "brgallon\0"
-    "barrel\0" "bbl\0" "kg\0" "g\0" "gram\0" "mg\0" "tonne\0" "t\0" "lb\0"
-    "pound\0" "oz\0" "grain\0" "stone\0" "ton\0" "shortton\0" "longton\0"
-    "troyounce\0" "carat\0" "slug\0" "s\0" "sec\0" "second\0" "ms\0" "us\0"
-    "ns\0" "min\0" "minute\0" "hr\0" "hour\0" "h\0" "day\0" "week\0"
-    "fortnight\0" "julianyear\0" "year\0" "m/s\0" "km/hr\0" "kph\0" "mph\0"
-    "knot\0" "knots\0" "kt\0" "ft/s\0" "fps\0" "ft/min\0" "fpm\0" "c\0"
+    "in\0" "ft\0" "foot\0" "yd\0" "yard\0" "mile\0" "mi\0" "nmi\0"
+    "nauticalmile\0" "nmile\0" "fathom\0" "furlong\0" "chain\0" "ch\0" "mil\0"
+    "au\0" "lightsecond\0" "lightyear\0" "ly\0" "surveyfoot\0" "meter\0"
+    "metre\0" "parsec\0" "pc\0" "m^2\0" "km^2\0" "cm^2\0" "mm^2\0" "in^2\0"
+    "ft^2\0" "yd^2\0" "mile^2\0" "hectare\0" "are\0" "acre\0" "ha\0" "m^3\0"
+    "cm^3\0" "cc\0" "in^3\0" "ft^3\0" "liter\0" "L\0" "litre\0" "l\0" "ml\0"
+    "gallon\0" "gal\0" "quart\0" "qt\0" "pint\0" "pt\0" "cup\0" "floz\0"
+    "tablespoon\0" "tbsp\0" "tblsp\0" "tbl\0" "Tb\0" "teaspoon\0" "tsp\0"
+    "brgallon\0" "barrel\0" "bbl\0" "kg\0" "g\0" "gram\0" "gm\0" "mg\0"
+    "tonne\0" "t\0" "lb\0" "pound\0" "lbm\0" "oz\0" "grain\0" "gr\0" "stone\0"
+    "ton\0" "shortton\0" "longton\0" "troyounce\0" "ozt\0" "carat\0" "ct\0"
+    "slug\0" "s\0" "sec\0" "second\0" "ms\0" "us\0" "ns\0" "min\0" "minute\0"
+    "hr\0" "hour\0" "h\0" "day\0" "d\0" "da\0" "week\0" "wk\0" "fortnight\0"
+    "julianyear\0" "year\0" "yr\0" "m/s\0" "km/hr\0" "kph\0" "mph\0" "knot\0"
+    "knots\0" "kt\0" "ft/s\0" "fps\0" "ft/min\0" "fpm\0" "lfm\0" "c\0"
     "m/s^2\0" "gravity\0" "Gal\0" "galileo\0" "ft/s^2\0" "radian\0" "rad\0"
     "sr\0" "steradian\0" "degree\0" "deg\0" "arcmin\0" "arcminute\0"
-    "arcsec\0" "arcsecond\0" "gon\0" "grade\0" "turn\0" "revolution\0"
+    "arcsec\0" "arcsecond\0" "gon\0" "grade\0" "turn\0" "revolution\0" "rev\0"
     "circle\0" "milliradian\0" "radian/s\0" "deg/s\0" "degree/s\0" "deg/hr\0"
-    "rpm\0" "rps\0" "Hz\0" "hertz\0" "kHz\0" "MHz\0" "GHz\0" "N\0" "newton\0"
-    "kN\0" "dyne\0" "lbf\0" "kip\0" "tonf\0" "kgf\0" "poundal\0" "Pa\0"
-    "pascal\0" "hPa\0" "kPa\0" "MPa\0" "bar\0" "mbar\0" "millibar\0" "atm\0"
-    "at\0" "psi\0" "ksi\0" "torr\0" "mmHg\0" "inHg\0" "J\0" "joule\0" "eV\0"
-    "kJ\0" "MJ\0" "erg\0" "cal\0" "calorie\0" "kcal\0" "cal_IT\0" "btu\0"
-    "BTU\0" "therm\0" "Wh\0" "kWh\0" "W\0" "watt\0" "kW\0" "MW\0" "hp\0"
-    "horsepower\0" "metrichorsepower\0" "btu/hr\0" "K\0" "tempK\0" "degC\0"
-    "tempC\0" "degF\0" "tempF\0" "degR\0" "tempR\0" "bit\0" "byte\0" "bps\0"
-    "kbps\0" "Mbps\0" "Gbps\0" "byte/s\0" "kbyte/s\0" "A\0" "ampere\0" "amp\0"
-    "C\0" "coulomb\0" "Ah\0" "mAh\0" "V\0" "volt\0" "ohm\0" "S\0" "siemens\0"
-    "F\0" "farad\0" "Wb\0" "weber\0" "H\0" "henry\0" "T\0" "tesla\0" "gauss\0";
+    "rpm\0" "rps\0" "Hz\0" "hertz\0" "hz\0" "kHz\0" "MHz\0" "GHz\0" "N\0"
+    "newton\0" "kN\0" "dyne\0" "dyn\0" "lbf\0" "kip\0" "tonf\0" "kgf\0"
+    "poundal\0" "pdl\0" "Pa\0" "pascal\0" "pa\0" "hPa\0" "kPa\0" "MPa\0"
+    "bar\0" "mbar\0" "millibar\0" "atm\0" "at\0" "psi\0" "psia\0" "ksi\0"
+    "torr\0" "mmHg\0" "inHg\0" "J\0" "joule\0" "eV\0" "ev\0" "kJ\0" "MJ\0"
+    "erg\0" "cal\0" "calorie\0" "kcal\0" "cal_IT\0" "btu\0" "BTU\0" "therm\0"
+    "Wh\0" "kWh\0" "W\0" "watt\0" "kW\0" "MW\0" "hp\0" "horsepower\0"
+    "metrichorsepower\0" "btu/hr\0" "K\0" "tempK\0" "degK\0" "degC\0"
+    "tempC\0" "degF\0" "tempF\0" "degR\0" "tempR\0" "bit\0" "byte\0" "B\0"
+    "bps\0" "kbps\0" "Mbps\0" "Gbps\0" "byte/s\0" "kbyte/s\0" "A\0" "ampere\0"
+    "amp\0" "C\0" "coulomb\0" "coul\0" "Ah\0" "mAh\0" "V\0" "volt\0" "ohm\0"
+    "S\0" "siemens\0" "F\0" "farad\0" "Wb\0" "weber\0" "H\0" "henry\0" "T\0"
+    "tesla\0" "gauss\0";
 
   return units_names;
 }

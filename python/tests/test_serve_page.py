@@ -123,7 +123,7 @@ async def _drive(ws_url, log_path, log_text):
             rows = await page.js("document.querySelectorAll('#modules tr')"
                                  ".length")
             # paste: a log whose digest differs
-            changed = log_text.replace("GOLDEN DIGEST: 0x6d842393",
+            changed = log_text.replace("GOLDEN DIGEST: 0x7a79f8ad",
                                        "GOLDEN DIGEST: 0x00000000")
             await page.js("document.getElementById('log').value = %s; "
                           "document.getElementById('judge').click()"
@@ -195,8 +195,8 @@ def test_page_in_headless_chromium():
             proc.wait()
         srv.stop()
         shutil.rmtree(work, ignore_errors=True)
-    assert uploaded == ("conforms (digest 0x6d842393, expected "
-                        "0x6d842393)")
+    assert uploaded == ("conforms (digest 0x7a79f8ad, expected "
+                        "0x7a79f8ad)")
     assert rows == 1 + len(drdc.conformance.reference_digests())
     assert pasted.startswith("differs (digest 0x00000000")
     # degrees typed: converted exactly as degrees_to_nas does, and each

@@ -23,7 +23,14 @@ or else when exactly one of these documented rules holds:
           drdc prints its exact decimal rounded half to even, which the
           test computes with Python fractions, while GeoConvert's double
           differs from it by one unit of the last digit (its 53-bit
-          mantissa carries 15 to 17 significant digits).
+          mantissa carries 15 to 17 significant digits);
+  input   the value is the grid input itself (-u of UTM/UPS or MGRS input
+          in its own zone, -m of it): drdc writes the exact decimal of the
+          input (an MGRS cell's centre or corner), rounded half to even
+          (-u) or truncated (-m), which the test computes with Python
+          fractions, while GeoConvert's double of it, or of the
+          micrometres it forms, is one unit of the last digit off (at 16
+          significant digits and more).
 
 ERROR lines are byte-identical: every one of the random lines above, of
 BAD_INPUTS (check_errors()) and of fuzz_lines() (check_fuzz()), where
@@ -198,6 +205,48 @@ def near_boundary(a, b, ref, bound, truncate=False):
     return abs(ref[0] - edge) <= bound + ref[1] / 2
 
 
+def grid_input(args, line, ref):
+    """The exact easting and northing (Fractions) of grid input (UTM/UPS
+    or an MGRS cell's centre, or corner with -n) where drdc writes it in
+    the input's own zone, in the hemisphere GeoConvert writes (ref: its
+    -u -p 9 line); None for other lines."""
+    words, rw = line.split(), ref.split()
+    if len(rw) != 3 or not re.fullmatch(r"\d*[ns]", rw[0]):
+        return None
+    zone = int(rw[0][:-1] or 0)
+    approx = [Fraction(x) for x in rw[1:]]
+    if len(words) == 3:
+        z = words[0] if words[0][-1:].isalpha() else words[2]
+        metres = words[1:] if z == words[0] else words[:2]
+        if int(re.match(r"\d*", z).group(0) or 0) != zone:
+            return None
+        e, n = [Fraction(x) for x in metres]
+        # GeoConvert moves a northing to its latitude's hemisphere
+        n += 10 ** 7 * round((approx[1] - n) / 10 ** 7)
+        return e, n
+    m = re.fullmatch(r"(\d*)[A-Za-z]+(\d*)", line.strip())
+    if len(words) != 1 or m is None or not m.group(2) or \
+            int(m.group(1) or 0) != zone:
+        return None
+    unit = Fraction(10) ** (5 - len(m.group(2)) // 2)
+    half = 0 if "-n" in args else unit / 2
+    return tuple(round((v - half) / unit) * unit + half for v in approx)
+
+
+def grid_text(value, prec):
+    """A coordinate as drdc writes the input's own: half to even at PREC
+    decimals, or for a negative PREC in units of 10^-PREC m with -PREC
+    zeros appended when not 0."""
+    scale = Fraction(10) ** prec
+    q = round(value * scale)
+    sign = "-" if value < 0 else ""
+    if prec <= 0:
+        text = "%s%d" % (sign, abs(q))
+        return text + "0" * -prec if q != 0 else text
+    return "%s%d.%0*d" % (sign, abs(q) // 10 ** prec, prec,
+                          abs(q) % 10 ** prec)
+
+
 def classify(args, line, got, want, want_cap, ref):
     """Which rule explains drdc's `got` (GeoConvert: `want`, at the capped
     PREC `want_cap` or None, at the finest PREC `ref`), or None."""
@@ -210,12 +259,14 @@ def classify(args, line, got, want, want_cap, ref):
             (mode != "-m" and len(rw) != len(gw)):
         return None
     words = line.split() if len(line.split()) == 2 else ["x", "x"]
+    grid = grid_input(args, line, ref) if mode in ("-u", "-m") else None
     rules = set()
     for i, g in enumerate(gw):
         exact = mode in ("-g", "-d", "-:") and plain(words[i])
         # the input itself is printed in full; computed values are capped
-        w = ww[i] if exact else cw[i]
-        capped = not exact and want_cap is not None and cw[i] != ww[i]
+        own = exact or (grid is not None and (mode == "-m" or i > 0))
+        w = ww[i] if own else cw[i]
+        capped = not own and want_cap is not None and cw[i] != ww[i]
         if g == w:
             rules.add("cap" if capped else "identical")
             continue
@@ -237,8 +288,11 @@ def classify(args, line, got, want, want_cap, ref):
             if pg != pw or ug != uw or ug is None or len(rw) != 3:
                 return None
             re_, rn = [Fraction(x) % 100000 for x in rw[1:3]]
-            for dg, dw, rv in ((eg, ew, re_), (ng, nw, rn)):
-                if dg != dw and not near_boundary(
+            for j, (dg, dw, rv) in enumerate(((eg, ew, re_), (ng, nw, rn))):
+                if dg != dw and grid is not None and abs(dg - dw) == 1 and \
+                        dg == (grid[j] % 100000) // ug:
+                    rule = "input"
+                elif dg != dw and not near_boundary(
                         (dg * ug, ug), (dw * ug, ug),
                         (rv, Fraction(1, 10 ** 9)), BOUND["m"],
                         truncate=True):
@@ -253,13 +307,19 @@ def classify(args, line, got, want, want_cap, ref):
                         double_close(a, b, angle(words[i])[0]):
                     rules.add("exact")
                     continue
+            if mode == "-u" and grid is not None and i > 0 and \
+                    a[1] == b[1] and abs(a[0] - b[0]) == a[1] and \
+                    g == grid_text(grid[i - 1],
+                                   max(-5, min(9, int(args[-1])))):
+                rules.add("input")
+                continue
             bound = (BOUND["m"] if mode == "-u" else
                      BOUND["scale"] if (mode == "-c" and i == 1) else
                      BOUND["deg"])
             if not near_boundary(a, b, c, bound):
                 return None
         rules.add(rule)
-    for rule in ("exact", "cap+lsb", "lsb", "cap"):
+    for rule in ("exact", "input", "cap+lsb", "lsb", "cap"):
         if rule in rules:
             return rule
     return "identical"
@@ -291,18 +351,21 @@ def inputs(seed, kind, n=120):
         return [" ".join(reversed(p.split())) for p in inputs(seed, "geo")]
     if kind != "geographic":
         return pts
-    # grid input that Q47.16 metres hold exactly (the library's input
-    # rounding to 2^-16 m is not part of what is compared): UTM/UPS
-    # metres in sixteenths (GeoConvert -u -p 4, rounded) and MGRS of up to
-    # 5 digits (centres at whole or half metres)
+    # grid input given finer than Q47.16 metres, which drdc carries in
+    # full: UTM/UPS metres to the centimetre and the millimetre
+    # (GeoConvert -u -p 4, cut), a few in sixteenths, and MGRS of 5 to 8
+    # digits
     utm = []
-    for u in geoconvert(["-u", "-p", "4"], pts[:30]):
+    for i, u in enumerate(geoconvert(["-u", "-p", "4"], pts[:30])):
         z, e, n = u.split()
-        utm.append("%s %s %s" % (z, sixteenths(e), sixteenths(n)))
+        cut = [sixteenths, centimetres, millimetres][i % 3]
+        utm.append("%s %s %s" % (z, cut(e), cut(n)))
     utm += ["32n 500000.5 6000000.5", "31n 500000.25 4000000.75",
             "500000.5 6000000.5 32n"]
     mgrs_in = geoconvert(["-m", "-p", "-2"], pts[30:45])
     mgrs_in += geoconvert(["-m", "-p", "0"], pts[45:50])
+    for p, lines in ((1, pts[50:55]), (2, pts[55:60]), (3, pts[60:65])):
+        mgrs_in += geoconvert(["-m", "-p", str(p)], lines)
     return pts + utm + mgrs_in
 
 
@@ -310,6 +373,14 @@ def sixteenths(text):
     """Metres rounded to 1/16 m, written exactly (4 decimals)."""
     v = round(Fraction(text) * 16)
     return "%d.%04d" % (v // 16, v % 16 * 625)
+
+
+def centimetres(text):
+    return "%.2f" % Fraction(text)
+
+
+def millimetres(text):
+    return "%.3f" % Fraction(text)
 
 
 # One line of each kind of input GeoConvert refuses, per option set: the
@@ -336,6 +407,10 @@ BAD_INPUTS = [
     "31s 500000 20000400", "31s 0 899999", "31n 0 9600000.5",
     "n 500000 0", "n 2000000 3000000", "s 3500000 2000000",
     "s 2000000 -500",
+    # beyond a limit by less than the Q47.16 LSB, quoted as given
+    "31n 1000000.000001 0", "31n -0.000001 4000000", "31n -0.3 4000000",
+    "31s 500000 899999.999999", "n 1199999.999999 2000000",
+    "31n 500000 9600000.0000001", "31n 99999.999999 4000000",
     # MGRS
     "38", "1", "0", "38SM", "38SMB448", "38SMBX488", "38SMB44X", "38IMB4488",
     "38SIB4488", "61SMB4488", "138SMB4488", "038SMB4488", "00SMB",
@@ -343,6 +418,7 @@ BAD_INPUTS = [
     "YZZ", "AJI", "CAA", "cAA", "aB00", "38Sxb", "38S8", "38-S", "3.8SMB",
     "38SMB+4", "38NMB4488", "38nmb4488", "38NMB44X", "38XMB4488", "32VFE00",
     "38SMB4488448844884488448", "38SMB448844884488448844884488",
+    "38SMB4414012345678470612345678",
     "01KRH74337", "03T4770494740", "1156086569070SMB", "99999999999",
     # GeoConvert names the fourth ':' component after its separators
     "3\":9 10", "060\":9 11295",

@@ -489,6 +489,44 @@ class UnitsCommand(unittest.TestCase):
             self.assertLessEqual(abs(float(got) - float(ref)),
                                  1e-12 * abs(float(ref)), case[0])
 
+    def test_products_written_with_blanks(self):
+        """A blank between units joins a product where one cut of the
+        words into FROM and TO gives one dimension on both sides, against
+        GNU units 2.22 (asked with FROM and TO apart); where two cuts do,
+        an error that says how to write it."""
+        import shutil
+        cases = [("1 N m ft lbf", "1 N m", "ft lbf"),
+                 ("2 kg m/s2 lbf", "2 kg m/s2", "lbf"),
+                 ("3 N m ft*lbf", "3 N m", "ft*lbf"),
+                 ("4 ft*lbf N m", "4 ft*lbf", "N m"),
+                 ("5 kW hr MJ", "5 kW hr", "MJ"),
+                 ("6 lbf ft N m", "6 lbf ft", "N m"),
+                 ("7 mi km", "7 mi", "km"),
+                 ("8 kg m s^-2 dyne", "8 kg m s^-2", "dyne")]
+        code, out = units(*[c[0] for c in cases])
+        self.assertEqual(0, code, out)
+        self.assertEqual("0.737562149277265", out[0])
+        if shutil.which("units") is not None:
+            sys.path.insert(0, os.path.join(TOP, "tests", "ref"))
+            import gen_units
+            want = gen_units.units_batch([(c[1], c[2]) for c in cases])
+            for case, got, ref in zip(cases, out, want):
+                self.assertLessEqual(abs(float(got) - float(ref)),
+                                     1e-12 * abs(float(ref)), case[0])
+        # two cuts fit: m/s | s ft/s^2 and m/s s | ft/s^2
+        code, out = units("1 m/s s ft/s^2", "1 rad rad rad", "1 kg m s",
+                          "1 m/s*s ft/s^2")
+        self.assertEqual(1, code)
+        for line in out[:2]:
+            self.assertTrue(line.startswith("ERROR: the units split into "
+                                            "FROM and TO in more than one "
+                                            "way"), line)
+        # no cut fits: the first two words and their own error
+        self.assertEqual("ERROR: unexpected text after the units "
+                         "(DRDC_E_TRAILING)", out[2])
+        self.assertEqual("ERROR: m/s*s and ft/s^2 measure different "
+                         "quantities (DRDC_E_DIMENSION)", out[3])
+
     def test_expression_errors(self):
         code, out = units("1 degC/s K/s", "1 m/ m", "1 dB 1", "1 km/h kg",
                           "1 (((((m))))) m", "1 lightyear^3/nm^3 m^3/m^3")
@@ -567,7 +605,8 @@ class GeoCommand(unittest.TestCase):
             for lon in (-180, -6, 0, 2.999999999, 3, 6, 9, 12, 21, 33, 42, 179.999999999):
                 lines.append("%s %s" % (lat, lon))
         cls.LINES = lines + ups
-        cls.UTM = geoconvert(["-u", "-p", "9"], lines)
+        # the same points in UTM and, the last 204, UPS
+        cls.UTM = geoconvert(["-u", "-p", "9"], cls.LINES)
 
     def setUp(self):
         import shutil
@@ -605,11 +644,11 @@ class GeoCommand(unittest.TestCase):
         self.assertEqual(0, self.compare([], self.LINES))
 
     def test_utm_input(self):
-        for args in (["-g", "-p", "3"], ["-u", "-p", "3"], ["-c", "-p", "2"]):
+        # GeoConvert's own 9 decimals of a metre, carried in full
+        for args in (["-g", "-p", "7"], ["-u", "-p", "3"], ["-c", "-p", "7"]):
             self.assertEqual(0, self.compare(args, self.UTM[:-204]))
-        # UPS input: near a pole the 15 um of a Q47.16 easting are a large
-        # angle of longitude (1e-7 degree 3 km from the pole), so 1e-5
-        for args in (["-g"], ["-u", "-p", "3"]):
+        # UPS input, the poles included
+        for args in (["-g", "-p", "7"], ["-u", "-p", "9"]):
             self.assertEqual(0, self.compare(args, self.UTM[-204:]))
 
     def test_mgrs_output(self):
@@ -650,6 +689,287 @@ class GeoCommand(unittest.TestCase):
         self.assertEqual(0, run("geo", "--help").returncode)
         self.assertEqual(2, run("geo", "-x").returncode)
         self.assertEqual(2, run("geo", "-p", "x").returncode)
+
+
+def dms_units(word):
+    """A -d word (DDdMM'SS.sss"H) as a signed integer of its last digit."""
+    m = re.fullmatch(r"(\d+)d(\d+)'(\d+)\.(\d+)\"([NSEW])", word)
+    d, mi, sec, frac, h = m.groups()
+    v = ((int(d) * 60 + int(mi)) * 60 + int(sec)) * 10 ** len(frac) + int(frac)
+    return -v if h in "SW" else v
+
+
+def decimal_units(word):
+    """A decimal word as a signed integer of its last digit."""
+    return int(word.replace(".", ""))
+
+
+def mgrs_units(word):
+    """An MGRS word: its letters and the easting and northing digits."""
+    m = re.fullmatch(r"(\d*[A-Z]+)(\d*)", word)
+    digits = m.group(2)
+    return m.group(1), int(digits[:len(digits) // 2] or 0), \
+        int(digits[len(digits) // 2:] or 0)
+
+
+class GeoFullPrecision(unittest.TestCase):
+    """drdc geo from UTM/UPS and MGRS input given to the centimetre and
+    the millimetre, finer than the library's Q47.16 metres (15 um): the
+    input's digits below Q47.16 move the library's results through its
+    derivatives, so the output agrees with GeoConvert to one unit of the
+    last printed digit. 10 000 random lines (seed 35) over every zone,
+    both hemispheres (northings across the equator too), the UPS caps and
+    MGRS of 7 and 8 digits; one GeoConvert call makes the MGRS lines, one
+    converts the batch.
+
+    Where GeoConvert itself is off: near a UPS pole, reading each
+    coordinate into a double (and forming x - 2 000 000 m or an MGRS
+    cell's centre) rounds it by at most 2^-30 m, which turns the
+    direction from the pole by 2^-30 m / rho. That much, with the one
+    unit, is allowed in the longitude (and the convergence, which is
+    the longitude in UPS); it reaches one unit of the 12th decimal of a
+    degree within 53 km of a pole. The exact values there are checked
+    in test_near_a_pole_against_the_exact_inverse."""
+
+    LINES = None
+    SEED = 35
+    COUNT = 10000
+    # GeoConvert's input rounding near a UPS pole, metres
+    DOUBLE_INPUT = 2.0 ** -30
+    # metres per radian of colatitude at the UPS pole, rounded down:
+    # k0 a^2 / b = 0.994 x 6 399 593.6 m
+    POLAR_RADIUS = 6.36e6
+
+    @classmethod
+    def setUpClass(cls):
+        import random
+        import shutil
+        if shutil.which("GeoConvert") is None:
+            return
+        rng = random.Random(cls.SEED)
+        lines, ups, geographic = [], [], []
+        for i in range(cls.COUNT):
+            decimals = 2 + i % 2          # centimetres, millimetres
+            kind = i % 6
+            if kind < 2:                  # UTM
+                north = rng.random() < 0.5
+                northing = (rng.uniform(-500e3, 9600e3) if north else
+                            rng.uniform(900e3, 10500e3))
+                lines.append("%02d%s %.*f %.*f" % (
+                    rng.randint(1, 60), "n" if north else "s", decimals,
+                    rng.uniform(0, 1e6), decimals, northing))
+            elif kind < 4:                # UPS
+                north = rng.random() < 0.5
+                lo, hi = (1200e3, 2800e3) if north else (700e3, 3300e3)
+                lines.append("%s %.*f %.*f" % (
+                    "n" if north else "s", decimals, rng.uniform(lo, hi),
+                    decimals, rng.uniform(lo, hi)))
+            else:                         # MGRS, from a geographic point
+                lat = (rng.uniform(-90, 90) if rng.random() < 0.3 else
+                       rng.uniform(-80, 84))
+                geographic.append((len(lines), decimals, "%.9f %.9f" % (
+                    lat, rng.uniform(-180, 180))))
+                lines.append(None)
+        mgrs = geoconvert(["-m", "-p", "3"], [g[2] for g in geographic])
+        for (i, decimals, _), text in zip(geographic, mgrs):
+            letters, e, n = re.fullmatch(r"(\d*[A-Z]+)(\d{8})(\d{8})",
+                                         text).groups()
+            cut = 8 - (3 - decimals)      # 7 digits: 1 cm, 8: 1 mm
+            lines[i] = letters + e[:cut] + n[:cut]
+        cls.LINES = lines
+
+    def setUp(self):
+        if self.LINES is None:
+            self.skipTest("GeoConvert not installed")
+
+    def allowance(self, line, lat, unit_degrees):
+        """GeoConvert's input rounding near a UPS pole, in units of the
+        longitude's last digit (0 in UTM)."""
+        words = line.split()
+        ups = (words[0] in ("n", "s") if len(words) == 3 else
+               re.match(r"[ABYZ]", line) is not None)
+        if not ups:
+            return 0.0
+        rho = max(math.radians(90 - abs(lat)) * self.POLAR_RADIUS, 1e-3)
+        return math.degrees(self.DOUBLE_INPUT / rho) / unit_degrees
+
+    def check(self, args, read, lines, unit_degrees, angles=(1,),
+              words=None):
+        """Every word of drdc's line (or those numbered in `words`)
+        within one unit of GeoConvert's (as integers of the last digit,
+        from read()), the words of `angles` also within the allowance;
+        returns the count of identical lines."""
+        code, out = geo(args, lines)
+        want = geoconvert(args, lines)
+        lat = [float(w.split()[0]) for w in geoconvert(["-g"], lines)]
+        self.assertEqual(0, code)
+        self.assertEqual(len(lines), len(want))
+        identical = 0
+        for line, got, ref, phi in zip(lines, out, want, lat):
+            g, r = got.split(), ref.split()
+            self.assertEqual(len(r), len(g), (line, got, ref))
+            for i, (a, b) in enumerate(zip(g, r)):
+                if words is not None and i not in words:
+                    continue
+                d = abs(read(a) - read(b))
+                if i in angles:
+                    # the antimeridian: 180 and -180 are one longitude
+                    d = min(d, abs(abs(read(a) - read(b)) -
+                                   360 * round(1 / unit_degrees)))
+                    bound = 1 + self.allowance(line, phi, unit_degrees)
+                else:
+                    bound = 1
+                self.assertLessEqual(d, bound, "%s %s: %r != GeoConvert %r"
+                                     % (" ".join(args), line, got, ref))
+            identical += (got == ref)
+        return identical
+
+    def test_geographic_output_to_one_unit_of_1e_12_degree(self):
+        identical = self.check(["-g", "-p", "7"], decimal_units, self.LINES,
+                               1e-12, angles=(1,))
+        # the last digit differs only next to a rounding boundary: the
+        # library's value and GeoConvert's are within about 1 nas, 0.28
+        # of the last digit (measured: 82 % identical)
+        self.assertGreater(identical, len(self.LINES) * 3 // 4)
+
+    def test_the_issue_example(self):
+        # rounded to Q47.16 first, this printed 9.018021884391
+        # 78.125275235259: 67 units off
+        self.assertEqual((0, ["9.018021884324 78.125275235249"]),
+                         geo(["-g", "-p", "7"], ["44n 183916.22 998088.32"]))
+
+    def test_other_outputs_to_one_unit(self):
+        lines = self.LINES[:3000]
+        # DMS to 1e-9 second (1 nas): the library's values are within
+        # 1 nas of the exact ones, GeoConvert's within half of one
+        self.check(["-d", "-p", "8"], dms_units, lines, 1e-9 / 3600,
+                   angles=(1,))
+        # the convergence (12 decimals of a degree) and the scale (14; at
+        # 15, -p 8, the convergence stays at 12)
+        self.check(["-c", "-p", "7"], decimal_units, lines, 1e-12,
+                   angles=(0,))
+        self.check(["-c", "-p", "8"], decimal_units, lines, 1e-12,
+                   angles=(), words=(1,))
+        # UTM/UPS in the input's own zone: its own decimals, exactly
+        # (GeoConvert's double of a 7-digit northing may be one unit off
+        # at 1e-9 m)
+        code, out = geo(["-u", "-p", "9"], lines)
+        for line, got, ref in zip(lines, out,
+                                  geoconvert(["-u", "-p", "9"], lines)):
+            self.assertEqual(got.split()[0], ref.split()[0], line)
+            for a, b in zip(got.split()[1:], ref.split()[1:]):
+                self.assertLessEqual(abs(decimal_units(a) -
+                                         decimal_units(b)), 1, line)
+        # MGRS at 1 um from the input's own digits, truncated exactly
+        # (GeoConvert truncates its double, which may lie 1 um below)
+        code, out = geo(["-m", "-p", "6"], lines)
+        for line, got, ref in zip(lines, out,
+                                  geoconvert(["-m", "-p", "6"], lines)):
+            if ref.startswith("ERROR"):
+                self.assertEqual(ref, got, line)
+                continue
+            (la, ea, na), (lb, eb, nb) = mgrs_units(got), mgrs_units(ref)
+            self.assertEqual(lb, la, line)
+            self.assertLessEqual(max(abs(ea - eb), abs(na - nb)), 1, line)
+
+    def test_input_digits_are_printed_as_given(self):
+        lines = ["31n 500000.123456 4000000.999999",
+                 "38SMB4414012345684706123456", "s 2000000.001 1999999.999",
+                 "31s 500000 10000000.000001"]
+        code, out = geo(["-u", "-p", "9"], lines)
+        self.assertEqual(["31n 500000.123456000 4000000.999999000",
+                          "38n 444140.123456500 3684706.123456500",
+                          "s 2000000.001000000 1999999.999000000",
+                          "31n 500000.000000000 0.000001000"], out)
+        code, out = geo(["-m", "-p", "6"], lines)
+        self.assertEqual(["31SEA0000012345600000999999",
+                          "38SMB4414012345684706123456",
+                          "BAM0000000100099999999000",
+                          "31NEA0000000000000000000001"], out)
+
+    def test_range_limits_hold_for_the_exact_input(self):
+        # beyond a limit by less than half the Q47.16 LSB: an error, as
+        # in GeoConvert, quoting the input's own kilometres
+        lines = ["31n 1000000.000001 0", "31n -0.000001 4000000",
+                 "31n -0.3 4000000", "31s 500000 899999.999999",
+                 "n 1199999.999999 2000000", "31n 1000000 0"]
+        self.assertEqual(geoconvert(["-g"], lines), geo(["-g"], lines)[1])
+        lines = ["31n 99999.999999 4000000", "31n 900000.000001 4000000",
+                 "31n 500000 9500000.000001", "31n 100000.0000001 4000000"]
+        self.assertEqual(geoconvert(["-m", "-p", "6"], lines),
+                         geo(["-m", "-p", "6"], lines)[1])
+
+    def test_signed_zeros_as_geoconvert(self):
+        # a northing of -0 in the north is a latitude of -0 to GeoConvert,
+        # just south of the equator; a tiny negative one moves the point
+        # to the south, labelled so
+        lines = ["31n 500000 -0", "31n 500000 -0.0", "31s 500000 10000000",
+                 "31n -0 0", "28n 1e-41 -0.0", "31n 400000 -0",
+                 "31n 400000 -1e-40", "31n 500000 -1e-40"]
+        for args in (["-g"], ["-u", "-p", "9"], ["-m"], ["-c"], ["-d"],
+                     ["-m", "-s"], ["-u", "-s"], ["-c", "-s"],
+                     ["-u", "-z", "31s"], ["-m", "-z", "31s"]):
+            self.assertEqual(geoconvert(args, lines), geo(args, lines)[1],
+                             args)
+
+    def test_near_a_pole_against_the_exact_inverse(self):
+        """UPS points 1 mm to 300 km from a pole against the polar
+        stereographic inverse evaluated with mpmath at 40 digits: within
+        1 nas plus the printed rounding (1.8 nas at 1e-12 degree), where
+        GeoConvert's own longitude is off by up to 2^-30 m / rho."""
+        try:
+            import mpmath
+        except ImportError:
+            self.skipTest("mpmath not on PYTHONPATH (./waf check sets it)")
+        import random
+        from fractions import Fraction
+        mp = mpmath.mp
+        dps, mp.dps = mp.dps, 40
+        self.addCleanup(setattr, mp, "dps", dps)
+        a = mp.mpf(6378137)
+        f = 1 / mp.mpf("298.257223563")
+        e = mp.sqrt(f * (2 - f))
+        # 2 k0 a / c: t = rho / this (Karney's polar stereographic)
+        c = mp.sqrt(1 - e * e) * mp.exp(e * mp.atanh(e))
+        scale = 2 * mp.mpf("0.994") * a / c
+
+        def exact(hemisphere, easting, northing):
+            x, y = (mp.mpf(Fraction(v).numerator) / Fraction(v).denominator
+                    - 2000000 for v in (easting, northing))
+            t = mp.hypot(x, y) / scale
+            north = hemisphere == "n"
+            if t == 0:
+                # GeoConvert's atan2(+0, -0) at the north pole
+                return (90, 180) if north else (-90, 0)
+            taup = (1 / t - t) / 2
+
+            def residual(tau):
+                sigma = mp.sinh(e * mp.atanh(e * tau / mp.sqrt(1 + tau ** 2)))
+                return (tau * mp.sqrt(1 + sigma ** 2) -
+                        sigma * mp.sqrt(1 + tau ** 2) - taup)
+            lat = mp.degrees(mp.atan(mp.findroot(residual, taup)))
+            lon = mp.degrees(mp.atan2(x, -y if north else y))
+            return (lat if north else -lat), lon
+
+        rng = random.Random(36)
+        lines = []
+        for _ in range(300):
+            rho = 10 ** rng.uniform(-3, 5.5)
+            theta = rng.uniform(0, 2 * math.pi)
+            decimals = rng.choice([2, 3, 6])
+            lines.append("%s %.*f %.*f" % (
+                rng.choice("ns"), decimals,
+                2000000 + rho * math.cos(theta), decimals,
+                2000000 + rho * math.sin(theta)))
+        code, out = geo(["-p", "7"], lines)
+        self.assertEqual(0, code)
+        nas = mp.mpf(1) / 3600000000000
+        for line, got in zip(lines, out):
+            lat, lon = exact(*line.split())
+            a_lat, a_lon = (mp.mpf(w) for w in got.split())
+            d_lon = (a_lon - lon + 180) % 360 - 180
+            for d in (a_lat - lat, d_lon):
+                self.assertLess(abs(d) / nas, 1 + 1.8, (line, got))
 
 
 class GeoParity(unittest.TestCase):
@@ -713,7 +1033,8 @@ class GeoParity(unittest.TestCase):
                  "31n 500000 4e6x", "31n 500000 1.2.3", "31n 500000 +-3",
                  "31n 500000 .", "31n 500000 1e11", "5e5 4e6 31n",
                  "31n 0000000000000000000000000000000000000500000 4000000",
-                 "31n 500000.25e0 39999995e-1"]
+                 "31n 500000.25e0 39999995e-1", "31n 500000 0e100",
+                 "31n 500000 -0e100", "31n 0e-100 1e-100"]
         for args in (["-u", "-p", "3"], ["-g"]):
             self.assertEqual(geoconvert(args, lines), geo(args, lines)[1])
 

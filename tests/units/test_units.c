@@ -89,10 +89,12 @@ static size_t index_of(const drdc_unit_t *u)
   return i;
 }
 
-/* Whether a unit is eV, the one factor below 2^-56 (documented). */
+/* Whether a unit is eV (or ev), the one factor below 2^-56
+ * (documented). */
 static int is_ev(const char *name)
 {
-  return (name[0] == 'e') && (name[1] == 'V') && (name[2] == '\0');
+  return (name[0] == 'e') && ((name[1] == 'V') || (name[1] == 'v')) &&
+         (name[2] == '\0');
 }
 
 /* At least 80 units; names unique (find() gives back each row itself);

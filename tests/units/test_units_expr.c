@@ -181,7 +181,50 @@ static void test_names_and_prefixes(void)
   TEST_ASSERT_EQUAL_INT(DRDC_E_UNKNOWN_UNIT, parse_status("kft"));
   TEST_ASSERT_EQUAL_INT(DRDC_E_UNKNOWN_UNIT, parse_status("mdegC"));
   TEST_ASSERT_EQUAL_INT(DRDC_E_UNKNOWN_UNIT, parse_status("dB"));
-  TEST_ASSERT_EQUAL_INT(DRDC_E_UNKNOWN_UNIT, parse_status("B"));
+}
+
+/* GNU units' abbreviations of the table's units are names (their factors
+ * against GNU units: tests/units/vectors_units.h); an exact name wins
+ * over a prefix reading (pt, ct), and where the SI reads a GNU
+ * abbreviation otherwise the SI wins (Gs, nt) or the name stays
+ * unknown (b, a, smi). The byte's B takes no prefix: dB stays no
+ * unit. */
+static void test_gnu_abbreviations(void)
+{
+  assert_same("mi", "mile");
+  assert_same("mi/hr", "mph");
+  assert_same("nmile", "nmi");
+  assert_same("ly", "lightyear");
+  assert_same("ch", "chain");
+  assert_same("cc", "cm^3");
+  assert_same("qt", "quart");
+  assert_same("pt", "pint");
+  assert_same("tbsp", "tablespoon");
+  assert_same("Tb", "tablespoon");
+  assert_same("tsp", "teaspoon");
+  assert_same("gm", "g");
+  assert_same("lbm", "lb");
+  assert_same("ct", "carat");
+  assert_same("d", "day");
+  assert_same("da", "24 h");
+  assert_same("wk", "week");
+  assert_same("yr", "year");
+  assert_same("rev", "turn");
+  assert_same("dyn", "dyne");
+  assert_same("pa", "Pa");
+  assert_same("psia", "psi");
+  assert_same("ev", "eV");
+  assert_same("coul", "A s");
+  assert_same("hz", "Hz");
+  assert_same("degK", "K");
+  assert_same("lfm", "ft/min");
+  assert_same("B", "8 bit");
+  assert_same("Gs", "1000000000 s");
+  assert_same("nt", "mg");
+  TEST_ASSERT_EQUAL_INT(DRDC_E_UNKNOWN_UNIT, parse_status("kB"));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_UNKNOWN_UNIT, parse_status("b"));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_UNKNOWN_UNIT, parse_status("a"));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_UNKNOWN_UNIT, parse_status("smi"));
 }
 
 /* A temperature with an offset only alone; K and degR anywhere. */
@@ -343,6 +386,7 @@ void suite_units_expr(void)
   RUN_TEST(test_examples);
   RUN_TEST(test_precedence);
   RUN_TEST(test_names_and_prefixes);
+  RUN_TEST(test_gnu_abbreviations);
   RUN_TEST(test_temperatures);
   RUN_TEST(test_factor_overflow);
   RUN_TEST(test_running_product_beyond_range);

@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include <drdc/geo.h>
+#include <drdc/fixed_sqrt.h>
 #include <drdc/geo_mgrs.h>
 #include <drdc/version.h>
 
@@ -23,6 +24,8 @@
 #include "geo_mgrs_text.h"
 #include "geo_text.h"
 #include "lines.h"
+
+__extension__ typedef __int128 i128;
 
 static const char usage[] =
     "usage: drdc geo [-g | -d | -: | -u | -m | -c] [-z ZONE | -s | -t | -S | "
@@ -73,8 +76,11 @@ static const char usage[] =
     "(-g, -c: PREC 7; the library's unit is 1 nas, 2.8e-13 degree), 9 of\n"
     "a second (-d: PREC 8) and 4 of a metre (-u: PREC 4; 1/65536 m), and\n"
     "MGRS computed from such metres with at most 9 digits (PREC 4).\n"
-    "UTM/UPS input is read to the nearest 1/65536 m. Latitude -0 (or 0S)\n"
-    "is just south of the equator, as in GeoConvert.\n"
+    "UTM/UPS and MGRS input keeps all its decimals: the library converts\n"
+    "the nearest 1/65536 m and the digits below move its results by their\n"
+    "derivatives there (within 1.5 nas of the exact input's values); -u\n"
+    "and -m write such input in its own zone with its own digits, exactly.\n"
+    "Latitude -0 (or 0S) is just south of the equator, as in GeoConvert.\n"
     "A line that cannot be converted gives GeoConvert's 'ERROR: <message>'\n"
     "(nan, inf, metres beyond 1e12 and angles beyond 1000000 degrees are\n"
     "errors here); the others go on and the exit status is 1 at the end;\n"
@@ -83,8 +89,9 @@ static const char usage[] =
 #define Q16_PER_M   INT64_C(65536)
 #define Q58_ONE     INT64_C(288230376151711744)
 #define NAS_PER_DEG GEO_TEXT_NAS_PER_DEGREE
-/* False northing of the southern UTM hemisphere, Q47.16 metres. */
-#define SOUTH_SHIFT (INT64_C(10000000) * Q16_PER_M)
+/* False northing of the southern UTM hemisphere, metres and Q47.16. */
+#define SOUTH_METRES INT64_C(10000000)
+#define SOUTH_SHIFT  (SOUTH_METRES * Q16_PER_M)
 
 /* Most decimals the library's values resolve (see the usage text). */
 #define DEGREE_DECIMALS_MAX         12
@@ -123,8 +130,17 @@ struct position {
   drdc_nas_t lon_calc;  /* lon within the library's [-540, 540) */
   bool geographic;      /* the input was 'LAT LON' */
   drdc_geo_utm_t u;     /* the output zone's coordinates */
-  bool u_exact;         /* u is the input exactly */
-  bool rezoned;         /* u was computed again for -z, -s or -t */
+  bool u_input;         /* u is the input's own grid position */
+  /* While u_input: the exact decimal text of the easting and northing
+   * (NULL where u holds the input exactly: MGRS cells of 1 m and more),
+   * whole metres added to the northing text since it was read (moves
+   * between the hemispheres), and what u's Q47.16 values lack of the
+   * text, 2^-48 m. */
+  const char *text[2];
+  int64_t text_add;
+  int64_t rest[2];
+  char cell[2][48]; /* MGRS input: its cell's easting and northing text */
+  bool rezoned;     /* u was computed again for -z, -s or -t */
   drdc_nas_t conv;
   drdc_q5_58_t k;
   char why[200]; /* the ERROR line's message when a step fails */
@@ -149,6 +165,17 @@ static int imin(int a, int b)
 static int imax(int a, int b)
 {
   return (a > b) ? a : b;
+}
+
+static int64_t pow10_i64(int n)
+{
+  int64_t p = 1;
+  int i;
+
+  for (i = 0; i < n; i++) {
+    p *= 10;
+  }
+  return p;
 }
 
 static int64_t floor_div(int64_t a, int64_t b)
@@ -221,38 +248,340 @@ static bool zone_range_error(struct position *pos, int zone)
                              sizeof pos->why);
 }
 
-static void set_computed_angle(geo_text_angle_t *a, drdc_nas_t nas)
+static void set_computed_angle(geo_text_angle_t *a, drdc_nas_t nas,
+                               bool negative)
 {
   a->nas = nas;
-  a->negative = (nas < 0);
+  a->negative = negative;
   a->exact = false;
   a->hemisphere = GEO_TEXT_NONE;
   a->too_large = false;
 }
 
-/* UTM/UPS -> geographic, then GeoConvert's FixHemisphere: a UTM northing
- * given in the other hemisphere is moved to the latitude's own. */
-static bool from_grid(struct position *pos)
-{
-  drdc_nas_t lat = 0;
-  drdc_nas_t lon = 0;
-  drdc_status_t st;
+/* What the library gives at a grid point, in this order: latitude,
+ * longitude and convergence (nas), point scale (Q5.58). */
+enum { AT_LAT, AT_LON, AT_CONV, AT_SCALE, AT_COUNT };
 
-  st = drdc_geo_from_utm(&pos->u, &lat, &lon, &pos->conv, &pos->k);
+/* Half the span of the finite differences below, Q47.16 LSB (0.98 mm). */
+#define STEP 64
+/* 2^32: the fine values below carry 32 bits below their unit, the rests
+ * 32 bits below the Q47.16 LSB (2^-48 m). */
+#define FINE_ONE ((i128)1 << 32)
+/* UPS false easting and northing (the pole), Q47.16. */
+#define UPS_POLE (INT64_C(2000000) * Q16_PER_M)
+/* UPS points within 2^30 LSB (16 km) of the pole along both axes take
+ * the polar treatment of polar_values(), which evaluates the direction
+ * 2^64 x 2^-48 m (65 km) out. */
+#define POLAR_NEAR (INT64_C(1) << 30)
+#define POLAR_OUT  ((i128)1 << 64)
+
+/* The library's values at u moved by `by` LSB along axis (0 easting, 1
+ * northing). */
+static drdc_status_t values_at(const drdc_geo_utm_t *u, int axis, int64_t by,
+                               int64_t v[AT_COUNT])
+{
+  drdc_geo_utm_t p = *u;
+
+  if (axis == 0) {
+    p.easting += by;
+  } else {
+    p.northing += by;
+  }
+  return drdc_geo_from_utm(&p, &v[AT_LAT], &v[AT_LON], &v[AT_CONV],
+                           &v[AT_SCALE]);
+}
+
+/* GeoConvert's message for the input refused with st (the coordinate of
+ * u that st names): it quotes the input's own value, which is the text's
+ * where pos has it. */
+static bool range_error(struct position *pos, const drdc_geo_utm_t *u,
+                        drdc_status_t st)
+{
+  int axis = (st == DRDC_E_EASTING) ? 0 : 1;
+  int decimals;
+
+  if (pos->u_input && (pos->text[axis] != NULL)) {
+    /* the most decimals of a metre that int64 holds for this value */
+    for (decimals = 15; decimals >= 0; decimals--) {
+      int64_t v = 0;
+      bool negative = false;
+
+      if (geo_text_metres_scaled(pos->text[axis],
+                                 (axis == 1) ? pos->text_add : 0, decimals,
+                                 false, &v, &negative)) {
+        return geo_grid_range_error_at(u, st, v, pow10_i64(decimals + 3),
+                                       negative, pos->why, sizeof pos->why);
+      }
+    }
+  }
+  return geo_grid_range_error(u, st, pos->why, sizeof pos->why);
+}
+
+/* The library's values at the exact point u + rest (rest: 2^-48 m along
+ * the easting and the northing) into fine[], in 2^-32 of their units:
+ * the values at u plus, along each axis, the derivative times the rest.
+ * The derivative is the central difference of the library's values 2
+ * STEP apart: its ends' roundings (1 nas, 334 LSB of Q5.58 at most)
+ * scaled by |rest| / (2 STEP) <= 1/256 add below 0.004 nas and 2 LSB; the
+ * neglected second-order term (rest^2 f''/2) is below 1e-6 nas in UTM,
+ * and 6e3 nas / d^2 in UPS d metres from a pole (1.4e-5 nas beyond
+ * POLAR_NEAR, which polar_values() keeps to). One-sided within STEP of
+ * the range's edge, and east of east_min (a pole's cusp). Fails, with
+ * GeoConvert's message, for a point beyond the range of its zone, also
+ * where u (rounded to a limit) is not. */
+static bool fine_values(struct position *pos, const drdc_geo_utm_t *u,
+                        const int64_t rest[2], int64_t east_min,
+                        i128 fine[AT_COUNT])
+{
+  int64_t at[AT_COUNT];
+  drdc_status_t st = values_at(u, 0, 0, at);
+  int axis;
+  int i;
+
   if ((st == DRDC_E_EASTING) || (st == DRDC_E_NORTHING)) {
-    return geo_grid_range_error(&pos->u, st, pos->why, sizeof pos->why);
+    return range_error(pos, u, st);
   }
   if (st != DRDC_OK) {
     return fail(pos, "%s", drdc_status_name(st));
   }
-  set_computed_angle(&pos->lat, lat);
-  set_computed_angle(&pos->lon, lon);
-  pos->lon_calc = lon;
-  if ((lat != 0) && (pos->u.north != (lat > 0))) {
+  for (i = 0; i < AT_COUNT; i++) {
+    fine[i] = (i128)at[i] * FINE_ONE;
+  }
+  for (axis = 0; axis < 2; axis++) {
+    int64_t ahead[AT_COUNT];
+    int64_t behind[AT_COUNT];
+    const int64_t *hi = ahead;
+    const int64_t *lo = behind;
+    int64_t span = 2 * STEP;
+    drdc_status_t st_ahead;
+    drdc_status_t st_behind;
+
+    if (rest[axis] == 0) {
+      continue;
+    }
+    st_ahead = values_at(u, axis, STEP, ahead);
+    st_behind = ((axis == 0) && ((u->easting - STEP) < east_min))
+                    ? DRDC_E_RANGE
+                    : values_at(u, axis, -STEP, behind);
+    st = (rest[axis] > 0) ? st_ahead : st_behind;
+    if ((st == DRDC_E_EASTING) || (st == DRDC_E_NORTHING)) {
+      /* the range's limits are whole kilometres, multiples of the LSB: the
+       * point lies beyond one exactly when u one LSB towards it does */
+      int64_t by = (rest[axis] > 0) ? 1 : -1;
+      int64_t edge[AT_COUNT];
+      drdc_geo_utm_t past = *u;
+
+      st = values_at(u, axis, by, edge);
+      if ((st == DRDC_E_EASTING) || (st == DRDC_E_NORTHING)) {
+        if (axis == 0) {
+          past.easting += by;
+        } else {
+          past.northing += by;
+        }
+        return range_error(pos, &past, st);
+      }
+    }
+    if (st_ahead != DRDC_OK) {
+      hi = at;
+      span = STEP;
+    }
+    if (st_behind != DRDC_OK) {
+      lo = at;
+      span = (hi == at) ? 0 : STEP;
+    }
+    for (i = 0; (i < AT_COUNT) && (span != 0); i++) {
+      /* longitude and convergence may wrap at +-180 degrees */
+      int64_t d = ((i == AT_LON) || (i == AT_CONV))
+                      ? reduce_longitude(hi[i] - lo[i])
+                      : (hi[i] - lo[i]);
+
+      fine[i] += ((i128)d * rest[axis]) / span;
+    }
+  }
+  return true;
+}
+
+/* A fine value (2^-32 units) rounded to its unit, halves up. */
+static int64_t round_fine(i128 v)
+{
+  i128 q = v / FINE_ONE;
+  i128 r = v % FINE_ONE;
+
+  if (r < 0) {
+    r += FINE_ONE;
+    q--;
+  }
+  return (int64_t)(q + (((2 * r) >= FINE_ONE) ? 1 : 0));
+}
+
+/* A point of UPS zone `pole` (hemisphere of pole->north) at the exact
+ * offsets (x, y) from the pole, 2^-48 m, as the nearest Q47.16 point and
+ * its rests; |x|, |y| < 2^96. */
+static void polar_point(const drdc_geo_utm_t *pole, i128 x, i128 y,
+                        drdc_geo_utm_t *u, int64_t rest[2])
+{
+  i128 off[2];
+  int axis;
+
+  off[0] = x;
+  off[1] = y;
+  *u = *pole;
+  for (axis = 0; axis < 2; axis++) {
+    i128 q = round_fine(off[axis]);
+
+    rest[axis] = (int64_t)(off[axis] - (q * FINE_ONE));
+    if (axis == 0) {
+      u->easting = UPS_POLE + (int64_t)q;
+    } else {
+      u->northing = UPS_POLE + (int64_t)q;
+    }
+  }
+}
+
+/* The input's exact offsets from the UPS pole as integers of one unit,
+ * off[], and that unit in 2^-48 m, *num / *den: 10^-D m with D as large
+ * as int64 allows (at most 18), from the text; or 2^-16 m, from u when
+ * it is the input exactly. False where the text's value is not held. */
+static bool polar_offsets(const struct position *pos, int64_t off[2], i128 *num,
+                          i128 *den)
+{
+  int decimals;
+  int axis;
+
+  if (pos->text[0] == NULL) {
+    off[0] = pos->u.easting - UPS_POLE;
+    off[1] = pos->u.northing - UPS_POLE;
+    *num = FINE_ONE;
+    *den = 1;
+    return true;
+  }
+  for (decimals = 18; decimals >= 0; decimals--) {
+    bool negative = false;
+
+    for (axis = 0; axis < 2; axis++) {
+      int64_t add = ((axis == 1) ? pos->text_add : 0) - (UPS_POLE / Q16_PER_M);
+
+      if (!geo_text_metres_scaled(pos->text[axis], add, decimals, false,
+                                  &off[axis], &negative)) {
+        break;
+      }
+    }
+    if (axis == 2) {
+      *num = (i128)1 << 48;
+      *den = (i128)pow10_i64(decimals);
+      return true;
+    }
+  }
+  return false;
+}
+
+/* UPS within POLAR_NEAR of a pole: the latitude and the scale depend
+ * only on the distance from the pole, the longitude and the convergence
+ * only on the direction, and differences at u would bend with the pole
+ * (or straddle it). So the first two are taken on the easting axis at
+ * the exact distance (correctly rounded from the input's own decimals;
+ * differences only east of the pole), the others 65 km out in the
+ * exact direction (the input's offsets from the pole scaled, a relative
+ * error of 2^-63 at most). fine[] stays as it is elsewhere and at the
+ * pole itself. */
+static bool polar_values(struct position *pos, i128 fine[AT_COUNT])
+{
+  int64_t off[2];
+  i128 num = 1;
+  i128 den = 1;
+  i128 big;
+  i128 radial[AT_COUNT];
+  i128 direction[AT_COUNT];
+  drdc_geo_utm_t pole = pos->u;
+  drdc_geo_utm_t u;
+  int64_t rest[2];
+  int axis;
+
+  for (axis = 0; axis < 2; axis++) {
+    int64_t q = ((axis == 0) ? pos->u.easting : pos->u.northing) - UPS_POLE;
+
+    if ((q >= POLAR_NEAR) || (q <= -POLAR_NEAR)) {
+      return true;
+    }
+  }
+  if (!polar_offsets(pos, off, &num, &den) ||
+      ((off[0] == 0) && (off[1] == 0))) {
+    return true;
+  }
+  pole.easting = UPS_POLE;
+  pole.northing = UPS_POLE;
+  polar_point(&pole, ((i128)drdc_fx_hypot_s64(off[0], off[1]) * num) / den, 0,
+              &u, rest);
+  if (!fine_values(pos, &u, rest, UPS_POLE, radial)) {
+    return false;
+  }
+  /* |off| < 2^63: the products stay below 2^127 */
+  big = (off[0] < 0) ? -(i128)off[0] : (i128)off[0];
+  big = ((off[1] < 0) ? -(i128)off[1] : (i128)off[1]) > big
+            ? ((off[1] < 0) ? -(i128)off[1] : (i128)off[1])
+            : big;
+  polar_point(&pole, ((i128)off[0] * POLAR_OUT) / big,
+              ((i128)off[1] * POLAR_OUT) / big, &u, rest);
+  if (!fine_values(pos, &u, rest, INT64_MIN, direction)) {
+    return false;
+  }
+  fine[AT_LAT] = radial[AT_LAT];
+  fine[AT_SCALE] = radial[AT_SCALE];
+  fine[AT_LON] = direction[AT_LON];
+  fine[AT_CONV] = direction[AT_CONV];
+  return true;
+}
+
+/* Whether coordinate `axis` of the input is a negative zero ("-0"). */
+static bool text_negative_zero(const struct position *pos, int axis)
+{
+  int64_t v = 0;
+  bool negative = false;
+
+  return (pos->text[axis] != NULL) &&
+         geo_text_metres_scaled(pos->text[axis],
+                                (axis == 1) ? pos->text_add : 0, 0, false, &v,
+                                &negative) &&
+         negative && (v == 0) && (pos->rest[axis] == 0) &&
+         ((axis == 0) ? pos->u.easting : pos->u.northing) == 0;
+}
+
+/* UTM/UPS -> geographic, then GeoConvert's FixHemisphere: a UTM northing
+ * given in the other hemisphere is moved to the latitude's own. The
+ * input's digits below Q47.16 (pos->rest) move every value by the
+ * library's derivatives (fine_values(), polar_values()). */
+static bool from_grid(struct position *pos)
+{
+  i128 fine[AT_COUNT];
+  i128 half_turn = (i128)(180 * NAS_PER_DEG) * FINE_ONE;
+
+  if (!fine_values(pos, &pos->u, pos->rest, INT64_MIN, fine)) {
+    return false;
+  }
+  if ((pos->u.zone == DRDC_GEO_ZONE_UPS) && !polar_values(pos, fine)) {
+    return false;
+  }
+  /* GeoConvert's longitude is in [-180, 180] */
+  if (fine[AT_LON] > half_turn) {
+    fine[AT_LON] -= 2 * half_turn;
+  } else if (fine[AT_LON] < -half_turn) {
+    fine[AT_LON] += 2 * half_turn;
+  }
+  /* a northing of -0 in the north gives GeoConvert a latitude of -0 */
+  set_computed_angle(
+      &pos->lat, round_fine(fine[AT_LAT]),
+      (fine[AT_LAT] < 0) ||
+          ((fine[AT_LAT] == 0) && pos->u.north && text_negative_zero(pos, 1)));
+  set_computed_angle(&pos->lon, round_fine(fine[AT_LON]), fine[AT_LON] < 0);
+  pos->lon_calc = pos->lon.nas;
+  pos->conv = round_fine(fine[AT_CONV]);
+  pos->k = round_fine(fine[AT_SCALE]);
+  if ((fine[AT_LAT] != 0) && (pos->u.north != (fine[AT_LAT] > 0))) {
     if (pos->u.zone == DRDC_GEO_ZONE_UPS) {
       return fail(pos, "UPS coordinates in the wrong hemisphere");
     }
     pos->u.northing += pos->u.north ? SOUTH_SHIFT : -SOUTH_SHIFT;
+    pos->text_add += pos->u.north ? SOUTH_METRES : -SOUTH_METRES;
     pos->u.north = !pos->u.north;
   }
   return true;
@@ -330,8 +659,8 @@ static bool read_utm(char **w, struct position *pos)
   char *zone_text;
   char *e;
   char *n;
-  bool e_exact;
-  bool n_exact;
+  bool e_exact = false;
+  bool n_exact = false;
   int zone = 0;
   bool north = true;
 
@@ -356,14 +685,54 @@ static bool read_utm(char **w, struct position *pos)
   }
   pos->u.zone = zone;
   pos->u.north = north;
-  if (!geo_grid_read_metres(e, &pos->u.easting, &e_exact, pos->why,
-                            sizeof pos->why) ||
-      !geo_grid_read_metres(n, &pos->u.northing, &n_exact, pos->why,
-                            sizeof pos->why)) {
+  if (!geo_grid_read_metres(e, &pos->u.easting, &pos->rest[0], &e_exact,
+                            pos->why, sizeof pos->why) ||
+      !geo_grid_read_metres(n, &pos->u.northing, &pos->rest[1], &n_exact,
+                            pos->why, sizeof pos->why)) {
     return false;
   }
-  pos->u_exact = e_exact && n_exact;
+  pos->u_input = true;
+  pos->text[0] = e;
+  pos->text[1] = n;
   return from_grid(pos);
+}
+
+/* The exact easting and northing of an MGRS cell finer than 1 m (prec
+ * 6..11 digits per coordinate) as decimal text in pos->cell: the whole
+ * metres of the 1 m cell that holds it (exact in Q47.16), then its
+ * digits below the metre, then a 5 for the centre (half the cell). */
+static bool mgrs_cell_text(const char *text, int32_t prec, bool centre,
+                           struct position *pos)
+{
+  char square[DRDC_GEO_MGRS_SIZE];
+  const char *digits = text;
+  drdc_geo_utm_t metre;
+  int axis;
+
+  /* zone digits, then the band, column and row letters */
+  while (isdigit((unsigned char)*digits)) {
+    digits++;
+  }
+  digits += 3;
+  snprintf(square, sizeof square, "%.*s%.5s%.5s", (int)(digits - text), text,
+           digits, digits + prec);
+  if (drdc_geo_mgrs_decode(square, &metre, NULL, NULL) != DRDC_OK) {
+    return false;
+  }
+  for (axis = 0; axis < 2; axis++) {
+    int64_t whole = ((axis == 0) ? metre.easting : metre.northing) / Q16_PER_M;
+    bool exact = false;
+    int64_t *q16 = (axis == 0) ? &pos->u.easting : &pos->u.northing;
+
+    snprintf(pos->cell[axis], sizeof pos->cell[axis], "%lld.%.*s%s",
+             (long long)whole, (int)(prec - 5), digits + (axis * prec) + 5,
+             centre ? "5" : "");
+    if (!geo_text_read_metres(pos->cell[axis], q16, &pos->rest[axis], &exact)) {
+      return false;
+    }
+    pos->text[axis] = pos->cell[axis];
+  }
+  return true;
 }
 
 static bool read_mgrs(const char *text, const struct options *o,
@@ -379,9 +748,13 @@ static bool read_mgrs(const char *text, const struct options *o,
     return geo_mgrs_error(text, st, pos->why, sizeof pos->why);
   }
   pos->u = o->corner ? corner : centre;
+  pos->u_input = true;
   /* corners are multiples of 10^(5 - prec) m, centres half a cell more:
-   * exact in Q47.16 down to 1 m cells (0.5 m) */
-  pos->u_exact = (prec <= 5);
+   * exact in Q47.16 down to 1 m cells (0.5 m); finer ones are carried
+   * as their decimal text */
+  if ((prec > 5) && !mgrs_cell_text(text, prec, !o->corner, pos)) {
+    return fail(pos, "MGRS %s: %s", text, drdc_status_name(DRDC_E_MGRS));
+  }
   return from_grid(pos);
 }
 
@@ -424,7 +797,11 @@ static bool output_zone(const struct options *o, struct position *pos)
         pos->u.northing += SOUTH_SHIFT;
       }
       pos->u.north = label;
-      pos->u_exact = false;
+      pos->u_input = false;
+      pos->text[0] = NULL;
+      pos->text[1] = NULL;
+      pos->rest[0] = 0;
+      pos->rest[1] = 0;
       pos->rezoned = true;
     }
   }
@@ -435,6 +812,7 @@ static bool output_zone(const struct options *o, struct position *pos)
                   "Attempt to transfer UPS coordinates between hemispheres");
     }
     pos->u.northing += o->north ? -SOUTH_SHIFT : SOUTH_SHIFT;
+    pos->text_add += o->north ? -SOUTH_METRES : SOUTH_METRES;
     pos->u.north = o->north;
   }
   return true;
@@ -467,6 +845,36 @@ static void put_metres(char *out, size_t size, int64_t v, int prec)
   }
 }
 
+/* Coordinate `axis` (0 easting, 1 northing) of u as put_metres() writes
+ * it; while u is the input, from its exact decimal text. */
+static void put_grid_metres(char *out, size_t size, const struct position *pos,
+                            int axis, int prec)
+{
+  int64_t v = 0;
+  bool negative = false;
+  const char *text = pos->text[axis];
+
+  if ((text == NULL) ||
+      !geo_text_metres_scaled(text, (axis == 1) ? pos->text_add : 0, prec,
+                              false, &v, &negative)) {
+    put_metres(out, size, (axis == 0) ? pos->u.easting : pos->u.northing, prec);
+  } else if (prec >= 0) {
+    geo_text_put_fixed(out, size, v, pow10_i64(prec), prec, negative);
+  } else {
+    size_t n;
+    int i;
+
+    geo_text_put_fixed(out, size, v, 1, 0, negative);
+    if (v != 0) {
+      n = strlen(out);
+      for (i = 0; (i < -prec) && ((n + 1u) < size); i++) {
+        out[n++] = '0';
+      }
+      out[n] = '\0';
+    }
+  }
+}
+
 static void put_degrees(char *out, size_t size, const geo_text_angle_t *a,
                         int decimals)
 {
@@ -483,6 +891,85 @@ static void put_dms(char *out, size_t size, const geo_text_angle_t *a, int prec,
 
   geo_text_put_dms(out, size, a->nas, a->negative,
                    a->exact ? prec : imin(prec, most), which, sep);
+}
+
+/* The upper end of MGRS's range of coordinate `axis` (0 easting, 1
+ * northing) of u, metres: 900 km for UTM eastings, 9 500 km and 10 000 km
+ * for UTM northings (north, south), 2 700 km and 3 200 km for UPS. */
+static int64_t mgrs_upper(const drdc_geo_utm_t *u, int axis)
+{
+  if (u->zone == DRDC_GEO_ZONE_UPS) {
+    return u->north ? INT64_C(2700000) : INT64_C(3200000);
+  }
+  if (axis == 0) {
+    return INT64_C(900000);
+  }
+  return u->north ? INT64_C(9500000) : SOUTH_METRES;
+}
+
+/* MGRS of the input's own exact position (pos->text), prec digits per
+ * coordinate, truncated from its decimal digits: the library writes the
+ * letters and the digits down to 1 m from *grid, the Q47.16 point
+ * nearest the input within the same whole metres (so the band comes
+ * from a latitude within 1 nas of the input's, and a refused point is
+ * quoted in the input's whole kilometres), and the digits below the
+ * metre come from the text. A coordinate exactly at the range's upper
+ * end, which MGRS excludes, is taken a little below it, all nines, as
+ * GeoConvert moves it down by 1.9e-9 m. */
+static drdc_status_t mgrs_from_text(const struct position *pos, int32_t prec,
+                                    drdc_geo_utm_t *grid, char *out,
+                                    size_t size)
+{
+  int64_t *coord[2] = {&grid->easting, &grid->northing};
+  int64_t below[2] = {0, 0}; /* digits below the metre */
+  int32_t fine = (prec > 5) ? (prec - 5) : 0;
+  char text[DRDC_GEO_MGRS_SIZE];
+  drdc_status_t st;
+  int axis;
+
+  *grid = pos->u;
+  for (axis = 0; axis < 2; axis++) {
+    int64_t add = (axis == 1) ? pos->text_add : 0;
+    int64_t whole = 0;
+    int64_t scaled = 0;
+    bool negative = false;
+
+    if (!geo_text_metres_scaled(pos->text[axis], add, 0, true, &whole,
+                                &negative) ||
+        !geo_text_metres_scaled(pos->text[axis], add, fine, true, &scaled,
+                                &negative)) {
+      return DRDC_E_RANGE;
+    }
+    below[axis] = scaled - (whole * pow10_i64(fine));
+    if ((*coord[axis] == (mgrs_upper(&pos->u, axis) * Q16_PER_M)) &&
+        (pos->rest[axis] == 0)) {
+      whole--;
+      below[axis] = pow10_i64(fine) - 1;
+    }
+    if (*coord[axis] < (whole * Q16_PER_M)) {
+      *coord[axis] = whole * Q16_PER_M;
+    } else if (*coord[axis] >= ((whole + 1) * Q16_PER_M)) {
+      *coord[axis] = ((whole + 1) * Q16_PER_M) - 1;
+    }
+  }
+  st = drdc_geo_mgrs_from_utm(grid, (prec > 5) ? 5 : prec, text, sizeof text);
+  if ((st != DRDC_OK) || (prec <= 5)) {
+    if ((st == DRDC_OK) && (snprintf(out, size, "%s", text) >= (int)size)) {
+      return DRDC_E_BUFFER;
+    }
+    return st;
+  }
+  {
+    /* the 5 easting digits end 5 before the 5 northing digits */
+    size_t n = strlen(text);
+
+    if (snprintf(out, size, "%.*s%0*lld%s%0*lld", (int)(n - 5u), text,
+                 (int)fine, (long long)below[0], text + (n - 5u), (int)fine,
+                 (long long)below[1]) >= (int)size) {
+      return DRDC_E_BUFFER;
+    }
+  }
+  return DRDC_OK;
 }
 
 /* The output line of a converted position; false for an ERROR line
@@ -520,7 +1007,7 @@ static bool write_output(const struct options *o, struct position *pos,
     const char *h = u->north ? (o->long_names ? "north" : "n")
                              : (o->long_names ? "south" : "s");
 
-    if (!pos->u_exact) {
+    if (!pos->u_input) {
       prec = imin(prec, METRE_DECIMALS_MAX);
     }
     if (u->zone == DRDC_GEO_ZONE_UPS) {
@@ -528,17 +1015,19 @@ static bool write_output(const struct options *o, struct position *pos,
     } else {
       snprintf(zone, sizeof zone, "%02d%s", (int)u->zone, h);
     }
-    put_metres(a, sizeof a, u->easting, prec);
-    put_metres(b, sizeof b, u->northing, prec);
+    put_grid_metres(a, sizeof a, pos, 0, prec);
+    put_grid_metres(b, sizeof b, pos, 1, prec);
     snprintf(out, size, "%.8s %.60s %.60s", zone, a, b);
     return true;
   }
   case MODE_MGRS: {
     int32_t prec = imax(-1, imin(6, p) + 5);
+    drdc_geo_utm_t refused = *u; /* what a range error quotes */
     drdc_status_t st;
 
+    /* a northern label keeps its northing (grid input rezoned) */
     bool south_of_equator = (pos->lat.nas == 0) && pos->lat.negative &&
-                            (u->zone != DRDC_GEO_ZONE_UPS);
+                            !u->north && (u->zone != DRDC_GEO_ZONE_UPS);
 
     if (pos->geographic && !pos->rezoned && !south_of_equator) {
       /* the library's own MGRS of a geographic point: its digits come
@@ -547,7 +1036,7 @@ static bool write_output(const struct options *o, struct position *pos,
     } else {
       drdc_geo_utm_t grid = *u;
 
-      if (!pos->u_exact) {
+      if (!pos->u_input) {
         prec = imin(prec, MGRS_DIGITS_FROM_METRES_MAX);
       }
       if (south_of_equator) {
@@ -558,18 +1047,26 @@ static bool write_output(const struct options *o, struct position *pos,
         grid.north = false;
         grid.northing = SOUTH_SHIFT - 1;
       }
-      st = drdc_geo_mgrs_from_utm(&grid, prec, out, size);
+      if (pos->text[0] != NULL) {
+        st = mgrs_from_text(pos, prec, &grid, out, size);
+        refused = grid;
+      } else {
+        st = drdc_geo_mgrs_from_utm(&grid, prec, out, size);
+      }
     }
     if ((st == DRDC_E_EASTING) || (st == DRDC_E_NORTHING)) {
-      return geo_grid_mgrs_range_error(u, st, pos->why, sizeof pos->why);
+      return geo_grid_mgrs_range_error(&refused, st, pos->why, sizeof pos->why);
     }
     return (st == DRDC_OK) ? true : fail(pos, "%s", drdc_status_name(st));
   }
   default: {
     int prec = imax(-5, imin(8, p));
-    bool west = (u->zone != DRDC_GEO_ZONE_UPS)
-                    ? (u->easting < (INT64_C(500000) * Q16_PER_M))
-                    : (pos->lon.nas < 0);
+    int64_t central = INT64_C(500000) * Q16_PER_M;
+    bool west =
+        (u->zone != DRDC_GEO_ZONE_UPS)
+            ? ((u->easting < central) ||
+               ((u->easting == central) && (pos->rest[0] < 0)))
+            : (pos->geographic ? (pos->lon.nas < 0) : pos->lon.negative);
     geo_text_angle_t conv;
 
     /* GeoConvert's double convergence is a signed zero on the central

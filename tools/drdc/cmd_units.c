@@ -27,21 +27,27 @@ static const char usage[] =
     "digits, as GNU units -t does. FROM and TO are unit expressions:\n"
     "\n"
     "  expression := term (('*' | '/') term)*\n"
-    "  term       := factor (' ' factor)*      (only inside parentheses:\n"
-    "                                           a blank outside them ends\n"
-    "                                           FROM)\n"
+    "  term       := factor (' ' factor)*      (a product)\n"
     "  factor     := (name | number | '(' expression ')') power?\n"
     "  power      := '^' ['-'] digits | digits  (s2 = s^2; -9..9)\n"
     "  name       := a unit, or SI prefix + SI unit (kN, mA, MPa, uT)\n"
     "\n"
     "A power binds tightest, then a blank, then '*' and '/' (left to\n"
-    "right): 'kg/(m s)' = kg/m/s. An exact unit name wins over a prefix\n"
-    "reading: 'min' is the minute, 'h' the hour (SI; GNU units' h is\n"
-    "Planck's constant), 'kt' the knot, 'rad' the radian. Prefixes:\n"
-    "Y Z E P T G M k h da d c m u (or the micro sign) n p f a z y, and\n"
-    "the words kilo, milli, micro, ...; on SI and SI-accepted units only\n"
-    "(m g s A K N Pa J W Hz C V ohm F H Wb T S rad sr l L t eV bar Wh Ah\n"
-    "gauss bit byte and their spelled names). Parentheses nest 4 deep.\n"
+    "right): 'kg/(m s)' = kg/m/s. A blank outside parentheses may end\n"
+    "FROM or join a product: of the cuts of the words after VALUE into\n"
+    "FROM and TO, the one that gives two expressions of one dimension is\n"
+    "taken ('1 N m ft lbf' is N m in ft lbf); where two do, the line is\n"
+    "an error, and 'N*m' or '(N m)' says which is meant. GNU units'\n"
+    "abbreviations are names too (mi, ly, qt, pt, gr, ct, d, wk, yr, B,\n"
+    "...). An exact unit name wins over a prefix reading: 'min' is the\n"
+    "minute, 'pt' the pint, 'h' the hour (SI; GNU units' h is Planck's\n"
+    "constant), 'kt' the knot, 'rad' the radian; 'Gs' and 'nt' are the\n"
+    "gigasecond and the nanotonne (SI; GNU units: gauss, newton).\n"
+    "Prefixes: Y Z E P T G M k h da d c m u (or the micro sign) n p f a\n"
+    "z y, and the words kilo, milli, micro, ...; on SI and SI-accepted\n"
+    "units only (m g s A K N Pa J W Hz C V ohm F H Wb T S rad sr l L t\n"
+    "eV bar Wh Ah gauss bit byte and their spelled names). Parentheses\n"
+    "nest 4 deep.\n"
     "'dB' is not a unit (logarithmic).\n"
     "\n"
     "Temperatures K, degC, degF, degR (and GNU's tempC, tempF, tempR,\n"
@@ -53,10 +59,10 @@ static const char usage[] =
 
 /* Split the next word off *s: blanks end it only outside parentheses,
  * so '(kg m)' is one word. */
-static const char *next_word(char **s, size_t *length)
+static const char *next_word(const char **s, size_t *length)
 {
-  char *p = *s;
-  char *start;
+  const char *p = *s;
+  const char *start;
   int depth = 0;
 
   while ((*p == ' ') || (*p == '\t')) {
@@ -74,6 +80,79 @@ static const char *next_word(char **s, size_t *length)
   *length = (size_t)(p - start);
   *s = p;
   return start;
+}
+
+/* FROM and TO of a line: where they lie in it and what they parse to. */
+struct unit_pair {
+  const char *from;
+  size_t from_n;
+  const char *to;
+  size_t to_n;
+  drdc_units_expr_t from_expr;
+  drdc_units_expr_t to_expr;
+};
+
+static int same_dimension(const drdc_units_expr_t *a,
+                          const drdc_units_expr_t *b)
+{
+  size_t i;
+
+  for (i = 0; i < DRDC_UNITS_DIMENSIONS; i++) {
+    if (a->dimension[i] != b->dimension[i]) {
+      return 0;
+    }
+  }
+  return 1;
+}
+
+/* The unit words of a line (after its value) cut into FROM and TO at
+ * every blank between words, so that a product may be written with a
+ * blank ('1 N m ft lbf'): the cuts that give two expressions of one
+ * dimension are counted, 0, 1 or 2 (more than one), and the first is
+ * written to *pair. Each try parses at most 255 characters a side
+ * (longer is refused at once), so a long line costs one pass. */
+static int split_units(const char *s, struct unit_pair *pair)
+{
+  const char *p = s;
+  const char *first;
+  const char *end;
+  size_t n;
+  int found = 0;
+
+  first = next_word(&p, &n);
+  if (n == 0u) {
+    return 0;
+  }
+  end = first + strlen(first);
+  while ((end > first) && ((end[-1] == ' ') || (end[-1] == '\t'))) {
+    end--;
+  }
+  for (;;) {
+    const char *cut = p; /* FROM ends here */
+    const char *q = p;
+    const char *to = next_word(&q, &n);
+    drdc_units_expr_t from_expr;
+    drdc_units_expr_t to_expr;
+
+    if (n == 0u) {
+      return found;
+    }
+    if ((drdc_units_parse(first, (size_t)(cut - first), &from_expr) ==
+         DRDC_OK) &&
+        (drdc_units_parse(to, (size_t)(end - to), &to_expr) == DRDC_OK) &&
+        same_dimension(&from_expr, &to_expr)) {
+      if (++found > 1) {
+        return found;
+      }
+      pair->from = first;
+      pair->from_n = (size_t)(cut - first);
+      pair->to = to;
+      pair->to_n = (size_t)(end - to);
+      pair->from_expr = from_expr;
+      pair->to_expr = to_expr;
+    }
+    p = to + n;
+  }
 }
 
 /* value in `from` -> value in `to`, through SI in long double (64-bit
@@ -142,20 +221,18 @@ static int parse_unit(const char *word, size_t n, drdc_units_expr_t *expr,
   return 0;
 }
 
-/* One line -> its output text; returns 0 or 1 (error line). */
-static int convert_line(char *line, char *out, size_t size)
+/* One line -> its output text; returns 0 or 1 (error line). FROM and TO
+ * are the one cut of the unit words that gives two expressions of one
+ * dimension (split_units()); with none, the first two words, and their
+ * own errors. */
+static int convert_line(const char *line, char *out, size_t size)
 {
-  drdc_units_expr_t from;
-  drdc_units_expr_t to;
+  struct unit_pair pair;
   const char *word;
-  const char *from_word;
-  const char *to_word;
-  size_t from_n;
-  size_t to_n;
   char *end;
   size_t n;
   long double v;
-  size_t i;
+  int splits;
 
   word = next_word(&line, &n);
   if (n == 0) {
@@ -169,31 +246,39 @@ static int convert_line(char *line, char *out, size_t size)
              word);
     return 1;
   }
-  from_word = next_word(&line, &from_n);
-  if (parse_unit(from_word, from_n, &from, out, size) != 0) {
+  splits = split_units(line, &pair);
+  if (splits > 1) {
+    snprintf(out, size,
+             "ERROR: the units split into FROM and TO in more than one way; "
+             "write a product as N*m or (N m) (%s)",
+             drdc_status_name(DRDC_E_SYNTAX));
     return 1;
   }
-  to_word = next_word(&line, &to_n);
-  if (parse_unit(to_word, to_n, &to, out, size) != 0) {
-    return 1;
-  }
-  word = next_word(&line, &n);
-  if (n != 0) {
-    snprintf(out, size, "ERROR: unexpected text after the units (%s)",
-             drdc_status_name(DRDC_E_TRAILING));
-    return 1;
-  }
-  for (i = 0; i < DRDC_UNITS_DIMENSIONS; i++) {
-    if (from.dimension[i] != to.dimension[i]) {
+  if (splits == 0) {
+    pair.from = next_word(&line, &pair.from_n);
+    if (parse_unit(pair.from, pair.from_n, &pair.from_expr, out, size) != 0) {
+      return 1;
+    }
+    pair.to = next_word(&line, &pair.to_n);
+    if (parse_unit(pair.to, pair.to_n, &pair.to_expr, out, size) != 0) {
+      return 1;
+    }
+    word = next_word(&line, &n);
+    if (n != 0) {
+      snprintf(out, size, "ERROR: unexpected text after the units (%s)",
+               drdc_status_name(DRDC_E_TRAILING));
+      return 1;
+    }
+    if (!same_dimension(&pair.from_expr, &pair.to_expr)) {
       snprintf(out, size,
                "ERROR: %.*s and %.*s measure different quantities (%s)",
-               (int)(from_n > 60 ? 60 : from_n), from_word,
-               (int)(to_n > 60 ? 60 : to_n), to_word,
+               (int)(pair.from_n > 60 ? 60 : pair.from_n), pair.from,
+               (int)(pair.to_n > 60 ? 60 : pair.to_n), pair.to,
                drdc_status_name(DRDC_E_DIMENSION));
       return 1;
     }
   }
-  snprintf(out, size, "%.15Lg", convert(v, &from, &to));
+  snprintf(out, size, "%.15Lg", convert(v, &pair.from_expr, &pair.to_expr));
   return 0;
 }
 

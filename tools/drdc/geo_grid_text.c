@@ -79,8 +79,8 @@ bool geo_grid_read_zone(const char *s, int *zone, bool *north, char *why,
   return true;
 }
 
-bool geo_grid_read_metres(const char *text, int64_t *q16, bool *exact,
-                          char *why, size_t why_size)
+bool geo_grid_read_metres(const char *text, int64_t *q16, int64_t *rest,
+                          bool *exact, char *why, size_t why_size)
 {
   const char *p = text;
   size_t digits = 0;
@@ -119,7 +119,7 @@ bool geo_grid_read_metres(const char *text, int64_t *q16, bool *exact,
     snprintf(why, why_size, "Extra text %s at end of %s", p, text);
     return false;
   }
-  if (!geo_text_read_metres(text, q16, exact)) {
+  if (!geo_text_read_metres(text, q16, rest, exact)) {
     snprintf(why, why_size, "Cannot decode %s (beyond 1e12 m)", text);
     return false;
   }
@@ -128,6 +128,15 @@ bool geo_grid_read_metres(const char *text, int64_t *q16, bool *exact,
 
 bool geo_grid_range_error(const drdc_geo_utm_t *u, drdc_status_t st, char *why,
                           size_t why_size)
+{
+  return geo_grid_range_error_at(
+      u, st, (st == DRDC_E_EASTING) ? u->easting : u->northing, KM_Q16, false,
+      why, why_size);
+}
+
+bool geo_grid_range_error_at(const drdc_geo_utm_t *u, drdc_status_t st,
+                             int64_t value, int64_t unit, bool negative,
+                             char *why, size_t why_size)
 {
   bool ups = (u->zone == DRDC_GEO_ZONE_UPS);
   bool easting = (st == DRDC_E_EASTING);
@@ -139,8 +148,7 @@ bool geo_grid_range_error(const drdc_geo_utm_t *u, drdc_status_t st, char *why,
       ups ? ups_km[u->north ? 1 : 0] : utm_km[easting ? 0 : (u->north ? 1 : 2)];
   char km[32];
 
-  geo_text_put_general(km, sizeof km, easting ? u->easting : u->northing,
-                       KM_Q16, false);
+  geo_text_put_general(km, sizeof km, value, unit, negative);
   snprintf(why, why_size,
            "%s %skm not in %s range for %c hemisphere [%dkm, %dkm]",
            easting ? "Easting" : "Northing", km, ups ? "UPS" : "UTM",

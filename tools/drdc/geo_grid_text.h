@@ -31,10 +31,11 @@ bool geo_grid_read_zone(const char *s, int *zone, bool *north, char *why,
  * Read metres of UTM/UPS input with geo_text_read_metres(); the number
  * is what GeoConvert's stream reads ([+-]digits[.digits], an exponent
  * only with its digits), and its messages for what is not one or has
- * more after it. Beyond 1e12 m a message of drdc's own.
+ * more after it. Beyond 1e12 m a message of drdc's own. *rest is what
+ * the rounding to Q47.16 dropped, in 2^-48 m (geo_text_read_metres()).
  */
-bool geo_grid_read_metres(const char *text, int64_t *q16, bool *exact,
-                          char *why, size_t why_size);
+bool geo_grid_read_metres(const char *text, int64_t *q16, int64_t *rest,
+                          bool *exact, char *why, size_t why_size);
 
 /**
  * GeoConvert's message for UTM/UPS coordinates u that the library
@@ -45,6 +46,17 @@ bool geo_grid_read_metres(const char *text, int64_t *q16, bool *exact,
  */
 bool geo_grid_range_error(const drdc_geo_utm_t *u, drdc_status_t st, char *why,
                           size_t why_size);
+
+/**
+ * The same, quoting value / unit km (unit > 0; a '-' when value < 0, or
+ * value is 0 and `negative`) instead of u's coordinate: the input's own
+ * value where it is finer than Q47.16.
+ *
+ * @return false.
+ */
+bool geo_grid_range_error_at(const drdc_geo_utm_t *u, drdc_status_t st,
+                             int64_t value, int64_t unit, bool negative,
+                             char *why, size_t why_size);
 
 /**
  * The same for MGRS output from u, whose ranges are narrower and half

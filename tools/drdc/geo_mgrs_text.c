@@ -130,13 +130,14 @@ bool geo_mgrs_error(const char *text, drdc_status_t st, char *why,
       }
       digits++;
     }
+    /* GeoConvert names an odd count before too many */
+    if ((digits % 2u) != 0u) {
+      snprintf(why, why_size, "Not an even number of digits in %s", rest);
+      return false;
+    }
     if (digits > MGRS_DIGITS_MAX) {
       snprintf(why, why_size, "More than %d digits in %s", MGRS_DIGITS_MAX,
                rest);
-      return false;
-    }
-    if ((digits % 2u) != 0u) {
-      snprintf(why, why_size, "Not an even number of digits in %s", rest);
       return false;
     }
   }

@@ -12,6 +12,7 @@
 #include "geo_text.h"
 
 __extension__ typedef unsigned __int128 u128;
+__extension__ typedef __int128 i128;
 
 /* Significant digits of metres kept when reading (digits * 65536 fits
  * 128 bits); later ones only tell whether the value is exact. */
@@ -440,20 +441,29 @@ bool geo_text_read_angle(const char *text, geo_text_angle_t *out, char *why,
   return true;
 }
 
-bool geo_text_read_metres(const char *s, int64_t *q16, bool *exact)
+/* A decimal number as read: (-1)^neg x digits x 10^scale, a little more
+ * in magnitude when `above`. */
+struct decimal {
+  bool neg;
+  u128 digits; /* the significant digits kept, as an integer */
+  int scale;
+  bool above; /* nonzero digits dropped after those kept */
+};
+
+/* [+-]digits[.digits][e[+-]digits] -> d; false when text is not that. */
+static bool read_decimal(const char *s, struct decimal *d)
 {
-  bool neg = false;
-  u128 digits = 0;    /* the significant digits kept, as an integer */
-  int kept = 0;       /* how many */
-  int scale = 0;      /* value = digits * 10^scale (before the exponent) */
-  bool above = false; /* nonzero digits dropped after those kept */
+  int kept = 0; /* significant digits kept */
   bool any = false;
   bool point = false;
   int exponent = 0;
-  u128 v;
 
+  d->neg = false;
+  d->digits = 0;
+  d->scale = 0;
+  d->above = false;
   if ((*s == '+') || (*s == '-')) {
-    neg = (*s == '-');
+    d->neg = (*s == '-');
     s++;
   }
   for (; isdigit((unsigned char)*s) || ((*s == '.') && !point); s++) {
@@ -463,14 +473,14 @@ bool geo_text_read_metres(const char *s, int64_t *q16, bool *exact)
     }
     any = true;
     if ((kept < METRE_DIGITS_KEPT) && ((kept > 0) || (*s != '0'))) {
-      digits = (digits * 10u) + (u128)(unsigned)(*s - '0');
+      d->digits = (d->digits * 10u) + (u128)(unsigned)(*s - '0');
       kept++;
-      scale -= point ? 1 : 0;
+      d->scale -= point ? 1 : 0;
     } else if (kept == METRE_DIGITS_KEPT) {
-      scale += point ? 0 : 1; /* a dropped integer digit */
-      above = above || (*s != '0');
+      d->scale += point ? 0 : 1; /* a dropped integer digit */
+      d->above = d->above || (*s != '0');
     } else {
-      scale -= point ? 1 : 0; /* a leading zero after the point */
+      d->scale -= point ? 1 : 0; /* a leading zero after the point */
     }
   }
   if (!any) {
@@ -492,32 +502,206 @@ bool geo_text_read_metres(const char *s, int64_t *q16, bool *exact)
     }
     exponent *= sign;
   }
-  if (*s != '\0') {
+  d->scale += exponent;
+  return *s == '\0';
+}
+
+/* A number of metres as whole metres and a decimal fraction: whole +
+ * (frac + a little when sticky) / 10^k, 0 <= frac < 10^k, k <= 38. */
+struct split_metres {
+  int64_t whole;
+  u128 frac;
+  int k;
+  bool sticky;
+};
+
+/* d + add metres -> *out; false beyond METRE_INTEGER_MAX (|add| is far
+ * below it, so whole stays within int64). */
+static bool split_metres(const struct decimal *d, int64_t add,
+                         struct split_metres *out)
+{
+  u128 digits = d->digits;
+  int k = -d->scale;
+  bool sticky = d->above;
+  u128 whole;
+  u128 frac;
+
+  if (digits == 0u) {
+    /* zero, whatever its exponent */
+    whole = 0;
+    frac = 0;
+    k = 0;
+  } else if (k <= 0) {
+    /* an integer; compared before the product, which could leave 128
+     * bits */
+    if ((-k > 12) || (digits > (METRE_INTEGER_MAX / pow10_u128(-k)))) {
+      return false;
+    }
+    whole = digits * pow10_u128(-k);
+    frac = 0;
+    k = 0;
+  } else {
+    if (k > 38) {
+      /* 38 decimals kept (10^38 < 2^127): the digits below only make
+       * the fraction a little more */
+      if ((k - 38) > 38) {
+        sticky = sticky || (digits != 0u);
+        digits = 0;
+      } else {
+        sticky = sticky || ((digits % pow10_u128(k - 38)) != 0u);
+        digits /= pow10_u128(k - 38);
+      }
+      k = 38;
+    }
+    whole = digits / pow10_u128(k);
+    frac = digits % pow10_u128(k);
+    if (whole > METRE_INTEGER_MAX) {
+      return false;
+    }
+  }
+  if (!d->neg) {
+    out->whole = (int64_t)whole;
+    out->frac = frac;
+  } else if ((frac == 0u) && !sticky) {
+    out->whole = -(int64_t)whole;
+    out->frac = 0;
+  } else {
+    /* -(w + (f + s) / 10^k) = -w - 1 + (10^k - f - s) / 10^k, and with
+     * 0 < s < 1 the fraction is 10^k - f - 1 and a little more */
+    out->whole = -(int64_t)whole - 1;
+    out->frac = pow10_u128(k) - frac - (sticky ? 1u : 0u);
+  }
+  out->whole += add;
+  out->k = k;
+  out->sticky = sticky;
+  return true;
+}
+
+bool geo_text_read_metres(const char *s, int64_t *q16, int64_t *rest,
+                          bool *exact)
+{
+  struct decimal d;
+  struct split_metres m;
+  u128 v;
+  u128 den;
+  u128 r;
+  u128 bits = 0;
+  i128 floor48; /* the value in 2^-48 m, rounded down, minus q16 */
+  bool below;   /* something lies below the 49 bits of the fraction */
+  int i;
+
+  if (!read_decimal(s, &d)) {
     return false;
   }
-  scale += exponent;
-  if (digits == 0u) {
+  if (d.digits == 0u) {
     v = 0;
-    *exact = !above;
-  } else if (scale >= 0) {
+    *exact = !d.above;
+  } else if (d.scale >= 0) {
     /* an integer: at most METRE_INTEGER_MAX */
     /* compared before the product, which could leave 128 bits (33
      * digits times 10^12) */
-    if ((scale > 12) || (digits > METRE_INTEGER_MAX / pow10_u128(scale))) {
+    if ((d.scale > 12) ||
+        (d.digits > METRE_INTEGER_MAX / pow10_u128(d.scale))) {
       return false;
     }
-    v = digits * pow10_u128(scale) * 65536u;
-    *exact = !above;
-  } else if (scale < -38) {
+    v = d.digits * pow10_u128(d.scale) * 65536u;
+    *exact = !d.above;
+  } else if (d.scale < -38) {
     v = 0; /* below 2^-17 m: 10^-38 of 33 digits */
     *exact = false;
   } else {
-    v = divide_round_even(digits * 65536u, pow10_u128(-scale), above, exact);
+    v = divide_round_even(d.digits * 65536u, pow10_u128(-d.scale), d.above,
+                          exact);
     if (v > (METRE_INTEGER_MAX * 65536u)) {
       return false;
     }
   }
-  *q16 = neg ? -(int64_t)v : (int64_t)v;
+  *q16 = d.neg ? -(int64_t)v : (int64_t)v;
+  if (!split_metres(&d, 0, &m)) {
+    return false;
+  }
+  /* the value in units of 2^-48 m: 49 bits of the fraction by long
+   * division (2 r < 2 x 10^38 < 2^128), then one rounding to nearest,
+   * ties to even */
+  den = pow10_u128(m.k);
+  r = m.frac;
+  for (i = 0; i < 49; i++) {
+    r <<= 1;
+    bits <<= 1;
+    if (r >= den) {
+      r -= den;
+      bits |= 1u;
+    }
+  }
+  below = (r != 0u) || m.sticky;
+  /* |value - q16| <= 2^-17 m: the differences fit 33 bits */
+  floor48 = ((i128)m.whole * ((i128)1 << 48)) + (i128)(bits >> 1) -
+            ((i128)*q16 * ((i128)1 << 32));
+  *rest = (int64_t)floor48;
+  if (((bits & 1u) != 0u) && (below || ((bits & 2u) != 0u))) {
+    *rest += 1;
+  }
+  /* a value off q16 by less than half of 2^-48 m keeps its side */
+  if ((*rest == 0) && !*exact) {
+    *rest = ((floor48 < 0) ? -1 : 1);
+  }
+  return true;
+}
+
+bool geo_text_metres_scaled(const char *text, int64_t add, int decimals,
+                            bool down, int64_t *out, bool *negative)
+{
+  struct decimal d;
+  struct split_metres m;
+  i128 q;           /* the value times 10^decimals, rounded down */
+  int half = 0;     /* what lies below q against one half: -1, 0 (a tie), 1 */
+  bool zero = true; /* nothing lies below q */
+
+  if ((decimals < -9) || (decimals > 18) || !read_decimal(text, &d) ||
+      !split_metres(&d, add, &m)) {
+    return false;
+  }
+  if (decimals >= 0) {
+    q = (i128)m.whole * (i128)pow10_u128(decimals);
+    if (decimals >= m.k) {
+      q += (i128)(m.frac * pow10_u128(decimals - m.k));
+      half = -1;
+      zero = !m.sticky;
+    } else {
+      u128 p = pow10_u128(m.k - decimals);
+      u128 r = m.frac % p;
+
+      q += (i128)(m.frac / p);
+      zero = (r == 0u) && !m.sticky;
+      half = ((2u * r) < p) ? -1 : (((2u * r) == p) && !m.sticky) ? 0 : 1;
+    }
+  } else {
+    int64_t p = (int64_t)pow10_u128(-decimals);
+    int64_t quotient = m.whole / p;
+    int64_t r = m.whole % p;
+
+    if (r < 0) {
+      r += p;
+      quotient--;
+    }
+    q = quotient;
+    zero = (r == 0) && (m.frac == 0u) && !m.sticky;
+    half = (r < (p / 2))                                     ? -1
+           : ((r == (p / 2)) && (m.frac == 0u) && !m.sticky) ? 0
+                                                             : 1;
+  }
+  if (zero) {
+    half = -1;
+  }
+  if (!down && ((half > 0) || ((half == 0) && ((q & 1) != 0)))) {
+    q++;
+  }
+  if ((q > INT64_MAX) || (q < INT64_MIN)) {
+    return false;
+  }
+  *out = (int64_t)q;
+  /* a negative zero (no add) is negative, as GeoConvert's double */
+  *negative = (m.whole < 0) || (d.neg && (m.whole == 0) && (add == 0));
   return true;
 }
 

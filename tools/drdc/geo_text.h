@@ -56,12 +56,29 @@ bool geo_text_read_angle(const char *text, geo_text_angle_t *out, char *why,
 /**
  * Read a decimal number of metres, [+-]digits[.digits][e[+-]digits] (at
  * most 1e12 m), to Q47.16, rounded to nearest (ties to even) from its
- * exact value.
+ * exact value, and what the rounding dropped.
  *
- * @param[out] exact true when no rounding happened.
+ * @param[out] rest the text's value minus *q16, in units of 2^-48 m
+ *        (2^-32 of the Q47.16 LSB), rounded to nearest from the exact
+ *        value: |*rest| <= 2^31.
+ * @param[out] exact true when no rounding happened to *q16.
  * @return true when the text is such a number.
  */
-bool geo_text_read_metres(const char *text, int64_t *q16, bool *exact);
+bool geo_text_read_metres(const char *text, int64_t *q16, int64_t *rest,
+                          bool *exact);
+
+/**
+ * The value of a number of metres that geo_text_read_metres() reads,
+ * plus `add` whole metres, times 10^decimals (-9..18), rounded half to
+ * even, or down when `down` is set: exactly, from the text's digits.
+ *
+ * @param[out] negative whether the text's value plus add is below zero,
+ *        or is a negative zero ("-0" and no add).
+ * @return true and *out, *negative written; false when the text is not
+ *         such a number or the result leaves int64.
+ */
+bool geo_text_metres_scaled(const char *text, int64_t add, int decimals,
+                            bool down, int64_t *out, bool *negative);
 
 /**
  * Write value / unit with `decimals` (>= 0) decimals, rounded to nearest

@@ -18,9 +18,9 @@ TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))
 SOURCE = os.path.join(TOP, "core", "units", "units.txt")
 ROW = re.compile(r"^(\S+)\s+(-?\d+)\s+(-?\d+)\s+(-?\d+)\s+(-?\d+)\s+(-?\d+)"
                  r"\s+(-?\d+)\s+(\d+)/(\d+)(?:\s+(-?\d+)/(\d+))?(\s+prefix)?$")
-# The one unit whose factor lies below 2^-56 (1 eV = 1.6e-19 J): its
-# denominator may use all 63 bits.
-WIDE = {"eV"}
+# The one unit whose factor lies below 2^-56 (1 eV = 1.6e-19 J, also
+# spelled ev): its denominator may use all 63 bits.
+WIDE = {"eV", "ev"}
 
 
 def read(path=SOURCE):

@@ -24,8 +24,12 @@
  * **Names** are spelled as GNU units 2.22 spells them (`ft`, `nmi`,
  * `lbf`, `psi`, `knot`, `degree`, `rpm`, `kWh`, `Mbps`, ...), including
  * compound spellings GNU units accepts as one word (`m/s`, `km/hr`,
- * `ft^2`, `radian/s`, `btu/hr`). Names are case-sensitive, as in GNU
- * units (`Pa` is pascal, `mbar` millibar).
+ * `ft^2`, `radian/s`, `btu/hr`) and GNU units' abbreviations of the
+ * table's units (`mi`, `ly`, `ch`, `cc`, `qt`, `pt`, `tbsp`, `tsp`,
+ * `gm`, `gr`, `lbm`, `ozt`, `ct`, `d`, `wk`, `yr`, `rev`, `dyn`, `pdl`,
+ * `psia`, `degK`, `B`, `lfm`, and the Unix spellings `nmile`, `hz`, `pa`,
+ * `ev`, `coul`, ...). Names are case-sensitive, as in GNU units (`Pa` is
+ * pascal, `mbar` millibar).
  *
  * **Symbols that differ from GNU units**: where GNU units 2.22 reads a
  * symbol otherwise than the SI (and pint and udunits), the SI wins:
@@ -38,8 +42,15 @@
  *   `BTU` is the ISO 1055.056 J).
  * - `degC`, `degF`: temperatures (points), see below; GNU units:
  *   temperature differences.
- * - `B`, `G`, `dB`: not units here; GNU units: the byte, the
- *   gravitational constant, a function.
+ * - `Gs`, `nt`: the gigasecond and the nanotonne (an SI prefix on s and
+ *   t, as pint reads them); GNU units: the gauss and the newton (use
+ *   `gauss` and `N`).
+ * - `G`, `dB`: not units here; GNU units: the gravitational constant,
+ *   a function. `B` is the byte, as in GNU units, but takes no prefix,
+ *   so that `dB` stays no unit.
+ * - `b`, `a`, `smi`: not units here; GNU units: the bar, the are, the
+ *   international mile; the SI's `b` is the barn, ISO 80000-3's and
+ *   pint's `a` the year, pint's `smi` the US survey mile.
  *
  * The decibel (`dB`, `dBm`) is deliberately absent: it is a logarithmic
  * ratio, 10 log10(p1 / p2), not a factor times a unit, so it fits no row
@@ -62,9 +73,9 @@
  * Every numerator and denominator is below 2^56 (checked by the suite),
  * so a conversion to or from the unit's SI unit has a combined factor
  * that always fits with room for 7 bits of format change; the one
- * exception is `eV`, 1.602176634e-19 J exactly, whose exact fraction
- * (1602176634 / 10^28) has no 63-bit form: it is stored as
- * 1 / 6241509074460762608, relative error 4e-20.
+ * exception is `eV` (and GNU units' `ev`), 1.602176634e-19 J exactly,
+ * whose exact fraction (1602176634 / 10^28) has no 63-bit form: it is
+ * stored as 1 / 6241509074460762608, relative error 4e-20.
  *
  * **Temperature** is affine. `K`, `degC`, `degF` and `degR` here are
  * temperatures (points on a scale): 0 degC converts to 273.15 K and
@@ -211,8 +222,8 @@ drdc_status_t drdc_units_find(const char *name, size_t length,
  *         from_frac) (and for temperatures the offset in input LSB) does
  *         not fit 63-bit integers even after shifting powers of two into
  *         the input (only for far-apart unit pairs combined with a large
- *         change of format; never for a linear unit other than eV to
- *         or from its SI unit with |to_frac - from_frac| <= 7; for a
+ *         change of format; never for a linear unit other than eV (ev)
+ *         to or from its SI unit with |to_frac - from_frac| <= 7; for a
  *         temperature to or from K only when from_frac > 48 or |raw| >
  *         2^53)
  * @retval DRDC_E_OVERFLOW the rounded result does not fit int64_t
@@ -226,7 +237,7 @@ drdc_status_t drdc_units_find(const char *name, size_t length,
  * Accuracy: correctly rounded (<= 0.5 LSB; units with pi add 2.5e-17
  * relative). Checked for every unit against GNU units 2.22 (`units -t
  * -d 15`): 1 unit to SI and 1 SI unit to the unit at formats where the
- * result has about 2^39 LSB, and random values both ways: 2251 vectors,
+ * result has about 2^39 LSB, and random values both ways: 2576 vectors,
  * every one equal to GNU units' value rounded (tests/units/test_units.c;
  * the test allows 1 LSB, as GNU units prints 15 significant digits).
  *
