@@ -175,4 +175,25 @@ drdc_status_t drdc__nmea_gsa(const nmea_frame_t *fr, drdc_nmea_t *n);
  *  drdc_nmea_parse_date()): the status letter must still be A or V. */
 drdc_status_t drdc__nmea_rmc_date(const nmea_frame_t *fr, drdc_nmea_t *n);
 
+/** The flags' check and the framing every parse begins with: DRDC_OK
+ *  with `*fr` the framed sentence, or the status of the first fault. */
+drdc_status_t drdc__nmea_open(const char *text, size_t length, uint32_t flags,
+                              nmea_frame_t *fr);
+
+/** The caller's record made ready for the second pass (parse.c says
+ *  why there are two): every field cleared, the type and talker set. */
+void drdc__nmea_begin_record(const nmea_frame_t *fr, const char *text,
+                             drdc_nmea_t *out);
+
+/** One sentence type's decoding, for drdc_nmea_parse_some(). */
+struct drdc_nmea_decoder {
+  drdc_nmea_type_t type;
+  /** the sentence's decoder above */
+  drdc_status_t (*decode)(const nmea_frame_t *fr, drdc_nmea_t *n);
+  /** GGA and GNS: the field of the geoid separation, after which
+   *  drdc__nmea_precision() reads HDOP, altitude and separation; 0 for
+   *  the others */
+  size_t precision;
+};
+
 #endif /* DRDC_NMEA_IMPL_H */

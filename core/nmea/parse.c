@@ -140,6 +140,24 @@ static drdc_status_t decode_date(const nmea_frame_t *fr, drdc_nmea_t *n)
  * too. The record is written only on success without a second
  * drdc_nmea_t on the stack, for about twice the decoding cycles.
  */
+drdc_status_t drdc__nmea_open(const char *text, size_t length, uint32_t flags,
+                              nmea_frame_t *fr)
+{
+  if ((flags & ~DRDC_NMEA_STRICT) != 0u) {
+    return DRDC_E_RANGE;
+  }
+  return drdc__nmea_frame(text, length, flags, fr);
+}
+
+void drdc__nmea_begin_record(const nmea_frame_t *fr, const char *text,
+                             drdc_nmea_t *out)
+{
+  clear(out);
+  out->type = fr->type;
+  out->talker[0] = text[1];
+  out->talker[1] = text[2];
+}
+
 static drdc_status_t parse(const char *text, size_t length, uint32_t flags,
                            parse_what_t what, drdc_nmea_t *out)
 {
@@ -151,17 +169,11 @@ static drdc_status_t parse(const char *text, size_t length, uint32_t flags,
   if ((text == NULL) || (out == NULL)) {
     return DRDC_E_NULL;
   }
-  if ((flags & ~DRDC_NMEA_STRICT) != 0u) {
-    return DRDC_E_RANGE;
-  }
-  st = drdc__nmea_frame(text, length, flags, &fr);
+  st = drdc__nmea_open(text, length, flags, &fr);
   /* pass 0 checks (n NULL), pass 1 decodes into out */
   for (pass = 0u; (pass < 2u) && (st == DRDC_OK); pass++) {
     if (pass == 1u) {
-      clear(out);
-      out->type = fr.type;
-      out->talker[0] = text[1];
-      out->talker[1] = text[2];
+      drdc__nmea_begin_record(&fr, text, out);
       n = out;
     }
     st = (what == PARSE_DATE) ? decode_date(&fr, n) : decode_sentence(&fr, n);

@@ -119,8 +119,9 @@ class BaselineCheck(unittest.TestCase):
 
 
 class WorstStack(unittest.TestCase):
-    """tools/gates/footprint.py's depth: frames add up along calls, but a sibling
-    (tail) call runs after its caller's frame is gone."""
+    """tools/gates/footprint.py's depth: frames add up along calls, but a
+    sibling (tail) call runs after its caller's frame is gone; a call
+    through a pointer reaches every function whose address is taken."""
     FRAMES = {"drdc_f": 40, "g": 24, "h": 64, "leaf": 8}
     EDGES = {"drdc_f": {"g", "h", "__divdi3"}, "g": {"leaf"}, "h": {"leaf"}}
 
@@ -137,6 +138,19 @@ class WorstStack(unittest.TestCase):
     def test_recursion_is_reported(self):
         with self.assertRaises(RecursionError):
             footprint.worst_stack("g", {"g": 8}, {"g": {"g"}})
+
+    def test_a_call_through_a_pointer_reaches_every_address_taken(self):
+        edges = footprint.resolve_indirect(
+            dict(self.EDGES, drdc_f={footprint.INDIRECT}), {"g", "h"})
+        depth, outside = footprint.worst_stack("drdc_f", self.FRAMES, edges)
+        self.assertEqual(depth, 40 + 64 + 8)
+        self.assertEqual(outside, set())
+
+    def test_a_call_through_a_pointer_without_targets_stays_outside(self):
+        edges = footprint.resolve_indirect(
+            {"drdc_f": {footprint.INDIRECT}}, set())
+        _, outside = footprint.worst_stack("drdc_f", self.FRAMES, edges)
+        self.assertEqual(outside, {footprint.INDIRECT})
 
 
 if __name__ == "__main__":

@@ -548,6 +548,105 @@ static void test_nmea_utc_on_the_date_of_an_rmc_without_a_fix(void)
   }
 }
 
+/* Every decoder, in the order of drdc_nmea_type_t. */
+static const drdc_nmea_decoder_t *const every_decoder[] = {
+    &drdc_nmea_gga_decoder, &drdc_nmea_rmc_decoder, &drdc_nmea_gns_decoder,
+    &drdc_nmea_zda_decoder, &drdc_nmea_gst_decoder, &drdc_nmea_gll_decoder,
+    &drdc_nmea_vtg_decoder, &drdc_nmea_hdt_decoder, &drdc_nmea_ths_decoder,
+    &drdc_nmea_gsa_decoder};
+
+/* drdc_nmea_parse_some() with every decoder, or with the corpus entry's
+ * own alone, gives what drdc_nmea_parse() gives (the corpus checks that
+ * against the fraction model), in both modes; without the entry's own it
+ * refuses a sentence that frames, or gives the framing's fault, and
+ * leaves the output as it was. */
+static void test_drdc_nmea_parse_some_decodes_as_parse(void)
+{
+  size_t i;
+  size_t k;
+
+  TEST_ASSERT_EQUAL_size_t(10u, COUNT(every_decoder));
+  for (i = 0u; i < COUNT(nmea_vectors); i++) {
+    const struct nmea_vector *v = &nmea_vectors[i];
+    const drdc_nmea_decoder_t *others[9];
+    const drdc_nmea_decoder_t *const *own = &every_decoder[v->type];
+    uint32_t flags;
+    size_t n_others = 0u;
+
+    for (k = 0u; k < COUNT(every_decoder); k++) {
+      if (k != (size_t)v->type) {
+        others[n_others] = every_decoder[k];
+        n_others++;
+      }
+    }
+    for (flags = 0u; flags <= DRDC_NMEA_STRICT; flags++) {
+      drdc_nmea_t want;
+      drdc_nmea_t got;
+      drdc_status_t st;
+      drdc_status_t without;
+
+      sentinel(&want);
+      st = drdc_nmea_parse_with(v->text, v->length, flags, &want);
+      sentinel(&got);
+      TEST_ASSERT_EQUAL_INT_MESSAGE(
+          st,
+          drdc_nmea_parse_some(v->text, v->length, flags, every_decoder,
+                               COUNT(every_decoder), &got),
+          v->text);
+      TEST_ASSERT_EQUAL_MEMORY_MESSAGE(&want, &got, sizeof got, v->text);
+      sentinel(&got);
+      TEST_ASSERT_EQUAL_INT_MESSAGE(
+          st, drdc_nmea_parse_some(v->text, v->length, flags, own, 1u, &got),
+          v->text);
+      TEST_ASSERT_EQUAL_MEMORY_MESSAGE(&want, &got, sizeof got, v->text);
+      sentinel(&got);
+      without = drdc_nmea_parse_some(v->text, v->length, flags, others,
+                                     n_others, &got);
+      TEST_ASSERT_TRUE_MESSAGE((without == DRDC_E_SENTENCE) ||
+                                   ((st != DRDC_OK) && (without == st)),
+                               v->text);
+      TEST_ASSERT_TRUE(unchanged(&got));
+    }
+  }
+}
+
+/* The statuses drdc_nmea_parse_some() adds to drdc_nmea_parse_with()'s,
+ * each leaving the output as it was. */
+static void test_drdc_nmea_parse_some_bad_input(void)
+{
+  static const char gga[] = "$GNGGA,170000.00,5016.20000,N,11110.20000,W,4,"
+                            "12,0.7,754.3,M,-16.2,M,1.0,0001*66\r\n";
+  static const char vtg[] = "$GPVTG,045.0,T,,M,2.57,N,4.76,K,A*09\r\n";
+  const drdc_nmea_decoder_t *const gga_only[] = {&drdc_nmea_gga_decoder};
+  const drdc_nmea_decoder_t *const with_null[] = {&drdc_nmea_gga_decoder, NULL};
+  drdc_nmea_t n;
+
+  sentinel(&n);
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL,
+                        drdc_nmea_parse_some(NULL, 10u, 0u, gga_only, 1u, &n));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_NULL,
+      drdc_nmea_parse_some(gga, sizeof gga - 1u, 0u, gga_only, 1u, NULL));
+  TEST_ASSERT_EQUAL_INT(DRDC_E_NULL, drdc_nmea_parse_some(gga, sizeof gga - 1u,
+                                                          0u, NULL, 1u, &n));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_NULL,
+      drdc_nmea_parse_some(gga, sizeof gga - 1u, 0u, with_null, 2u, &n));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_RANGE,
+      drdc_nmea_parse_some(gga, sizeof gga - 1u, 2u, gga_only, 1u, &n));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_SENTENCE,
+      drdc_nmea_parse_some(vtg, sizeof vtg - 1u, 0u, gga_only, 1u, &n));
+  TEST_ASSERT_EQUAL_INT(
+      DRDC_E_SENTENCE,
+      drdc_nmea_parse_some(gga, sizeof gga - 1u, 0u, NULL, 0u, &n));
+  TEST_ASSERT_TRUE(unchanged(&n));
+  TEST_ASSERT_EQUAL_INT(DRDC_OK, drdc_nmea_parse_some(gga, sizeof gga - 1u, 0u,
+                                                      gga_only, 1u, &n));
+  TEST_ASSERT_EQUAL_INT(DRDC_NMEA_GGA, n.type);
+}
+
 void suite_nmea(void)
 {
   UnitySetTestFile(__FILE__);
@@ -562,4 +661,6 @@ void suite_nmea(void)
   RUN_TEST(test_drdc_nmea_parse_date_keeps_the_date);
   RUN_TEST(test_drdc_nmea_parse_date_bad_input);
   RUN_TEST(test_nmea_utc_on_the_date_of_an_rmc_without_a_fix);
+  RUN_TEST(test_drdc_nmea_parse_some_decodes_as_parse);
+  RUN_TEST(test_drdc_nmea_parse_some_bad_input);
 }

@@ -10,9 +10,11 @@ per object, written by the library build).
 Worst-case stack of a function = its own frame + the deepest chain of
 callees inside the library; a callee reached only by sibling (tail) calls,
 which the compiler makes after the caller's epilogue, adds its chain to
-the caller's entry stack instead of to its frame. Calls out of the library (libgcc's integer
-helpers) are listed with the function; their frames are not counted, and a
-recursive chain is reported as such instead of a number.
+the caller's entry stack instead of to its frame; a call through a pointer
+counts as a call of every function whose address the library's data
+holds. Calls out of the library (libgcc's integer helpers) are listed with
+the function; their frames are not counted, and a recursive chain is
+reported as such instead of a number.
 """
 import argparse
 import collections
@@ -178,6 +180,47 @@ def tail_calls(target, path, ci_path):
     return {pair for pair, k in kinds.items() if k == {True}}
 
 
+# GCC's call graph names every call through a pointer so
+INDIRECT = "__indirect_call"
+# objdump -r: a section's relocations, and one record of them
+RELOC_SECTION = re.compile(r"^RELOCATION RECORDS FOR \[([^\]]+)\]:$")
+RELOC_RECORD = re.compile(r"^[0-9a-f]+ \S+\s+([^+\s]+)")
+# sections of code and of its metadata: their relocations are calls and
+# unwinding or debugging records, not addresses kept as data
+NOT_DATA = (".text", ".debug", ".eh_frame", ".ARM.ex")
+
+
+def address_taken(target, paths, functions):
+    """The functions whose address the library's data holds (relocations
+    outside code sections, such as the decoders of drdc_nmea_parse_some()):
+    what a call through a pointer may reach."""
+    found = set()
+    for path in paths:
+        out = subprocess.run([PREFIX[target] + "objdump", "-r", path],
+                             check=True, capture_output=True, text=True).stdout
+        section = None
+        for line in out.splitlines():
+            m = RELOC_SECTION.match(line)
+            if m:
+                section = m.group(1)
+                continue
+            m = RELOC_RECORD.match(line)
+            if m and section and not section.startswith(NOT_DATA) \
+                    and m.group(1) in functions:
+                found.add(m.group(1))
+    return found
+
+
+def resolve_indirect(edges, taken):
+    """A call through a pointer counted as a call of every function whose
+    address the library's data holds (the deepest of them decides); left
+    as an outside call where the data holds none."""
+    if not taken:
+        return edges
+    return {src: ((dsts - {INDIRECT}) | taken) if INDIRECT in dsts else dsts
+            for src, dsts in edges.items()}
+
+
 def worst_stack(fn, frames, edges, tails=frozenset(), chain=()):
     """(bytes, outside callees) of the deepest chain from fn. A sibling
     call (in tails) runs after fn's frame is gone: its depth is not added
@@ -213,6 +256,15 @@ def symbols(target, objs, top=20):
     return rows[:top]
 
 
+def footprint_library(build, target):
+    """Flash bytes (.text + .rodata + .data) of the whole libdrdc.a."""
+    total = 0
+    for path, _ in members(build, target).values():
+        s = section_sizes(target, path)
+        total += s["text"] + s["rodata"] + s["data"]
+    return total
+
+
 def footprint(build, target):
     objs = members(build, target)
     library = dict.fromkeys(SECTIONS, 0)
@@ -226,6 +278,8 @@ def footprint(build, target):
     cis = {p: os.path.splitext(p)[0] + ".ci" for p, _ in objs.values()}
     cis = {p: c for p, c in cis.items() if os.path.exists(c)}
     frames, edges = call_graph(cis.values())
+    edges = resolve_indirect(edges, address_taken(
+        target, [p for p, _ in objs.values()], set(frames)))
     tails = set()
     for path, ci in sorted(cis.items()):
         tails |= tail_calls(target, path, ci)

@@ -341,6 +341,62 @@ drdc_status_t drdc_nmea_parse(const char *text, size_t length,
 drdc_status_t drdc_nmea_parse_with(const char *text, size_t length,
                                    uint32_t flags, drdc_nmea_t *out);
 
+/** The decoder of one sentence type, for drdc_nmea_parse_some(): a
+ *  constant of the library, used only through its address. */
+typedef struct drdc_nmea_decoder drdc_nmea_decoder_t;
+
+/** @name Sentence decoders (drdc_nmea_parse_some())
+ *  @{ */
+extern const drdc_nmea_decoder_t drdc_nmea_gga_decoder; /**< GGA */
+extern const drdc_nmea_decoder_t drdc_nmea_rmc_decoder; /**< RMC */
+extern const drdc_nmea_decoder_t drdc_nmea_gns_decoder; /**< GNS */
+extern const drdc_nmea_decoder_t drdc_nmea_zda_decoder; /**< ZDA */
+extern const drdc_nmea_decoder_t drdc_nmea_gst_decoder; /**< GST */
+extern const drdc_nmea_decoder_t drdc_nmea_gll_decoder; /**< GLL */
+extern const drdc_nmea_decoder_t drdc_nmea_vtg_decoder; /**< VTG */
+extern const drdc_nmea_decoder_t drdc_nmea_hdt_decoder; /**< HDT */
+extern const drdc_nmea_decoder_t drdc_nmea_ths_decoder; /**< THS */
+extern const drdc_nmea_decoder_t drdc_nmea_gsa_decoder; /**< GSA */
+/** @} */
+
+/**
+ * Parse one NMEA 0183 sentence with only the decoders the caller names:
+ * drdc_nmea_parse_with() for the sentence types of `decoders`, and
+ * DRDC_E_SENTENCE for every other. A firmware links the decoders it
+ * names and no other (drdc_nmea_parse() links all ten): a GGA-only node
+ * saves the other nine (docs/performance.md gives the bytes).
+ *
+ * @param text   the sentence from `$`, CR LF optional
+ * @param length number of characters of `text`; exactly these are read
+ * @param flags  0 or DRDC_NMEA_STRICT
+ * @param decoders `count` addresses of drdc_nmea_<type>_decoder
+ *        constants; NULL only with `count` 0
+ * @param count  number of `decoders`
+ * @param[out] out the decoded sentence; unchanged on error
+ * @retval DRDC_OK decoded
+ * @retval DRDC_E_NULL `text` or `out` is NULL, `decoders` is NULL with
+ *         `count` above 0, or one of them is NULL
+ * @retval DRDC_E_RANGE `flags` has a bit other than DRDC_NMEA_STRICT, or
+ *         as drdc_nmea_parse()
+ * @retval DRDC_E_SENTENCE a sentence of a type none of `decoders` reads,
+ *         or as drdc_nmea_parse()
+ *
+ * Every other status as drdc_nmea_parse_with(), for the same reasons.
+ * Accuracy: as drdc_nmea_parse().
+ *
+ * @code
+ * static const drdc_nmea_decoder_t *const fixes[] = {
+ *   &drdc_nmea_gga_decoder, &drdc_nmea_rmc_decoder};
+ * drdc_nmea_t n;
+ * drdc_status_t st = drdc_nmea_parse_some(line, len, 0u, fixes, 2u, &n);
+ * // a VTG gives DRDC_E_SENTENCE; its decoder is not linked
+ * @endcode
+ */
+drdc_status_t drdc_nmea_parse_some(const char *text, size_t length,
+                                   uint32_t flags,
+                                   const drdc_nmea_decoder_t *const *decoders,
+                                   size_t count, drdc_nmea_t *out);
+
 /**
  * The date and time of day of an RMC or ZDA sentence, whatever fix it
  * reports, for dating other sentences with drdc_nmea_utc().
