@@ -16,13 +16,11 @@ conformance digest's programs (golden), the commands (commands) and the
 check's steps (checks).
 """
 import os
-import re
-import subprocess
 
-from waflib import Build, ConfigSet, Configure, Context, Logs, Options
+from waflib import Build, ConfigSet, Configure, Logs, Options
 
-from waftools import deps, images, toolchains
-from waftools.targets import CODEGEN, DEFAULT_TARGET, TARGETS, role
+from waftools import deps, headers, images, toolchains, variants
+from waftools.targets import CODEGEN, DEFAULT_TARGET, TARGETS, ldscript, role
 
 top = "."
 out = "build"
@@ -43,7 +41,8 @@ SELFTEST_KINDS = {"pass": 1, "fail": 2, "hang": 3, "crash": 4,
 
 def options(opt):
     opt.load("compiler_c")
-    opt.load("waftools.rtems waftools.commands waftools.checks")
+    opt.load("waftools.rtems waftools.commands waftools.checks "
+             "waftools.variants")
     opt.add_option("--with-targets", dest="with_targets", default=None,
                    help="configure: the targets to set up and build, comma "
                    "separated (default: %s; ./waf check adds every other, "
@@ -65,15 +64,17 @@ def _register_variant_commands(names):
 
 
 def init(ctx):
-    # RTEMS BSP variants exist only once configured: register their
-    # commands from the configuration cache (as rtems_waf does).
+    # RTEMS BSP variants and custom targets exist only once configured:
+    # register their commands from the configuration cache (as rtems_waf
+    # does), and the custom targets' rows in the table.
     try:
         lock = ConfigSet.ConfigSet(Options.lockfile)
         cache = ConfigSet.ConfigSet(os.path.join(lock.out_dir, "c4che",
                                                  "_cache.py"))
     except (EnvironmentError, AttributeError):
         return
-    _register_variant_commands(cache.RTEMS_VARIANTS or [])
+    _register_variant_commands((cache.RTEMS_VARIANTS or [])
+                               + variants.load(cache))
 
 
 def _default_targets():
@@ -92,55 +93,16 @@ def _selected_targets(conf):
     return [n for n in TARGETS if n in names]
 
 
-def _system_includes(conf, name, t):
-    """-nostdinc and the include directories of t["headers"], each checked
-    to exist."""
-    flags = ["-nostdinc"]
-    for d in t["headers"]:
-        if d.startswith("gcc:"):
-            d = conf.cmd_and_log(conf.env.CC + t["arch"]
-                                 + ["-print-file-name=" + d[4:]],
-                                 quiet=Context.BOTH).strip()
-        elif not os.path.isabs(d):
-            d = conf.path.make_node(d).abspath()
-        if not os.path.isabs(d) or not os.path.isdir(d):
-            conf.fatal("%s: no include directory %s (its headers in "
-                       "waftools/targets.py)" % (name, d))
-        flags += ["-isystem", d]
-    return flags
-
-
-def _check_hermetic(conf, name, t):
-    """Each hosted-only header must be missing for a bare-metal target: the
-    compiler must stop on the bait's own #include line, proof that no host
-    header can leak into its build. (Without -nostdinc, Debian's PowerPC
-    GCC finds the host's <math.h> and only fails inside it.)"""
-    bait = conf.bldnode.make_node("hosted_bait.c")
-    for header in t["hosted_bait"]:
-        conf.start_msg("Checking that %s has no <%s>" % (name, header))
-        bait.write("#include <%s>\nint bait;\n" % header)
-        r = subprocess.run(conf.env.CC + conf.env.ARCH
-                           + ["-c", bait.abspath(), "-o", os.devnull],
-                           capture_output=True, text=True)
-        # line 1, the #include (GCC 12 names its column 10, GCC 5 the end)
-        missing = re.compile(r"hosted_bait\.c:1:\d+: fatal error: %s: No such file"
-                             % re.escape(header))
-        if r.returncode == 0 or not missing.search(r.stderr):
-            conf.end_msg("it has", "RED")
-            conf.fatal("%s: <%s> is not simply missing, so host headers "
-                       "can leak into the bare-metal build (its headers in "
-                       "waftools/targets.py); the compiler said:\n%s"
-                       % (name, header, r.stderr))
-        conf.end_msg("none, as it must be")
-
-
 def _configure_target(conf, name, t, prefix):
     conf.setenv(name)
     conf.msg("Target", name)
     compiler = t.get("compiler", "gcc")
+    if "cc_command" in t:
+        conf.env.CC = t["cc_command"]
     for var, tool in (("CC", compiler), ("AR", "ar"), ("OBJDUMP", "objdump"),
                       ("NM", "nm"), ("SIZE", "size")):
-        conf.find_program(t["cross"] + tool, var=var)
+        if not conf.env[var]:
+            conf.find_program(t["cross"] + tool, var=var)
     conf.env.AS = conf.env.CC
     conf.load(("clang" if compiler.startswith("clang") else "gcc") + " gas")
     # what this target's results were computed with, in the build log and
@@ -157,14 +119,17 @@ def _configure_target(conf, name, t, prefix):
         conf.env.SHLIB_MARKER = []
     arch = list(t["arch"])
     if "headers" in t:
-        arch += _system_includes(conf, name, t)
+        arch += headers.system_includes(conf, name, t)
     conf.env.ARCH = arch
     conf.env.LIBRARY_ARCH = t.get("library_arch", [])
     conf.env.ASFLAGS = arch + CODEGEN
     conf.env.LINKFLAGS = arch + t["link"]
-    ldscript = conf.path.find_node("bsp/%s/link.ld" % t["bsp"])
-    if ldscript:
-        conf.env.LINKFLAGS += ["-Wl,-T," + ldscript.abspath()]
+    if ldscript(name):
+        # its folder searched too: a script may INCLUDE its board's common
+        # part
+        script = conf.path.find_node(ldscript(name)).abspath()
+        conf.env.LINKFLAGS += ["-Wl,-L," + os.path.dirname(script),
+                               "-Wl,-T," + script]
     conf.env.LIB = t["libs"]
     conf.env.WERROR = True
     # Install layout: one library directory and one pkg-config name a
@@ -190,31 +155,37 @@ def _configure_target(conf, name, t, prefix):
                   features="c", cflags=arch,
                   msg="Checking that %s compiles" % name)
     if "hosted_bait" in t:
-        _check_hermetic(conf, name, t)
+        headers.check_hermetic(conf, name, t)
     conf.load("waftools.cxx_layer")
 
 
 def configure(conf):
     prefix = os.path.abspath(conf.options.prefix)
-    targets = _selected_targets(conf)
+    # The table's rows name their compilers and flags: waf's tools must not
+    # take the environment's CC or CFLAGS for them (custom variants do,
+    # waftools/variants.py).
+    conf.environ = {k: v for k, v in os.environ.items()
+                    if k not in ("CC", "CFLAGS", "CPPFLAGS", "LDFLAGS",
+                                 "LINKFLAGS", "AR")}
+    custom = variants.configure(conf)
+    targets = _selected_targets(conf) + list(custom)
     pkgs = deps.packages([p for n in targets for p in TARGETS[n]["packages"]],
                          # pkg-config reads an RTEMS BSP's flags
                          ["rtems"] if conf.options.rtems else [])
+    # the compilers only, and only where missing: the upstream sources of
+    # the test images come with the builds that need them
     try:
-        found = deps.ensure(pkgs, ("unity", "libfixmath"))
+        deps.ensure(pkgs)
     except deps.SetupError as e:
         conf.fatal(str(e))
     for name in targets:
         _configure_target(conf, name, TARGETS[name], prefix)
-        conf.env.UNITY = found["unity"]
-        conf.env.LIBFIXMATH = found["libfixmath"]
     # The RTEMS BSP variants derive from the default environment (the
     # targets' own are set above).
     conf.setenv("")
     conf.env.TARGETS = targets
+    conf.env.CUSTOM_TARGETS = custom
     conf.env.WERROR = conf.options.werror
-    conf.env.UNITY = found["unity"]
-    conf.env.LIBFIXMATH = found["libfixmath"]
     for what, version in toolchains.runners():
         conf.msg(what, version)
     conf.load("waftools.rtems")
@@ -249,14 +220,14 @@ def _build_fuzzers(bld):
 
 def _build_third_party(bld):
     """Unity and libfixmath, from the set-up's sources in .deps/."""
-    unity = bld.root.find_dir(bld.env.UNITY)
+    unity = images.source_dir(bld, "unity")
     bld.objects(source=[unity.find_node("unity.c")], target="unity",
                 cflags=images.theirs(bld.env),
                 includes=[unity, "tests", "bsp"],
                 defines=["UNITY_INCLUDE_CONFIG_H"],
                 export_includes=[unity, "tests"],
                 export_defines=["UNITY_INCLUDE_CONFIG_H"])
-    fixmath = bld.root.find_dir(bld.env.LIBFIXMATH)
+    fixmath = images.source_dir(bld, "libfixmath")
     # fix16_str.c (text conversion) needs the hosted <ctype.h>
     bld.stlib(source=fixmath.ant_glob("fix16*.c fract32.c uint32.c",
                                       excl=["fix16_fft.c", "fix16_str.c"]),
@@ -298,7 +269,7 @@ def _build_images(bld, t):
     if t.get("bench"):
         # soft-float double baselines where the toolchain has soft-float
         libm = bool(t.get("soft_float_libm"))
-        fixmath = bld.root.find_dir(bld.env.LIBFIXMATH)
+        fixmath = images.source_dir(bld, "libfixmath")
         images.image(bld, "fw/bench/bench", images.glob(bld, "fw/bench/*.c"),
                      "libdrdc bsp fixmath",
                      defines=["BENCH_DOUBLE=%d" % libm],
@@ -310,9 +281,6 @@ def _build_images(bld, t):
             images.image(bld, "qemu/selftest-" + kind, ["qemu/selftest.c"],
                          "unity bsp", defines=["SELFTEST_KIND=%d" % number],
                          idx=number)
-    if t.get("tool"):
-        bld.program(source=images.glob(bld, "tools/drdc/*.c"),
-                    target="drdc" + t["ext"], use="libdrdc", cflags=ours)
     if bld.variant == "host":
         # the library's own results for the plots of docs/accuracy.md
         bld.program(source=["tools/accuracy/sample.c"],
@@ -335,10 +303,20 @@ def build(bld):
                   "--with-targets"
                   % (bld.variant, ", ".join(bld.all_envs[""].TARGETS or [])))
     bld.load("waftools.library")
+    # An install is the library, its headers and the host tool: no test
+    # build, so no test tool's set-up or download either.
+    installing = isinstance(bld, Build.InstallContext)
     if bld.env.RTEMS_BSP:
-        bld.load("waftools.rtems")
+        if not installing:
+            bld.load("waftools.rtems")
         return
     t = TARGETS[bld.variant]
+    if t.get("tool"):
+        bld.program(source=images.glob(bld, "tools/drdc/*.c"),
+                    target="drdc" + t["ext"], use="libdrdc",
+                    cflags=images.ours(bld.env))
+    if installing:
+        return
     _build_baits(bld, t)
     if t.get("fuzz"):
         _build_fuzzers(bld)

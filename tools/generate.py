@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-2-Clause
 """Every generated file of the tree, from its generator: the library's
-constant tables (tools/tables/, from mpmath and core/units/units.txt) and
+constant tables (tools/tables/, from mpmath and core/units/units.txt),
+the CMake build's list of sources and flags (from the tree and the table
+of targets) and
 the reference vectors that the Unity suites include (tests/ref/, each
 from an independent oracle, never from this project's code).
 
@@ -26,6 +28,7 @@ VECTORS = os.path.join(TOP, "tests", "ref")
 
 # (folder, module) of every generator.
 GENERATORS = [(TABLES, m) for m in (
+    "cmake_sources",
     "fixed_tables",
     "geo_consts",
     "units_table",

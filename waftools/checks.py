@@ -119,6 +119,9 @@ STEPS = [
      unit_tests("tests.integration.test_avr"), {}),
     ("installed tree: every target side by side, a client of it",
      unit_tests("tests.integration.test_install"), {}),
+    ("CMake: the same objects, firmware through find_package and "
+     "add_subdirectory, custom variants, an ABI mismatch refused",
+     unit_tests("tests.integration.test_cmake"), {}),
     ("a new board: one row and a folder build a target that passes",
      unit_tests("tests.integration.test_new_board"), {}),
     ("RTEMS build path through a stand-in prefix",

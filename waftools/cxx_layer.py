@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: BSD-2-Clause
 """waf tool: the C++ layer's images, for the variant being configured or
-built (a target whose row has "cxx"): cxx/include/drdc.hpp (header-only,
-C++17, over the C API), its Unity runner (fw/cxx-runner, tests/cxx), the
+built (a target whose row has "cxx"): cxx/include/drdc/drdc.hpp
+(header-only, C++17, over the C API), its Unity runner (fw/cxx-runner, tests/cxx), the
 C++ demo (fw/demo-cxx) and, where "bench" says so, the wrapper's
 benchmark (fw/bench-cxx).
 
@@ -12,7 +12,8 @@ compilers' images get the compiler's name as a suffix
 import os
 import re
 
-from waftools.targets import CODEGEN, TARGETS
+from waftools import images
+from waftools.targets import CODEGEN, TARGETS, ldscript
 
 # The warnings of every C++ file we write, errors on every compiler.
 CXX_WARNINGS = ["-std=c++17", "-Wall", "-Wextra", "-pedantic", "-Werror",
@@ -49,11 +50,12 @@ def build(bld):
     spec = t.get("cxx")
     if spec is None:
         return
-    unity = bld.root.find_dir(bld.env.UNITY)
+    unity = images.source_dir(bld, "unity")
     cxxflags = (bld.env.ARCH + CODEGEN + CXX_WARNINGS + spec["flags"]
                 + ["-isystem", unity.abspath()])
     includes = ["cxx/include", "tests", "bsp"]
-    ldscript = bld.path.find_node("bsp/%s/link.ld" % t["bsp"])
+    script = ldscript(bld.variant)
+    script = script and bld.path.find_node(script)
     compilers = [("", None)] + [("-" + c, var)
                                 for c, var in bld.env.CXX_OTHERS]
     for k, (suffix, var) in enumerate(compilers):
@@ -78,9 +80,9 @@ def build(bld):
                         target=target, use=use, env=env, idx=300 + k,
                         cxxflags=cxxflags, includes=includes,
                         install_path=None)
-            if ldscript:
+            if script:
                 bld.add_manual_dependency(
-                    bld.path.find_or_declare(target), ldscript)
+                    bld.path.find_or_declare(target), script)
 
 
 def runner_images(all_envs, out):

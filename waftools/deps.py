@@ -49,6 +49,9 @@ APT_GROUPS = {
         "pkgconf",
         # the Makefiles of examples/ (tests/integration/test_install.py)
         "make",
+        # the CMake build and examples/cortex-m with CMake
+        # (tests/integration/test_cmake.py)
+        "cmake",
         # MISRA C:2012 addon (tools/gates/misra.py)
         "cppcheck",
         # API reference without a warning
@@ -465,7 +468,12 @@ def _fetch_source(name):
     spec = SOURCES[name]
     dl = os.path.join(DEPS, "dl")
     os.makedirs(dl, exist_ok=True)
-    _Apt.update()
+    if _is_root():
+        _Apt.update()
+    elif not _have_deb_src():
+        raise SetupError("apt has no source-package index for the %s "
+                         "source; run as root:\n  %s"
+                         % (spec["package"], root_command([], True)))
     _say("fetching the upstream tarball of the %s source package"
          % spec["package"])
     # Only the upstream tarball is used. The archive may answer 404 for
@@ -593,25 +601,59 @@ def _download_wheel(project, filename, sha256, dest):
     return path
 
 
+def _local_wheel(filename, sha256):
+    """The wheel in one of pip's find-links folders (PIP_FIND_LINKS or its
+    configuration), checked against its SHA-256; None where none has it.
+    A machine without network takes waflib from there."""
+    folders = (_pip_config("find-links") or "").split()
+    for folder in folders:
+        path = os.path.join(folder, filename)
+        if os.path.isfile(path):
+            if _sha256(path) != sha256:
+                raise SetupError("%s: SHA-256 %s, expected %s"
+                                 % (path, _sha256(path), sha256))
+            return path
+    return None
+
+
 def ensure_waflib(dest):
-    """The pinned waflib in dest (the waf launcher's). A wheel of pure
-    Python is a zip file: unpacking its waflib/ folder is its install, so
-    the launcher needs neither pip nor root."""
+    """The pinned waflib in dest (the waf launcher's), from a find-links
+    folder of pip's or else the package index. A wheel of pure Python is a
+    zip file: unpacking its waflib/ folder is its install, so the launcher
+    needs neither pip nor root."""
     project, version, filename, sha256 = WAFLIB
     stamp = os.path.join(dest, "waflib-%s.ok" % version)
     if os.path.exists(stamp):
         return
     shutil.rmtree(dest, ignore_errors=True)
     os.makedirs(dest)
-    _say("downloading %s %s (SHA-256 pinned) into %s"
-         % (project, version, dest))
-    wheel = _download_wheel(project, filename, sha256, dest)
+    wheel = _local_wheel(filename, sha256)
+    if wheel:
+        _say("unpacking %s (SHA-256 as pinned) into %s" % (wheel, dest))
+    else:
+        _say("downloading %s %s (SHA-256 pinned) into %s"
+             % (project, version, dest))
+        wheel = _download_wheel(project, filename, sha256, dest)
     with zipfile.ZipFile(wheel) as z:
         for m in z.namelist():
             if m.startswith("waflib/") and ".." not in m.split("/"):
                 z.extract(m, dest)
-    os.remove(wheel)
+    if os.path.dirname(wheel) == dest:
+        os.remove(wheel)
     open(stamp, "w").close()
+
+
+def fetch_waflib_wheel(folder):
+    """The pinned waflib wheel, checked, into folder: copied to a machine
+    without network, PIP_FIND_LINKS=folder gives it to the waf launcher
+    there (python3 waftools/deps.py --waflib-wheel FOLDER)."""
+    project, _, filename, sha256 = WAFLIB
+    os.makedirs(folder, exist_ok=True)
+    local = _local_wheel(filename, sha256)
+    if local:
+        shutil.copy(local, folder)
+        return os.path.join(folder, filename)
+    return _download_wheel(project, filename, sha256, folder)
 
 
 def python_requirements():
@@ -658,6 +700,9 @@ def ensure_python():
 
 if __name__ == "__main__":
     try:
+        if sys.argv[1:2] == ["--waflib-wheel"] and len(sys.argv) == 3:
+            print(fetch_waflib_wheel(sys.argv[2]))
+            sys.exit(0)
         groups = sys.argv[1:] or sorted(APT_GROUPS)
         for k, v in ensure(packages(groups=groups), sorted(SOURCES),
                            python=True).items():

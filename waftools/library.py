@@ -3,10 +3,15 @@
 fixed/ and core/, with the RTEMS glue where an RTEMS BSP has <rtems.h>,
 its headers, the C++ layer's headers, its pkg-config file and the
 documents the headers cite."""
-from waflib import Context
+import os
+import re
+import subprocess
+
+from waflib import Context, Logs
 
 from waftools import images
-from waftools.targets import LIBRARY_CODEGEN, OPTIMISE_FLAGS, optimise_kind
+from waftools.targets import (LIBRARY_CODEGEN, OPTIMISE_FLAGS, TARGETS,
+                              optimise_kind)
 
 
 def build(bld):
@@ -43,8 +48,9 @@ def build(bld):
     bld.install_files("${INCLUDEDIR}/drdc",
                       images.glob(bld, "fixed/include/drdc/*.h")
                       + images.glob(bld, "core/include/drdc/*.h"))
-    # the C++ layer, header-only, beside the C headers' folder
-    bld.install_files("${INCLUDEDIR}", images.glob(bld, "cxx/include/*.hpp"))
+    # the C++ layer, header-only, with the C headers
+    bld.install_files("${INCLUDEDIR}/drdc",
+                      images.glob(bld, "cxx/include/drdc/*.hpp"))
     glue = bool(bld.env.RTEMS_BSP and bld.env.HAVE_RTEMS_H)
     if glue:
         # RTEMS clock glue, installed beside the library
@@ -53,17 +59,84 @@ def build(bld):
                   cflags=cflags, includes=["bsp/rtems"],
                   install_path="${LIBDIR}")
         bld.install_as("${INCLUDEDIR}/drdc/rtems.h", "bsp/rtems/drdc_rtems.h")
+    # drdc-<target>.pc (drdc.pc for an RTEMS BSP) names every folder from
+    # its own place (${pcfiledir}), so a moved install keeps working; the
+    # ABI flags are a variable the user reads, never imposed in Cflags
     name = bld.env.PC_NAME or "drdc"
+    pcdir = bld.env.PKGCONFIGDIR or os.path.join(bld.env.LIBDIR, "pkgconfig")
+    prefix = bld.env.PREFIX
     bld(features="subst", source="waftools/drdc.pc.in", target=name + ".pc",
-        install_path=bld.env.PKGCONFIGDIR or "${LIBDIR}/pkgconfig",
-        VERSION=Context.g_module.VERSION, NAME=name, ABI_CFLAGS=bld.env.PC_CFLAGS or "",
-        PC_PREFIX=bld.env.PC_PREFIX or bld.env.PREFIX,
-        PC_LIBDIR=bld.env.PC_LIBDIR or bld.env.LIBDIR,
-        PC_INCLUDEDIR=bld.env.PC_INCLUDEDIR or bld.env.INCLUDEDIR,
+        install_path=pcdir, VERSION=Context.g_module.VERSION, NAME=name,
+        ABI_CFLAGS=bld.env.PC_CFLAGS or "",
+        REL_PREFIX=os.path.relpath(prefix, pcdir),
+        REL_LIBDIR=os.path.relpath(bld.env.LIBDIR, prefix),
+        REL_INCLUDEDIR=os.path.relpath(bld.env.INCLUDEDIR, prefix),
         EXTRA_LIBS=" -ldrdc_rtems" if glue else "",
         LIBS_AFTER=bld.env.PC_LIBS or "")
+    if bld.env.PC_NAME and bld.env.INSTALLABLE:
+        cmake_package(bld)
     if bld.env.DOCDIR:
         # the documents the headers cite as docs/<name>.md
         bld.install_files("${DOCDIR}/docs",
                           ["docs/conventions.md", "docs/accuracy.md",
                            "docs/performance.md", "docs/bad-input.md"])
+        # the example application of README's "Use it in your firmware"
+        examples = bld.path.find_dir("examples")
+        bld.install_files("${PREFIX}/share/drdc/examples",
+                          examples.ant_glob("**/*"), cwd=examples,
+                          relative_trick=True)
+
+
+def abi_macros(bld):
+    """The predefined macros that decide an ABI (cmake/drdc_abi.cmake's
+    DRDC_ABI_MACROS: one list for both builds)."""
+    text = bld.path.find_node("cmake/drdc_abi.cmake").read()
+    names = re.search(r"set\(DRDC_ABI_MACROS\s+([^)]*)\)", text).group(1)
+    return names.split()
+
+
+def _variant_file(task):
+    """lib/cmake/drdc/drdc-<target>.cmake: the variant's library and the
+    ABI its compiler gives with its ABI flags."""
+    env = task.env
+    empty = task.outputs[0].parent.make_node("abi_empty.c")
+    empty.write("")
+    r = subprocess.run(env.CC + task.generator.abi + ["-dM", "-E",
+                                                      empty.abspath()],
+                       capture_output=True, text=True)
+    if r.returncode != 0:
+        Logs.error("%s -dM -E: %s" % (env.CC[0], r.stderr))
+        return 1
+    defines = dict(re.findall(r"^#define (\S+) ?(.*)$", r.stdout, re.M))
+    abi = ";".join("%s=%s" % (n, defines[n].strip())
+                   for n in task.generator.macros if n in defines)
+    name = task.generator.variant_name
+    libs = " ".join(env.PC_LIBS.split()).replace("-l", "")
+    task.outputs[0].write(
+        "# written by ./waf install of libdrdc-fx: the variant %s\n"
+        "list(APPEND DRDC_INSTALLED_VARIANTS %s)\n"
+        "set(DRDC_VARIANT_%s_LIBRARY \"lib/%s/libdrdc.a\")\n"
+        "set(DRDC_VARIANT_%s_ABI \"%s\")\n"
+        "set(DRDC_VARIANT_%s_LIBS \"%s\")\n"
+        % (name, name, name, name, name, abi, name, libs))
+    return 0
+
+
+def cmake_package(bld):
+    """find_package(drdc) of the install: the package's files, shared by
+    every target, and this target's variant file."""
+    name = bld.variant
+    cmakedir = "${PREFIX}/lib/cmake/drdc"
+    variant = bld.path.find_or_declare("drdc-%s.cmake" % name)
+    bld(rule=_variant_file, target=variant, abi=TARGETS[name]["abi"],
+        macros=abi_macros(bld), variant_name=name,
+        vars=["CC", "PC_LIBS"])
+    version = Context.g_module.VERSION
+    bld(features="subst", source="cmake/drdcConfigVersion.cmake.in",
+        target="drdcConfigVersion.cmake", VERSION=version,
+        VERSION_MAJOR=version.split(".")[0],
+        VERSION_MINOR=version.split(".")[1])
+    bld.install_files(cmakedir, [variant, "drdcConfigVersion.cmake",
+                                 "cmake/drdcConfig.cmake",
+                                 "cmake/drdc_abi.cmake"])
+

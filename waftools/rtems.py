@@ -181,7 +181,7 @@ def build(bld):
         Logs.info("%s: no rtems/confdefs.h, so no test-runner.exe"
                   % bld.variant)
         return
-    unity = bld.root.find_dir(bld.env.UNITY)
+    unity = images.source_dir(bld, "unity")
     bld.objects(source=["fw/test-runner/main.c", "fw/test-runner/rtems_init.c",
                         "bsp/rtems/board.c", "bsp/console.c",
                         unity.find_node("unity.c")]

@@ -9,6 +9,8 @@ targets. Adding a board is a folder bsp/<board>/ and one row of TARGETS
 """
 import os
 
+TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
 # Warnings of every file we write, on every target; errors where the
 # compiler is one the project tries (every target here, with the compilers
 # of Debian 12 and 13) and where configure is asked to (--werror: the real
@@ -91,6 +93,21 @@ MACHINES = {
                     "-semihosting-config", "enable=on,target=native",
                     "-kernel", "{image}"],
         "packages": ["qemu-system-arm"], "exit_status": True},
+    # the MPS2 board with a Cortex-M7 (double-precision FPU): the AN385's
+    # memory but its PSRAM at 0x60000000 (QEMU 6.0 and later)
+    "arm-cm7": {
+        "command": ["qemu-system-arm", "-M", "mps2-an500", "-nographic",
+                    "-semihosting-config", "enable=on,target=native",
+                    "-kernel", "{image}"],
+        "packages": ["qemu-system-arm"], "exit_status": True},
+    # the MPS2 board with a Cortex-M33 (Armv8-M mainline, TrustZone): the
+    # image runs in the Secure state it boots in, code at the Secure
+    # alias 0x10000000 of its SSRAM
+    "arm-cm33": {
+        "command": ["qemu-system-arm", "-M", "mps2-an505", "-nographic",
+                    "-semihosting-config", "enable=on,target=native",
+                    "-kernel", "{image}"],
+        "packages": ["qemu-system-arm"], "exit_status": True},
     # QEMU virt, RV32, no firmware: the ELF image runs in machine mode
     "riscv32": {
         "command": ["qemu-system-riscv32", "-M", "virt", "-bios", "none",
@@ -126,6 +143,8 @@ DEFAULT_TARGET = "ppc-e500"
 #   packages   Debian packages that build it (its machine's run it)
 #   bsp        folder under bsp/ with the board code (link.ld there, when
 #              there is one, is the linker script)
+#   ldscript   another linker script, where the board's memory differs
+#              but its code is the same
 #   machine    MACHINES entry that runs its images, or None
 #   ext        file name ending of its programs
 #   arch       flags for compiling, assembling and linking
@@ -161,6 +180,9 @@ DEFAULT_TARGET = "ppc-e500"
 #   bench      its counters repeat exactly under QEMU -icount: ./waf bench
 #              times it; linked_budget is then the most of the library
 #              the demo pose node may link (flash bytes)
+#   footprint  the library's size, the demo's and a GGA-only node's are
+#              reported for it in docs/performance.md (every bench target
+#              too)
 #   demo_check the demo's output is compared with the host's
 #   selftest   the harness judges its self-test images here
 #   examples   (folder of examples/, MACHINES entry): the installed
@@ -277,7 +299,31 @@ TARGETS = {
         hard_float=[],
         abi=["-mcpu=cortex-m4", "-mthumb", "-mfloat-abi=hard",
              "-mfpu=fpv4-sp-d16"],
-        arm_arch="v7E-M", examples=("cortex-m", "arm-cm4f")),
+        arm_arch="v7E-M", examples=("cortex-m", "arm-cm4f"), footprint=True),
+    # Cortex-M7 (armv7e-m, double-precision FPU fpv5-d16, hard-float ABI)
+    # on QEMU's mps2-an500: the Cortex-M3's board code, its own memory map
+    "arm-cm7": dict(
+        ARM_NEWLIB, machine="arm-cm7", ldscript="bsp/arm-cm3/link-an500.ld",
+        arch=["-mcpu=cortex-m7", "-mthumb", "-mfloat-abi=hard",
+              "-mfpu=fpv5-d16", "--specs=nano.specs"],
+        library_arch=["-mgeneral-regs-only"],
+        hard_float=[],
+        abi=["-mcpu=cortex-m7", "-mthumb", "-mfloat-abi=hard",
+             "-mfpu=fpv5-d16"],
+        arm_arch="v7E-M", examples=("cortex-m", "arm-cm7"), footprint=True),
+    # Cortex-M33 (armv8-m mainline, single-precision FPU, hard-float ABI)
+    # on QEMU's mps2-an505, in the Secure state: the Cortex-M3's board
+    # code, the AN505's memory map (code at 0x10000000, so not the map of
+    # examples/cortex-m/link.ld: no examples)
+    "arm-cm33": dict(
+        ARM_NEWLIB, machine="arm-cm33", ldscript="bsp/arm-cm3/link-an505.ld",
+        arch=["-mcpu=cortex-m33", "-mthumb", "-mfloat-abi=hard",
+              "-mfpu=fpv5-sp-d16", "--specs=nano.specs"],
+        library_arch=["-mgeneral-regs-only"],
+        hard_float=[],
+        abi=["-mcpu=cortex-m33", "-mthumb", "-mfloat-abi=hard",
+             "-mfpu=fpv5-sp-d16"],
+        arm_arch="v8-M.mainline", examples=None, footprint=True),
     # Cortex-M0/M0+ (armv6-m, Thumb-1 only, no divide instruction): the
     # most common FPU-less MCUs. Its code runs unchanged on the Cortex-M3
     # of QEMU's mps2-an385, whose memory holds the suites' vectors (the
@@ -293,7 +339,7 @@ TARGETS = {
                     "-mfloat-abi=hard"],
         soft_float_libm=True,
         abi=["-mcpu=cortex-m0", "-mthumb", "-mfloat-abi=soft"],
-        arm_arch="v6S-M", cxx=BARE_METAL_CXX),
+        arm_arch="v6S-M", cxx=BARE_METAL_CXX, footprint=True),
     # RISC-V rv32imac (the FPU-less RV32 MCUs: integer multiply and divide,
     # atomics, compressed), machine mode on QEMU's virt board: 16550
     # console, SiFive test finisher for the exit status. picolibc (Debian's
@@ -375,6 +421,16 @@ RTEMS_QEMU = {
         "replace": ("qoriq = 0xffe00000;", "qoriq = 0xe0000000;"),
     },
 }
+
+
+def ldscript(name):
+    """The linker script of a target's images, from the top of the tree,
+    or None where its board has none."""
+    t = TARGETS[name]
+    return t.get("ldscript") or (("bsp/%s/link.ld" % t["bsp"])
+                                 if os.path.exists(os.path.join(
+                                     TOP, "bsp", t["bsp"], "link.ld"))
+                                 else None)
 
 
 def role(name, key):

@@ -8,8 +8,8 @@
 #include <cstring>
 #include <iostream>
 
-#include <drdc.hpp>
-#include <drdc_ostream.hpp>
+#include <drdc/drdc.hpp>
+#include <drdc/drdc_ostream.hpp>
 
 using namespace drdc::literals;
 

@@ -10,7 +10,7 @@
  * under QEMU -icount; tests/integration/test_cxx.py demands the wrapper
  * within 5 % of the C call.
  */
-#include <drdc.hpp>
+#include <drdc/drdc.hpp>
 
 extern "C" {
 #include "console.h"

@@ -11,7 +11,7 @@
  * heap, exceptions or RTTI, so it builds for a Cortex-M3 with
  * -fno-exceptions -fno-rtti.
  */
-#include <drdc.hpp>
+#include <drdc/drdc.hpp>
 #include <drdc/version.h>
 
 extern "C" {

@@ -4,7 +4,7 @@
  * @brief Unity tests of drdc.hpp, the C++ layer: reference vectors,
  * literals against exact rationals, and each wrapper against its C call.
  */
-#include <drdc.hpp>
+#include <drdc/drdc.hpp>
 
 #include <string.h>
 

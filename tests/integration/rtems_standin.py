@@ -155,8 +155,8 @@ def expected_install():
     return sorted(["libdrdc.a", "libdrdc_rtems.a", "pkgconfig/drdc.pc",
                    "include/drdc/rtems.h"]
                   + ["include/drdc/" + h for h in headers]
-                  + ["include/" + os.path.basename(h) for h in
-                     glob.glob(os.path.join(TOP, "cxx/include/*.hpp"))])
+                  + ["include/drdc/" + os.path.basename(h) for h in
+                     glob.glob(os.path.join(TOP, "cxx/include/drdc/*.hpp"))])
 
 
 def installed_tree(bspdir):

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: BSD-2-Clause
-"""The C++ layer, cxx/include/drdc.hpp, beyond its Unity suite (./waf check).
+"""The C++ layer, cxx/include/drdc/drdc.hpp, beyond its Unity suite (./waf check).
 
 The Unity suite (tests/cxx, fw/cxx-runner) runs with every other image
 under qemu/harness.py. Checked here, with the compilers configure found
@@ -127,7 +127,7 @@ def compile_snippet(compiler, body, extra=()):
     with tempfile.TemporaryDirectory() as tmp:
         src = os.path.join(tmp, "snippet.cpp")
         with open(src, "w") as f:
-            f.write("#include <drdc.hpp>\nusing namespace drdc::literals;\n"
+            f.write("#include <drdc/drdc.hpp>\nusing namespace drdc::literals;\n"
                     "int main()\n{\n%s\n  return 0;\n}\n" % body)
         return subprocess.run(compiler + WARNINGS + INCLUDES + list(extra)
                               + ["-fsyntax-only", src],
@@ -159,7 +159,7 @@ class CompileTime(unittest.TestCase):
                 self.assertIn(message, r.stderr, "%s: %s" % (name, body))
 
     def test_the_example_of_drdc_hpp_compiles(self):
-        with open(os.path.join(TOP, "cxx", "include", "drdc.hpp")) as f:
+        with open(os.path.join(TOP, "cxx", "include", "drdc", "drdc.hpp")) as f:
             head = f.read().split("@file", 1)[1].split("*/", 1)[0]
         body = "\n".join(l[len(" *   "):] for l in head.splitlines()
                          if l.startswith(" *     "))

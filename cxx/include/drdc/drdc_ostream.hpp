@@ -15,7 +15,7 @@
 
 #include <ostream>
 
-#include <drdc.hpp>
+#include <drdc/drdc.hpp>
 
 namespace drdc {
 
