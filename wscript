@@ -266,6 +266,16 @@ def _build_images(bld, t):
     images.image(bld, "fw/demo/demo", images.glob(bld, "fw/demo/*.c"),
                  "libdrdc bsp", linkflags=[] if t["machine"] == "host"
                  else ["-Wl,-Map=" + demo_map])
+    if t.get("bench") or t.get("footprint"):
+        # what a GGA-only node links of the NMEA parser, against every
+        # sentence's decoder (tools/gates/bench.py reads both maps)
+        for every in (1, 0):
+            name = "fw/nmea-size/nmea-" + ("every" if every else "gga")
+            images.image(bld, name, ["fw/nmea-size/main.c"], "libdrdc bsp",
+                         defines=["NMEA_SIZE_EVERY=%d" % every],
+                         idx=500 + every, linkflags=[
+                             "-Wl,-Map=" + bld.path.find_or_declare(
+                                 name + ".map").abspath()])
     if t.get("bench"):
         # soft-float double baselines where the toolchain has soft-float
         libm = bool(t.get("soft_float_libm"))

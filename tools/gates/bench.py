@@ -43,9 +43,13 @@ sys.path.insert(0, TOP)
 from qemu import harness  # noqa: E402
 from tools.gates import footprint  # noqa: E402
 from waftools import deps  # noqa: E402
+from waftools.targets import TARGETS as ALL_TARGETS  # noqa: E402
 from waftools.targets import role, with_role  # noqa: E402
 
 TARGETS = with_role("bench")
+# the sizes of every Cortex-M target, and of the bench targets
+SIZE_TARGETS = [t for t in ALL_TARGETS
+                if role(t, "bench") or role(t, "footprint")]
 # where the soft-float double baselines run: bench targets whose
 # toolchain has soft-float double and a libm
 DOUBLE_TARGETS = tuple(t for t in TARGETS if role(t, "soft_float_libm"))
@@ -364,6 +368,19 @@ def write_docs(report, docs):
         lines.append("| %s | %s | %d | %d | %d | %d | %d |" % (
             target, fp["linked"]["image"], s["text"], s["rodata"], s["data"],
             s["bss"], flash({"library": s})))
+    lines += ["", "## Sizes by target", "",
+              "Flash bytes, on every Cortex-M and bench target, of the library",
+              "taken whole, of what the demo pose node links, and of what a",
+              "node that parses NMEA links: with",
+              "`drdc_nmea_parse()` (every sentence's decoder) and with",
+              "`drdc_nmea_parse_some()` naming the GGA decoder alone",
+              "(fw/nmea-size), and what the second saves.", "",
+              "| target | library | demo | NMEA, every sentence | NMEA, GGA "
+              "only | saved |", "|---|---:|---:|---:|---:|---:|"]
+    for target, s in sorted(report.get("sizes", {}).items()):
+        lines.append("| %s | %d | %d | %d | %d | %d |" % (
+            target, s["library"], s["demo"], s["nmea_every"], s["nmea_gga"],
+            s["nmea_every"] - s["nmea_gga"]))
     lines += ["", "## Largest symbols of libdrdc.a", "",
               "The 20 largest functions and constant tables of each target (`nm -S`;",
               "`T`/`t` code, `R`/`r` constant data, lower case: file-local). Code",
@@ -452,7 +469,22 @@ def measure(build):
     return {"functions": functions, "instructions_per_tick": calibration,
             "baseline_checks": checks, "toolchain": toolchain(build),
             "release": deps.release(),
-            "footprint": {t: footprint.footprint(build, t) for t in TARGETS}}
+            "footprint": {t: footprint.footprint(build, t) for t in TARGETS},
+            "sizes": {t: sizes(build, t) for t in SIZE_TARGETS}}
+
+
+def sizes(build, target):
+    """Flash bytes (.text + .rodata + .data) of the whole library, of what
+    the demo pose node links, and of what the NMEA parser costs a node
+    that parses every sentence (drdc_nmea_parse) and one that parses GGA
+    alone (drdc_nmea_parse_some with the GGA decoder)."""
+    lib = footprint.footprint_library(build, target)
+    return {"library": lib,
+            "demo": linked_flash({"linked": footprint.linked(build, target)}),
+            "nmea_every": linked_flash({"linked": footprint.linked(
+                build, target, "fw/nmea-size/nmea-every")}),
+            "nmea_gga": linked_flash({"linked": footprint.linked(
+                build, target, "fw/nmea-size/nmea-gga")})}
 
 
 def toolchain_text(report):
